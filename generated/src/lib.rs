@@ -1,0 +1,14 @@
+//! tuff: safe Vulkan wrappers over `ash`, generated from the Khronos registry by
+//! `tuff-gen`.
+//!
+//! Everything under `src/` except this file is written by the generator; so are
+//! `VALIDATION.md`, `validation.json` and `validation.svg`, the coverage report that
+//! says, rule by rule, what the wrappers guarantee.
+//!
+//! ```
+//! assert_eq!(tuff::api_info::API_VERSION, (1, 3));
+//! assert!(tuff::api_info::EXTENSIONS.contains(&"VK_KHR_swapchain"));
+//! ```
+
+/// Which registry, core versions and extensions this crate was generated from.
+pub mod api_info;

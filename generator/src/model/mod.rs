@@ -1,0 +1,395 @@
+//! Model pass: resolve the registry into the API the generator reasons about.
+//!
+//! For the whole registry (every feature and every extension the vulkan API supports,
+//! the "all extensions" build the specification itself is generated from) it records
+//! which items exist, what each handle's parents and lifetime commands are, the parsed
+//! attributes of every parameter and member, and for every command and struct the
+//! condition (features and extensions) under which it exists. The config then picks
+//! the emitted subset.
+
+pub mod attrs;
+pub mod expr;
+
+use crate::config::Config;
+use crate::error::{Error, Result};
+use crate::registry::{CommandDef, Field, Registry, TypeDef};
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+pub use attrs::{ExternSync, LenEntry};
+
+/// The resolved registry.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// Registry version, `1.3.239`.
+    pub version: String,
+    /// Every type by name (aliases included, as their own entries).
+    pub types: BTreeMap<String, TypeDef>,
+    /// Every command by name (aliases included).
+    pub commands: BTreeMap<String, CommandDef>,
+    /// Every handle type with its resolved relations.
+    pub handles: BTreeMap<String, Handle>,
+    /// For each struct, the structs that may extend its `pNext` chain.
+    pub extended_by: BTreeMap<String, Vec<String>>,
+    /// For each enum group, its values that the all-extensions build contains.
+    pub enum_values: BTreeMap<String, Vec<String>>,
+    /// For each type and command: the condition under which it exists, as a
+    /// vk.xml-style expression, or `core` for Vulkan 1.0.
+    pub conditions: BTreeMap<String, String>,
+    /// Items that exist in the all-extensions build of the vulkan API.
+    pub required: BTreeSet<String>,
+    /// Items of the emitted API: their condition holds with the config's versions
+    /// and extensions enabled.
+    pub emitted: BTreeSet<String>,
+    /// Names the config enables: versions up to the cap and the allowlisted extensions.
+    pub enabled: BTreeSet<String>,
+}
+
+/// A handle type and what the registry says about its lifetime.
+#[derive(Debug, Clone, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Handle {
+    /// The handle's name.
+    pub name: String,
+    /// Dispatchable (`VK_DEFINE_HANDLE`) or not.
+    pub dispatchable: bool,
+    /// Parent types, nearest first, up to `VkInstance`.
+    pub parent_chain: Vec<String>,
+    /// Commands that create or allocate it.
+    pub created_by: Vec<String>,
+    /// Commands that destroy or free it.
+    pub destroyed_by: Vec<String>,
+}
+
+/// A parameter or member with its attributes parsed.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct ParsedField {
+    /// Name.
+    pub name: String,
+    /// Base type.
+    pub type_name: String,
+    /// Category of the base type (`handle`, `struct`, ... or none for C types).
+    pub category: Option<String>,
+    /// `const` in the declaration.
+    pub is_const: bool,
+    /// Levels of pointer.
+    pub pointers: usize,
+    /// Fixed array size.
+    pub static_array: Option<String>,
+    /// `len`, parsed.
+    pub len: Vec<LenEntry>,
+    /// `optional`, one flag per level.
+    pub optional: Vec<bool>,
+    /// `externsync`, parsed.
+    pub externsync: Vec<ExternSync>,
+    /// `noautovalidity`.
+    pub noautovalidity: bool,
+}
+
+impl Model {
+    /// Resolve `registry` and select the emitted API with `config`. Fails if the
+    /// config names a version or an extension the registry lacks.
+    pub fn build(registry: &Registry, config: &Config, config_path: &Path) -> Result<Model> {
+        let types: BTreeMap<String, TypeDef> = registry
+            .types
+            .iter()
+            .map(|t| (t.name.clone(), t.clone()))
+            .collect();
+        let commands: BTreeMap<String, CommandDef> = registry
+            .commands
+            .iter()
+            .map(|c| (c.name.clone(), c.clone()))
+            .collect();
+
+        let mut enabled: BTreeSet<String> = BTreeSet::new();
+        for version in config.enabled_versions() {
+            if !registry.features.iter().any(|f| f.name == version) {
+                return Err(Error::Config {
+                    path: config_path.to_owned(),
+                    message: format!(
+                        "api_version {} needs feature {version}, which this registry (Vulkan {}) does not define",
+                        config.api_version, registry.version
+                    ),
+                });
+            }
+            enabled.insert(version);
+        }
+        for ext in &config.extensions {
+            match registry.extensions.iter().find(|e| &e.name == ext) {
+                Some(e) if is_supported(e.supported.as_deref()) => {
+                    enabled.insert(ext.clone());
+                }
+                Some(_) => return Err(Error::Config {
+                    path: config_path.to_owned(),
+                    message: format!(
+                        "extension `{ext}` is not supported for the vulkan API in this registry"
+                    ),
+                }),
+                None => {
+                    return Err(Error::Config {
+                        path: config_path.to_owned(),
+                        message: format!(
+                            "extension `{ext}` does not exist in this registry (Vulkan {})",
+                            registry.version
+                        ),
+                    })
+                }
+            }
+        }
+
+        // Alternatives under which each item is required, from feature and extension
+        // require blocks.
+        let mut alternatives: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        let mut enum_additions: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        let interfaces = registry.features.iter().chain(
+            registry
+                .extensions
+                .iter()
+                .filter(|e| is_supported(e.supported.as_deref())),
+        );
+        for iface in interfaces {
+            for req in &iface.requires {
+                let alt = match req.depends.as_deref() {
+                    None => iface.name.clone(),
+                    Some(dep) if dep.contains(',') => format!("{}+({dep})", iface.name),
+                    Some(dep) => format!("{}+{dep}", iface.name),
+                };
+                for item in req.types.iter().chain(&req.commands) {
+                    alternatives
+                        .entry(item.clone())
+                        .or_default()
+                        .insert(alt.clone());
+                }
+                for (value, group) in &req.enum_extensions {
+                    enum_additions
+                        .entry(group.clone())
+                        .or_default()
+                        .push(value.clone());
+                }
+            }
+        }
+
+        // Everything a required item refers to is required too. An item that no
+        // require block names exists under the union of its users' conditions.
+        let own = alternatives.clone();
+        let mut required: BTreeSet<String> = own.keys().cloned().collect();
+        let mut queue: Vec<String> = required.iter().cloned().collect();
+        let mut users: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        while let Some(item) = queue.pop() {
+            for dep in references(&item, &types, &commands) {
+                if !types.contains_key(&dep) && !commands.contains_key(&dep) {
+                    continue;
+                }
+                users.entry(dep.clone()).or_default().insert(item.clone());
+                if required.insert(dep.clone()) {
+                    queue.push(dep);
+                }
+            }
+        }
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for item in &required {
+                if own.contains_key(item) {
+                    continue;
+                }
+                let inherited: BTreeSet<String> = users
+                    .get(item)
+                    .into_iter()
+                    .flatten()
+                    .filter_map(|u| alternatives.get(u))
+                    .flatten()
+                    .cloned()
+                    .collect();
+                if alternatives.get(item) != Some(&inherited) {
+                    alternatives.insert(item.clone(), inherited);
+                    changed = true;
+                }
+            }
+        }
+
+        let conditions: BTreeMap<String, String> = alternatives
+            .iter()
+            .map(|(item, alts)| (item.clone(), condition_of(alts)))
+            .collect();
+        let emitted = conditions
+            .iter()
+            .filter(|(_, c)| expr::eval(c, &enabled))
+            .map(|(item, _)| item.clone())
+            .collect();
+
+        let mut enum_values: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        for group in &registry.enum_groups {
+            let mut values = if required.contains(&group.name) {
+                group.values.clone()
+            } else {
+                Vec::new()
+            };
+            values.extend(enum_additions.remove(&group.name).unwrap_or_default());
+            enum_values.insert(group.name.clone(), values);
+        }
+
+        let mut extended_by: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        for t in types.values() {
+            for head in &t.struct_extends {
+                extended_by
+                    .entry(head.clone())
+                    .or_default()
+                    .push(t.name.clone());
+            }
+        }
+
+        let handles = resolve_handles(&types, &commands);
+        Ok(Model {
+            version: registry.version.clone(),
+            types,
+            commands,
+            handles,
+            extended_by,
+            enum_values,
+            conditions,
+            required,
+            emitted,
+            enabled,
+        })
+    }
+
+    /// The category of a type, following no aliases (as the specification's
+    /// toolchain does).
+    pub fn category(&self, type_name: &str) -> Option<&str> {
+        self.types.get(type_name)?.category.as_deref()
+    }
+
+    /// Parse the attributes of a parameter or member.
+    pub fn parse_field(&self, f: &Field) -> ParsedField {
+        ParsedField {
+            name: f.name.clone(),
+            type_name: f.type_name.clone(),
+            category: self.category(&f.type_name).map(str::to_owned),
+            is_const: f.is_const,
+            pointers: f.pointers,
+            static_array: f.static_array.clone(),
+            len: f.len.as_deref().map(attrs::parse_len).unwrap_or_default(),
+            optional: attrs::parse_optional(f.optional.as_deref()),
+            externsync: f
+                .externsync
+                .as_deref()
+                .map(attrs::parse_externsync)
+                .unwrap_or_default(),
+            noautovalidity: f.noautovalidity,
+        }
+    }
+
+    /// The condition of an item, `core` for items outside the registry's features
+    /// and extensions (such as SPIR-V built-ins that validusage.json files as
+    /// entities of their own).
+    pub fn condition(&self, item: &str) -> &str {
+        self.conditions.get(item).map_or("core", String::as_str)
+    }
+
+    /// Whether an item is in the emitted API. Entities that are not registry items
+    /// (SPIR-V environment rules) apply to every API that accepts shaders.
+    pub fn is_emitted(&self, item: &str) -> bool {
+        if self.types.contains_key(item) || self.commands.contains_key(item) {
+            self.emitted.contains(item)
+        } else {
+            true
+        }
+    }
+}
+
+fn is_supported(supported: Option<&str>) -> bool {
+    supported.is_some_and(|s| s.split(',').any(|x| x == "vulkan"))
+}
+
+/// `core` when Vulkan 1.0 requires the item unconditionally, else the alternatives
+/// joined with `,`.
+fn condition_of(alts: &BTreeSet<String>) -> String {
+    if alts.contains("VK_VERSION_1_0") {
+        return "core".to_owned();
+    }
+    let parts: Vec<String> = alts
+        .iter()
+        .map(|a| {
+            if a.contains(',') && !a.starts_with('(') {
+                format!("({a})")
+            } else {
+                a.clone()
+            }
+        })
+        .collect();
+    parts.join(",")
+}
+
+/// The types and commands an item's definition names.
+fn references(
+    item: &str,
+    types: &BTreeMap<String, TypeDef>,
+    commands: &BTreeMap<String, CommandDef>,
+) -> Vec<String> {
+    let mut out = Vec::new();
+    if let Some(t) = types.get(item) {
+        out.extend(t.alias.clone());
+        out.extend(t.bit_values.clone());
+        out.extend(t.members.iter().map(|m| m.type_name.clone()));
+        if let Some(parent) = &t.parent {
+            out.extend(parent.split(',').map(str::to_owned));
+        }
+    }
+    if let Some(c) = commands.get(item) {
+        out.extend(c.alias.clone());
+        if !c.return_type.is_empty() {
+            out.push(c.return_type.clone());
+        }
+        out.extend(c.params.iter().map(|p| p.type_name.clone()));
+    }
+    out
+}
+
+fn resolve_handles(
+    types: &BTreeMap<String, TypeDef>,
+    commands: &BTreeMap<String, CommandDef>,
+) -> BTreeMap<String, Handle> {
+    let mut handles = BTreeMap::new();
+    for t in types.values() {
+        if t.category.as_deref() != Some("handle") || t.alias.is_some() {
+            continue;
+        }
+        let mut chain = Vec::new();
+        let mut current = t.parent.clone();
+        while let Some(p) = current {
+            // A handle may name several possible parents; the chain follows the first.
+            let first = p.split(',').next().unwrap_or_default().to_owned();
+            if chain.contains(&first) {
+                break;
+            }
+            current = types.get(&first).and_then(|pt| pt.parent.clone());
+            chain.push(first);
+        }
+        let mut handle = Handle {
+            name: t.name.clone(),
+            dispatchable: t.dispatchable,
+            parent_chain: chain,
+            ..Handle::default()
+        };
+        for c in commands.values().filter(|c| c.alias.is_none()) {
+            let is_create = c.name.starts_with("vkCreate") || c.name.starts_with("vkAllocate");
+            let is_destroy = c.name.starts_with("vkDestroy") || c.name.starts_with("vkFree");
+            if is_create {
+                if let Some(last) = c.params.last() {
+                    if last.type_name == t.name && last.pointers == 1 && !last.is_const {
+                        handle.created_by.push(c.name.clone());
+                    }
+                }
+            } else if is_destroy {
+                let last_handle = c.params.iter().rev().find(|p| {
+                    types.get(&p.type_name).and_then(|x| x.category.as_deref()) == Some("handle")
+                });
+                if last_handle.is_some_and(|p| p.type_name == t.name) {
+                    handle.destroyed_by.push(c.name.clone());
+                }
+            }
+        }
+        handles.insert(t.name.clone(), handle);
+    }
+    handles
+}

@@ -1,0 +1,337 @@
+//! Conversion of vk-parse's tree into the registry pass's plain data.
+
+use super::{is_vulkan_api, CommandDef, EnumGroup, Field, Interface, Registry, Require, TypeDef};
+use crate::error::{Error, Result};
+use std::path::Path;
+use vk_parse as vk;
+
+pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
+    let mut reg = Registry::default();
+    for child in parsed.0 {
+        match child {
+            vk::RegistryChild::Types(types) => {
+                for t in types.children {
+                    if let vk::TypesChild::Type(t) = t {
+                        if is_vulkan_api(t.api.as_deref()) {
+                            reg.types.extend(convert_type(t));
+                        }
+                    }
+                }
+            }
+            vk::RegistryChild::Enums(enums) => {
+                if let Some(name) = enums.name {
+                    let values = enums
+                        .children
+                        .into_iter()
+                        .filter_map(|c| match c {
+                            vk::EnumsChild::Enum(e) if is_vulkan_api(e.api.as_deref()) => {
+                                Some(e.name)
+                            }
+                            _ => None,
+                        })
+                        .collect();
+                    reg.enum_groups.push(EnumGroup {
+                        name,
+                        kind: enums.kind,
+                        values,
+                    });
+                }
+            }
+            vk::RegistryChild::Commands(commands) => {
+                for c in commands.children {
+                    if let Some(c) = convert_command(c) {
+                        reg.commands.push(c);
+                    }
+                }
+            }
+            vk::RegistryChild::Feature(f) => {
+                if is_vulkan_api(Some(&f.api)) {
+                    reg.features.push(Interface {
+                        name: f.name,
+                        number: f.number,
+                        supported: None,
+                        depends: f.depends,
+                        requires: convert_requires(f.children),
+                    });
+                }
+            }
+            vk::RegistryChild::Extensions(exts) => {
+                for e in exts.children {
+                    let depends = e.depends.or_else(|| {
+                        // Registries before 1.3.241 name dependencies in `requires`
+                        // and `requiresCore` instead of `depends`.
+                        let mut parts: Vec<String> = Vec::new();
+                        if let Some(core) = e.requires_core.as_deref() {
+                            parts.push(format!("VK_VERSION_{}", core.replace('.', "_")));
+                        }
+                        if let Some(req) = e.requires.as_deref() {
+                            parts.extend(req.split(',').map(str::to_owned));
+                        }
+                        (!parts.is_empty()).then(|| parts.join("+"))
+                    });
+                    reg.extensions.push(Interface {
+                        name: e.name,
+                        number: e.number.map(|n| n.to_string()),
+                        supported: e.supported,
+                        depends,
+                        requires: convert_requires(e.children),
+                    });
+                }
+            }
+            _ => {}
+        }
+    }
+    reg.version = header_version(&reg.types).ok_or_else(|| Error::BadRegistry {
+        path: path.to_owned(),
+        message: "no VK_HEADER_VERSION / VK_HEADER_VERSION_COMPLETE define was found".to_owned(),
+    })?;
+    if reg.commands.is_empty() || !reg.features.iter().any(|f| f.name == "VK_VERSION_1_0") {
+        return Err(Error::BadRegistry {
+            path: path.to_owned(),
+            message: "it defines no commands or no VK_VERSION_1_0 feature".to_owned(),
+        });
+    }
+    Ok(reg)
+}
+
+/// `1.3.239` from the `VK_HEADER_VERSION` and `VK_HEADER_VERSION_COMPLETE` defines.
+fn header_version(types: &[TypeDef]) -> Option<String> {
+    let define = |name: &str| {
+        types
+            .iter()
+            .find(|t| t.category.as_deref() == Some("define") && t.name == name)
+            .map(|t| t.code.clone())
+    };
+    let patch: u32 = define("VK_HEADER_VERSION")?
+        .split_whitespace()
+        .last()?
+        .parse()
+        .ok()?;
+    let complete = define("VK_HEADER_VERSION_COMPLETE")?;
+    let args = complete.split_once('(')?.1.split_once(')')?.0;
+    let nums: Vec<&str> = args.split(',').map(str::trim).collect();
+    let (major, minor) = (
+        nums.get(1)?.parse::<u32>().ok()?,
+        nums.get(2)?.parse::<u32>().ok()?,
+    );
+    Some(format!("{major}.{minor}.{patch}"))
+}
+
+fn convert_type(t: vk::Type) -> Option<TypeDef> {
+    let mut def = TypeDef {
+        category: t.category,
+        alias: t.alias,
+        parent: t.parent,
+        returned_only: t.returnedonly.as_deref() == Some("true"),
+        struct_extends: t
+            .structextends
+            .map(|s| s.split(',').map(str::to_owned).collect())
+            .unwrap_or_default(),
+        allow_duplicate: t.allowduplicate.as_deref() == Some("true"),
+        bit_values: t.bitvalues.or(t.requires),
+        ..TypeDef::default()
+    };
+    let mut name = t.name;
+    match t.spec {
+        vk::TypeSpec::Members(members) => {
+            for m in members {
+                if let vk::TypeMember::Definition(m) = m {
+                    if is_vulkan_api(m.api.as_deref()) {
+                        def.members.push(convert_member(m));
+                    }
+                }
+            }
+        }
+        vk::TypeSpec::Code(code) => {
+            for markup in &code.markup {
+                if let vk::TypeCodeMarkup::Name(n) = markup {
+                    name.get_or_insert_with(|| n.clone());
+                }
+            }
+            def.dispatchable = code.code.contains("VK_DEFINE_HANDLE(");
+            def.code = code.code;
+        }
+        vk::TypeSpec::Funcpointer(fp) => {
+            name.get_or_insert_with(|| fp.proto.name.clone());
+            def.code = fp.code;
+        }
+        _ => {}
+    }
+    def.name = name?;
+    Some(def)
+}
+
+fn convert_member(m: vk::TypeMemberDefinition) -> Field {
+    let mut name = String::new();
+    let mut type_name = String::new();
+    for markup in &m.markup {
+        match markup {
+            vk::TypeMemberMarkup::Name(n) if name.is_empty() => name = n.clone(),
+            vk::TypeMemberMarkup::Type(t) if type_name.is_empty() => type_name = t.clone(),
+            _ => {}
+        }
+    }
+    let mut field = declaration(&m.code, &type_name, &name);
+    field.name = name;
+    field.type_name = type_name;
+    field.len = m.len;
+    field.altlen = m.altlen;
+    field.optional = m.optional;
+    field.externsync = m.externsync;
+    field.noautovalidity = m.noautovalidity.as_deref() == Some("true");
+    field.selector = m.selector;
+    field.selection = m.selection;
+    field.values = m.values;
+    field.deprecated = m.deprecated;
+    field
+}
+
+/// The `const`, pointer and array parts of a C declaration such as
+/// `const VkFoo* const* ppFoo` or `char name[VK_MAX_NAME_SIZE]`.
+fn declaration(code: &str, type_name: &str, name: &str) -> Field {
+    let type_at = code.find(type_name).unwrap_or(0);
+    let after_type = type_at + type_name.len();
+    let name_at = code[after_type.min(code.len())..]
+        .find(name)
+        .map_or(code.len(), |p| p + after_type);
+    let before_name = &code[..name_at];
+    let after_name = code[(name_at + name.len()).min(code.len())..].trim();
+    Field {
+        is_const: before_name.contains("const"),
+        pointers: before_name.matches('*').count(),
+        static_array: after_name
+            .strip_prefix('[')
+            .and_then(|rest| rest.split_once(']'))
+            .map(|(size, _)| size.trim().to_owned()),
+        ..Field::default()
+    }
+}
+
+fn convert_command(c: vk::Command) -> Option<CommandDef> {
+    match c {
+        vk::Command::Alias { name, alias } => Some(CommandDef {
+            name,
+            alias: Some(alias),
+            ..CommandDef::default()
+        }),
+        vk::Command::Definition(d) => {
+            if !is_vulkan_api(d.api.as_deref()) {
+                return None;
+            }
+            let params = d
+                .params
+                .into_iter()
+                .filter(|p| is_vulkan_api(p.api.as_deref()))
+                .map(|p| {
+                    let type_name = p.definition.type_name.clone().unwrap_or_default();
+                    let mut field = declaration(&p.definition.code, &type_name, &p.definition.name);
+                    field.name = p.definition.name;
+                    field.type_name = type_name;
+                    field.len = p.len;
+                    field.altlen = p.altlen;
+                    field.optional = p.optional;
+                    field.externsync = p.externsync;
+                    field.noautovalidity = p.noautovalidity.as_deref() == Some("true");
+                    field
+                })
+                .collect();
+            Some(CommandDef {
+                name: d.proto.name,
+                alias: d.alias,
+                return_type: d.proto.type_name.unwrap_or_default(),
+                params,
+                queues: d.queues,
+                renderpass: d.renderpass,
+                videocoding: d.videocoding,
+                cmdbufferlevel: d.cmdbufferlevel,
+                tasks: d.tasks,
+                successcodes: d.successcodes,
+                errorcodes: d.errorcodes,
+            })
+        }
+        _ => None,
+    }
+}
+
+fn convert_requires(children: Vec<vk::ExtensionChild>) -> Vec<Require> {
+    let mut out = Vec::new();
+    for child in children {
+        if let vk::ExtensionChild::Require {
+            api,
+            extension,
+            feature,
+            depends,
+            items,
+            ..
+        } = child
+        {
+            if !is_vulkan_api(api.as_deref()) {
+                continue;
+            }
+            let depends = depends.or_else(|| {
+                let parts: Vec<String> = feature.into_iter().chain(extension).collect();
+                (!parts.is_empty()).then(|| parts.join("+"))
+            });
+            let mut req = Require {
+                depends,
+                ..Require::default()
+            };
+            for item in items {
+                match item {
+                    vk::InterfaceItem::Type { name, .. } => req.types.push(name),
+                    vk::InterfaceItem::Command { name, .. } => req.commands.push(name),
+                    vk::InterfaceItem::Enum(e) => {
+                        if !is_vulkan_api(e.api.as_deref()) {
+                            continue;
+                        }
+                        let extends = match &e.spec {
+                            vk::EnumSpec::Alias { extends, .. }
+                            | vk::EnumSpec::Bitpos { extends, .. }
+                            | vk::EnumSpec::Value { extends, .. } => extends.clone(),
+                            vk::EnumSpec::Offset { extends, .. } => Some(extends.clone()),
+                            _ => None,
+                        };
+                        if let Some(extends) = extends {
+                            req.enum_extensions.push((e.name, extends));
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            out.push(req);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_const_pointers_and_arrays() {
+        let f = declaration(
+            "const VkAllocationCallbacks* pAllocator",
+            "VkAllocationCallbacks",
+            "pAllocator",
+        );
+        assert!(f.is_const);
+        assert_eq!(f.pointers, 1);
+        let f = declaration("void** ppData", "void", "ppData");
+        assert!(!f.is_const);
+        assert_eq!(f.pointers, 2);
+        let f = declaration(
+            "char deviceName[VK_MAX_PHYSICAL_DEVICE_NAME_SIZE]",
+            "char",
+            "deviceName",
+        );
+        assert_eq!(
+            f.static_array.as_deref(),
+            Some("VK_MAX_PHYSICAL_DEVICE_NAME_SIZE")
+        );
+        let f = declaration("const float blendConstants[4]", "float", "blendConstants");
+        assert_eq!(f.static_array.as_deref(), Some("4"));
+        assert!(f.is_const);
+        assert_eq!(f.pointers, 0);
+    }
+}

@@ -1,0 +1,152 @@
+//! Report pass: tally the rules by category and by how the emitters settled them, and
+//! render `VALIDATION.md`, `validation.json` and `validation.svg`.
+//!
+//! The tally only reads the records handed to it: a rule no record names is counted
+//! as left to the user, with that reason.
+
+mod json;
+mod markdown;
+mod svg;
+
+use crate::emit::{OutputFile, Record, Settlement};
+use crate::model::Model;
+use crate::validity::{Category, Rule, Validity};
+use std::collections::BTreeMap;
+
+/// Why a rule is left to the user when no emitter recorded anything about it.
+pub const UNSETTLED: &str = "no emitted wrapper checks it yet";
+
+/// Counts of one table: category by status.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Table {
+    /// `[category][status]`, categories as in [`Category::ALL`], statuses static,
+    /// dynamic, user.
+    pub counts: [[usize; 3]; 3],
+}
+
+impl Table {
+    fn add(&mut self, category: Category, settlement: &Settlement) {
+        let row = Category::ALL
+            .iter()
+            .position(|c| *c == category)
+            .unwrap_or(0);
+        let col = match settlement {
+            Settlement::Static(_) => 0,
+            Settlement::Dynamic(_) => 1,
+            Settlement::User(_) => 2,
+        };
+        self.counts[row][col] += 1;
+    }
+
+    /// Rules of a category.
+    pub fn row_total(&self, row: usize) -> usize {
+        self.counts[row].iter().sum()
+    }
+
+    /// Rules with a status.
+    pub fn column_total(&self, col: usize) -> usize {
+        self.counts.iter().map(|r| r[col]).sum()
+    }
+
+    /// All rules.
+    pub fn total(&self) -> usize {
+        self.counts.iter().flatten().sum()
+    }
+}
+
+/// A rule with its settlement.
+#[derive(Debug, Clone)]
+pub struct Settled<'a> {
+    /// The rule.
+    pub rule: &'a Rule,
+    /// How it is settled.
+    pub settlement: Settlement,
+}
+
+/// Everything the renderers need.
+#[derive(Debug, Clone)]
+pub struct Report<'a> {
+    /// Registry version.
+    pub version: String,
+    /// Versions and extensions of the emitted API.
+    pub enabled: Vec<String>,
+    /// Every rule with its settlement, in the validity pass's order.
+    pub settled: Vec<Settled<'a>>,
+    /// The emitted API's table.
+    pub emitted: Table,
+    /// The whole registry's table, over the rules validusage.json lists (or over the
+    /// derived rules without it).
+    pub registry: Table,
+    /// The emitted API's table counting only rules whose validusage.json condition
+    /// key also holds; `None` when the keys carry no conditions.
+    pub emitted_by_key: Option<Table>,
+    /// Emitted rules of entities that are not registry items (SPIR-V, built-ins).
+    pub emitted_non_items: usize,
+    /// Derived implicit rules of items validusage.json does not list.
+    pub unlisted_derived: usize,
+    /// The validity pass's result.
+    pub validity: &'a Validity,
+}
+
+/// Tally the rules with the emitters' records.
+pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> Report<'a> {
+    let by_vuid: BTreeMap<&str, &Settlement> = records
+        .iter()
+        .map(|r| (r.vuid.as_str(), &r.settlement))
+        .collect();
+    let mut report = Report {
+        version: model.version.clone(),
+        enabled: model.enabled.iter().cloned().collect(),
+        settled: Vec::with_capacity(validity.rules.len()),
+        emitted: Table::default(),
+        registry: Table::default(),
+        emitted_by_key: None,
+        emitted_non_items: 0,
+        unlisted_derived: 0,
+        validity,
+    };
+    for rule in &validity.rules {
+        let settlement = by_vuid
+            .get(rule.vuid.as_str())
+            .map(|s| (*s).clone())
+            .unwrap_or_else(|| Settlement::User(UNSETTLED.to_owned()));
+        let counts_for_registry = rule.listed || !validity.explicit_known;
+        if counts_for_registry {
+            report.registry.add(rule.category, &settlement);
+        } else {
+            report.unlisted_derived += 1;
+        }
+        if rule.emitted && counts_for_registry {
+            report.emitted.add(rule.category, &settlement);
+            if !model.types.contains_key(&rule.item) && !model.commands.contains_key(&rule.item) {
+                report.emitted_non_items += 1;
+            }
+            if let Some(holds) = rule.key_holds {
+                let table = report.emitted_by_key.get_or_insert_with(Table::default);
+                if holds {
+                    table.add(rule.category, &settlement);
+                }
+            }
+        }
+        report.settled.push(Settled { rule, settlement });
+    }
+    report
+}
+
+/// Render the three report files.
+pub fn render(report: &Report) -> Vec<OutputFile> {
+    vec![
+        OutputFile {
+            path: "VALIDATION.md".into(),
+            contents: markdown::render(report),
+        },
+        OutputFile {
+            path: "validation.json".into(),
+            contents: json::render(report),
+        },
+        OutputFile {
+            path: "validation.svg".into(),
+            contents: svg::render(report),
+        },
+    ]
+}
