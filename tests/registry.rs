@@ -1,1 +1,225 @@
+//! The registry pass, the implicit-rule derivation and the report's totals, on the
+//! pinned 1.3.239 registry and on the newer 1.4.309.
 
+mod common;
+
+use common::{load, root, shared_registry, Loaded};
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::OnceLock;
+use tuff_gen::registry;
+use tuff_gen::validity::Category;
+
+fn pinned() -> &'static Loaded {
+    static L: OnceLock<Loaded> = OnceLock::new();
+    L.get_or_init(|| load(&root(), false))
+}
+
+fn newer() -> &'static Loaded {
+    static L: OnceLock<Loaded> = OnceLock::new();
+    L.get_or_init(|| load(&shared_registry("1.4.309"), false))
+}
+
+#[test]
+fn pinned_vk_xml_and_validusage_json_are_the_same_version() {
+    let reg = registry::load_registry(&root().join("vk.xml")).unwrap();
+    let vu = registry::load_validusage(&root().join("validusage.json")).unwrap();
+    assert_eq!(reg.version, "1.3.239");
+    assert_eq!(vu.api_version, reg.version);
+}
+
+#[derive(serde::Deserialize)]
+struct Exceptions {
+    exception: Vec<Exception>,
+}
+
+#[derive(serde::Deserialize)]
+struct Exception {
+    registry: String,
+    vuid: String,
+    side: String,
+    reason: String,
+}
+
+fn check_agreement(l: &Loaded, version: &str) {
+    let c = l
+        .validity
+        .comparison
+        .as_ref()
+        .expect("validusage.json was given");
+    println!(
+        "{version}: derived {}, listed {}, both {}, only derived {}, only listed {}",
+        c.derived,
+        c.listed,
+        c.both,
+        c.only_derived.len(),
+        c.only_listed.len()
+    );
+    println!("  only derived: {:?}", c.only_derived);
+    println!("  only listed: {:?}", c.only_listed);
+    assert!(
+        c.recall() >= 0.999,
+        "listed rules derived: {:.4}",
+        c.recall()
+    );
+    assert!(
+        c.precision() >= 0.999,
+        "derived rules listed: {:.4}",
+        c.precision()
+    );
+
+    let text =
+        std::fs::read_to_string(root().join("generator/derivation-exceptions.toml")).unwrap();
+    let file: Exceptions = toml::from_str(&text).unwrap();
+    let mut expected: BTreeMap<(&str, &str), ()> = BTreeMap::new();
+    for e in file.exception.iter().filter(|e| e.registry == version) {
+        assert!(!e.reason.trim().is_empty(), "{} has no reason", e.vuid);
+        expected.insert((e.side.as_str(), e.vuid.as_str()), ());
+    }
+    let mut actual: BTreeMap<(&str, &str), ()> = BTreeMap::new();
+    for v in &c.only_listed {
+        actual.insert(("listed", v), ());
+    }
+    for v in &c.only_derived {
+        actual.insert(("derived", v), ());
+    }
+    assert_eq!(
+        actual.keys().collect::<Vec<_>>(),
+        expected.keys().collect::<Vec<_>>(),
+        "the differences must be exactly the checked-in exceptions of {version}"
+    );
+}
+
+#[test]
+fn derivation_agrees_with_validusage_1_3_239() {
+    check_agreement(pinned(), "1.3.239");
+}
+
+#[test]
+fn derivation_agrees_with_validusage_1_4_309() {
+    check_agreement(newer(), "1.4.309");
+}
+
+#[test]
+fn derivation_covers_every_item_of_the_registry() {
+    // The specification's generator writes implicit rules for more items than
+    // validusage.json lists (alias commands among them).
+    let total = |l: &Loaded| l.validity.rules.iter().filter(|r| r.derived).count();
+    assert_eq!(total(pinned()), 5040);
+    assert_eq!(total(newer()), 6029);
+}
+
+fn category_counts(l: &Loaded) -> [usize; 3] {
+    let mut n = [0; 3];
+    for r in l.validity.rules.iter().filter(|r| r.listed) {
+        n[Category::ALL.iter().position(|c| *c == r.category).unwrap()] += 1;
+    }
+    n
+}
+
+#[test]
+fn every_listed_vuid_is_counted_once_in_one_category() {
+    for (l, listed_total) in [(pinned(), 14_942), (newer(), 20_111)] {
+        let vu = l.validusage.as_ref().unwrap();
+        let distinct: BTreeSet<&str> = vu.entries.iter().map(|e| e.vuid.as_str()).collect();
+        assert_eq!(vu.entries.len(), listed_total);
+        assert_eq!(distinct.len(), vu.entries.len(), "VUIDs are distinct");
+        let listed: Vec<&str> = l
+            .validity
+            .rules
+            .iter()
+            .filter(|r| r.listed)
+            .map(|r| r.vuid.as_str())
+            .collect();
+        assert_eq!(listed.len(), listed_total);
+        assert_eq!(category_counts(l).iter().sum::<usize>(), listed_total);
+    }
+    assert_eq!(category_counts(pinned()), [4676, 1768, 8498]);
+}
+
+#[test]
+fn the_malformed_vuid_of_1_3_239_is_explicit() {
+    let rule = pinned()
+        .validity
+        .rules
+        .iter()
+        .find(|r| r.vuid == "VUID-VkInstanceCreateInfo-pNext")
+        .expect("listed");
+    assert_eq!(rule.category, Category::Creation);
+}
+
+#[test]
+fn conditions_come_from_vk_xml() {
+    let m = &pinned().model;
+    assert_eq!(m.condition("vkCmdDraw"), "core");
+    assert_eq!(m.condition("vkCmdBeginRendering"), "VK_VERSION_1_3");
+    assert_eq!(m.condition("vkCreateSwapchainKHR"), "VK_KHR_swapchain");
+    assert!(m.emitted.contains("vkCreateSwapchainKHR"));
+    assert!(m.emitted.contains("vkCmdBeginRendering"));
+    assert!(!m.emitted.contains("vkCmdDrawMeshTasksEXT"));
+    // Same answer on the newer registry, whose validusage.json files everything
+    // under `core`.
+    let n = &newer().model;
+    assert_eq!(n.condition("vkCmdDrawMeshTasksEXT"), "VK_EXT_mesh_shader");
+    assert!(
+        !n.emitted.contains("vkCmdPushDescriptorSet"),
+        "1.4 is above the cap"
+    );
+}
+
+#[test]
+fn emitted_api_matches_the_cross_check() {
+    // With the per-rule keys of 1.3.239's validusage.json, the emitted API has
+    // about 2,057 implicit and 742 creation rules.
+    let l = pinned();
+    let count = |cat: Category, by_key: bool| {
+        l.validity
+            .rules
+            .iter()
+            .filter(|r| r.listed && r.emitted && r.category == cat)
+            .filter(|r| !by_key || r.key_holds == Some(true))
+            .count()
+    };
+    let near = |got: usize, want: usize| got.abs_diff(want) * 100 <= want;
+    assert!(
+        near(count(Category::Implicit, false), 2057),
+        "{}",
+        count(Category::Implicit, false)
+    );
+    assert!(near(count(Category::Implicit, true), 2057));
+    assert!(
+        near(count(Category::Creation, true), 742),
+        "{}",
+        count(Category::Creation, true)
+    );
+}
+
+#[test]
+fn handles_know_their_parents_and_lifetime_commands() {
+    let h = &pinned().model.handles;
+    let buffer = &h["VkBuffer"];
+    assert!(!buffer.dispatchable);
+    assert_eq!(
+        buffer.parent_chain,
+        ["VkDevice", "VkPhysicalDevice", "VkInstance"]
+    );
+    assert_eq!(buffer.created_by, ["vkCreateBuffer"]);
+    assert_eq!(buffer.destroyed_by, ["vkDestroyBuffer"]);
+    let cb = &h["VkCommandBuffer"];
+    assert!(cb.dispatchable);
+    assert_eq!(cb.parent_chain[0], "VkCommandPool");
+    assert_eq!(cb.created_by, ["vkAllocateCommandBuffers"]);
+    assert_eq!(cb.destroyed_by, ["vkFreeCommandBuffers"]);
+}
+
+#[test]
+fn the_newer_registry_runs_without_validusage() {
+    let l = load(&shared_registry("1.4.309"), true);
+    assert!(!l.validity.explicit_known);
+    assert!(l.validity.comparison.is_none());
+    assert_eq!(l.validity.rules.len(), 6029);
+    assert!(l
+        .validity
+        .rules
+        .iter()
+        .all(|r| r.category == Category::Implicit));
+}

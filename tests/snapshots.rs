@@ -1,1 +1,112 @@
+//! Insta snapshots (in `snapshots/`) of the model and the derived rules of a few
+//! central items, and of the coverage table.
 
+mod common;
+
+use common::{load, root, Loaded};
+use serde::Serialize;
+use std::sync::OnceLock;
+use tuff_gen::model::{Handle, ParsedField};
+use tuff_gen::validity::{implicit, Toolchain};
+
+fn pinned() -> &'static Loaded {
+    static L: OnceLock<Loaded> = OnceLock::new();
+    L.get_or_init(|| load(&root(), false))
+}
+
+#[derive(Serialize)]
+struct ItemModel<'a> {
+    name: &'a str,
+    condition: &'a str,
+    emitted: bool,
+    returns: Option<&'a str>,
+    queues: Option<&'a str>,
+    renderpass: Option<&'a str>,
+    cmdbufferlevel: Option<&'a str>,
+    returned_only: Option<bool>,
+    extended_by: Vec<&'a str>,
+    fields: Vec<ParsedField>,
+    handles_created: Vec<&'a Handle>,
+}
+
+fn item_model(name: &str) -> ItemModel<'static> {
+    let m = &pinned().model;
+    let name = m
+        .commands
+        .get_key_value(name)
+        .map(|(k, _)| k.as_str())
+        .or_else(|| m.types.get_key_value(name).map(|(k, _)| k.as_str()))
+        .expect("item exists");
+    let cmd = m.commands.get(name);
+    let ty = m.types.get(name);
+    let fields = cmd
+        .map(|c| &c.params)
+        .or(ty.map(|t| &t.members))
+        .unwrap()
+        .iter()
+        .map(|f| m.parse_field(f))
+        .collect();
+    ItemModel {
+        name,
+        condition: m.condition(name),
+        emitted: m.emitted.contains(name),
+        returns: cmd.map(|c| c.return_type.as_str()),
+        queues: cmd.and_then(|c| c.queues.as_deref()),
+        renderpass: cmd.and_then(|c| c.renderpass.as_deref()),
+        cmdbufferlevel: cmd.and_then(|c| c.cmdbufferlevel.as_deref()),
+        returned_only: ty.map(|t| t.returned_only),
+        extended_by: m
+            .extended_by
+            .get(name)
+            .into_iter()
+            .flatten()
+            .map(String::as_str)
+            .collect(),
+        fields,
+        handles_created: m
+            .handles
+            .values()
+            .filter(|h| h.created_by.iter().any(|c| c == name))
+            .collect(),
+    }
+}
+
+fn rules(name: &str) -> Vec<String> {
+    let m = &pinned().model;
+    implicit::derive_item(m, Toolchain::for_version(&m.version), name)
+        .into_iter()
+        .map(|r| format!("{}: {}", r.vuid, r.text))
+        .collect()
+}
+
+const ITEMS: [&str; 5] = [
+    "vkCreateBuffer",
+    "VkBufferCreateInfo",
+    "vkCmdDraw",
+    "vkQueueSubmit",
+    "VkGraphicsPipelineCreateInfo",
+];
+
+#[test]
+fn models_and_rules_of_central_items() {
+    insta::with_settings!({ snapshot_path => "../snapshots", prepend_module_to_snapshot => false }, {
+        for item in ITEMS {
+            insta::assert_json_snapshot!(format!("model-{item}"), item_model(item));
+            insta::assert_json_snapshot!(format!("rules-{item}"), rules(item));
+        }
+    });
+}
+
+#[test]
+fn coverage_table() {
+    let md = std::fs::read_to_string(root().join("generated/VALIDATION.md")).unwrap();
+    let tables: String = md
+        .lines()
+        .filter(|l| l.starts_with('#') || l.starts_with('|') && !l.starts_with("| `"))
+        .take_while(|l| !l.starts_with("## Rules left"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    insta::with_settings!({ snapshot_path => "../snapshots", prepend_module_to_snapshot => false }, {
+        insta::assert_snapshot!("coverage-table", tables);
+    });
+}

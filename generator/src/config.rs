@@ -22,9 +22,14 @@ impl Config {
             path: path.to_owned(),
             source,
         })?;
-        let config: Config = toml::from_str(&text).map_err(|e| Error::Config {
-            path: path.to_owned(),
-            message: e.to_string().trim_end().to_owned(),
+        let config: Config = toml::from_str(&text).map_err(|e| {
+            let at = e.span().map_or(0, |s| s.start).min(text.len());
+            let line = text[..at].matches('\n').count() + 1;
+            let column = at - text[..at].rfind('\n').map_or(0, |p| p + 1) + 1;
+            Error::Config {
+                path: path.to_owned(),
+                message: format!("line {line}, column {column}: {}", e.message().trim()),
+            }
         })?;
         config.api_minor().map_err(|message| Error::Config {
             path: path.to_owned(),

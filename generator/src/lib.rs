@@ -19,6 +19,7 @@
 //! # Ok::<(), tuff_gen::Error>(())
 //! ```
 
+pub mod cli;
 pub mod config;
 pub mod emit;
 pub mod error;

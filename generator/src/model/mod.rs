@@ -103,10 +103,20 @@ impl Model {
         let mut enabled: BTreeSet<String> = BTreeSet::new();
         for version in config.enabled_versions() {
             if !registry.features.iter().any(|f| f.name == version) {
+                let newest = registry
+                    .features
+                    .iter()
+                    .filter_map(|f| f.number.as_deref())
+                    .max_by_key(|n| {
+                        n.split('.')
+                            .map(|x| x.parse::<u32>().unwrap_or(0))
+                            .collect::<Vec<_>>()
+                    })
+                    .unwrap_or("1.0");
                 return Err(Error::Config {
                     path: config_path.to_owned(),
                     message: format!(
-                        "api_version {} needs feature {version}, which this registry (Vulkan {}) does not define",
+                        "api_version `{}` is newer than this registry (Vulkan {}), whose newest core version is {newest} (no {version} feature)",
                         config.api_version, registry.version
                     ),
                 });
@@ -118,12 +128,14 @@ impl Model {
                 Some(e) if is_supported(e.supported.as_deref()) => {
                     enabled.insert(ext.clone());
                 }
-                Some(_) => return Err(Error::Config {
-                    path: config_path.to_owned(),
-                    message: format!(
+                Some(_) => {
+                    return Err(Error::Config {
+                        path: config_path.to_owned(),
+                        message: format!(
                         "extension `{ext}` is not supported for the vulkan API in this registry"
                     ),
-                }),
+                    })
+                }
                 None => {
                     return Err(Error::Config {
                         path: config_path.to_owned(),

@@ -44,16 +44,14 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                     }
                 }
             }
-            vk::RegistryChild::Feature(f) => {
-                if is_vulkan_api(Some(&f.api)) {
-                    reg.features.push(Interface {
-                        name: f.name,
-                        number: f.number,
-                        supported: None,
-                        depends: f.depends,
-                        requires: convert_requires(f.children),
-                    });
-                }
+            vk::RegistryChild::Feature(f) if is_vulkan_api(Some(&f.api)) => {
+                reg.features.push(Interface {
+                    name: f.name,
+                    number: f.number,
+                    supported: None,
+                    depends: f.depends,
+                    requires: convert_requires(f.children),
+                });
             }
             vk::RegistryChild::Extensions(exts) => {
                 for e in exts.children {

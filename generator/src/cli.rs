@@ -1,0 +1,125 @@
+//! The `tuff-gen` command line, as a library function so that tests can run it with
+//! arguments and read its exit code and messages without spawning a process.
+
+use crate::{generate, output, Options};
+use clap::Parser;
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Generate the tuff crate and its validation coverage report from the Vulkan registry.
+#[derive(Parser, Debug)]
+#[command(version, about)]
+struct Cli {
+    /// vk.xml to read [default: the pinned vk.xml at the repository root]
+    #[arg(long)]
+    registry: Option<PathBuf>,
+    /// validusage.json to read [default: validusage.json beside the registry, when it exists]
+    #[arg(long, conflicts_with = "no_validusage")]
+    validusage: Option<PathBuf>,
+    /// Derive implicit rules only; explicit rules are reported as unknown
+    #[arg(long)]
+    no_validusage: bool,
+    /// Accept a validusage.json whose version differs from vk.xml's
+    #[arg(long)]
+    allow_version_mismatch: bool,
+    /// Config file [default: tuff-gen.toml at the repository root]
+    #[arg(long)]
+    config: Option<PathBuf>,
+    /// Output folder [default: generated/ at the repository root]
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Write nothing; fail if the output folder differs from a fresh run
+    #[arg(long)]
+    check: bool,
+}
+
+/// Run the command line with `args` (the first is the program name). Messages go to
+/// `out` and `err`; the return value is the process exit code: 0 on success, 1 on a
+/// generator error, 2 on a usage error.
+pub fn run<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            let code = e.exit_code();
+            let text = e.render().to_string();
+            let _ = if code == 0 {
+                write!(out, "{text}")
+            } else {
+                write!(err, "{text}")
+            };
+            return code;
+        }
+    };
+    let pinned = Options::pinned();
+    let registry = cli.registry.clone().unwrap_or(pinned.registry);
+    let validusage = if cli.no_validusage {
+        None
+    } else if let Some(v) = cli.validusage {
+        Some(v)
+    } else {
+        let beside = registry.with_file_name("validusage.json");
+        if beside.exists() {
+            Some(beside)
+        } else {
+            let _ = writeln!(
+                err,
+                "tuff-gen: no validusage.json beside {}; deriving implicit rules only",
+                registry.display()
+            );
+            None
+        }
+    };
+    let opts = Options {
+        registry,
+        validusage,
+        config: cli.config.unwrap_or(pinned.config),
+        out: cli.out.unwrap_or(pinned.out),
+        allow_version_mismatch: cli.allow_version_mismatch,
+    };
+    let result = generate(&opts).and_then(|g| {
+        if cli.check {
+            output::check(&opts.out, &g.files)?;
+        } else {
+            output::write_all(&opts.out, &g.files)?;
+        }
+        Ok(g)
+    });
+    match result {
+        Ok(g) => {
+            let verb = if cli.check {
+                "is up to date"
+            } else {
+                "written"
+            };
+            let _ = writeln!(
+                out,
+                "tuff-gen: Vulkan {}: {} {verb} ({} files); emitted API: {} rules, whole registry: {} rules",
+                g.version,
+                opts.out.display(),
+                g.files.len(),
+                g.emitted.total(),
+                g.registry.total()
+            );
+            if let Some(c) = &g.comparison {
+                let _ = writeln!(
+                    out,
+                    "tuff-gen: implicit rules: {} derived, {} listed, {} both, {} only derived, {} only listed",
+                    c.derived,
+                    c.listed,
+                    c.both,
+                    c.only_derived.len(),
+                    c.only_listed.len()
+                );
+            }
+            0
+        }
+        Err(e) => {
+            let _ = writeln!(err, "tuff-gen: error: {e}");
+            1
+        }
+    }
+}

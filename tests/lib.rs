@@ -1,1 +1,0 @@
-//! Integration tests live in the other files of this folder; see Cargo.toml.
