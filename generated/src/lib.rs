@@ -10,5 +10,7 @@
 //! assert!(tuff::api_info::EXTENSIONS.contains(&"VK_KHR_swapchain"));
 //! ```
 
+#![warn(missing_docs)]
+
 /// Which registry, core versions and extensions this crate was generated from.
 pub mod api_info;

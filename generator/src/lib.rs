@@ -19,6 +19,8 @@
 //! # Ok::<(), tuff_gen::Error>(())
 //! ```
 
+#![warn(missing_docs)]
+
 pub mod cli;
 pub mod config;
 pub mod emit;
