@@ -1,0 +1,43 @@
+//! `tuff-runtime`: what tuff's generated wrappers need at run time, and nothing more.
+//!
+//! - [`Vrc`] and [`Vutex`]: sharing and locking that cost no atomics unless the
+//!   `multi_thread` feature asks for them.
+//! - [`Allocator`]: device-memory allocation behind one trait, with a
+//!   [`NaiveAllocator`] (one `vkAllocateMemory` per resource) and the default
+//!   [`GpuAllocator`] (sub-allocation through `gpu-allocator`). See [`memory`] for how
+//!   allocations keep their device alive.
+//! - [`Allocation`]'s typed, checked access to mapped memory, with flushes and
+//!   invalidations of non-coherent memory rounded to `nonCoherentAtomSize`.
+//! - [`RUNTIME_IMPLICIT_VALIDATIONS`]: whether the generated code compiles in its
+//!   run-time checks of implicit rules.
+//!
+//! ```
+//! use tuff_runtime::{Vrc, Vutex};
+//! let shared = Vrc::new(Vutex::new(0u32));
+//! *shared.lock() += 1;
+//! assert_eq!(*shared.lock(), 1);
+//! ```
+#![warn(missing_docs)]
+
+pub mod mapped;
+pub mod memory;
+pub mod sync;
+
+pub use mapped::MapError;
+pub use memory::{
+    AllocError, Allocation, AllocationBacking, AllocationParts, AllocationRequest, Allocator,
+    DeviceOwner, GpuAllocator, MemoryLocation, NaiveAllocator,
+};
+pub use sync::{MaybeSend, MaybeSendSync, Vrc, Vutex, VutexGuard};
+
+/// True when the `runtime_implicit_validations` feature compiles in the generated
+/// code's run-time checks of implicit rules. When false those checks are not compiled
+/// at all (they cost nothing) and the coverage report lists their rules as left to
+/// the user.
+///
+/// ```
+/// if tuff_runtime::RUNTIME_IMPLICIT_VALIDATIONS {
+///     // a generated wrapper would check, e.g., that two handles share a parent
+/// }
+/// ```
+pub const RUNTIME_IMPLICIT_VALIDATIONS: bool = cfg!(feature = "runtime_implicit_validations");

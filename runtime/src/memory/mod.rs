@@ -1,0 +1,458 @@
+//! Device-memory allocation behind one trait, and typed access to mapped memory.
+//!
+//! # Who outlives whom
+//!
+//! The runtime knows `ash`, not the generated crate, so it cannot name the generated
+//! `Device` wrapper. Instead it defines [`DeviceOwner`]: whatever owns the `VkDevice`
+//! (the generated wrapper does) implements it and destroys the device in its `Drop`.
+//! Allocators are built from a `Vrc<dyn DeviceOwner>`, and every [`Allocation`] holds
+//! (through its [`AllocationBacking`]) a `Vrc` to the allocator's state, which holds
+//! the owner. So the device is destroyed only after the last allocation and the last
+//! allocator are gone, whatever order the user drops things in, and the dependency
+//! still runs one way: tuff -> tuff-runtime -> ash.
+//!
+//! ```no_run
+//! # fn demo(owner: tuff_runtime::Vrc<dyn tuff_runtime::DeviceOwner>) -> Result<(), Box<dyn std::error::Error>> {
+//! use tuff_runtime::{Allocator, AllocationRequest, GpuAllocator, MemoryLocation};
+//! use ash::vk;
+//! let allocator = GpuAllocator::new(owner)?;
+//! let requirements = vk::MemoryRequirements { size: 64, alignment: 16, memory_type_bits: !0 };
+//! let mut allocation = allocator.allocate(&AllocationRequest::new(requirements, MemoryLocation::Upload))?;
+//! allocation.write(0, &[1.0f32, 2.0, 3.0, 4.0])?;
+//! # Ok(()) }
+//! ```
+
+mod gpu;
+mod naive;
+
+pub use gpu::GpuAllocator;
+pub use naive::NaiveAllocator;
+
+use crate::mapped::{check_range, flush_range, MapError, Placement};
+use crate::sync::{MaybeSend, MaybeSendSync, Vrc};
+use ash::vk;
+use std::ptr::NonNull;
+
+/// What allocators need of the device. The generated `Device` wrapper implements it;
+/// its `Drop` destroys the device, which therefore outlives every allocator and
+/// allocation that holds the owner.
+pub trait DeviceOwner: MaybeSendSync + 'static {
+    /// The instance the device was created from.
+    fn instance(&self) -> &ash::Instance;
+    /// The physical device.
+    fn physical_device(&self) -> vk::PhysicalDevice;
+    /// The logical device.
+    fn device(&self) -> &ash::Device;
+    /// `VkPhysicalDeviceLimits::nonCoherentAtomSize`.
+    fn non_coherent_atom_size(&self) -> u64;
+}
+
+/// Where the memory should live, as the resource uses it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MemoryLocation {
+    /// Only the GPU touches it: device-local, not mapped.
+    DeviceLocal,
+    /// The CPU writes, the GPU reads: host-visible and mapped.
+    Upload,
+    /// The GPU writes, the CPU reads back: host-visible (cached if possible) and mapped.
+    Readback,
+}
+
+/// What a buffer or image needs.
+#[derive(Debug, Clone, Copy)]
+pub struct AllocationRequest<'a> {
+    /// From vkGet*MemoryRequirements.
+    pub requirements: vk::MemoryRequirements,
+    /// Where it should live.
+    pub location: MemoryLocation,
+    /// Buffers and linear images are linear; optimally tiled images are not.
+    pub linear: bool,
+    /// A name for debugging and leak reports.
+    pub name: &'a str,
+}
+
+impl AllocationRequest<'static> {
+    /// A request for a linear resource (a buffer) with no name.
+    ///
+    /// ```
+    /// use tuff_runtime::{AllocationRequest, MemoryLocation};
+    /// use ash::vk;
+    /// let r = AllocationRequest::new(vk::MemoryRequirements::default(), MemoryLocation::DeviceLocal);
+    /// assert!(r.linear);
+    /// ```
+    pub fn new(requirements: vk::MemoryRequirements, location: MemoryLocation) -> Self {
+        AllocationRequest {
+            requirements,
+            location,
+            linear: true,
+            name: "",
+        }
+    }
+}
+
+/// Why an allocation failed.
+#[derive(Debug, thiserror::Error)]
+pub enum AllocError {
+    /// No memory type allowed by the requirements has the needed properties.
+    #[error("no memory type in bits {memory_type_bits:#x} suits {location:?} memory")]
+    NoSuitableMemoryType {
+        /// `memoryTypeBits` of the requirements.
+        memory_type_bits: u32,
+        /// The wanted location.
+        location: MemoryLocation,
+    },
+    /// A Vulkan call failed.
+    #[error("{call} failed: {result}")]
+    Vulkan {
+        /// Which call.
+        call: &'static str,
+        /// What it returned.
+        result: vk::Result,
+    },
+    /// gpu-allocator refused.
+    #[error("gpu-allocator: {0}")]
+    GpuAllocator(#[from] gpu_allocator::AllocationError),
+    /// The requirements are impossible (zero alignment, sizes that overflow).
+    #[error("invalid memory requirements: {0}")]
+    InvalidRequirements(String),
+}
+
+/// Frees an allocation's memory. Each allocator gives its allocations a backing; the
+/// backing must keep whatever frees the memory (and the device) alive.
+pub trait AllocationBacking: MaybeSend {
+    /// Return the memory to its allocator. Called once, from the allocation's `Drop`.
+    fn free(self: Box<Self>);
+}
+
+/// The facts of an allocation, for allocators building one with
+/// [`Allocation::from_parts`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AllocationParts {
+    /// The device memory the allocation lies in.
+    pub memory: vk::DeviceMemory,
+    /// Offset of the allocation inside `memory`.
+    pub offset: u64,
+    /// Size of the allocation.
+    pub size: u64,
+    /// Size of the whole `memory` object (flushes never go past it).
+    pub memory_size: u64,
+    /// Index of the memory type of `memory`.
+    pub memory_type_index: u32,
+    /// Properties of that memory type.
+    pub properties: vk::MemoryPropertyFlags,
+    /// Host address of the allocation's first byte, if it is mapped.
+    pub mapped: Option<NonNull<u8>>,
+    /// `nonCoherentAtomSize` of the device.
+    pub non_coherent_atom_size: u64,
+}
+
+/// A piece of device memory. It frees itself (through its allocator) when dropped, and
+/// keeps its allocator and device alive until then.
+pub struct Allocation {
+    parts: AllocationParts,
+    owner: Vrc<dyn DeviceOwner>,
+    backing: Option<Box<dyn AllocationBacking>>,
+}
+
+// SAFETY: the mapped pointer is the only non-Send field. It points into memory that
+// this allocation alone may access (allocators hand out disjoint ranges), and every
+// access goes through `&self`/`&mut self`, so moving the allocation to another thread
+// moves that exclusive access with it. Only compiled where the backing is Send too.
+#[cfg(feature = "multi_thread")]
+unsafe impl Send for Allocation {}
+
+impl std::fmt::Debug for Allocation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Allocation")
+            .field("parts", &self.parts)
+            .finish()
+    }
+}
+
+impl Allocation {
+    /// Assemble an allocation. This is how a custom [`crate::Allocator`] returns memory.
+    ///
+    /// # Safety
+    ///
+    /// `parts` must describe memory that `owner`'s device allocated and that nothing
+    /// else uses: `offset + size <= memory_size`, and `mapped` (if any) must point to
+    /// `size` writable bytes that stay mapped until `backing.free` runs.
+    pub unsafe fn from_parts(
+        parts: AllocationParts,
+        owner: Vrc<dyn DeviceOwner>,
+        backing: Box<dyn AllocationBacking>,
+    ) -> Allocation {
+        Allocation {
+            parts,
+            owner,
+            backing: Some(backing),
+        }
+    }
+
+    /// The device memory, to bind a buffer or image to (at [`Allocation::offset`]).
+    pub fn memory(&self) -> vk::DeviceMemory {
+        self.parts.memory
+    }
+
+    /// Offset of the allocation inside [`Allocation::memory`].
+    pub fn offset(&self) -> u64 {
+        self.parts.offset
+    }
+
+    /// Size in bytes.
+    pub fn size(&self) -> u64 {
+        self.parts.size
+    }
+
+    /// Index of the memory type.
+    pub fn memory_type_index(&self) -> u32 {
+        self.parts.memory_type_index
+    }
+
+    /// Properties of the memory type.
+    pub fn properties(&self) -> vk::MemoryPropertyFlags {
+        self.parts.properties
+    }
+
+    /// Host address of the first byte, if mapped.
+    pub fn mapped_ptr(&self) -> Option<NonNull<u8>> {
+        self.parts.mapped
+    }
+
+    /// Whether host writes need a flush (and device writes an invalidate).
+    pub fn is_coherent(&self) -> bool {
+        self.parts
+            .properties
+            .contains(vk::MemoryPropertyFlags::HOST_COHERENT)
+    }
+
+    fn placement(&self) -> Placement {
+        Placement {
+            offset: self.parts.offset,
+            size: self.parts.size,
+            memory_size: self.parts.memory_size,
+        }
+    }
+
+    /// Checked pointer to `len` bytes at `offset`.
+    fn span(&self, offset: u64, len: u64) -> Result<*mut u8, MapError> {
+        let base = self.parts.mapped.ok_or(MapError::NotMapped)?;
+        check_range(self.parts.size, offset, len)?;
+        // The range fits in the allocation, whose mapping covers `size` bytes, so the
+        // offset fits in usize and the pointer stays inside the mapping.
+        let offset =
+            usize::try_from(offset).map_err(|_| MapError::Overflow { offset, size: len })?;
+        // SAFETY: offset + len <= size (checked above) and the mapping covers `size`
+        // bytes from `base` (from_parts' contract).
+        Ok(unsafe { base.as_ptr().add(offset) })
+    }
+
+    /// Write `value` at `offset` (flushed when the memory is not coherent).
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// a.write(0, &[0.5f32; 16])?; // a 4x4 matrix
+    /// # Ok(()) }
+    /// ```
+    pub fn write<T: bytemuck::NoUninit>(&mut self, offset: u64, value: &T) -> Result<(), MapError> {
+        let len = std::mem::size_of::<T>() as u64;
+        let dst = self.span(offset, len)?;
+        if dst.align_offset(std::mem::align_of::<T>()) == 0 {
+            // SAFETY: `dst` is valid for `len` bytes (span) and aligned for T.
+            unsafe { dst.cast::<T>().write(*value) };
+        } else {
+            // SAFETY: `dst` is valid for `len` bytes (span); write_unaligned needs no
+            // alignment and no reference to the destination is made.
+            unsafe { dst.cast::<T>().write_unaligned(*value) };
+        }
+        self.flush_if_needed(offset, len)
+    }
+
+    /// Write `values` starting at `offset` (flushed when the memory is not coherent).
+    pub fn write_slice<T: bytemuck::NoUninit>(
+        &mut self,
+        offset: u64,
+        values: &[T],
+    ) -> Result<(), MapError> {
+        let bytes: &[u8] = bytemuck::cast_slice(values);
+        let len = bytes.len() as u64;
+        let dst = self.span(offset, len)?;
+        // SAFETY: `dst` is valid for `len` bytes (span); a byte copy needs no
+        // alignment, and the mapping cannot overlap a Rust slice we hold.
+        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), dst, bytes.len()) };
+        self.flush_if_needed(offset, len)
+    }
+
+    /// Read `out.len()` values starting at `offset` (invalidated first when the memory
+    /// is not coherent).
+    pub fn read_slice<T: bytemuck::AnyBitPattern + bytemuck::NoUninit>(
+        &self,
+        offset: u64,
+        out: &mut [T],
+    ) -> Result<(), MapError> {
+        let len = std::mem::size_of_val(out) as u64;
+        let src = self.span(offset, len)?;
+        if !self.is_coherent() {
+            self.invalidate(offset, len)?;
+        }
+        let dst: &mut [u8] = bytemuck::cast_slice_mut(out);
+        // SAFETY: `src` is valid for `len` bytes (span), `dst` is exactly `len` bytes,
+        // and any bit pattern is a valid T.
+        unsafe { std::ptr::copy_nonoverlapping(src, dst.as_mut_ptr(), dst.len()) };
+        Ok(())
+    }
+
+    /// Read one value at `offset`.
+    pub fn read<T: bytemuck::AnyBitPattern + bytemuck::NoUninit>(
+        &self,
+        offset: u64,
+    ) -> Result<T, MapError> {
+        let mut out = [T::zeroed()];
+        self.read_slice(offset, &mut out)?;
+        Ok(out[0])
+    }
+
+    fn flush_if_needed(&self, offset: u64, len: u64) -> Result<(), MapError> {
+        if self.is_coherent() {
+            Ok(())
+        } else {
+            self.flush(offset, len)
+        }
+    }
+
+    fn mapped_range(
+        &self,
+        offset: u64,
+        len: u64,
+    ) -> Result<Option<vk::MappedMemoryRange<'static>>, MapError> {
+        if self.parts.mapped.is_none() {
+            return Err(MapError::NotMapped);
+        }
+        Ok(flush_range(
+            self.placement(),
+            self.parts.non_coherent_atom_size,
+            offset,
+            len,
+        )?
+        .map(|(start, size)| {
+            vk::MappedMemoryRange::default()
+                .memory(self.parts.memory)
+                .offset(start)
+                .size(size)
+        }))
+    }
+
+    /// Make host writes to `len` bytes at `offset` visible to the device. Needed only for
+    /// non-coherent memory (the writes above do it themselves); harmless otherwise.
+    pub fn flush(&self, offset: u64, len: u64) -> Result<(), MapError> {
+        if let Some(range) = self.mapped_range(offset, len)? {
+            // SAFETY: the range lies inside mapped memory of this device (flush_range
+            // keeps it inside the device memory, rounded to the atom size).
+            unsafe { self.owner.device().flush_mapped_memory_ranges(&[range]) }
+                .map_err(MapError::Vulkan)?;
+        }
+        Ok(())
+    }
+
+    /// Make device writes to `len` bytes at `offset` visible to the host. Needed only for
+    /// non-coherent memory (the reads above do it themselves); harmless otherwise.
+    pub fn invalidate(&self, offset: u64, len: u64) -> Result<(), MapError> {
+        if let Some(range) = self.mapped_range(offset, len)? {
+            // SAFETY: as in `flush`.
+            unsafe {
+                self.owner
+                    .device()
+                    .invalidate_mapped_memory_ranges(&[range])
+            }
+            .map_err(MapError::Vulkan)?;
+        }
+        Ok(())
+    }
+}
+
+impl Drop for Allocation {
+    fn drop(&mut self) {
+        if let Some(backing) = self.backing.take() {
+            backing.free();
+        }
+        // `owner` is dropped after this, so the device outlives the free.
+    }
+}
+
+/// Allocates device memory for buffers and images. The wrappers call it when a
+/// resource needs memory; a user's allocator plugs in by implementing it.
+pub trait Allocator: MaybeSendSync {
+    /// Allocate memory that satisfies `request`.
+    fn allocate(&self, request: &AllocationRequest<'_>) -> Result<Allocation, AllocError>;
+}
+
+/// The index of the first memory type allowed by `type_bits` that has all of
+/// `required` and, among those, prefers one with all of `preferred`.
+///
+/// ```
+/// use ash::vk;
+/// let mut props = vk::PhysicalDeviceMemoryProperties::default();
+/// props.memory_type_count = 2;
+/// props.memory_types[0].property_flags = vk::MemoryPropertyFlags::DEVICE_LOCAL;
+/// props.memory_types[1].property_flags = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
+/// let host = vk::MemoryPropertyFlags::HOST_VISIBLE;
+/// assert_eq!(tuff_runtime::memory::find_memory_type(&props, 0b11, host, host), Some(1));
+/// assert_eq!(tuff_runtime::memory::find_memory_type(&props, 0b01, host, host), None);
+/// ```
+pub fn find_memory_type(
+    props: &vk::PhysicalDeviceMemoryProperties,
+    type_bits: u32,
+    required: vk::MemoryPropertyFlags,
+    preferred: vk::MemoryPropertyFlags,
+) -> Option<u32> {
+    let count = (props.memory_type_count as usize).min(props.memory_types.len());
+    let candidates = || {
+        (0..count)
+            .filter(move |i| type_bits & (1u32 << i) != 0)
+            .filter(move |i| props.memory_types[*i].property_flags.contains(required))
+    };
+    candidates()
+        .find(|i| props.memory_types[*i].property_flags.contains(preferred))
+        .or_else(|| candidates().next())
+        .map(|i| i as u32)
+}
+
+/// The (required, preferred) property flags of a location.
+pub(crate) fn location_flags(
+    location: MemoryLocation,
+) -> (vk::MemoryPropertyFlags, vk::MemoryPropertyFlags) {
+    use vk::MemoryPropertyFlags as F;
+    match location {
+        MemoryLocation::DeviceLocal => (F::DEVICE_LOCAL, F::DEVICE_LOCAL),
+        MemoryLocation::Upload => (F::HOST_VISIBLE, F::HOST_VISIBLE | F::HOST_COHERENT),
+        MemoryLocation::Readback => (F::HOST_VISIBLE, F::HOST_VISIBLE | F::HOST_CACHED),
+    }
+}
+
+/// Requirements made safe to flush: for non-coherent memory the size and alignment
+/// are rounded up to the atom size, so that rounded flush ranges never reach into a
+/// neighbouring allocation.
+pub(crate) fn atom_aligned(
+    requirements: vk::MemoryRequirements,
+    atom: u64,
+) -> Result<vk::MemoryRequirements, AllocError> {
+    if atom == 0 || !atom.is_power_of_two() {
+        return Err(AllocError::InvalidRequirements(format!(
+            "nonCoherentAtomSize {atom} is not a power of two"
+        )));
+    }
+    let size = requirements
+        .size
+        .checked_next_multiple_of(atom)
+        .ok_or_else(|| {
+            AllocError::InvalidRequirements(format!(
+                "size {} overflows when rounded",
+                requirements.size
+            ))
+        })?;
+    Ok(vk::MemoryRequirements {
+        size,
+        alignment: requirements.alignment.max(atom),
+        memory_type_bits: requirements.memory_type_bits,
+    })
+}

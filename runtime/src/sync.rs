@@ -1,0 +1,186 @@
+//! Sharing and locking with one API in both threading modes.
+//!
+//! Without the `multi_thread` feature, [`Vrc`] is [`std::rc::Rc`] and [`Vutex`] a cell
+//! with a borrow flag: neither is `Send` nor `Sync`, and single-threaded code pays for
+//! no atomics. With it, [`Vrc`] is [`std::sync::Arc`] and [`Vutex`] a
+//! `parking_lot::Mutex`, both `Send + Sync` for `Send` contents.
+
+/// The reference-counted pointer the wrappers share parents with: `Rc`, or `Arc` with
+/// the `multi_thread` feature.
+///
+/// ```
+/// let device = tuff_runtime::Vrc::new(42);
+/// let child_keeps_parent = tuff_runtime::Vrc::clone(&device);
+/// assert_eq!(*child_keeps_parent, 42);
+/// ```
+#[cfg(not(feature = "multi_thread"))]
+pub type Vrc<T> = std::rc::Rc<T>;
+
+/// The reference-counted pointer the wrappers share parents with: `Rc`, or `Arc` with
+/// the `multi_thread` feature.
+///
+/// ```
+/// let device = tuff_runtime::Vrc::new(42);
+/// let child_keeps_parent = tuff_runtime::Vrc::clone(&device);
+/// assert_eq!(*child_keeps_parent, 42);
+/// ```
+#[cfg(feature = "multi_thread")]
+pub type Vrc<T> = std::sync::Arc<T>;
+
+/// Bound that is `Send + Sync` with the `multi_thread` feature and nothing without it,
+/// so trait objects shared through [`Vrc`] can cross threads exactly when `Vrc` can.
+#[cfg(feature = "multi_thread")]
+pub trait MaybeSendSync: Send + Sync {}
+#[cfg(feature = "multi_thread")]
+impl<T: Send + Sync + ?Sized> MaybeSendSync for T {}
+
+/// Bound that is `Send + Sync` with the `multi_thread` feature and nothing without it,
+/// so trait objects shared through [`Vrc`] can cross threads exactly when `Vrc` can.
+#[cfg(not(feature = "multi_thread"))]
+pub trait MaybeSendSync {}
+#[cfg(not(feature = "multi_thread"))]
+impl<T: ?Sized> MaybeSendSync for T {}
+
+/// Bound that is `Send` with the `multi_thread` feature and nothing without it.
+#[cfg(feature = "multi_thread")]
+pub trait MaybeSend: Send {}
+#[cfg(feature = "multi_thread")]
+impl<T: Send + ?Sized> MaybeSend for T {}
+
+/// Bound that is `Send` with the `multi_thread` feature and nothing without it.
+#[cfg(not(feature = "multi_thread"))]
+pub trait MaybeSend {}
+#[cfg(not(feature = "multi_thread"))]
+impl<T: ?Sized> MaybeSend for T {}
+
+/// A lock for externally synchronized Vulkan objects, with one API in both modes.
+///
+/// ```
+/// let pool = tuff_runtime::Vutex::new(Vec::<u32>::new());
+/// pool.lock().push(7);
+/// assert_eq!(pool.lock().len(), 1);
+/// ```
+pub struct Vutex<T> {
+    #[cfg(not(feature = "multi_thread"))]
+    cell: std::cell::RefCell<T>,
+    // Keeps the single-threaded lock off other threads even for `Send` contents.
+    #[cfg(not(feature = "multi_thread"))]
+    _not_send: std::marker::PhantomData<*const ()>,
+    #[cfg(feature = "multi_thread")]
+    mutex: parking_lot::Mutex<T>,
+}
+
+/// Exclusive access to the contents of a [`Vutex`], released when dropped.
+#[cfg(not(feature = "multi_thread"))]
+pub type VutexGuard<'a, T> = std::cell::RefMut<'a, T>;
+
+/// Exclusive access to the contents of a [`Vutex`], released when dropped.
+#[cfg(feature = "multi_thread")]
+pub type VutexGuard<'a, T> = parking_lot::MutexGuard<'a, T>;
+
+impl<T> Vutex<T> {
+    /// Wrap `value`.
+    pub fn new(value: T) -> Self {
+        Vutex {
+            #[cfg(not(feature = "multi_thread"))]
+            cell: std::cell::RefCell::new(value),
+            #[cfg(not(feature = "multi_thread"))]
+            _not_send: std::marker::PhantomData,
+            #[cfg(feature = "multi_thread")]
+            mutex: parking_lot::Mutex::new(value),
+        }
+    }
+
+    /// Lock it.
+    ///
+    /// # Panics
+    ///
+    /// Without `multi_thread`, when the same thread already holds the lock: that is a
+    /// bug that would deadlock with a real mutex.
+    pub fn lock(&self) -> VutexGuard<'_, T> {
+        #[cfg(not(feature = "multi_thread"))]
+        {
+            self.cell
+                .try_borrow_mut()
+                .expect("Vutex locked twice on one thread (this would deadlock with multi_thread)")
+        }
+        #[cfg(feature = "multi_thread")]
+        {
+            self.mutex.lock()
+        }
+    }
+
+    /// Lock it if no one holds it now.
+    pub fn try_lock(&self) -> Option<VutexGuard<'_, T>> {
+        #[cfg(not(feature = "multi_thread"))]
+        {
+            self.cell.try_borrow_mut().ok()
+        }
+        #[cfg(feature = "multi_thread")]
+        {
+            self.mutex.try_lock()
+        }
+    }
+
+    /// The contents, by unique access (no locking needed).
+    pub fn get_mut(&mut self) -> &mut T {
+        #[cfg(not(feature = "multi_thread"))]
+        {
+            self.cell.get_mut()
+        }
+        #[cfg(feature = "multi_thread")]
+        {
+            self.mutex.get_mut()
+        }
+    }
+
+    /// Unwrap the contents.
+    pub fn into_inner(self) -> T {
+        #[cfg(not(feature = "multi_thread"))]
+        {
+            self.cell.into_inner()
+        }
+        #[cfg(feature = "multi_thread")]
+        {
+            self.mutex.into_inner()
+        }
+    }
+}
+
+impl<T: std::fmt::Debug> std::fmt::Debug for Vutex<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.try_lock() {
+            Some(v) => f.debug_tuple("Vutex").field(&*v).finish(),
+            None => f.write_str("Vutex(<locked>)"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn try_lock_fails_while_locked() {
+        let v = Vutex::new(1);
+        let guard = v.lock();
+        assert!(v.try_lock().is_none());
+        drop(guard);
+        assert_eq!(*v.try_lock().unwrap(), 1);
+    }
+
+    #[cfg(not(feature = "multi_thread"))]
+    mod single_thread {
+        use super::super::*;
+        static_assertions::assert_not_impl_any!(Vutex<u32>: Send, Sync);
+        static_assertions::assert_not_impl_any!(Vrc<u32>: Send, Sync);
+    }
+
+    #[cfg(feature = "multi_thread")]
+    mod multi_thread {
+        use super::super::*;
+        static_assertions::assert_impl_all!(Vutex<u32>: Send, Sync);
+        static_assertions::assert_impl_all!(Vrc<Vutex<u32>>: Send, Sync);
+        static_assertions::assert_not_impl_any!(Vutex<std::rc::Rc<u32>>: Send, Sync);
+    }
+}
