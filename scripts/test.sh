@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Every check CI runs: formatting, clippy, and the whole test suite.
+# Every check CI runs: formatting, clippy, and the whole test suite, with the runtime
+# in both threading modes. Vulkan tests run on Mesa lavapipe with the Khronos
+# validation layer on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/install-deps.sh
@@ -7,4 +9,7 @@ cd "$(dirname "$0")/.."
 
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
+cargo clippy -p tuff-runtime -p tuff-tests --all-targets --features tuff-runtime/multi_thread -- -D warnings
 cargo test --workspace
+# The runtime again with Vrc = Arc and Vutex = a mutex.
+cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread

@@ -1,0 +1,223 @@
+//! A headless Vulkan device for tests and benchmarks: lavapipe on CI. With validation
+//! on, the Khronos validation layer is required and every message it emits is
+//! recorded, so a test can fail on any of them; a missing layer or device is a
+//! failure, never a skip.
+#![allow(dead_code)]
+
+use ash::vk;
+use std::ffi::{c_void, CStr};
+use std::sync::{Arc, Mutex};
+use tuff_runtime::{DeviceOwner, Vrc};
+
+const VALIDATION: &CStr = c"VK_LAYER_KHRONOS_validation";
+
+/// Messages the validation layer emitted.
+pub type Messages = Arc<Mutex<Vec<String>>>;
+
+/// The instance, and the debug messenger when validation is on.
+pub struct TestInstance {
+    pub entry: ash::Entry,
+    pub instance: ash::Instance,
+    debug: Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
+    // Boxed so the pointer handed to the callback stays put.
+    _user_data: Box<Messages>,
+}
+
+impl Drop for TestInstance {
+    fn drop(&mut self) {
+        // SAFETY: everything created from the instance is gone: devices hold an Vrc of
+        // this instance.
+        unsafe {
+            if let Some((utils, messenger)) = self.debug.take() {
+                utils.destroy_debug_utils_messenger(messenger, None);
+            }
+            self.instance.destroy_instance(None);
+        }
+    }
+}
+
+/// A device, owned the way the generated `Device` wrapper will own it.
+pub struct TestDevice {
+    pub instance: Vrc<TestInstance>,
+    pub physical: vk::PhysicalDevice,
+    pub device: ash::Device,
+    pub queue_family: u32,
+    pub atom: u64,
+    pub memory: vk::PhysicalDeviceMemoryProperties,
+    pub name: String,
+}
+
+impl Drop for TestDevice {
+    fn drop(&mut self) {
+        // SAFETY: allocators and allocations hold a Vrc of this device, so nothing
+        // created from it is alive any more.
+        unsafe {
+            let _ = self.device.device_wait_idle();
+            self.device.destroy_device(None);
+        }
+    }
+}
+
+impl DeviceOwner for TestDevice {
+    fn instance(&self) -> &ash::Instance {
+        &self.instance.instance
+    }
+    fn physical_device(&self) -> vk::PhysicalDevice {
+        self.physical
+    }
+    fn device(&self) -> &ash::Device {
+        &self.device
+    }
+    fn non_coherent_atom_size(&self) -> u64 {
+        self.atom
+    }
+}
+
+unsafe extern "system" fn on_message(
+    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+    _types: vk::DebugUtilsMessageTypeFlagsEXT,
+    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
+    user: *mut c_void,
+) -> vk::Bool32 {
+    // SAFETY: the layer passes valid callback data, and `user` is the boxed Messages
+    // of the TestInstance, alive as long as the messenger.
+    unsafe {
+        let text = if data.is_null() || (*data).p_message.is_null() {
+            "<no message>".to_owned()
+        } else {
+            CStr::from_ptr((*data).p_message)
+                .to_string_lossy()
+                .into_owned()
+        };
+        let messages = &*(user as *const Messages);
+        if let Ok(mut m) = messages.lock() {
+            m.push(format!("{severity:?}: {text}"));
+        }
+    }
+    vk::FALSE
+}
+
+/// Create an instance (with the validation layer when `validation`) and a device with
+/// one queue family that supports graphics. Panics with a clear message when the
+/// loader, the layer or a device is missing.
+pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
+    // SAFETY: loading the system Vulkan loader.
+    let entry = unsafe { ash::Entry::load() }
+        .expect("the Vulkan loader (libvulkan.so.1) is not installed: apt-get install libvulkan1");
+    let messages: Messages = Arc::new(Mutex::new(Vec::new()));
+    let user_data = Box::new(messages.clone());
+
+    let mut layers = Vec::new();
+    let mut extensions = Vec::new();
+    if validation {
+        // SAFETY: plain enumeration.
+        let available =
+            unsafe { entry.enumerate_instance_layer_properties() }.expect("layers enumerate");
+        assert!(
+            available
+                .iter()
+                .any(|l| l.layer_name_as_c_str().ok() == Some(VALIDATION)),
+            "VK_LAYER_KHRONOS_validation is not installed: apt-get install vulkan-validationlayers"
+        );
+        layers.push(VALIDATION.as_ptr());
+        extensions.push(ash::ext::debug_utils::NAME.as_ptr());
+    }
+    let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
+        .message_severity(
+            vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
+                | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
+        )
+        .message_type(
+            vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
+                | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
+        )
+        .pfn_user_callback(Some(on_message))
+        .user_data(&*user_data as *const Messages as *mut c_void);
+    let app = vk::ApplicationInfo::default()
+        .application_name(c"tuff-tests")
+        .api_version(vk::API_VERSION_1_3);
+    let mut info = vk::InstanceCreateInfo::default()
+        .application_info(&app)
+        .enabled_layer_names(&layers)
+        .enabled_extension_names(&extensions);
+    if validation {
+        // Also covers messages of vkCreateInstance and vkDestroyInstance.
+        info = info.push_next(&mut messenger_info);
+    }
+    // SAFETY: valid create info; the names outlive the call.
+    let instance = unsafe { entry.create_instance(&info, None) }.expect("vkCreateInstance");
+    let debug = validation.then(|| {
+        let utils = ash::ext::debug_utils::Instance::new(&entry, &instance);
+        // SAFETY: valid create info, the callback and user data outlive the messenger.
+        let messenger = unsafe { utils.create_debug_utils_messenger(&messenger_info, None) }
+            .expect("vkCreateDebugUtilsMessengerEXT");
+        (utils, messenger)
+    });
+    let instance = Vrc::new(TestInstance {
+        entry,
+        instance,
+        debug,
+        _user_data: user_data,
+    });
+
+    // SAFETY: plain queries on a live instance.
+    let physicals =
+        unsafe { instance.instance.enumerate_physical_devices() }.expect("devices enumerate");
+    let physical = *physicals.first().expect(
+        "no Vulkan device found: install Mesa lavapipe (apt-get install mesa-vulkan-drivers)",
+    );
+    // SAFETY: as above.
+    let (props, memory, families) = unsafe {
+        (
+            instance.instance.get_physical_device_properties(physical),
+            instance
+                .instance
+                .get_physical_device_memory_properties(physical),
+            instance
+                .instance
+                .get_physical_device_queue_family_properties(physical),
+        )
+    };
+    let queue_family = families
+        .iter()
+        .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
+        .expect("the device has no graphics queue") as u32;
+    let priorities = [1.0];
+    let queues = [vk::DeviceQueueCreateInfo::default()
+        .queue_family_index(queue_family)
+        .queue_priorities(&priorities)];
+    let device_info = vk::DeviceCreateInfo::default().queue_create_infos(&queues);
+    // SAFETY: valid create info for this physical device.
+    let device = unsafe {
+        instance
+            .instance
+            .create_device(physical, &device_info, None)
+    }
+    .expect("vkCreateDevice");
+    let name = props
+        .device_name_as_c_str()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let owner = Vrc::new(TestDevice {
+        instance,
+        physical,
+        device,
+        queue_family,
+        atom: props.limits.non_coherent_atom_size,
+        memory,
+        name,
+    });
+    (owner, messages)
+}
+
+/// Fail with every message the validation layer emitted.
+pub fn assert_silent(messages: &Messages) {
+    let m = messages.lock().expect("messages lock");
+    assert!(
+        m.is_empty(),
+        "the validation layer reported {} message(s):\n{}",
+        m.len(),
+        m.join("\n")
+    );
+}
