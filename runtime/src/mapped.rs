@@ -66,6 +66,7 @@ pub struct Placement {
 /// assert!(matches!(check_range(256, 193, 64), Err(MapError::OutOfRange { .. })));
 /// assert!(matches!(check_range(256, u64::MAX, 2), Err(MapError::Overflow { .. })));
 /// ```
+#[inline]
 pub fn check_range(allocation_size: u64, offset: u64, size: u64) -> Result<u64, MapError> {
     let end = offset
         .checked_add(size)

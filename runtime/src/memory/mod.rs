@@ -149,6 +149,14 @@ pub struct AllocationParts {
 /// A piece of device memory. It frees itself (through its allocator) when dropped, and
 /// keeps its allocator and device alive until then.
 pub struct Allocation {
+    // The hot path of a write reads only these three fields.
+    /// The mapping's first byte, or a dangling pointer (never written through) when
+    /// the allocation is not mapped.
+    base: NonNull<u8>,
+    /// Bytes reachable through `base`: `size`, or 0 when not mapped.
+    mapped_len: u64,
+    /// Host writes must be flushed (mapped, non-coherent memory).
+    needs_flush: bool,
     parts: AllocationParts,
     owner: Vrc<dyn DeviceOwner>,
     backing: Option<Box<dyn AllocationBacking>>,
@@ -182,7 +190,18 @@ impl Allocation {
         owner: Vrc<dyn DeviceOwner>,
         backing: Box<dyn AllocationBacking>,
     ) -> Allocation {
+        let mapped_len = if parts.mapped.is_some() {
+            parts.size
+        } else {
+            0
+        };
+        let coherent = parts
+            .properties
+            .contains(vk::MemoryPropertyFlags::HOST_COHERENT);
         Allocation {
+            base: parts.mapped.unwrap_or(NonNull::dangling()),
+            mapped_len,
+            needs_flush: parts.mapped.is_some() && !coherent,
             parts,
             owner,
             backing: Some(backing),
@@ -220,6 +239,7 @@ impl Allocation {
     }
 
     /// Whether host writes need a flush (and device writes an invalidate).
+    #[inline]
     pub fn is_coherent(&self) -> bool {
         self.parts
             .properties
@@ -235,16 +255,38 @@ impl Allocation {
     }
 
     /// Checked pointer to `len` bytes at `offset`.
+    #[inline]
     fn span(&self, offset: u64, len: u64) -> Result<*mut u8, MapError> {
-        let base = self.parts.mapped.ok_or(MapError::NotMapped)?;
-        check_range(self.parts.size, offset, len)?;
-        // The range fits in the allocation, whose mapping covers `size` bytes, so the
-        // offset fits in usize and the pointer stays inside the mapping.
-        let offset =
-            usize::try_from(offset).map_err(|_| MapError::Overflow { offset, size: len })?;
-        // SAFETY: offset + len <= size (checked above) and the mapping covers `size`
-        // bytes from `base` (from_parts' contract).
-        Ok(unsafe { base.as_ptr().add(offset) })
+        // One subtraction and one comparison. An unmapped allocation has
+        // mapped_len 0, so only an empty access (which touches no byte) passes.
+        match self.mapped_len.checked_sub(len) {
+            Some(max) if offset <= max => {
+                // SAFETY: offset + len <= mapped_len. When mapped, the mapping covers
+                // `size` bytes from `base` (from_parts' contract), so `offset` fits in
+                // the address space (usize) and the pointer stays inside the mapping;
+                // when not, offset and len are 0 and the dangling pointer is only
+                // used for an access of no bytes.
+                Ok(unsafe { self.base.as_ptr().add(offset as usize) })
+            }
+            _ => Err(self.span_error(offset, len)),
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn span_error(&self, offset: u64, len: u64) -> MapError {
+        if self.parts.mapped.is_none() {
+            return MapError::NotMapped;
+        }
+        match check_range(self.parts.size, offset, len) {
+            Err(e) => e,
+            // Only an empty access to an empty allocation gets here.
+            Ok(_) => MapError::OutOfRange {
+                offset,
+                size: len,
+                allocation_size: self.parts.size,
+            },
+        }
     }
 
     /// Write `value` at `offset` (flushed when the memory is not coherent).
@@ -254,10 +296,11 @@ impl Allocation {
     /// a.write(0, &[0.5f32; 16])?; // a 4x4 matrix
     /// # Ok(()) }
     /// ```
+    #[inline]
     pub fn write<T: bytemuck::NoUninit>(&mut self, offset: u64, value: &T) -> Result<(), MapError> {
         let len = std::mem::size_of::<T>() as u64;
         let dst = self.span(offset, len)?;
-        if dst.align_offset(std::mem::align_of::<T>()) == 0 {
+        if dst.cast::<T>().is_aligned() {
             // SAFETY: `dst` is valid for `len` bytes (span) and aligned for T.
             unsafe { dst.cast::<T>().write(*value) };
         } else {
@@ -269,6 +312,7 @@ impl Allocation {
     }
 
     /// Write `values` starting at `offset` (flushed when the memory is not coherent).
+    #[inline]
     pub fn write_slice<T: bytemuck::NoUninit>(
         &mut self,
         offset: u64,
@@ -292,7 +336,7 @@ impl Allocation {
     ) -> Result<(), MapError> {
         let len = std::mem::size_of_val(out) as u64;
         let src = self.span(offset, len)?;
-        if !self.is_coherent() {
+        if self.needs_flush {
             self.invalidate(offset, len)?;
         }
         let dst: &mut [u8] = bytemuck::cast_slice_mut(out);
@@ -312,12 +356,19 @@ impl Allocation {
         Ok(out[0])
     }
 
+    #[inline]
     fn flush_if_needed(&self, offset: u64, len: u64) -> Result<(), MapError> {
-        if self.is_coherent() {
-            Ok(())
+        if self.needs_flush {
+            self.flush_written(offset, len)
         } else {
-            self.flush(offset, len)
+            Ok(())
         }
+    }
+
+    // Kept out of line so the coherent path of every write stays a few instructions.
+    #[inline(never)]
+    fn flush_written(&self, offset: u64, len: u64) -> Result<(), MapError> {
+        self.flush(offset, len)
     }
 
     fn mapped_range(
