@@ -3,6 +3,12 @@
 //! without ever leaving the device memory that backs the allocation.
 
 /// Why a mapped-memory access was refused.
+///
+/// ```
+/// use tuff_runtime::mapped::{check_range, MapError};
+/// let err = check_range(64, 60, 8).unwrap_err();
+/// assert_eq!(err, MapError::OutOfRange { offset: 60, size: 8, allocation_size: 64 });
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
 pub enum MapError {
     /// The allocation is not host-visible, so it has no mapping.
@@ -47,6 +53,11 @@ pub enum MapError {
 }
 
 /// Where an allocation lies inside its device memory.
+///
+/// ```
+/// let p = tuff_runtime::mapped::Placement { offset: 4096, size: 256, memory_size: 1 << 20 };
+/// assert_eq!(tuff_runtime::mapped::flush_range(p, 64, 0, 256), Ok(Some((4096, 256))));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Placement {
     /// Offset of the allocation inside the device memory.

@@ -36,6 +36,21 @@ use std::ptr::NonNull;
 /// What allocators need of the device. The generated `Device` wrapper implements it;
 /// its `Drop` destroys the device, which therefore outlives every allocator and
 /// allocation that holds the owner.
+///
+/// ```
+/// use ash::vk;
+/// struct MyDevice { instance: ash::Instance, physical: vk::PhysicalDevice, device: ash::Device, atom: u64 }
+/// impl tuff_runtime::DeviceOwner for MyDevice {
+///     fn instance(&self) -> &ash::Instance { &self.instance }
+///     fn physical_device(&self) -> vk::PhysicalDevice { self.physical }
+///     fn device(&self) -> &ash::Device { &self.device }
+///     fn non_coherent_atom_size(&self) -> u64 { self.atom }
+/// }
+/// impl Drop for MyDevice {
+///     // SAFETY: runs after every allocator and allocation holding this owner is gone.
+///     fn drop(&mut self) { unsafe { self.device.destroy_device(None) } }
+/// }
+/// ```
 pub trait DeviceOwner: MaybeSendSync + 'static {
     /// The instance the device was created from.
     fn instance(&self) -> &ash::Instance;
@@ -48,6 +63,13 @@ pub trait DeviceOwner: MaybeSendSync + 'static {
 }
 
 /// Where the memory should live, as the resource uses it.
+///
+/// ```
+/// use tuff_runtime::MemoryLocation;
+/// let vertex_staging = MemoryLocation::Upload;
+/// let screenshot = MemoryLocation::Readback;
+/// assert_ne!(vertex_staging, screenshot);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum MemoryLocation {
     /// Only the GPU touches it: device-local, not mapped.
@@ -91,6 +113,12 @@ impl AllocationRequest<'static> {
 }
 
 /// Why an allocation failed.
+///
+/// ```
+/// use tuff_runtime::{AllocError, MemoryLocation};
+/// let e = AllocError::NoSuitableMemoryType { memory_type_bits: 0, location: MemoryLocation::Upload };
+/// assert!(e.to_string().contains("no memory type"));
+/// ```
 #[derive(Debug, thiserror::Error)]
 pub enum AllocError {
     /// No memory type allowed by the requirements has the needed properties.
@@ -119,6 +147,17 @@ pub enum AllocError {
 
 /// Frees an allocation's memory. Each allocator gives its allocations a backing; the
 /// backing must keep whatever frees the memory (and the device) alive.
+///
+/// ```
+/// use tuff_runtime::{AllocationBacking, DeviceOwner, Vrc};
+/// struct OwnMemory { owner: Vrc<dyn DeviceOwner>, memory: ash::vk::DeviceMemory }
+/// impl AllocationBacking for OwnMemory {
+///     fn free(self: Box<Self>) {
+///         // SAFETY: the memory is this backing's alone; the owner keeps the device alive.
+///         unsafe { self.owner.device().free_memory(self.memory, None) }
+///     }
+/// }
+/// ```
 pub trait AllocationBacking: MaybeSend {
     /// Return the memory to its allocator. Called once, from the allocation's `Drop`.
     fn free(self: Box<Self>);
@@ -126,6 +165,21 @@ pub trait AllocationBacking: MaybeSend {
 
 /// The facts of an allocation, for allocators building one with
 /// [`Allocation::from_parts`].
+///
+/// ```
+/// use ash::vk;
+/// let parts = tuff_runtime::AllocationParts {
+///     memory: vk::DeviceMemory::null(),
+///     offset: 256,
+///     size: 1024,
+///     memory_size: 1 << 20,
+///     memory_type_index: 0,
+///     properties: vk::MemoryPropertyFlags::DEVICE_LOCAL,
+///     mapped: None,
+///     non_coherent_atom_size: 64,
+/// };
+/// assert!(parts.offset + parts.size <= parts.memory_size);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct AllocationParts {
     /// The device memory the allocation lies in.
@@ -148,6 +202,19 @@ pub struct AllocationParts {
 
 /// A piece of device memory. It frees itself (through its allocator) when dropped, and
 /// keeps its allocator and device alive until then.
+///
+/// ```no_run
+/// # fn demo(device: &ash::Device, buffer: ash::vk::Buffer, allocator: &dyn tuff_runtime::Allocator) -> Result<(), Box<dyn std::error::Error>> {
+/// use tuff_runtime::{AllocationRequest, MemoryLocation};
+/// // SAFETY: `buffer` is a live, unbound buffer of `device`.
+/// let requirements = unsafe { device.get_buffer_memory_requirements(buffer) };
+/// let mut allocation = allocator.allocate(&AllocationRequest::new(requirements, MemoryLocation::Upload))?;
+/// // SAFETY: the allocation satisfies the buffer's requirements.
+/// unsafe { device.bind_buffer_memory(buffer, allocation.memory(), allocation.offset())? };
+/// allocation.write_slice(0, &[0u16, 1, 2])?;
+/// assert_eq!(allocation.read::<u16>(2)?, 1);
+/// # Ok(()) }
+/// ```
 pub struct Allocation {
     // The hot path of a write reads only these three fields.
     /// The mapping's first byte, or a dangling pointer (never written through) when
@@ -432,6 +499,19 @@ impl Drop for Allocation {
 
 /// Allocates device memory for buffers and images. The wrappers call it when a
 /// resource needs memory; a user's allocator plugs in by implementing it.
+///
+/// ```
+/// use std::sync::atomic::{AtomicUsize, Ordering};
+/// use tuff_runtime::{AllocError, Allocation, AllocationRequest, Allocator};
+/// /// Counts requests and hands them to another allocator.
+/// struct Counting<A> { inner: A, count: AtomicUsize }
+/// impl<A: Allocator> Allocator for Counting<A> {
+///     fn allocate(&self, request: &AllocationRequest<'_>) -> Result<Allocation, AllocError> {
+///         self.count.fetch_add(1, Ordering::Relaxed);
+///         self.inner.allocate(request)
+///     }
+/// }
+/// ```
 pub trait Allocator: MaybeSendSync {
     /// Allocate memory that satisfies `request`.
     fn allocate(&self, request: &AllocationRequest<'_>) -> Result<Allocation, AllocError>;
