@@ -169,19 +169,44 @@ fn convert_member(m: vk::TypeMemberDefinition) -> Field {
             _ => {}
         }
     }
-    let mut field = declaration(&m.code, &type_name, &name);
-    field.name = name;
-    field.type_name = type_name;
-    field.len = m.len;
-    field.altlen = m.altlen;
-    field.optional = m.optional;
-    field.externsync = m.externsync;
-    field.noautovalidity = m.noautovalidity.as_deref() == Some("true");
-    field.selector = m.selector;
-    field.selection = m.selection;
-    field.values = m.values;
-    field.deprecated = m.deprecated;
-    field
+    let shared = SharedAttrs {
+        len: m.len,
+        altlen: m.altlen,
+        optional: m.optional,
+        externsync: m.externsync,
+        noautovalidity: m.noautovalidity,
+    };
+    Field {
+        selector: m.selector,
+        selection: m.selection,
+        values: m.values,
+        deprecated: m.deprecated,
+        ..field(&m.code, type_name, name, shared)
+    }
+}
+
+/// The attributes struct members and command parameters have in common.
+struct SharedAttrs {
+    len: Option<String>,
+    altlen: Option<String>,
+    optional: Option<String>,
+    externsync: Option<String>,
+    noautovalidity: Option<String>,
+}
+
+/// A field from its C declaration, names and shared attributes.
+fn field(code: &str, type_name: String, name: String, a: SharedAttrs) -> Field {
+    let decl = declaration(code, &type_name, &name);
+    Field {
+        name,
+        type_name,
+        len: a.len,
+        altlen: a.altlen,
+        optional: a.optional,
+        externsync: a.externsync,
+        noautovalidity: a.noautovalidity.as_deref() == Some("true"),
+        ..decl
+    }
 }
 
 /// The `const`, pointer and array parts of a C declaration such as
@@ -221,16 +246,15 @@ fn convert_command(c: vk::Command) -> Option<CommandDef> {
                 .into_iter()
                 .filter(|p| is_vulkan_api(p.api.as_deref()))
                 .map(|p| {
-                    let type_name = p.definition.type_name.clone().unwrap_or_default();
-                    let mut field = declaration(&p.definition.code, &type_name, &p.definition.name);
-                    field.name = p.definition.name;
-                    field.type_name = type_name;
-                    field.len = p.len;
-                    field.altlen = p.altlen;
-                    field.optional = p.optional;
-                    field.externsync = p.externsync;
-                    field.noautovalidity = p.noautovalidity.as_deref() == Some("true");
-                    field
+                    let shared = SharedAttrs {
+                        len: p.len,
+                        altlen: p.altlen,
+                        optional: p.optional,
+                        externsync: p.externsync,
+                        noautovalidity: p.noautovalidity,
+                    };
+                    let type_name = p.definition.type_name.unwrap_or_default();
+                    field(&p.definition.code, type_name, p.definition.name, shared)
                 })
                 .collect();
             Some(CommandDef {
