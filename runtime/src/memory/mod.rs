@@ -222,6 +222,10 @@ pub struct Allocation {
     base: NonNull<u8>,
     /// Bytes reachable through `base`: `size`, or 0 when not mapped.
     mapped_len: u64,
+    /// `mapped_len` where a write needs nothing after the copy (coherent memory),
+    /// else 0, so that the fast path of `write` is a single comparison and every
+    /// other case (unmapped, out of range, needs a flush) takes the slow path.
+    fast_len: u64,
     /// Host writes must be flushed (mapped, non-coherent memory).
     needs_flush: bool,
     parts: AllocationParts,
@@ -268,6 +272,7 @@ impl Allocation {
         Allocation {
             base: parts.mapped.unwrap_or(NonNull::dangling()),
             mapped_len,
+            fast_len: if coherent { mapped_len } else { 0 },
             needs_flush: parts.mapped.is_some() && !coherent,
             parts,
             owner,
@@ -366,15 +371,35 @@ impl Allocation {
     #[inline]
     pub fn write<T: bytemuck::NoUninit>(&mut self, offset: u64, value: &T) -> Result<(), MapError> {
         let len = std::mem::size_of::<T>() as u64;
-        let dst = self.span(offset, len)?;
-        if dst.cast::<T>().is_aligned() {
-            // SAFETY: `dst` is valid for `len` bytes (span) and aligned for T.
-            unsafe { dst.cast::<T>().write(*value) };
+        // One comparison: offset + len <= fast_len, written so that it cannot
+        // overflow (saturating_sub is branch-free). Zero-sized values, and every case
+        // that needs more than a copy, take the slow path with its full checks.
+        if len != 0 && offset < self.fast_len.saturating_sub(len - 1) {
+            // SAFETY: offset + len <= fast_len <= size, inside the mapping (as in
+            // `span`); both store kinds write without making a reference.
+            unsafe {
+                let dst = self.base.as_ptr().add(offset as usize).cast::<T>();
+                if dst.is_aligned() {
+                    dst.write(*value);
+                } else {
+                    dst.write_unaligned(*value);
+                }
+            }
+            Ok(())
         } else {
-            // SAFETY: `dst` is valid for `len` bytes (span); write_unaligned needs no
-            // alignment and no reference to the destination is made.
-            unsafe { dst.cast::<T>().write_unaligned(*value) };
+            self.write_bytes_slow(offset, bytemuck::bytes_of(value))
         }
+    }
+
+    /// Every write that is not an in-range write to coherent memory: checks fully,
+    /// copies, flushes.
+    #[inline(never)]
+    fn write_bytes_slow(&mut self, offset: u64, bytes: &[u8]) -> Result<(), MapError> {
+        let len = bytes.len() as u64;
+        let dst = self.span(offset, len)?;
+        // SAFETY: `dst` is valid for `len` bytes (span); a byte copy needs no
+        // alignment, and the mapping cannot overlap a Rust slice we hold.
+        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), dst, bytes.len()) };
         self.flush_if_needed(offset, len)
     }
 
