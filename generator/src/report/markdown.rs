@@ -76,6 +76,16 @@ pub(super) fn render(r: &Report) -> String {
              tuff does not emit drop out:\n"
         );
         table(&mut s, by_key);
+        let _ = writeln!(
+            s,
+            "\nOf the usage rules of this stricter count, {} belong to SPIR-V and built-in \
+             entities; commands and structs alone have {}. These two readings explain \
+             the difference between the first table and counts made from the per-rule \
+             keys: the first counts every rule of an emitted item, including rules that \
+             only apply when an extension tuff does not emit is enabled.",
+            r.emitted_non_items_by_key,
+            by_key.counts[2].iter().sum::<usize>() - r.emitted_non_items_by_key
+        );
     }
     let _ = writeln!(s, "\n## Whole registry\n");
     table(&mut s, &r.registry);

@@ -82,6 +82,9 @@ pub struct Report<'a> {
     pub emitted_by_key: Option<Table>,
     /// Emitted rules of entities that are not registry items (SPIR-V, built-ins).
     pub emitted_non_items: usize,
+    /// Of those, the ones whose validusage.json key holds (counted in
+    /// `emitted_by_key`).
+    pub emitted_non_items_by_key: usize,
     /// Derived implicit rules of items validusage.json does not list.
     pub unlisted_derived: usize,
     /// The validity pass's result.
@@ -102,6 +105,7 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         registry: Table::default(),
         emitted_by_key: None,
         emitted_non_items: 0,
+        emitted_non_items_by_key: 0,
         unlisted_derived: 0,
         validity,
     };
@@ -118,13 +122,14 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         }
         if rule.emitted && counts_for_registry {
             report.emitted.add(rule.category, &settlement);
-            if !model.types.contains_key(&rule.item) && !model.commands.contains_key(&rule.item) {
-                report.emitted_non_items += 1;
-            }
+            let non_item =
+                !model.types.contains_key(&rule.item) && !model.commands.contains_key(&rule.item);
+            report.emitted_non_items += usize::from(non_item);
             if let Some(holds) = rule.key_holds {
                 let table = report.emitted_by_key.get_or_insert_with(Table::default);
                 if holds {
                     table.add(rule.category, &settlement);
+                    report.emitted_non_items_by_key += usize::from(non_item);
                 }
             }
         }
