@@ -385,3 +385,69 @@ fn the_harness_hears_the_validation_layer() {
         "expected a leak report, got {m:?}"
     );
 }
+
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+struct Align16([f32; 4]);
+
+#[repr(C, align(64))]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+struct Align64([u8; 64]);
+
+/// Write `value` at every offset in `offsets` (aligned and not), read it back, and
+/// check the write that ends exactly at the allocation's end and the one a byte past.
+fn typed_round_trip<T>(a: &mut Allocation, value: T, offsets: &[u64])
+where
+    T: bytemuck::Pod + PartialEq + std::fmt::Debug,
+{
+    let size = std::mem::size_of::<T>() as u64;
+    for &offset in offsets {
+        a.write(offset, &value).expect("in range");
+        assert_eq!(
+            a.read::<T>(offset).expect("in range"),
+            value,
+            "at offset {offset}"
+        );
+    }
+    let last = a.size() - size;
+    a.write(last, &value)
+        .expect("a write ending exactly at the end fits");
+    assert_eq!(a.read::<T>(last).expect("in range"), value);
+    assert!(matches!(
+        a.write(last + 1, &value),
+        Err(MapError::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        a.read::<T>(last + 1),
+        Err(MapError::OutOfRange { .. })
+    ));
+}
+
+#[test]
+fn typed_access_for_alignments_1_4_16_64() {
+    let (dev, messages) = device(true);
+    for allocator in [
+        Box::new(NaiveAllocator::new(dev.clone())) as Box<dyn Allocator>,
+        Box::new(GpuAllocator::new(dev.clone()).expect("gpu-allocator")),
+    ] {
+        let mut r = create(&dev, allocator.as_ref(), 4096, MemoryLocation::Upload);
+        let a = &mut r.allocation;
+        typed_round_trip(a, 0xA5u8, &[0, 1, 63]);
+        typed_round_trip(a, 0xDEAD_BEEFu32, &[0, 4, 1, 2, 3]);
+        typed_round_trip(a, Align16([1.0, 2.0, 3.0, 4.0]), &[0, 16, 1, 8, 24]);
+        typed_round_trip(
+            a,
+            Align64(std::array::from_fn(|i| i as u8)),
+            &[0, 64, 1, 32, 100],
+        );
+        // Slices of over-aligned values, at an unaligned offset.
+        let values = [Align16([5.0; 4]), Align16([6.0; 4]), Align16([7.0; 4])];
+        a.write_slice(3, &values).expect("in range");
+        let mut back = [Align16([0.0; 4]); 3];
+        a.read_slice(3, &mut back).expect("in range");
+        assert_eq!(back, values);
+        destroy(&dev, r);
+    }
+    drop(dev);
+    assert_silent(&messages);
+}

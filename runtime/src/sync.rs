@@ -29,6 +29,11 @@ pub type Vrc<T> = std::sync::Arc<T>;
 
 /// Bound that is `Send + Sync` with the `multi_thread` feature and nothing without it,
 /// so trait objects shared through [`Vrc`] can cross threads exactly when `Vrc` can.
+///
+/// ```
+/// fn share<T: tuff_runtime::MaybeSendSync + ?Sized>(_: &tuff_runtime::Vrc<T>) {}
+/// share(&tuff_runtime::Vrc::new(5u8));
+/// ```
 #[cfg(feature = "multi_thread")]
 pub trait MaybeSendSync: Send + Sync {}
 #[cfg(feature = "multi_thread")]
@@ -36,18 +41,33 @@ impl<T: Send + Sync + ?Sized> MaybeSendSync for T {}
 
 /// Bound that is `Send + Sync` with the `multi_thread` feature and nothing without it,
 /// so trait objects shared through [`Vrc`] can cross threads exactly when `Vrc` can.
+///
+/// ```
+/// fn share<T: tuff_runtime::MaybeSendSync + ?Sized>(_: &tuff_runtime::Vrc<T>) {}
+/// share(&tuff_runtime::Vrc::new(5u8));
+/// ```
 #[cfg(not(feature = "multi_thread"))]
 pub trait MaybeSendSync {}
 #[cfg(not(feature = "multi_thread"))]
 impl<T: ?Sized> MaybeSendSync for T {}
 
 /// Bound that is `Send` with the `multi_thread` feature and nothing without it.
+///
+/// ```
+/// fn hand_over<T: tuff_runtime::MaybeSend>(_: T) {}
+/// hand_over(vec![1u32]);
+/// ```
 #[cfg(feature = "multi_thread")]
 pub trait MaybeSend: Send {}
 #[cfg(feature = "multi_thread")]
 impl<T: Send + ?Sized> MaybeSend for T {}
 
 /// Bound that is `Send` with the `multi_thread` feature and nothing without it.
+///
+/// ```
+/// fn hand_over<T: tuff_runtime::MaybeSend>(_: T) {}
+/// hand_over(vec![1u32]);
+/// ```
 #[cfg(not(feature = "multi_thread"))]
 pub trait MaybeSend {}
 #[cfg(not(feature = "multi_thread"))]
@@ -71,15 +91,32 @@ pub struct Vutex<T> {
 }
 
 /// Exclusive access to the contents of a [`Vutex`], released when dropped.
+///
+/// ```
+/// let v = tuff_runtime::Vutex::new(String::new());
+/// let mut guard: tuff_runtime::VutexGuard<'_, String> = v.lock();
+/// guard.push('x');
+/// ```
 #[cfg(not(feature = "multi_thread"))]
 pub type VutexGuard<'a, T> = std::cell::RefMut<'a, T>;
 
 /// Exclusive access to the contents of a [`Vutex`], released when dropped.
+///
+/// ```
+/// let v = tuff_runtime::Vutex::new(String::new());
+/// let mut guard: tuff_runtime::VutexGuard<'_, String> = v.lock();
+/// guard.push('x');
+/// ```
 #[cfg(feature = "multi_thread")]
 pub type VutexGuard<'a, T> = parking_lot::MutexGuard<'a, T>;
 
 impl<T> Vutex<T> {
     /// Wrap `value`.
+    ///
+    /// ```
+    /// let queue = tuff_runtime::Vutex::new("a queue");
+    /// assert_eq!(*queue.lock(), "a queue");
+    /// ```
     pub fn new(value: T) -> Self {
         Vutex {
             #[cfg(not(feature = "multi_thread"))]
@@ -97,6 +134,12 @@ impl<T> Vutex<T> {
     ///
     /// Without `multi_thread`, when the same thread already holds the lock: that is a
     /// bug that would deadlock with a real mutex.
+    ///
+    /// ```
+    /// let count = tuff_runtime::Vutex::new(0);
+    /// *count.lock() += 1;
+    /// assert_eq!(*count.lock(), 1);
+    /// ```
     pub fn lock(&self) -> VutexGuard<'_, T> {
         #[cfg(not(feature = "multi_thread"))]
         {
@@ -111,6 +154,14 @@ impl<T> Vutex<T> {
     }
 
     /// Lock it if no one holds it now.
+    ///
+    /// ```
+    /// let v = tuff_runtime::Vutex::new(1);
+    /// let held = v.lock();
+    /// assert!(v.try_lock().is_none());
+    /// drop(held);
+    /// assert!(v.try_lock().is_some());
+    /// ```
     pub fn try_lock(&self) -> Option<VutexGuard<'_, T>> {
         #[cfg(not(feature = "multi_thread"))]
         {
@@ -123,6 +174,12 @@ impl<T> Vutex<T> {
     }
 
     /// The contents, by unique access (no locking needed).
+    ///
+    /// ```
+    /// let mut v = tuff_runtime::Vutex::new(1);
+    /// *v.get_mut() = 2;
+    /// assert_eq!(v.into_inner(), 2);
+    /// ```
     pub fn get_mut(&mut self) -> &mut T {
         #[cfg(not(feature = "multi_thread"))]
         {
@@ -135,6 +192,10 @@ impl<T> Vutex<T> {
     }
 
     /// Unwrap the contents.
+    ///
+    /// ```
+    /// assert_eq!(tuff_runtime::Vutex::new(vec![1]).into_inner(), [1]);
+    /// ```
     pub fn into_inner(self) -> T {
         #[cfg(not(feature = "multi_thread"))]
         {

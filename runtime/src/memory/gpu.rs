@@ -35,6 +35,12 @@ struct Shared {
 
 impl GpuAllocator {
     /// An allocator for `owner`'s device.
+    ///
+    /// ```no_run
+    /// # fn demo(owner: tuff_runtime::Vrc<dyn tuff_runtime::DeviceOwner>) -> Result<(), tuff_runtime::AllocError> {
+    /// let allocator = tuff_runtime::GpuAllocator::new(owner)?;
+    /// # drop(allocator); Ok(()) }
+    /// ```
     pub fn new(owner: Vrc<dyn DeviceOwner>) -> Result<Self, AllocError> {
         let allocator = ga::Allocator::new(&ga::AllocatorCreateDesc {
             instance: owner.instance().clone(),

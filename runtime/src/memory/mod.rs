@@ -249,7 +249,16 @@ impl std::fmt::Debug for Allocation {
 }
 
 impl Allocation {
-    /// Assemble an allocation. This is how a custom [`crate::Allocator`] returns memory.
+    /// Assemble an allocation. This is how a custom [`crate::Allocator`] returns memory
+    /// (`tests/runtime_memory.rs` in the repository has a complete bump allocator).
+    ///
+    /// ```no_run
+    /// # fn demo(owner: tuff_runtime::Vrc<dyn tuff_runtime::DeviceOwner>, parts: tuff_runtime::AllocationParts, backing: Box<dyn tuff_runtime::AllocationBacking>) {
+    /// // SAFETY: `parts` describes memory of `owner`'s device that only this allocation
+    /// // uses, and `backing` frees it.
+    /// let allocation = unsafe { tuff_runtime::Allocation::from_parts(parts, owner, backing) };
+    /// # drop(allocation); }
+    /// ```
     ///
     /// # Safety
     ///
@@ -281,36 +290,87 @@ impl Allocation {
     }
 
     /// The device memory, to bind a buffer or image to (at [`Allocation::offset`]).
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// let (memory, offset) = (a.memory(), a.offset());
+    /// # let _ = (memory, offset);
+    /// # Ok(()) }
+    /// ```
     pub fn memory(&self) -> vk::DeviceMemory {
         self.parts.memory
     }
 
     /// Offset of the allocation inside [`Allocation::memory`].
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// assert_eq!(a.offset() % 16, 0, "suballocations honour the requested alignment");
+    /// # Ok(()) }
+    /// ```
     pub fn offset(&self) -> u64 {
         self.parts.offset
     }
 
-    /// Size in bytes.
+    /// Size in bytes (at least the requested size).
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// let bytes = vec![0u8; a.size() as usize];
+    /// a.write_slice(0, &bytes)?;
+    /// # Ok(()) }
+    /// ```
     pub fn size(&self) -> u64 {
         self.parts.size
     }
 
     /// Index of the memory type.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// println!("memory type {}", a.memory_type_index());
+    /// # Ok(()) }
+    /// ```
     pub fn memory_type_index(&self) -> u32 {
         self.parts.memory_type_index
     }
 
     /// Properties of the memory type.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// let host = a.properties().contains(ash::vk::MemoryPropertyFlags::HOST_VISIBLE);
+    /// assert_eq!(host, a.mapped_ptr().is_some());
+    /// # Ok(()) }
+    /// ```
     pub fn properties(&self) -> vk::MemoryPropertyFlags {
         self.parts.properties
     }
 
-    /// Host address of the first byte, if mapped.
+    /// Host address of the first byte, if mapped. Prefer the checked accessors; the
+    /// pointer is for handing the mapping to code that needs one.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// if let Some(ptr) = a.mapped_ptr() {
+    ///     println!("mapped at {ptr:p}");
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn mapped_ptr(&self) -> Option<NonNull<u8>> {
         self.parts.mapped
     }
 
-    /// Whether host writes need a flush (and device writes an invalidate).
+    /// Whether the memory is host-coherent. When it is not, host writes need a flush
+    /// and device writes an invalidate; the accessors of this type do both.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// if !a.is_coherent() {
+    ///     a.flush(0, a.size())?;
+    /// }
+    /// # Ok(()) }
+    /// ```
     #[inline]
     pub fn is_coherent(&self) -> bool {
         self.parts
@@ -404,6 +464,13 @@ impl Allocation {
     }
 
     /// Write `values` starting at `offset` (flushed when the memory is not coherent).
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// let vertices: [[f32; 3]; 3] = [[0.0, -0.5, 0.0], [0.5, 0.5, 0.0], [-0.5, 0.5, 0.0]];
+    /// a.write_slice(0, &vertices)?;
+    /// # Ok(()) }
+    /// ```
     #[inline]
     pub fn write_slice<T: bytemuck::NoUninit>(
         &mut self,
@@ -421,6 +488,13 @@ impl Allocation {
 
     /// Read `out.len()` values starting at `offset` (invalidated first when the memory
     /// is not coherent).
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// let mut pixels = vec![0u32; 64 * 64];
+    /// a.read_slice(0, &mut pixels)?;
+    /// # Ok(()) }
+    /// ```
     pub fn read_slice<T: bytemuck::AnyBitPattern + bytemuck::NoUninit>(
         &self,
         offset: u64,
@@ -439,6 +513,13 @@ impl Allocation {
     }
 
     /// Read one value at `offset`.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// let counter: u32 = a.read(0)?;
+    /// # let _ = counter;
+    /// # Ok(()) }
+    /// ```
     pub fn read<T: bytemuck::AnyBitPattern + bytemuck::NoUninit>(
         &self,
         offset: u64,
@@ -487,6 +568,12 @@ impl Allocation {
 
     /// Make host writes to `len` bytes at `offset` visible to the device. Needed only for
     /// non-coherent memory (the writes above do it themselves); harmless otherwise.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// a.flush(0, 256)?;
+    /// # Ok(()) }
+    /// ```
     pub fn flush(&self, offset: u64, len: u64) -> Result<(), MapError> {
         if let Some(range) = self.mapped_range(offset, len)? {
             // SAFETY: the range lies inside mapped memory of this device (flush_range
@@ -499,6 +586,12 @@ impl Allocation {
 
     /// Make device writes to `len` bytes at `offset` visible to the host. Needed only for
     /// non-coherent memory (the reads above do it themselves); harmless otherwise.
+    ///
+    /// ```no_run
+    /// # fn demo(a: &mut tuff_runtime::Allocation) -> Result<(), tuff_runtime::MapError> {
+    /// a.invalidate(0, 256)?;
+    /// # Ok(()) }
+    /// ```
     pub fn invalidate(&self, offset: u64, len: u64) -> Result<(), MapError> {
         if let Some(range) = self.mapped_range(offset, len)? {
             // SAFETY: as in `flush`.

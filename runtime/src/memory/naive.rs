@@ -32,6 +32,12 @@ struct Shared {
 
 impl NaiveAllocator {
     /// An allocator for `owner`'s device.
+    ///
+    /// ```no_run
+    /// # fn demo(owner: tuff_runtime::Vrc<dyn tuff_runtime::DeviceOwner>) {
+    /// let debug_allocator = tuff_runtime::NaiveAllocator::new(owner);
+    /// # drop(debug_allocator); }
+    /// ```
     pub fn new(owner: Vrc<dyn DeviceOwner>) -> Self {
         // SAFETY: the physical device belongs to the owner's instance, alive here.
         let props = unsafe {
