@@ -23,9 +23,16 @@ pub(super) fn render(r: &Report) -> String {
         r#"  <text x="20" y="28" font-size="16" font-weight="bold">Validation coverage, Vulkan {}</text>"#,
         r.version
     );
+    // One scale for both panels, so bar lengths compare across them.
+    let max = panels
+        .iter()
+        .flat_map(|(_, t)| (0..3).map(|i| t.row_total(i)))
+        .max()
+        .unwrap_or(0)
+        .max(1) as f64;
     let mut y = 60;
     for (title, table) in panels {
-        panel(&mut s, title, table, y);
+        panel(&mut s, title, table, y, max);
         y += 150;
     }
     let mut x = 20.0;
@@ -46,13 +53,12 @@ pub(super) fn render(r: &Report) -> String {
     s
 }
 
-fn panel(s: &mut String, title: &str, t: &Table, y0: usize) {
+fn panel(s: &mut String, title: &str, t: &Table, y0: usize, max: f64) {
     let _ = writeln!(
         s,
         r#"  <text x="20" y="{y0}" font-weight="bold">{title} ({} rules)</text>"#,
         t.total()
     );
-    let max = (0..3).map(|i| t.row_total(i)).max().unwrap_or(0).max(1) as f64;
     for (i, c) in Category::ALL.iter().enumerate() {
         let y = y0 + 14 + i * 36;
         let _ = writeln!(s, r#"  <text x="20" y="{}">{}</text>"#, y + 17, c.name());
