@@ -223,3 +223,36 @@ fn the_newer_registry_runs_without_validusage() {
         .iter()
         .all(|r| r.category == Category::Implicit));
 }
+
+#[test]
+fn the_report_tallies_only_the_records_handed_to_it() {
+    use tuff_gen::emit::{Record, Settlement};
+    use tuff_gen::report;
+    let l = pinned();
+    let none = report::build(&l.model, &l.validity, &[]);
+    assert_eq!(none.emitted.column_total(0), 0);
+    assert_eq!(none.emitted.column_total(1), 0);
+    assert_eq!(none.emitted.column_total(2), none.emitted.total());
+
+    let records = [
+        Record {
+            vuid: "VUID-vkCmdDraw-commandBuffer-parameter".into(),
+            settlement: Settlement::Static("takes &CommandBuffer".into()),
+        },
+        Record {
+            vuid: "VUID-vkCmdDraw-None-02690".into(),
+            settlement: Settlement::Dynamic("checks the bound view's format".into()),
+        },
+    ];
+    let some = report::build(&l.model, &l.validity, &records);
+    assert_eq!(some.emitted.counts[0][0], 1, "implicit, static");
+    assert_eq!(some.emitted.counts[2][1], 1, "usage, dynamic");
+    assert_eq!(some.emitted.total(), none.emitted.total());
+    let settled = some
+        .settled
+        .iter()
+        .find(|s| s.rule.vuid == "VUID-vkCmdDraw-commandBuffer-parameter")
+        .unwrap();
+    assert_eq!(settled.settlement.status(), "static");
+    assert_eq!(settled.settlement.mechanism(), "takes &CommandBuffer");
+}
