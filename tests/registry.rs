@@ -240,7 +240,7 @@ fn the_report_tallies_only_the_records_handed_to_it() {
             settlement: Settlement::Static("takes &CommandBuffer".into()),
         },
         Record {
-            vuid: "VUID-vkCmdDraw-None-02690".into(),
+            vuid: "VUID-vkCmdDraw-None-02691".into(),
             settlement: Settlement::Dynamic("checks the bound view's format".into()),
         },
     ];
