@@ -87,6 +87,8 @@ pub struct Report<'a> {
     pub emitted_non_items_by_key: usize,
     /// Derived implicit rules of items validusage.json does not list.
     pub unlisted_derived: usize,
+    /// VUIDs that records name but no rule has: an emitter bug, shown in the report.
+    pub unknown_records: Vec<String>,
     /// The validity pass's result.
     pub validity: &'a Validity,
 }
@@ -107,8 +109,16 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         emitted_non_items: 0,
         emitted_non_items_by_key: 0,
         unlisted_derived: 0,
+        unknown_records: Vec::new(),
         validity,
     };
+    let known: std::collections::BTreeSet<&str> =
+        validity.rules.iter().map(|r| r.vuid.as_str()).collect();
+    report.unknown_records = records
+        .iter()
+        .filter(|r| !known.contains(r.vuid.as_str()))
+        .map(|r| r.vuid.clone())
+        .collect();
     for rule in &validity.rules {
         let settlement = by_vuid
             .get(rule.vuid.as_str())
