@@ -245,6 +245,17 @@ fn the_report_tallies_only_the_records_handed_to_it() {
         },
     ];
     let some = report::build(&l.model, &l.validity, &records);
+    assert!(some.unknown_records.is_empty());
+    let bogus = [Record {
+        vuid: "VUID-vkCmdDraw-None-99999".into(),
+        settlement: Settlement::Static("nothing".into()),
+    }];
+    let flagged = report::build(&l.model, &l.validity, &bogus);
+    assert_eq!(flagged.unknown_records, ["VUID-vkCmdDraw-None-99999"]);
+    assert!(report::render(&flagged)[0]
+        .contents
+        .contains("VUID-vkCmdDraw-None-99999"));
+    assert_eq!(flagged.emitted.column_total(0), 0);
     assert_eq!(some.emitted.counts[0][0], 1, "implicit, static");
     assert_eq!(some.emitted.counts[2][1], 1, "usage, dynamic");
     assert_eq!(some.emitted.total(), none.emitted.total());

@@ -136,6 +136,15 @@ pub(super) fn render(r: &Report) -> String {
         }
     }
 
+    if !r.unknown_records.is_empty() {
+        let _ = writeln!(
+            s,
+            "\n## Records of unknown rules\n\nThe emitters recorded settlements for VUIDs \
+             this registry does not have (a generator bug): {}",
+            r.unknown_records.join(", ")
+        );
+    }
+
     let _ = writeln!(
         s,
         "\n## Rules left to the user in the emitted API, by reason\n"
