@@ -129,6 +129,7 @@ fn churn(dev: &Vrc<TestDevice>, allocator: &dyn Allocator, seed: u64) {
         if r.allocation.mapped_ptr().is_some() {
             round_trip(&mut r, size, i);
         } else {
+            // Device-local memory that is not host-visible has no mapping.
             assert_eq!(r.allocation.write(0, &1u32), Err(MapError::NotMapped));
         }
         live.push((r, size));
@@ -248,11 +249,16 @@ impl BumpAllocator {
         // SAFETY: valid allocate and map calls on a live device; the memory is host-visible.
         let (memory, mapped) = unsafe {
             let memory = owner.device.allocate_memory(&info, None).ok()?;
-            let ptr = owner
+            let mapped = owner
                 .device
                 .map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty())
-                .ok()?;
-            (memory, NonNull::new(ptr.cast::<u8>())?)
+                .ok()
+                .and_then(|ptr| NonNull::new(ptr.cast::<u8>()));
+            let Some(mapped) = mapped else {
+                owner.device.free_memory(memory, None);
+                return None;
+            };
+            (memory, mapped)
         };
         Some(BumpAllocator {
             block: Vrc::new(BumpBlock {
@@ -278,19 +284,30 @@ impl Allocator for BumpAllocator {
                 location: request.location,
             });
         }
+        // On non-coherent memory, whole atoms keep flushes and invalidations off the
+        // neighbours (see Allocation::from_parts).
+        let coherent = b
+            .properties
+            .contains(vk::MemoryPropertyFlags::HOST_COHERENT);
+        let (alignment, size) = if coherent {
+            (r.alignment.max(1), r.size)
+        } else {
+            let atom = b.owner.atom;
+            (r.alignment.max(atom), r.size.next_multiple_of(atom))
+        };
         let mut next = self.next.lock();
         let offset = next
-            .checked_next_multiple_of(r.alignment.max(1))
-            .filter(|o| o.checked_add(r.size).is_some_and(|end| end <= b.size))
+            .checked_next_multiple_of(alignment)
+            .filter(|o| o.checked_add(size).is_some_and(|end| end <= b.size))
             .ok_or(AllocError::Vulkan {
                 call: "bump allocation",
                 result: vk::Result::ERROR_OUT_OF_DEVICE_MEMORY,
             })?;
-        *next = offset + r.size;
+        *next = offset + size;
         let parts = AllocationParts {
             memory: b.memory,
             offset,
-            size: r.size,
+            size,
             memory_size: b.size,
             memory_type_index: b.type_index,
             properties: b.properties,
@@ -448,6 +465,29 @@ fn typed_access_for_alignments_1_4_16_64() {
         assert_eq!(back, values);
         destroy(&dev, r);
     }
+    drop(dev);
+    assert_silent(&messages);
+}
+
+#[test]
+fn flushes_of_mapped_device_local_memory_are_valid() {
+    // Device-local memory is host-visible on lavapipe and integrated GPUs, and then
+    // mapped: its flush ranges must be as valid as those of upload memory.
+    let (dev, messages) = device(true);
+    let allocator = GpuAllocator::new(dev.clone()).expect("gpu-allocator");
+    let mut live = Vec::new();
+    for size in [100u64, 36, 1000, 4] {
+        let r = create(&dev, &allocator, size, MemoryLocation::DeviceLocal);
+        if r.allocation.mapped_ptr().is_some() {
+            r.allocation.flush(0, size).expect("flush");
+            r.allocation.invalidate(size - 1, 1).expect("invalidate");
+        }
+        live.push(r);
+    }
+    for r in live {
+        destroy(&dev, r);
+    }
+    drop(allocator);
     drop(dev);
     assert_silent(&messages);
 }

@@ -3,7 +3,8 @@
 //! Without the `multi_thread` feature, [`Vrc`] is [`std::rc::Rc`] and [`Vutex`] a cell
 //! with a borrow flag: neither is `Send` nor `Sync`, and single-threaded code pays for
 //! no atomics. With it, [`Vrc`] is [`std::sync::Arc`] and [`Vutex`] a
-//! `parking_lot::Mutex`, both `Send + Sync` for `Send` contents.
+//! `parking_lot::Mutex`: a `Vutex` is `Send + Sync` for `Send` contents, a `Vrc` for
+//! `Send + Sync` contents.
 
 /// The reference-counted pointer the wrappers share parents with: `Rc`, or `Arc` with
 /// the `multi_thread` feature.

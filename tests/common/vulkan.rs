@@ -164,9 +164,20 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
     // SAFETY: plain queries on a live instance.
     let physicals =
         unsafe { instance.instance.enumerate_physical_devices() }.expect("devices enumerate");
-    let physical = *physicals.first().expect(
-        "no Vulkan device found: install Mesa lavapipe (apt-get install mesa-vulkan-drivers)",
-    );
+    // Lavapipe (a CPU device) where present, so runs compare across machines.
+    let is_cpu = |p: &vk::PhysicalDevice| {
+        // SAFETY: a plain query on a live instance.
+        let props = unsafe { instance.instance.get_physical_device_properties(*p) };
+        props.device_type == vk::PhysicalDeviceType::CPU
+    };
+    let physical = physicals
+        .iter()
+        .find(|p| is_cpu(p))
+        .or_else(|| physicals.first())
+        .copied()
+        .expect(
+            "no Vulkan device found: install Mesa lavapipe (apt-get install mesa-vulkan-drivers)",
+        );
     // SAFETY: as above.
     let (props, memory, families) = unsafe {
         (

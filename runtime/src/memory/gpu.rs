@@ -87,21 +87,16 @@ impl Allocator for GpuAllocator {
             return Err(AllocError::InvalidRequirements("size is 0".into()));
         }
         let atom = shared.owner.non_coherent_atom_size();
-        let (location, requirements) = match request.location {
-            MemoryLocation::DeviceLocal => {
-                (gpu_allocator::MemoryLocation::GpuOnly, request.requirements)
-            }
-            // Host-visible memory is aligned to whole atoms so that flush ranges,
-            // rounded to atoms, stay inside this allocation.
-            MemoryLocation::Upload => (
-                gpu_allocator::MemoryLocation::CpuToGpu,
-                atom_aligned(request.requirements, atom)?,
-            ),
-            MemoryLocation::Readback => (
-                gpu_allocator::MemoryLocation::GpuToCpu,
-                atom_aligned(request.requirements, atom)?,
-            ),
+        let location = match request.location {
+            MemoryLocation::DeviceLocal => gpu_allocator::MemoryLocation::GpuOnly,
+            MemoryLocation::Upload => gpu_allocator::MemoryLocation::CpuToGpu,
+            MemoryLocation::Readback => gpu_allocator::MemoryLocation::GpuToCpu,
         };
+        // Every allocation is aligned to whole atoms, device-local ones included:
+        // gpu-allocator maps any host-visible block (device-local memory is host-visible
+        // on integrated GPUs and lavapipe), and flush ranges rounded to atoms must stay
+        // inside this allocation, whose end stands in for the unknown block size.
+        let requirements = atom_aligned(request.requirements, atom)?;
         let allocation = shared
             .allocator
             .lock()

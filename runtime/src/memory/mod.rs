@@ -72,7 +72,8 @@ pub trait DeviceOwner: MaybeSendSync + 'static {
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum MemoryLocation {
-    /// Only the GPU touches it: device-local, not mapped.
+    /// Only the GPU touches it: device-local. It is mapped anyway where device-local
+    /// memory is also host-visible (integrated GPUs, lavapipe).
     DeviceLocal,
     /// The CPU writes, the GPU reads: host-visible and mapped.
     Upload,
@@ -140,7 +141,8 @@ pub enum AllocError {
     /// gpu-allocator refused.
     #[error("gpu-allocator: {0}")]
     GpuAllocator(#[from] gpu_allocator::AllocationError),
-    /// The requirements are impossible (zero alignment, sizes that overflow).
+    /// The requirements are impossible: size 0, a size larger than the memory heap or
+    /// one that overflows when rounded to the atom size.
     #[error("invalid memory requirements: {0}")]
     InvalidRequirements(String),
 }
@@ -265,6 +267,13 @@ impl Allocation {
     /// `parts` must describe memory that `owner`'s device allocated and that nothing
     /// else uses: `offset + size <= memory_size`, and `mapped` (if any) must point to
     /// `size` writable bytes that stay mapped until `backing.free` runs.
+    ///
+    /// Not a safety condition, but a correctness one: when the memory is mapped and
+    /// not coherent, `offset` and `size` should be multiples of
+    /// `non_coherent_atom_size` (or end at `memory_size`). Flushes and invalidations
+    /// are rounded out to whole atoms, so otherwise they touch the neighbouring
+    /// allocations' bytes, and an invalidate can discard a neighbour's unflushed
+    /// writes.
     pub unsafe fn from_parts(
         parts: AllocationParts,
         owner: Vrc<dyn DeviceOwner>,
@@ -412,7 +421,8 @@ impl Allocation {
         }
         match check_range(self.parts.size, offset, len) {
             Err(e) => e,
-            // Only an empty access to an empty allocation gets here.
+            // Unreachable: the fast check in `span` and check_range agree. Kept as an
+            // error rather than a panic.
             Ok(_) => MapError::OutOfRange {
                 offset,
                 size: len,

@@ -85,6 +85,13 @@ impl Allocator for NaiveAllocator {
         } else {
             reqs.size
         };
+        let heap = shared.props.memory_types[index as usize].heap_index as usize;
+        let heap_size = shared.props.memory_heaps.get(heap).map_or(0, |h| h.size);
+        if size > heap_size {
+            return Err(AllocError::InvalidRequirements(format!(
+                "{size} bytes do not fit in memory heap {heap} of {heap_size} bytes"
+            )));
+        }
         let device = shared.owner.device();
         let info = vk::MemoryAllocateInfo::default()
             .allocation_size(size)
