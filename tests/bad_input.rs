@@ -228,3 +228,62 @@ fn unknown_command_line_flag() {
     assert_eq!(code, 2);
     assert!(stderr.contains("--frobnicate"), "{stderr}");
 }
+
+#[test]
+fn other_inputs_need_an_explicit_output_folder() {
+    // Without --out, a run on another registry would overwrite the committed generated/.
+    let before = snapshot_dir(&root().join("generated"));
+    let newer = shared_registry("1.4.309")
+        .join("vk.xml")
+        .display()
+        .to_string();
+    let (code, _, stderr) = cli(&["--registry", &newer]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("pass --out"), "{stderr}");
+    assert_eq!(snapshot_dir(&root().join("generated")), before);
+}
+
+#[test]
+fn registry_with_an_undefined_entity() {
+    let c = case();
+    let vk = write(
+        &c.dir,
+        "vk.xml",
+        "<registry>\n  <comment>&nbsp;</comment>\n</registry>\n",
+    );
+    fails(
+        &c,
+        &["--registry", &vk, "--no-validusage"],
+        &["vk.xml:2:", "undefined entity"],
+    );
+}
+
+#[test]
+fn config_with_an_absurd_version() {
+    let c = case();
+    let cfg = write(
+        &c.dir,
+        "tuff-gen.toml",
+        "api_version = \"1.4294967295\"\nextensions = []\n",
+    );
+    fails(
+        &c,
+        &["--config", &cfg],
+        &["tuff-gen.toml", "not a Vulkan version"],
+    );
+}
+
+#[test]
+fn config_missing_an_extension_dependency() {
+    let c = case();
+    let cfg = write(
+        &c.dir,
+        "tuff-gen.toml",
+        "api_version = \"1.3\"\nextensions = [\"VK_KHR_swapchain\"]\n",
+    );
+    fails(
+        &c,
+        &["--config", &cfg],
+        &["VK_KHR_swapchain", "needs", "VK_KHR_surface"],
+    );
+}

@@ -55,6 +55,20 @@ where
         }
     };
     let pinned = Options::pinned();
+    let custom_inputs = cli.registry.is_some()
+        || cli.config.is_some()
+        || cli.validusage.is_some()
+        || cli.no_validusage
+        || cli.allow_version_mismatch;
+    if custom_inputs && cli.out.is_none() && !cli.check {
+        let _ = writeln!(
+            err,
+            "tuff-gen: error: these options change what is generated; pass --out to say \
+             where to write it (--out {} replaces the committed output)",
+            pinned.out.display()
+        );
+        return 2;
+    }
     let registry = cli.registry.clone().unwrap_or(pinned.registry);
     let validusage = if cli.no_validusage {
         None

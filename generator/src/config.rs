@@ -43,6 +43,7 @@ impl Config {
         self.api_version
             .strip_prefix("1.")
             .and_then(|m| m.parse().ok())
+            .filter(|m| *m < 100)
             .ok_or_else(|| {
                 format!(
                     "api_version `{}` is not a Vulkan version of the form \"1.N\"",

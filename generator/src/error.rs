@@ -89,8 +89,8 @@ pub enum Error {
     },
     /// `--check` found that the committed output differs from a fresh run.
     #[error(
-        "the committed output in {dir} differs from what the generator writes now \
-         (run `cargo run -p tuff-gen` and commit the result):\n{summary}"
+        "the output in {dir} differs from what the generator writes now (run tuff-gen \
+         again with the same options, without --check, to update it):\n{summary}"
     )]
     OutOfDate {
         /// The output folder that was checked.

@@ -4,34 +4,87 @@ use crate::emit::OutputFile;
 use crate::error::{Error, Result};
 use std::path::Path;
 
-/// Write `files` under `out`. Everything is first written to a temporary folder beside
-/// `out`; only when all of it is written are the files renamed into place, one atomic
-/// rename each, so an error leaves the previous output as it was.
+/// Write `files` under `out`. Everything is first written to a staging folder inside
+/// `out`. Then each file is swapped into place: the previous version (if any) is moved
+/// into the staging folder and the new one renamed over its path. If any step fails,
+/// the swaps already made are undone, so an error leaves the previous output as it was.
 pub fn write_all(out: &Path, files: &[OutputFile]) -> Result<()> {
-    let write_err = |path: &Path| {
-        let path = path.to_owned();
-        move |source| Error::Write { path, source }
-    };
     std::fs::create_dir_all(out).map_err(write_err(out))?;
     let staging = tempfile::Builder::new()
         .prefix(".tuff-gen-")
         .tempdir_in(out)
         .map_err(write_err(out))?;
+    let new_dir = staging.path().join("new");
+    let old_dir = staging.path().join("old");
     for f in files {
-        let path = staging.path().join(&f.path);
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir).map_err(write_err(dir))?;
-        }
+        let path = new_dir.join(&f.path);
+        create_parent(&path)?;
         std::fs::write(&path, &f.contents).map_err(write_err(&path))?;
     }
+    // Fail before touching anything when a target cannot be replaced by a file.
     for f in files {
         let target = out.join(&f.path);
-        if let Some(dir) = target.parent() {
-            std::fs::create_dir_all(dir).map_err(write_err(dir))?;
+        if target.is_dir() {
+            return Err(Error::Write {
+                path: target,
+                source: std::io::Error::other("a folder is in the way of this file"),
+            });
         }
-        std::fs::rename(staging.path().join(&f.path), &target).map_err(write_err(&target))?;
+    }
+    let mut swapped: Vec<(&OutputFile, bool)> = Vec::new();
+    for f in files {
+        if let Err(e) = swap_in(out, &new_dir, &old_dir, f) {
+            for (done, had_old) in swapped.into_iter().rev() {
+                undo_swap(out, &old_dir, done, had_old);
+            }
+            return Err(e);
+        }
+        swapped.push((f, old_dir.join(&f.path).exists()));
     }
     Ok(())
+}
+
+fn write_err(path: &Path) -> impl FnOnce(std::io::Error) -> Error {
+    let path = path.to_owned();
+    move |source| Error::Write { path, source }
+}
+
+fn create_parent(path: &Path) -> Result<()> {
+    match path.parent() {
+        Some(dir) => std::fs::create_dir_all(dir).map_err(write_err(dir)),
+        None => Ok(()),
+    }
+}
+
+/// Move the previous `f` (if any) aside into `old_dir`, then the new one into place.
+fn swap_in(out: &Path, new_dir: &Path, old_dir: &Path, f: &OutputFile) -> Result<()> {
+    let target = out.join(&f.path);
+    let aside = old_dir.join(&f.path);
+    if target.exists() {
+        create_parent(&aside)?;
+        std::fs::rename(&target, &aside).map_err(write_err(&target))?;
+    }
+    create_parent(&target)?;
+    if let Err(source) = std::fs::rename(new_dir.join(&f.path), &target) {
+        if aside.exists() {
+            let _ = std::fs::rename(&aside, &target);
+        }
+        return Err(Error::Write {
+            path: target,
+            source,
+        });
+    }
+    Ok(())
+}
+
+/// Best effort: put the previous file back (or remove the new one if there was none).
+fn undo_swap(out: &Path, old_dir: &Path, f: &OutputFile, had_old: bool) {
+    let target = out.join(&f.path);
+    if had_old {
+        let _ = std::fs::rename(old_dir.join(&f.path), &target);
+    } else {
+        let _ = std::fs::remove_file(&target);
+    }
 }
 
 /// Regenerate into a temporary folder and compare with what `out` holds. Returns
@@ -46,7 +99,10 @@ pub fn check(out: &Path, files: &[OutputFile]) -> Result<()> {
     for f in files {
         let fresh = std::fs::read_to_string(scratch.path().join(&f.path)).unwrap_or_default();
         match std::fs::read_to_string(out.join(&f.path)) {
-            Err(_) => summary.push(format!("  {}: missing", f.path.display())),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                summary.push(format!("  {}: missing", f.path.display()))
+            }
+            Err(e) => summary.push(format!("  {}: unreadable ({e})", f.path.display())),
             Ok(committed) if committed != fresh => summary.push(format!(
                 "  {}: {}",
                 f.path.display(),
@@ -119,6 +175,55 @@ mod tests {
             .filter(|e| e.file_name().to_string_lossy().starts_with(".tuff-gen-"))
             .collect();
         assert!(leftovers.is_empty());
+    }
+
+    #[test]
+    fn a_failed_swap_restores_the_files_already_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        write_all(
+            dir.path(),
+            &[file("a.txt", "old a\n"), file("b.txt", "old b\n")],
+        )
+        .unwrap();
+        // A folder where the third file goes makes the write fail.
+        std::fs::create_dir(dir.path().join("c.txt")).unwrap();
+        let err = write_all(
+            dir.path(),
+            &[
+                file("a.txt", "new a\n"),
+                file("b.txt", "new b\n"),
+                file("c.txt", "new c\n"),
+            ],
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("c.txt"), "{err}");
+        assert_eq!(
+            std::fs::read_to_string(dir.path().join("a.txt")).unwrap(),
+            "old a\n"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.path().join("b.txt")).unwrap(),
+            "old b\n"
+        );
+    }
+
+    #[test]
+    fn undo_puts_back_every_swapped_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path();
+        write_all(out, &[file("a.txt", "old\n")]).unwrap();
+        let (new_dir, old_dir) = (out.join("stage/new"), out.join("stage/old"));
+        std::fs::create_dir_all(&new_dir).unwrap();
+        std::fs::write(new_dir.join("a.txt"), "new\n").unwrap();
+        std::fs::write(new_dir.join("b.txt"), "new\n").unwrap();
+        let (a, b) = (file("a.txt", "new\n"), file("b.txt", "new\n"));
+        swap_in(out, &new_dir, &old_dir, &a).unwrap();
+        swap_in(out, &new_dir, &old_dir, &b).unwrap();
+        assert_eq!(std::fs::read_to_string(out.join("a.txt")).unwrap(), "new\n");
+        undo_swap(out, &old_dir, &b, false);
+        undo_swap(out, &old_dir, &a, true);
+        assert_eq!(std::fs::read_to_string(out.join("a.txt")).unwrap(), "old\n");
+        assert!(!out.join("b.txt").exists());
     }
 
     #[test]

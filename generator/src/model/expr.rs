@@ -8,8 +8,24 @@ use std::collections::BTreeSet;
 /// expression (unbalanced parentheses) evaluates what it can and never panics.
 pub fn eval(expr: &str, enabled: &BTreeSet<String>) -> bool {
     let tokens = tokenize(expr);
-    let mut pos = 0;
-    parse_or(&tokens, &mut pos, enabled)
+    let mut p = Parser {
+        t: &tokens,
+        pos: 0,
+        depth: 0,
+        en: enabled,
+    };
+    p.or()
+}
+
+/// Nesting deeper than this (in parentheses or `!`) evaluates to false rather than
+/// recursing further: real registries nest a few levels.
+const MAX_DEPTH: usize = 64;
+
+struct Parser<'a> {
+    t: &'a [Tok<'a>],
+    pos: usize,
+    depth: usize,
+    en: &'a BTreeSet<String>,
 }
 
 #[derive(Debug, PartialEq)]
@@ -49,45 +65,50 @@ fn tokenize(expr: &str) -> Vec<Tok<'_>> {
     out
 }
 
-fn parse_or(t: &[Tok], pos: &mut usize, en: &BTreeSet<String>) -> bool {
-    let mut value = parse_and(t, pos, en);
-    while t.get(*pos) == Some(&Tok::Or) {
-        *pos += 1;
-        value |= parse_and(t, pos, en);
+impl Parser<'_> {
+    fn or(&mut self) -> bool {
+        let mut value = self.and();
+        while self.t.get(self.pos) == Some(&Tok::Or) {
+            self.pos += 1;
+            value |= self.and();
+        }
+        value
     }
-    value
-}
 
-fn parse_and(t: &[Tok], pos: &mut usize, en: &BTreeSet<String>) -> bool {
-    let mut value = parse_atom(t, pos, en);
-    while t.get(*pos) == Some(&Tok::And) {
-        *pos += 1;
-        value &= parse_atom(t, pos, en);
+    fn and(&mut self) -> bool {
+        let mut value = self.atom();
+        while self.t.get(self.pos) == Some(&Tok::And) {
+            self.pos += 1;
+            value &= self.atom();
+        }
+        value
     }
-    value
-}
 
-fn parse_atom(t: &[Tok], pos: &mut usize, en: &BTreeSet<String>) -> bool {
-    match t.get(*pos) {
-        Some(Tok::Open) => {
-            *pos += 1;
-            let v = parse_or(t, pos, en);
-            if t.get(*pos) == Some(&Tok::Close) {
-                *pos += 1;
+    fn atom(&mut self) -> bool {
+        if self.depth > MAX_DEPTH {
+            self.pos = self.t.len();
+            return false;
+        }
+        let token = self.t.get(self.pos);
+        self.pos += 1;
+        match token {
+            Some(Tok::Open) => {
+                self.depth += 1;
+                let v = self.or();
+                self.depth -= 1;
+                if self.t.get(self.pos) == Some(&Tok::Close) {
+                    self.pos += 1;
+                }
+                v
             }
-            v
-        }
-        Some(Tok::Not) => {
-            *pos += 1;
-            !parse_atom(t, pos, en)
-        }
-        Some(Tok::Name(n)) => {
-            *pos += 1;
-            *n == "core" || en.contains(*n)
-        }
-        _ => {
-            *pos += 1;
-            false
+            Some(Tok::Not) => {
+                self.depth += 1;
+                let v = !self.atom();
+                self.depth -= 1;
+                v
+            }
+            Some(Tok::Name(n)) => *n == "core" || self.en.contains(*n),
+            _ => false,
         }
     }
 }
@@ -115,5 +136,12 @@ mod tests {
         assert!(eval("core", &set(&[])));
         assert!(!eval("", &set(&[])));
         assert!(!eval("((,+", &set(&[])));
+        let deep = format!("{}A{}", "(".repeat(100_000), ")".repeat(100_000));
+        assert!(
+            !eval(&deep, &set(&["A"])),
+            "deep nesting gives up instead of overflowing"
+        );
+        // Without the depth cap this overflows the stack and aborts the test run.
+        let _ = eval(&"!".repeat(100_000), &set(&[]));
     }
 }

@@ -147,6 +147,25 @@ impl Model {
                 }
             }
         }
+        // An enabled extension whose own dependencies are not enabled would be
+        // unusable: say which one is missing.
+        for ext in &config.extensions {
+            let depends = registry
+                .extensions
+                .iter()
+                .find(|e| &e.name == ext)
+                .and_then(|e| e.depends.as_deref());
+            if let Some(depends) = depends {
+                if !expr::eval(depends, &enabled) {
+                    return Err(Error::Config {
+                        path: config_path.to_owned(),
+                        message: format!(
+                            "extension `{ext}` needs `{depends}`, which the config does not enable"
+                        ),
+                    });
+                }
+            }
+        }
 
         // Alternatives under which each item is required, from feature and extension
         // require blocks.
@@ -177,6 +196,23 @@ impl Model {
                         .or_default()
                         .push(value.clone());
                 }
+            }
+        }
+
+        // A promoted item exists wherever any of its aliases does (vkCmdDrawIndirectCount
+        // also with VK_KHR_draw_indirect_count): the alias's blocks name the same item.
+        let aliased: Vec<(String, String)> = types
+            .values()
+            .filter_map(|t| t.alias.clone().map(|a| (t.name.clone(), a)))
+            .chain(
+                commands
+                    .values()
+                    .filter_map(|c| c.alias.clone().map(|a| (c.name.clone(), a))),
+            )
+            .collect();
+        for (alias, target) in aliased {
+            if let Some(alts) = alternatives.get(&alias).cloned() {
+                alternatives.entry(target).or_default().extend(alts);
             }
         }
 

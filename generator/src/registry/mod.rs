@@ -171,7 +171,7 @@ pub fn load_registry(path: &Path) -> Result<Registry> {
         source,
     })?;
     wellformed::check(path, &bytes)?;
-    let (parsed, _recoverable) =
+    let (parsed, recoverable) =
         vk_parse::parse_stream(bytes.as_slice()).map_err(|e| Error::BadRegistry {
             path: path.to_owned(),
             message: match e {
@@ -181,5 +181,37 @@ pub fn load_registry(path: &Path) -> Result<Registry> {
                 other => format!("{other:?}"),
             },
         })?;
+    // Elements and attributes vk-parse does not know are schema additions of newer
+    // registries and are skipped; missing or malformed parts mean the file is broken.
+    if let Some(e) = recoverable.iter().find(|e| {
+        !matches!(
+            e,
+            vk_parse::Error::UnexpectedElement { .. } | vk_parse::Error::UnexpectedAttribute { .. }
+        )
+    }) {
+        return Err(Error::BadRegistry {
+            path: path.to_owned(),
+            message: describe_parse_error(e),
+        });
+    }
     convert::convert(path, parsed)
+}
+
+fn describe_parse_error(e: &vk_parse::Error) -> String {
+    match e {
+        vk_parse::Error::MissingElement { xpath, name } => {
+            format!("{xpath} lacks its <{name}> element")
+        }
+        vk_parse::Error::MissingAttribute { xpath, name } => {
+            format!("{xpath} lacks its `{name}` attribute")
+        }
+        vk_parse::Error::UnexpectedAttributeValue { xpath, name, value } => {
+            format!("{xpath}: `{name}` has the unexpected value `{value}`")
+        }
+        vk_parse::Error::SchemaViolation { xpath, desc } => format!("{xpath}: {desc}"),
+        vk_parse::Error::ParseIntError { xpath, text, .. } => {
+            format!("{xpath}: `{text}` is not a number")
+        }
+        other => format!("{other:?}"),
+    }
 }

@@ -3,7 +3,6 @@
 
 use crate::error::{Error, Result};
 use serde::Deserialize;
-use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The contents of `validusage.json`.
@@ -34,7 +33,7 @@ pub struct VuEntry {
 struct File {
     #[serde(rename = "version info")]
     version_info: VersionInfo,
-    validation: BTreeMap<String, indexmap_like::Ordered>,
+    validation: indexmap_like::Ordered<indexmap_like::Ordered<Vec<Rule>>>,
 }
 
 #[derive(Deserialize)]
@@ -51,32 +50,37 @@ struct Rule {
     text: String,
 }
 
-/// serde_json without its `preserve_order` feature sorts object keys; the keys inside
-/// an entity are few, so a Vec of pairs keeps the file's order cheaply.
+/// serde_json without its `preserve_order` feature sorts object keys and lets a
+/// repeated key replace the earlier one; a Vec of pairs keeps the file's order and
+/// makes a repeated key an error.
 mod indexmap_like {
-    use super::Rule;
-    use serde::de::{MapAccess, Visitor};
+    use serde::de::{Error, MapAccess, Visitor};
     use serde::{Deserialize, Deserializer};
+    use std::marker::PhantomData;
 
-    pub(super) struct Ordered(pub Vec<(String, Vec<Rule>)>);
+    pub(super) struct Ordered<V>(pub Vec<(String, V)>);
 
-    impl<'de> Deserialize<'de> for Ordered {
+    impl<'de, V: Deserialize<'de>> Deserialize<'de> for Ordered<V> {
         fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-            struct V;
-            impl<'de> Visitor<'de> for V {
-                type Value = Ordered;
+            struct Vis<V>(PhantomData<V>);
+            impl<'de, V: Deserialize<'de>> Visitor<'de> for Vis<V> {
+                type Value = Ordered<V>;
                 fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                    f.write_str("an object of rule lists")
+                    f.write_str("an object")
                 }
-                fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Ordered, A::Error> {
-                    let mut out = Vec::new();
-                    while let Some((k, v)) = map.next_entry::<String, Vec<Rule>>()? {
+                fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Ordered<V>, A::Error> {
+                    let mut out: Vec<(String, V)> = Vec::new();
+                    let mut seen = std::collections::HashSet::new();
+                    while let Some((k, v)) = map.next_entry::<String, V>()? {
+                        if !seen.insert(k.clone()) {
+                            return Err(A::Error::custom(format!("the key `{k}` appears twice")));
+                        }
                         out.push((k, v));
                     }
                     Ok(Ordered(out))
                 }
             }
-            d.deserialize_map(V)
+            d.deserialize_map(Vis(PhantomData))
         }
     }
 }
@@ -112,7 +116,7 @@ pub fn load_validusage(path: &Path) -> Result<ValidUsage> {
         });
     }
     let mut entries = Vec::new();
-    for (entity, keyed) in file.validation {
+    for (entity, keyed) in file.validation.0 {
         for (key, rules) in keyed.0 {
             for rule in rules {
                 if !rule.vuid.starts_with("VUID-") {
@@ -176,6 +180,16 @@ mod tests {
             Error::MalformedJson { line, .. } => assert_eq!(line, 2),
             other => panic!("unexpected {other}"),
         }
+    }
+
+    #[test]
+    fn a_repeated_entity_is_a_schema_error() {
+        let err = load(
+            r#"{"version info": {"schema version": 2, "api version": "1.3.239"},
+                "validation": {"vkCmdDraw": {"core": []}, "vkCmdDraw": {"core": []}}}"#,
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("appears twice"), "{err}");
     }
 
     #[test]

@@ -9,6 +9,15 @@ use std::path::Path;
 /// Fail with the position of the first XML error in `bytes`, if any, or if the root
 /// element is not `<registry>`.
 pub(crate) fn check(path: &Path, bytes: &[u8]) -> Result<()> {
+    // The XML reader vk-parse uses stops silently at these; report them here.
+    if let Err(e) = std::str::from_utf8(bytes) {
+        return Err(malformed(
+            path,
+            bytes,
+            e.valid_up_to(),
+            "invalid UTF-8".to_owned(),
+        ));
+    }
     let mut reader = quick_xml::Reader::from_reader(bytes);
     let config = reader.config_mut();
     config.check_end_names = true;
@@ -19,6 +28,10 @@ pub(crate) fn check(path: &Path, bytes: &[u8]) -> Result<()> {
         let event = reader.read_event();
         match event {
             Ok(Event::Start(start)) => {
+                if let Err(message) = check_attributes(&start) {
+                    let pos = reader.buffer_position() as usize;
+                    return Err(malformed(path, bytes, pos, message));
+                }
                 if depth == 0 {
                     if saw_root || start.name().as_ref() != "registry" {
                         let pos = reader.buffer_position() as usize;
@@ -34,6 +47,25 @@ pub(crate) fn check(path: &Path, bytes: &[u8]) -> Result<()> {
                 depth += 1;
             }
             Ok(Event::End(_)) => depth = depth.saturating_sub(1),
+            Ok(Event::Empty(e)) if depth > 0 => {
+                if let Err(message) = check_attributes(&e) {
+                    let pos = reader.buffer_position() as usize;
+                    return Err(malformed(path, bytes, pos, message));
+                }
+            }
+            Ok(Event::GeneralRef(r)) => {
+                let name: String = r.as_ref().to_owned();
+                let predefined = ["lt", "gt", "amp", "apos", "quot"].contains(&name.as_str());
+                if !predefined && !name.starts_with('#') {
+                    let pos = reader.buffer_position() as usize;
+                    return Err(malformed(
+                        path,
+                        bytes,
+                        pos,
+                        format!("undefined entity `&{name};`"),
+                    ));
+                }
+            }
             Ok(Event::Empty(_)) if depth == 0 => {
                 let pos = reader.buffer_position() as usize;
                 return Err(malformed(
@@ -66,6 +98,25 @@ pub(crate) fn check(path: &Path, bytes: &[u8]) -> Result<()> {
             bytes.len(),
             "the file ends inside an element".to_owned(),
         ));
+    }
+    Ok(())
+}
+
+/// Duplicate or malformed attributes, and undefined entities inside values.
+fn check_attributes(start: &quick_xml::events::BytesStart) -> std::result::Result<(), String> {
+    for attr in start.attributes().with_checks(true) {
+        let attr = attr.map_err(|e| e.to_string())?;
+        let value = &attr.value;
+        let mut rest = value.as_ref();
+        while let Some(at) = rest.find('&') {
+            let entity = rest[at + 1..].split(';').next().unwrap_or_default();
+            let known =
+                ["lt", "gt", "amp", "apos", "quot"].contains(&entity) || entity.starts_with('#');
+            if !known || !rest[at + 1..].contains(';') {
+                return Err(format!("undefined entity `&{entity};` in an attribute"));
+            }
+            rest = &rest[at + 1..];
+        }
     }
     Ok(())
 }
@@ -116,6 +167,24 @@ mod tests {
     fn rejects_a_truncated_file() {
         let err = check(Path::new("vk.xml"), b"<registry><types>").unwrap_err();
         assert!(matches!(err, Error::MalformedXml { .. }), "{err}");
+    }
+
+    #[test]
+    fn rejects_entities_duplicates_and_bad_utf8() {
+        for bad in [
+            &b"<registry>\n<t>&bogus;</t></registry>"[..],
+            b"<registry><t a=\"1\" a=\"2\"/></registry>",
+            b"<registry><t a=\"&bogus;\"/></registry>",
+            b"<registry><t>\xff</t></registry>",
+        ] {
+            let err = check(Path::new("vk.xml"), bad).unwrap_err();
+            assert!(matches!(err, Error::MalformedXml { .. }), "{err}");
+        }
+        check(
+            Path::new("vk.xml"),
+            b"<registry><t a=\"&lt;&#65;\">&amp;&#x41;</t></registry>",
+        )
+        .unwrap();
     }
 
     #[test]

@@ -84,7 +84,9 @@ pub(super) fn render(r: &Report) -> String {
              keys: the first counts every rule of an emitted item, including rules that \
              only apply when an extension tuff does not emit is enabled.",
             r.emitted_non_items_by_key,
-            by_key.counts[2].iter().sum::<usize>() - r.emitted_non_items_by_key
+            by_key
+                .row_total(2)
+                .saturating_sub(r.emitted_non_items_by_key)
         );
     }
     let _ = writeln!(s, "\n## Whole registry\n");

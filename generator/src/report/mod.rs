@@ -82,7 +82,7 @@ pub struct Report<'a> {
     pub emitted_by_key: Option<Table>,
     /// Emitted rules of entities that are not registry items (SPIR-V, built-ins).
     pub emitted_non_items: usize,
-    /// Of those, the ones whose validusage.json key holds (counted in
+    /// Of those, the usage rules whose validusage.json key holds (counted in
     /// `emitted_by_key`).
     pub emitted_non_items_by_key: usize,
     /// Derived implicit rules of items validusage.json does not list.
@@ -139,7 +139,8 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
                 let table = report.emitted_by_key.get_or_insert_with(Table::default);
                 if holds {
                     table.add(rule.category, &settlement);
-                    report.emitted_non_items_by_key += usize::from(non_item);
+                    report.emitted_non_items_by_key +=
+                        usize::from(non_item && rule.category == Category::Usage);
                 }
             }
         }

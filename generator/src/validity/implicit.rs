@@ -474,7 +474,13 @@ impl<'a> Deriver<'a> {
 
     fn parent(&mut self, block: &str, h: &Field, params: &[Field]) {
         let mut t = h.type_name.clone();
+        let mut steps = 0;
         let parent_param = loop {
+            // A malformed registry could make the parents a cycle.
+            steps += 1;
+            if steps > 16 {
+                return;
+            }
             let Some(parent) = self.model.types.get(&t).and_then(|x| x.parent.clone()) else {
                 return;
             };
