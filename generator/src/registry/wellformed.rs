@@ -55,8 +55,7 @@ pub(crate) fn check(path: &Path, bytes: &[u8]) -> Result<()> {
             }
             Ok(Event::GeneralRef(r)) => {
                 let name: String = r.as_ref().to_owned();
-                let predefined = ["lt", "gt", "amp", "apos", "quot"].contains(&name.as_str());
-                if !predefined && !name.starts_with('#') {
+                if !is_known_entity(&name) {
                     let pos = reader.buffer_position() as usize;
                     return Err(malformed(
                         path,
@@ -102,6 +101,12 @@ pub(crate) fn check(path: &Path, bytes: &[u8]) -> Result<()> {
     Ok(())
 }
 
+/// XML's predefined entities and character references: the only ones a registry
+/// without a DTD can use.
+fn is_known_entity(name: &str) -> bool {
+    ["lt", "gt", "amp", "apos", "quot"].contains(&name) || name.starts_with('#')
+}
+
 /// Duplicate or malformed attributes, and undefined entities inside values.
 fn check_attributes(start: &quick_xml::events::BytesStart) -> std::result::Result<(), String> {
     for attr in start.attributes().with_checks(true) {
@@ -110,9 +115,7 @@ fn check_attributes(start: &quick_xml::events::BytesStart) -> std::result::Resul
         let mut rest = value.as_ref();
         while let Some(at) = rest.find('&') {
             let entity = rest[at + 1..].split(';').next().unwrap_or_default();
-            let known =
-                ["lt", "gt", "amp", "apos", "quot"].contains(&entity) || entity.starts_with('#');
-            if !known || !rest[at + 1..].contains(';') {
+            if !is_known_entity(entity) || !rest[at + 1..].contains(';') {
                 return Err(format!("undefined entity `&{entity};` in an attribute"));
             }
             rest = &rest[at + 1..];

@@ -170,12 +170,7 @@ pub struct DerivedRule {
 /// Derive the implicit rules of every command and struct the all-extensions build
 /// contains, in item-name order.
 pub fn derive_all(model: &Model, toolchain: Toolchain) -> Vec<DerivedRule> {
-    let mut d = Deriver {
-        model,
-        tc: toolchain,
-        out: Vec::new(),
-        video: model.required.contains("vkCmdBeginVideoCodingKHR"),
-    };
+    let mut d = Deriver::new(model, toolchain);
     for (name, t) in &model.types {
         if t.alias.is_none()
             && t.category.as_deref() == Some("struct")
@@ -209,12 +204,7 @@ fn resolve_command<'m>(model: &'m Model, name: &str) -> Option<&'m CommandDef> {
 
 /// Derive the implicit rules of one command or struct.
 pub fn derive_item(model: &Model, toolchain: Toolchain, item: &str) -> Vec<DerivedRule> {
-    let mut d = Deriver {
-        model,
-        tc: toolchain,
-        out: Vec::new(),
-        video: model.required.contains("vkCmdBeginVideoCodingKHR"),
-    };
+    let mut d = Deriver::new(model, toolchain);
     if let Some(t) = model.types.get(item) {
         if t.category.as_deref() == Some("struct") {
             d.derive_struct(t);
@@ -233,6 +223,16 @@ struct Deriver<'a> {
 }
 
 impl<'a> Deriver<'a> {
+    fn new(model: &'a Model, tc: Toolchain) -> Self {
+        Deriver {
+            model,
+            tc,
+            out: Vec::new(),
+            // Video-coding rules exist only in registries with the video extensions.
+            video: model.required.contains("vkCmdBeginVideoCodingKHR"),
+        }
+    }
+
     fn push(&mut self, item: &str, field: Option<&str>, kind: ImplicitKind, text: String) {
         let vuid = match field {
             Some(f) => format!("VUID-{item}-{f}-{}", kind.tag()),
