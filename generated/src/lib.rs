@@ -2,8 +2,8 @@
 //! `tuff-gen`.
 //!
 //! Everything under `src/` except this file is written by the generator; so are
-//! `VALIDATION.md`, `validation.json` and `validation.svg`, the coverage report that
-//! says, rule by rule, what the wrappers guarantee.
+//! `Cargo.toml`, `VALIDATION.md`, `validation.json` and `validation.svg`, the
+//! coverage report that says, rule by rule, what the wrappers guarantee.
 //!
 //! ```
 //! assert_eq!(tuff::api_info::API_VERSION, (1, 3));
@@ -14,3 +14,15 @@
 
 /// Which registry, core versions and extensions this crate was generated from.
 pub mod api_info;
+mod commands;
+pub mod handles;
+pub mod recorder;
+pub mod structs;
+mod support;
+
+pub use ash::vk;
+pub use handles::*;
+pub use recorder::{InRenderPass, InRendering, Inside, Outside, Recorder, State};
+pub use structs::*;
+pub use support::*;
+pub use tuff_runtime as runtime;

@@ -246,3 +246,39 @@ mod tests {
         static_assertions::assert_not_impl_any!(Vutex<std::rc::Rc<u32>>: Send, Sync);
     }
 }
+
+/// A weak reference of a [`Vrc`]: `std::rc::Weak`, or `std::sync::Weak` with
+/// `multi_thread`.
+///
+/// ```
+/// let strong = tuff_runtime::Vrc::new(1);
+/// let weak: tuff_runtime::sync::Vweak<i32> = tuff_runtime::Vrc::downgrade(&strong);
+/// assert_eq!(weak.upgrade().map(|v| *v), Some(1));
+/// ```
+#[cfg(not(feature = "multi_thread"))]
+pub type Vweak<T> = std::rc::Weak<T>;
+
+/// A weak reference of a [`Vrc`]: `std::rc::Weak`, or `std::sync::Weak` with
+/// `multi_thread`.
+///
+/// ```
+/// let strong = tuff_runtime::Vrc::new(1);
+/// let weak: tuff_runtime::sync::Vweak<i32> = tuff_runtime::Vrc::downgrade(&strong);
+/// assert_eq!(weak.upgrade().map(|v| *v), Some(1));
+/// ```
+#[cfg(feature = "multi_thread")]
+pub type Vweak<T> = std::sync::Weak<T>;
+
+/// Anything a wrapper can keep alive on behalf of another: a handle wrapper's shared
+/// state, an allocation, a closure's captures.
+pub trait Retain: MaybeSendSync {}
+impl<T: MaybeSendSync + ?Sized> Retain for T {}
+
+/// A type-erased strong reference that keeps an object alive (a recorded command
+/// buffer keeps what its commands use; a fence keeps what its submission uses).
+///
+/// ```
+/// let kept: tuff_runtime::Retained = tuff_runtime::Vrc::new(vec![1u8, 2, 3]);
+/// drop(kept);
+/// ```
+pub type Retained = Vrc<dyn Retain>;

@@ -43,6 +43,8 @@ pub struct Model {
     pub emitted: BTreeSet<String>,
     /// Names the config enables: versions up to the cap and the allowlisted extensions.
     pub enabled: BTreeSet<String>,
+    /// For each extension, what it depends on (vk.xml's expression).
+    pub extension_depends: BTreeMap<String, String>,
 }
 
 /// A handle type and what the registry says about its lifetime.
@@ -298,6 +300,11 @@ impl Model {
             required,
             emitted,
             enabled,
+            extension_depends: registry
+                .extensions
+                .iter()
+                .filter_map(|e| Some((e.name.clone(), e.depends.clone()?)))
+                .collect(),
         })
     }
 

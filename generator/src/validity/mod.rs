@@ -113,6 +113,9 @@ pub struct Validity {
     pub comparison: Option<Comparison>,
     /// Whether explicit rules are known (validusage.json was given).
     pub explicit_known: bool,
+    /// The derived implicit rules with the kind and field each is about, which the
+    /// emitters read to settle them.
+    pub derived: Vec<DerivedRule>,
 }
 
 /// Run the pass. Without `validusage`, only the derived implicit rules are known.
@@ -187,5 +190,6 @@ pub fn analyze(model: &Model, validusage: Option<&ValidUsage>) -> Validity {
         rules,
         comparison,
         explicit_known: validusage.is_some(),
+        derived,
     }
 }

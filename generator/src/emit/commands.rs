@@ -1,0 +1,827 @@
+//! Emits `src/commands.rs`: every command of the emitted API whose parameters have a
+//! safe shape becomes a method on the wrapper it dispatches on (commands recorded into
+//! command buffers go on the `Recorder` of the right render-pass state). A command
+//! with a parameter of no safe shape is not emitted; its rules are recorded as left to
+//! the user, who can call it through ash on the raw handles.
+
+use super::handles::parent_of;
+use super::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
+use super::structs::safe_or_ash;
+use super::types::ash_type;
+use super::Context;
+use crate::model::LenEntry;
+use crate::registry::{CommandDef, Field};
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// How one parameter is taken and passed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Param {
+    /// The dispatchable handle: `self`.
+    Dispatch,
+    /// `pAllocator`: always NULL.
+    Allocator,
+    /// A count that a slice argument fills in.
+    Count,
+    /// A plain value.
+    Value,
+    /// A fixed-size array, by reference.
+    Array,
+    /// A handle, as a wrapper.
+    Handle {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of handles, as a slice of wrapper references.
+    HandleSlice,
+    /// One struct by reference.
+    StructRef {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of structs or values.
+    Slice,
+    /// Bytes sized by a count parameter.
+    Bytes,
+    /// A struct Vulkan fills in, whose `pNext` chain the caller builds.
+    InOut,
+    /// The value the command writes, returned.
+    Output,
+    /// The handle the command creates, returned as a wrapper.
+    Created,
+    /// Handles the command creates, one per element of an input array.
+    CreatedArray,
+    /// A count and an array filled in two calls, returned as a Vec.
+    Enumerated,
+    /// The count of an enumeration.
+    EnumCount,
+}
+
+/// A command's plan, or why it has none.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The command.
+    pub name: String,
+    /// The wrapper whose method it becomes.
+    pub receiver: String,
+    /// One shape per parameter.
+    pub params: Vec<Param>,
+}
+
+/// Commands that are emitted as part of something else (destroy and free run in
+/// `Drop`; begin and end of a command buffer are the recorder's typestate).
+pub fn handled_elsewhere(cx: &Context, name: &str) -> Option<&'static str> {
+    if cx
+        .model
+        .handles
+        .values()
+        .any(|h| h.destroyed_by.iter().any(|d| d == name))
+    {
+        return Some("destroy");
+    }
+    match name {
+        "vkBeginCommandBuffer" | "vkEndCommandBuffer" => Some("recorder"),
+        "vkGetInstanceProcAddr" | "vkGetDeviceProcAddr" => Some("loader"),
+        "vkMapMemory" | "vkUnmapMemory" | "vkMapMemory2KHR" => Some("mapping"),
+        _ => None,
+    }
+}
+
+/// Plan a command, or say why it cannot be emitted safely.
+pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
+    let model = cx.model;
+    let cmd = &model.commands[name];
+    let first = cmd.params.first().ok_or("no parameters")?;
+    let receiver = if model.category(&first.type_name) == Some("handle")
+        && model.types[&first.type_name].dispatchable
+    {
+        first.type_name.clone()
+    } else {
+        "Entry".to_owned()
+    };
+    if table(model, name).is_none() {
+        return Err("no function table".into());
+    }
+    let parsed: Vec<_> = cmd.params.iter().map(|p| model.parse_field(p)).collect();
+    // Counts named by another parameter's len.
+    let count_refs: Vec<(usize, String)> = parsed
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| match p.len.first() {
+            Some(LenEntry::Reference(parts)) if parts.len() == 1 => Some((i, parts[0].clone())),
+            _ => None,
+        })
+        .collect();
+    let mut params = Vec::new();
+    for (i, (p, pp)) in cmd.params.iter().zip(&parsed).enumerate() {
+        let category = model.category(&p.type_name);
+        let optional = pp.optional.first().copied().unwrap_or(false);
+        let is_count = count_refs.iter().any(|(_, c)| c == &p.name);
+        let shape = if i == 0 && receiver != "Entry" {
+            Param::Dispatch
+        } else if p.type_name == "VkAllocationCallbacks" {
+            Param::Allocator
+        } else if is_count && p.pointers == 0 {
+            Param::Count
+        } else if is_count && p.pointers == 1 && !p.is_const {
+            Param::EnumCount
+        } else if p.pointers == 0 {
+            if p.static_array.is_some() {
+                Param::Array
+            } else if category == Some("handle") {
+                Param::Handle { optional }
+            } else if category.is_some() || super::shape::is_c_scalar(&p.type_name) {
+                if matches!(category, Some("struct" | "union"))
+                    && cx.facts.has_lifetime(&p.type_name)
+                {
+                    return Err(format!("`{}` by value with pointers", p.name));
+                }
+                Param::Value
+            } else {
+                return Err(format!("`{}` of type {}", p.name, p.type_name));
+            }
+        } else if p.pointers == 1 && p.is_const {
+            let len = pp.len.first();
+            match (len, category) {
+                (None, Some("struct")) => Param::StructRef { optional },
+                (Some(LenEntry::Reference(parts)), _) if parts.len() == 1 => match category {
+                    Some("handle") => Param::HandleSlice,
+                    _ if p.type_name == "void" => Param::Bytes,
+                    Some("struct") | Some("union") | Some(_) => Param::Slice,
+                    None if super::shape::is_c_scalar(&p.type_name) => Param::Slice,
+                    None => return Err(format!("`{}`: array of {}", p.name, p.type_name)),
+                },
+                _ => return Err(format!("`{}`: pointer with length {:?}", p.name, pp.len)),
+            }
+        } else if p.pointers == 1 && !p.is_const {
+            let len = pp.len.first();
+            let enumerated = matches!(len, Some(LenEntry::Reference(parts))
+                if parts.len() == 1 && cmd.params.iter().any(|q| q.name == parts[0] && q.pointers == 1));
+            match (len, category) {
+                (None, Some("handle")) => Param::Created,
+                (_, Some("handle")) if !enumerated => Param::CreatedArray,
+                (_, _) if enumerated => Param::Enumerated,
+                (None, Some("struct")) if has_next(cx, &p.type_name) => Param::InOut,
+                (None, _) if p.type_name != "void" => Param::Output,
+                _ => return Err(format!("`{}`: output {:?}", p.name, pp.len)),
+            }
+        } else {
+            return Err(format!("`{}`: {} levels of pointer", p.name, p.pointers));
+        };
+        params.push(shape);
+    }
+    let outputs = params
+        .iter()
+        .filter(|p| {
+            matches!(
+                p,
+                Param::Output | Param::Created | Param::CreatedArray | Param::Enumerated
+            )
+        })
+        .count();
+    if outputs > 1 {
+        return Err("several outputs".into());
+    }
+    if params
+        .iter()
+        .any(|p| matches!(p, Param::Created | Param::CreatedArray))
+    {
+        let created = cmd
+            .params
+            .last()
+            .map(|p| p.type_name.clone())
+            .unwrap_or_default();
+        let parent = parent_of(cx, &created).unwrap_or_default();
+        if !(parent == receiver
+            || created == "VkInstance"
+            || parent_param(cx, cmd, &parent).is_some())
+        {
+            return Err(format!(
+                "creates a {created} whose parent {parent} it does not name"
+            ));
+        }
+        if params.iter().any(|p| matches!(p, Param::CreatedArray)) {
+            // The count lives in an input struct (`pAllocateInfo->commandBufferCount`)
+            // or is the length of an input array (`createInfoCount`).
+            let len = &parsed.last().map(|p| p.len.clone()).unwrap_or_default();
+            if !matches!(len.first(), Some(LenEntry::Reference(_))) {
+                return Err("created array without a length".into());
+            }
+        }
+    }
+    Ok(Plan {
+        name: name.to_owned(),
+        receiver,
+        params,
+    })
+}
+
+fn has_next(cx: &Context, name: &str) -> bool {
+    cx.model
+        .types
+        .get(name)
+        .is_some_and(|t| t.members.iter().any(|m| m.name == "pNext"))
+}
+
+/// A parameter (direct or a member of a struct parameter) of type `parent`.
+fn parent_param(cx: &Context, cmd: &CommandDef, parent: &str) -> Option<(String, Option<String>)> {
+    for p in &cmd.params {
+        if p.type_name == parent && p.pointers == 0 {
+            return Some((p.name.clone(), None));
+        }
+        if let Some(t) = cx.model.types.get(&p.type_name) {
+            if let Some(m) = t
+                .members
+                .iter()
+                .find(|m| m.type_name == parent && m.pointers == 0)
+            {
+                return Some((p.name.clone(), Some(m.name.clone())));
+            }
+        }
+    }
+    None
+}
+
+/// Every emitted command with its plan or the reason it has none.
+pub fn plans(cx: &Context) -> Vec<(String, Result<Plan, String>)> {
+    cx.model
+        .commands
+        .values()
+        .filter(|c| c.alias.is_none() && cx.model.emitted.contains(&c.name))
+        .filter(|c| handled_elsewhere(cx, &c.name).is_none())
+        .map(|c| (c.name.clone(), plan(cx, &c.name)))
+        .collect()
+}
+
+pub(super) fn emit(cx: &Context) -> TokenStream {
+    let mut items = Vec::new();
+    for (_, plan) in plans(cx) {
+        if let Ok(plan) = plan {
+            items.push(emit_command(cx, &plan));
+        }
+    }
+    quote! {
+        //! Commands as methods on the wrappers they dispatch on.
+        #![allow(
+            clippy::too_many_arguments,
+            clippy::needless_lifetimes,
+            clippy::let_unit_value,
+            unused_mut,
+            clippy::unit_arg
+        )]
+        use crate::handles::*;
+        use crate::structs::*;
+        use crate::{recorder::*, Entry, Error, Handle, Result};
+        use ash::vk;
+        #(#items)*
+    }
+}
+
+fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
+    let model = cx.model;
+    let cmd = &model.commands[&plan.name];
+    let cfg = super::names::cfg_of(model, model.condition(&plan.name));
+    let f = ident(&command_fn(&plan.name));
+    let is_cmd = plan.receiver == "VkCommandBuffer";
+    let lvl = level(model, &plan.name);
+    let receiver_raw = if plan.receiver == "Entry" {
+        quote!()
+    } else if is_cmd {
+        quote!(self.raw(),)
+    } else {
+        quote!(self.raw(),)
+    };
+    // The ash table of the command.
+    let device_path = match (lvl, plan.receiver.as_str()) {
+        (Level::Entry, _) => quote!(self),
+        (Level::Instance, "VkInstance") => quote!(self),
+        (Level::Instance, _) => quote!(self.parent()),
+        (Level::Device, "VkDevice") => quote!(self),
+        (Level::Device, "VkQueue") => quote!(self.parent()),
+        (Level::Device, _) => quote!(self.device()),
+    };
+    let (table_expr, ext_check) = match table(model, &plan.name) {
+        Some(Table::Core(m)) => {
+            let fp = ident(&format!("fp_v1_{m}"));
+            (quote!(#device_path.fns().#fp()), quote!())
+        }
+        Some(Table::Extension(e)) => {
+            let fe = ident(&super::names::feature(&e));
+            let msg = e.clone();
+            (
+                quote!(ext_table),
+                quote!(let ext_table = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?;),
+            )
+        }
+        None => return quote!(),
+    };
+    let fallible_ext = !ext_check.is_empty();
+    let mut args: Vec<TokenStream> = Vec::new(); // method parameters
+    let mut pre: Vec<TokenStream> = Vec::new();
+    let mut call_args: Vec<TokenStream> = Vec::new();
+    let mut retain: Vec<TokenStream> = Vec::new();
+    let mut ret_ty = quote!(());
+    let mut ret_expr = quote!(());
+    let mut post: Vec<TokenStream> = Vec::new();
+    let mut two_call = None;
+    let mut fallible = cmd.return_type == "VkResult" || fallible_ext;
+    let mut lifetimes = false;
+    let created_ty = cmd
+        .params
+        .last()
+        .map(|p| p.type_name.clone())
+        .unwrap_or_default();
+    let created_parent = parent_of(cx, &created_ty).unwrap_or_default();
+    let pool_override = if created_parent != plan.receiver {
+        parent_param(cx, cmd, &created_parent)
+    } else {
+        None
+    };
+    for (p, shape) in cmd.params.iter().zip(&plan.params) {
+        let name = ident(&param(&p.name));
+        let raw_field = field_ident(&p.name);
+        let _ = raw_field;
+        match shape {
+            Param::Dispatch => call_args.push(receiver_raw.clone()),
+            Param::Allocator => call_args.push(quote!(core::ptr::null(),)),
+            Param::Count => {
+                // The length of the first slice that names this count.
+                let user = cmd
+                    .params
+                    .iter()
+                    .zip(&plan.params)
+                    .find(|(q, _)| {
+                        model
+                            .parse_field(q)
+                            .len
+                            .first()
+                            .and_then(|l| l.other_param().map(str::to_owned))
+                            == Some(p.name.clone())
+                    })
+                    .map(|(q, _)| ident(&param(&q.name)));
+                match user {
+                    Some(u) => {
+                        let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(u32));
+                        call_args.push(quote!(#u.len() as #ty,));
+                    }
+                    None => call_args.push(quote!(0,)),
+                }
+            }
+            Param::Value => {
+                let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()));
+                args.push(quote!(#name: #ty));
+                call_args.push(quote!(#name,));
+            }
+            Param::Array => {
+                let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()));
+                let n = super::types::array_size(p.static_array.as_deref().unwrap_or("1"));
+                args.push(quote!(#name: &[#ty; #n]));
+                call_args.push(quote!(#name,));
+            }
+            Param::Handle { optional } => {
+                let w = type_ident(&p.type_name);
+                let optional =
+                    &(*optional && !(plan.name == "vkQueueSubmit" && p.type_name == "VkFence"));
+                if pool_override
+                    .as_ref()
+                    .is_some_and(|(pn, m)| pn == &p.name && m.is_none())
+                    || *optional
+                {
+                    if *optional {
+                        args.push(quote!(#name: Option<&#w>));
+                        call_args.push(quote!(#name.map_or(vk::#w::null(), |h| h.raw()),));
+                        if is_cmd {
+                            retain.push(
+                                quote!(if let Some(h) = #name { self.retain(h.retained()); }),
+                            );
+                        }
+                        continue;
+                    }
+                }
+                args.push(quote!(#name: &#w));
+                call_args.push(quote!(#name.raw(),));
+                if is_cmd {
+                    retain.push(quote!(self.retain(#name.retained());));
+                }
+            }
+            Param::HandleSlice => {
+                let w = type_ident(&p.type_name);
+                args.push(quote!(#name: &[&#w]));
+                if is_cmd {
+                    pre.push(quote!(for h in #name { self.retain(h.retained()); }));
+                }
+                pre.push(quote!(let #name: smallvec::SmallVec<[vk::#w; 8]> = #name.iter().map(|h| h.raw()).collect();));
+                call_args.push(quote!(#name.as_ptr(),));
+                if is_cmd {
+                    // Retained before the slice is shadowed by raw handles.
+                    retain.push(quote!());
+                }
+            }
+            Param::StructRef { optional } => {
+                lifetimes = true;
+                let ty = safe_or_ash(cx, &p.type_name);
+                let is_override = pool_override
+                    .as_ref()
+                    .is_some_and(|(pn, m)| pn == &p.name && m.is_some());
+                if *optional {
+                    args.push(quote!(#name: Option<&#ty>));
+                    call_args.push(
+                        quote!(#name.map_or(core::ptr::null(), |s| s as *const #ty as *const _),),
+                    );
+                } else if is_override {
+                    let (_, member) = pool_override.clone().unwrap_or_default();
+                    let member = field_ident(&member.unwrap_or_default());
+                    let parent_w = type_ident(&created_parent);
+                    let parent_name =
+                        ident(&param(&created_parent.trim_start_matches("Vk").to_owned()));
+                    args.push(quote!(#parent_name: &#parent_w));
+                    args.push(quote!(#name: &#ty));
+                    pre.push(quote! {
+                        // The parent is taken as a wrapper and written into the info, so
+                        // the created objects can hold it.
+                        let mut #name = *#name;
+                        #name.as_raw_mut().#member = #parent_name.raw();
+                    });
+                    call_args.push(quote!(#name.as_raw(),));
+                } else {
+                    args.push(quote!(#name: &#ty));
+                    call_args.push(quote!(#name as *const #ty as *const _,));
+                }
+            }
+            Param::Slice => {
+                lifetimes = true;
+                let ty = if model.category(&p.type_name) == Some("struct") {
+                    safe_or_ash(cx, &p.type_name)
+                } else {
+                    ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()))
+                };
+                args.push(quote!(#name: &[#ty]));
+                call_args.push(quote!(#name.as_ptr().cast(),));
+            }
+            Param::Bytes => {
+                args.push(quote!(#name: &[u8]));
+                call_args.push(quote!(#name.as_ptr().cast(),));
+            }
+            Param::InOut => {
+                lifetimes = true;
+                let ty = safe_or_ash(cx, &p.type_name);
+                args.push(quote!(#name: &mut #ty));
+                call_args.push(quote!(#name as *mut #ty as *mut _,));
+            }
+            Param::Output => {
+                let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()));
+                let ty = if cx.facts.has_lifetime(&p.type_name) {
+                    let id = type_ident(&p.type_name);
+                    quote!(vk::#id<'static>)
+                } else {
+                    ty
+                };
+                pre.push(quote!(let mut out: #ty = Default::default();));
+                call_args.push(quote!(&mut out,));
+                ret_ty = ty;
+                ret_expr = quote!(out);
+            }
+            Param::Created | Param::CreatedArray => {
+                let w = type_ident(&p.type_name);
+                let parent_expr = if created_parent == plan.receiver {
+                    quote!(self)
+                } else {
+                    let parent_name =
+                        ident(&param(&created_parent.trim_start_matches("Vk").to_owned()));
+                    match &pool_override {
+                        Some((pn, None)) => ident(&param(pn)).into_token_stream_ref(),
+                        _ => quote!(#parent_name),
+                    }
+                };
+                let parent_arg = if p.type_name == "VkInstance" || p.type_name == "VkDevice" {
+                    quote!()
+                } else {
+                    quote!(#parent_expr,)
+                };
+                if matches!(shape, Param::Created) {
+                    pre.push(quote!(let mut out = vk::#w::null();));
+                    call_args.push(quote!(&mut out,));
+                    ret_ty = quote!(#w);
+                    ret_expr = match p.type_name.as_str() {
+                        "VkInstance" => quote!(crate::handles::Instance::from_created(
+                            self,
+                            out,
+                            &create_info.enabled_extensions()
+                        )),
+                        "VkDevice" => quote!(crate::handles::Device::from_created(
+                            self,
+                            out,
+                            &create_info.enabled_extensions()
+                        )),
+                        "VkDescriptorPool" => {
+                            quote!(#w::from_raw(out, #parent_arg None, true).with_flags(create_info.flags))
+                        }
+                        _ => quote!(#w::from_raw(out, #parent_arg None, true)),
+                    };
+                } else {
+                    let pp = model.parse_field(p);
+                    let count = match pp.len.first() {
+                        Some(LenEntry::Reference(parts)) if parts.len() == 2 => {
+                            let s = ident(&param(&parts[0]));
+                            let m = field_ident(&parts[1]);
+                            quote!(#s.as_raw().#m as usize)
+                        }
+                        Some(LenEntry::Reference(parts)) => {
+                            // The length of an input array.
+                            let arr = cmd
+                                .params
+                                .iter()
+                                .find(|q| {
+                                    model
+                                        .parse_field(q)
+                                        .len
+                                        .first()
+                                        .and_then(|l| l.other_param().map(str::to_owned))
+                                        == Some(parts[0].clone())
+                                        && q.name != p.name
+                                })
+                                .map(|q| ident(&param(&q.name)));
+                            match arr {
+                                Some(a) => quote!(#a.len()),
+                                None => quote!(0usize),
+                            }
+                        }
+                        _ => quote!(0usize),
+                    };
+                    pre.push(quote!(let mut out = vec![vk::#w::null(); #count];));
+                    call_args.push(quote!(out.as_mut_ptr(),));
+                    ret_ty = quote!(Vec<#w>);
+                    ret_expr = quote!(out.into_iter().map(|raw| #w::from_raw(raw, #parent_arg None, true)).collect());
+                }
+            }
+            Param::EnumCount => {
+                call_args.push(quote!(&mut count,));
+            }
+            Param::Enumerated => {
+                let elem_is_handle = model.category(&p.type_name) == Some("handle");
+                let elem = if p.type_name == "void" {
+                    quote!(u8)
+                } else if elem_is_handle {
+                    let id = type_ident(&p.type_name);
+                    quote!(vk::#id)
+                } else if cx.facts.has_lifetime(&p.type_name) {
+                    let id = type_ident(&p.type_name);
+                    quote!(vk::#id<'static>)
+                } else {
+                    ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()))
+                };
+                call_args.push(quote!(items_ptr.cast(),));
+                two_call = Some(elem.clone());
+                if elem_is_handle {
+                    // Images of a swapchain: owned by it, kept alive with it.
+                    let w = type_ident(&p.type_name);
+                    let parent_w = parent_of(cx, &p.type_name).unwrap_or_default();
+                    let parent_ref = if parent_w == plan.receiver {
+                        quote!(self)
+                    } else {
+                        quote!(self)
+                    };
+                    let keep = cmd
+                        .params
+                        .iter()
+                        .find(|q| {
+                            q.type_name != p.type_name
+                                && model.category(&q.type_name) == Some("handle")
+                                && q.pointers == 0
+                                && !model.types[&q.type_name].dispatchable
+                        })
+                        .map(|q| ident(&param(&q.name)));
+                    let keep = match keep {
+                        Some(k) => quote!(Some(#k.retained())),
+                        None => quote!(None),
+                    };
+                    ret_ty = quote!(Vec<#w>);
+                    ret_expr = quote!(items.into_iter().map(|raw| #w::from_raw(raw, #parent_ref, #keep, false)).collect());
+                } else {
+                    ret_ty = quote!(Vec<#elem>);
+                    ret_expr = quote!(items);
+                }
+            }
+        }
+    }
+    // Retain handles of slices for recorded commands.
+    let mut slice_retains = Vec::new();
+    if false {
+        for (p, shape) in cmd.params.iter().zip(&plan.params) {
+            if matches!(shape, Param::HandleSlice) {
+                let name = ident(&param(&p.name));
+                slice_retains.push(quote!(for h in #name { self.retain(h.retained()); }));
+            }
+        }
+    }
+    post.clear();
+    match plan.name.as_str() {
+        "vkBindBufferMemory" | "vkBindImageMemory" => {
+            let obj = ident(&param(&cmd.params[1].name));
+            post.push(quote!(#obj.retain_memory(memory.retained());));
+        }
+        "vkQueueSubmit" => post.push(quote! {
+            // The fence keeps the submitted command buffers, and so everything they
+            // use, alive until it is seen signalled.
+            let device = self.parent();
+            let mut kept = Vec::new();
+            for s in submits {
+                // SAFETY: the safe SubmitInfo stores a HandleSlice's handles and length.
+                let raw = unsafe { core::slice::from_raw_parts(s.p_command_buffers, s.command_buffer_count as usize) };
+                kept.extend(raw.iter().filter_map(|cb| device.command_buffer(*cb)));
+            }
+            fence.track(kept);
+        }),
+        "vkGetFenceStatus" => post.push(quote!(if r == vk::Result::SUCCESS { fence.completed(); })),
+        "vkResetFences" => post.push(quote!(for f in fences_w { f.completed(); })),
+        "vkWaitForFences" => post.push(quote!(if r == vk::Result::SUCCESS && (wait_all == vk::TRUE || fences_w.len() == 1) { for f in fences_w { f.completed(); } })),
+        _ => {}
+    }
+    if plan.name == "vkWaitForFences" || plan.name == "vkResetFences" {
+        pre.insert(0, quote!(let fences_w: &[&Fence] = fences;));
+    }
+    if plan.name == "vkAllocateCommandBuffers" {
+        ret_expr = quote!({
+            let cbs: Vec<CommandBuffer> = #ret_expr;
+            for cb in &cbs { self.register_command_buffer(cb); }
+            cbs
+        });
+    }
+    let fp = quote!((#table_expr.#f));
+    let success: Vec<String> = cmd
+        .successcodes
+        .as_deref()
+        .unwrap_or("VK_SUCCESS")
+        .split(',')
+        .map(str::to_owned)
+        .collect();
+    let multi_success = cmd.return_type == "VkResult"
+        && success
+            .iter()
+            .any(|s| s != "VK_SUCCESS" && s != "VK_INCOMPLETE");
+    let count_ty = cmd
+        .params
+        .iter()
+        .zip(&plan.params)
+        .find(|(_, s)| matches!(s, Param::EnumCount))
+        .and_then(|(p, _)| ash_type(model, &cx.facts, &p.type_name))
+        .unwrap_or(quote!(u32));
+    let body = if let Some(elem) = &two_call {
+        let check = if cmd.return_type == "VkResult" {
+            quote!(let r = unsafe { #fp(#(#call_args)*) }; if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE { return Err(Error::Vk(r)); })
+        } else {
+            quote!(unsafe { #fp(#(#call_args)*) };)
+        };
+        let repeat = if cmd.return_type == "VkResult" {
+            quote!(if r == vk::Result::INCOMPLETE {
+                continue;
+            })
+        } else {
+            quote!()
+        };
+        quote! {
+            #(#pre)*
+            loop {
+                let mut count: #count_ty = 0;
+                let items_ptr: *mut #elem = core::ptr::null_mut();
+                // SAFETY: the first call only writes the count.
+                #check
+                let mut items: Vec<#elem> = Vec::with_capacity(count as usize);
+                items.resize_with(count as usize, Default::default);
+                let items_ptr = items.as_mut_ptr();
+                // SAFETY: `items` holds `count` elements for the second call.
+                #check
+                #repeat
+                items.truncate(count as usize);
+                return Ok(#ret_expr);
+            }
+        }
+    } else if cmd.return_type == "VkResult" {
+        let ok = if multi_success {
+            ret_ty = quote!((#ret_ty, vk::Result));
+            quote!(Ok((#ret_expr, r)))
+        } else {
+            quote!(Ok(#ret_expr))
+        };
+        quote! {
+            #(#pre)*
+            // SAFETY: every handle argument comes from a live wrapper, every pointer from
+            // a reference or slice that outlives the call, and every count from the
+            // length of the slice it sizes.
+            let r = unsafe { #fp(#(#call_args)*) };
+            if r.as_raw() < 0 {
+                return Err(Error::Vk(r));
+            }
+            #(#post)*
+            #(#retain)*
+            #(#slice_retains)*
+            #ok
+        }
+    } else if cmd.return_type == "void" {
+        quote! {
+            #(#pre)*
+            // SAFETY: every handle argument comes from a live wrapper, every pointer from
+            // a reference or slice that outlives the call, and every count from the
+            // length of the slice it sizes.
+            unsafe { #fp(#(#call_args)*) };
+            #(#retain)*
+            #(#slice_retains)*
+            #ret_expr
+        }
+    } else {
+        let rt = ash_type(model, &cx.facts, &cmd.return_type).unwrap_or(quote!(()));
+        ret_ty = rt;
+        quote! {
+            #(#pre)*
+            // SAFETY: every handle argument comes from a live wrapper, every pointer from
+            // a reference or slice that outlives the call.
+            let r = unsafe { #fp(#(#call_args)*) };
+            #(#retain)*
+            r
+        }
+    };
+    if two_call.is_some() {
+        fallible = true;
+    }
+    let ret = if fallible {
+        quote!(Result<#ret_ty>)
+    } else {
+        quote!(#ret_ty)
+    };
+    let body = if fallible && cmd.return_type != "VkResult" && two_call.is_none() {
+        quote!(#ext_check Ok({ #body }))
+    } else {
+        quote!(#ext_check #body)
+    };
+    let lt = if lifetimes { quote!(<'a>) } else { quote!() };
+    let mut self_ref = if is_cmd {
+        quote!(&mut self)
+    } else {
+        quote!(&self)
+    };
+    let transition = match plan.name.as_str() {
+        "vkCmdBeginRenderPass" | "vkCmdBeginRenderPass2" => Some(quote!(InRenderPass)),
+        "vkCmdBeginRendering" => Some(quote!(InRendering)),
+        "vkCmdEndRenderPass" | "vkCmdEndRenderPass2" | "vkCmdEndRendering" => Some(quote!(Outside)),
+        _ => None,
+    };
+    let (ret, body) = match &transition {
+        Some(state) => {
+            self_ref = quote!(mut self);
+            (
+                quote!(Recorder<'c, #state>),
+                quote!(#body; self.into_state()),
+            )
+        }
+        None => (ret, body),
+    };
+    let doc = format!("`{}`{}", plan.name, super::doc_rules(cx, &plan.name));
+    let method = quote! {
+        #[doc = #doc]
+        #[inline]
+        pub fn #f #lt(#self_ref, #(#args),*) -> #ret {
+            #body
+        }
+    };
+    let method = replace_lifetime_args(method, lifetimes);
+    match plan.receiver.as_str() {
+        "Entry" => quote!(#cfg impl Entry { #method }),
+        "VkCommandBuffer" => {
+            let state = match (cmd.renderpass.as_deref(), plan.name.as_str()) {
+                (
+                    _,
+                    "vkCmdEndRenderPass"
+                    | "vkCmdEndRenderPass2"
+                    | "vkCmdNextSubpass"
+                    | "vkCmdNextSubpass2",
+                ) => quote!(impl<'c> Recorder<'c, InRenderPass>),
+                (_, "vkCmdEndRendering") => quote!(impl<'c> Recorder<'c, InRendering>),
+                (Some("inside"), _) => quote!(impl<'c, S: Inside> Recorder<'c, S>),
+                (Some("outside"), _) => quote!(impl<'c> Recorder<'c, Outside>),
+                _ => quote!(impl<'c, S: State> Recorder<'c, S>),
+            };
+            quote!(#cfg #state { #method })
+        }
+        r => {
+            let w = type_ident(r);
+            quote!(#cfg impl #w { #method })
+        }
+    }
+}
+
+/// Methods use `'a` for the structs they take; the lifetime is declared on the method.
+fn replace_lifetime_args(method: TokenStream, _lifetimes: bool) -> TokenStream {
+    method
+}
+
+trait IntoTokens {
+    fn into_token_stream_ref(self) -> TokenStream;
+}
+impl IntoTokens for proc_macro2::Ident {
+    fn into_token_stream_ref(self) -> TokenStream {
+        quote!(#self)
+    }
+}
+
+#[allow(dead_code)]
+fn unused(_: &Field) {}

@@ -1,0 +1,586 @@
+//! Emits `src/handles.rs`: one wrapper per handle type of the emitted API. A wrapper
+//! is a cheap-to-clone reference (`Vrc`) to the raw handle and its parent; the last
+//! clone to go destroys or frees the handle, so children keep parents alive and a
+//! command buffer or a pending submission that holds a clone keeps what it uses alive.
+
+use super::names::{
+    ash_extension_module, cfg_of, command_fn, feature, field_ident, ident, level, type_ident, Level,
+};
+use super::Context;
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// Handles of the emitted API, in name order.
+pub fn emitted_handles(cx: &Context) -> Vec<String> {
+    cx.model
+        .handles
+        .keys()
+        .filter(|n| cx.model.emitted.contains(*n))
+        .cloned()
+        .collect()
+}
+
+/// The parent a wrapper holds: the handle it is created from (the pool for command
+/// buffers and descriptor sets).
+pub fn parent_of(cx: &Context, handle: &str) -> Option<String> {
+    cx.model.handles.get(handle)?.parent_chain.first().cloned()
+}
+
+/// `.parent()` steps from `from` up to the wrapper of type `to`, or `None`.
+pub fn path_to(cx: &Context, from: &str, to: &str) -> Option<TokenStream> {
+    let mut steps = Vec::new();
+    let mut current = from.to_owned();
+    while current != to {
+        current = parent_of(cx, &current)?;
+        steps.push(quote!(.parent()));
+        if steps.len() > 8 {
+            return None;
+        }
+    }
+    Some(quote!(#(#steps)*))
+}
+
+/// Like [`path_to`], from inside the wrapper's inner struct (whose parent is a field).
+fn inner_path(cx: &Context, from: &str, to: &str) -> Option<TokenStream> {
+    let path = path_to(cx, from, to)?.to_string();
+    let path = path.replacen(". parent ()", ". parent", 1);
+    path.parse().ok()
+}
+
+/// Extensions of the config with commands at `level`.
+pub fn extensions_at(cx: &Context, at: Level) -> Vec<String> {
+    let mut exts: Vec<String> = Vec::new();
+    for c in cx.model.commands.values() {
+        if c.alias.is_some()
+            || !cx.model.emitted.contains(&c.name)
+            || level(cx.model, &c.name) != at
+        {
+            continue;
+        }
+        if let Some(super::names::Table::Extension(e)) = super::names::table(cx.model, &c.name) {
+            if !exts.contains(&e) {
+                exts.push(e);
+            }
+        }
+    }
+    exts.sort();
+    exts
+}
+
+/// Handles bound to memory by a `vkBind*Memory` command of the emitted API.
+pub fn memory_bound(cx: &Context, handle: &str) -> bool {
+    cx.model.commands.values().any(|c| {
+        c.alias.is_none()
+            && cx.model.emitted.contains(&c.name)
+            && c.name.starts_with("vkBind")
+            && c.name.ends_with("Memory")
+            && c.params.get(1).is_some_and(|p| p.type_name == handle)
+    })
+}
+
+pub(super) fn emit(cx: &Context) -> TokenStream {
+    let mut items = Vec::new();
+    for h in emitted_handles(cx) {
+        items.push(match h.as_str() {
+            "VkInstance" => emit_instance(cx),
+            "VkDevice" => emit_device(cx),
+            _ => emit_handle(cx, &h),
+        });
+    }
+    quote! {
+        //! Handle wrappers. Each derefs to its raw `ash::vk` handle, so anything the
+        //! wrappers lack can still be called through ash.
+        #![allow(clippy::new_without_default)]
+        use crate::{Entry, Handle};
+        use ash::vk;
+        use tuff_runtime::{Retained, Vrc, Vutex};
+        #(#items)*
+    }
+}
+
+fn ext_tables(cx: &Context, at: Level, kind: &str) -> (TokenStream, Vec<(String, TokenStream)>) {
+    let exts = extensions_at(cx, at);
+    let struct_name = ident(&format!("{kind}Extensions"));
+    let fn_ty = ident(&format!("{kind}Fn"));
+    let mut fields = Vec::new();
+    let mut loads = Vec::new();
+    for e in &exts {
+        let f = ident(&feature(e));
+        let feat = feature(e);
+        let module = ash_extension_module(e);
+        let doc = format!("`{e}`'s commands, when the extension is enabled.");
+        fields.push(quote! {
+            #[cfg(feature = #feat)]
+            #[doc = #doc]
+            pub #f: Option<#module::#fn_ty>,
+        });
+        loads.push((e.clone(), quote!(#f)));
+    }
+    let doc = format!(
+        "The function tables of the enabled {} extensions.",
+        kind.to_lowercase()
+    );
+    (
+        quote! {
+            #[doc = #doc]
+            #[derive(Clone, Default)]
+            #[allow(missing_copy_implementations)]
+            pub struct #struct_name {
+                #(#fields)*
+            }
+        },
+        loads,
+    )
+}
+
+fn emit_instance(cx: &Context) -> TokenStream {
+    let (ext_struct, loads) = ext_tables(cx, Level::Instance, "Instance");
+    let load_stmts = loads.iter().map(|(e, f)| {
+        let feat = feature(e);
+        let module = ash_extension_module(e);
+        let name_lit = e.as_str();
+        quote! {
+            #[cfg(feature = #feat)]
+            if enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()) {
+                ext.#f = Some(#module::Instance::new(entry.fns(), &fns).fp().clone());
+            }
+        }
+    });
+    quote! {
+        #ext_struct
+
+        /// A Vulkan instance: the loader's function tables and the extensions enabled on
+        /// it. Clones share it; the last one destroys it.
+        #[derive(Clone)]
+        pub struct Instance {
+            inner: Vrc<InstanceInner>,
+        }
+        struct InstanceInner {
+            raw: vk::Instance,
+            entry: Entry,
+            fns: ash::Instance,
+            ext: InstanceExtensions,
+        }
+        impl Instance {
+            /// Wraps an instance created by [`Entry::create_instance`].
+            pub(crate) fn from_created(entry: &Entry, raw: vk::Instance, enabled: &[&core::ffi::CStr]) -> Instance {
+                // SAFETY: `raw` was just created from `entry`'s loader.
+                let fns = unsafe { ash::Instance::load(entry.fns().static_fn(), raw) };
+                #[allow(unused_mut)]
+                let mut ext = InstanceExtensions::default();
+                let _ = enabled;
+                #(#load_stmts)*
+                Instance { inner: Vrc::new(InstanceInner { raw, entry: entry.clone(), fns, ext }) }
+            }
+            /// ash's instance-level function tables.
+            #[inline]
+            pub fn fns(&self) -> &ash::Instance {
+                &self.inner.fns
+            }
+            /// The extension function tables loaded for this instance.
+            #[inline]
+            pub fn ext(&self) -> &InstanceExtensions {
+                &self.inner.ext
+            }
+            /// The loader this instance was created from.
+            #[inline]
+            pub fn entry(&self) -> &Entry {
+                &self.inner.entry
+            }
+        }
+        impl Handle for Instance {
+            type Raw = vk::Instance;
+            #[inline]
+            fn raw(&self) -> vk::Instance {
+                self.inner.raw
+            }
+        }
+        impl core::ops::Deref for Instance {
+            type Target = vk::Instance;
+            #[inline]
+            fn deref(&self) -> &vk::Instance {
+                &self.inner.raw
+            }
+        }
+        impl Drop for InstanceInner {
+            fn drop(&mut self) {
+                // SAFETY: every child holds a clone of the instance, so none is left
+                // (VUID-vkDestroyInstance-instance-00629); no allocator was given.
+                unsafe { (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null()) };
+            }
+        }
+    }
+}
+
+fn emit_device(cx: &Context) -> TokenStream {
+    let (ext_struct, loads) = ext_tables(cx, Level::Device, "Device");
+    let load_stmts = loads.iter().map(|(e, f)| {
+        let feat = feature(e);
+        let module = ash_extension_module(e);
+        let name_lit = e.as_str();
+        quote! {
+            #[cfg(feature = #feat)]
+            if enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()) {
+                ext.#f = Some(#module::Device::new(physical.parent().fns(), &fns).fp().clone());
+            }
+        }
+    });
+    quote! {
+        #ext_struct
+
+        /// A logical device: its function tables and the extensions enabled on it.
+        /// Clones share it; the last one waits for the device to go idle and destroys it.
+        #[derive(Clone)]
+        pub struct Device {
+            inner: Vrc<DeviceInner>,
+        }
+        struct DeviceInner {
+            raw: vk::Device,
+            physical: PhysicalDevice,
+            fns: ash::Device,
+            ext: DeviceExtensions,
+            command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, tuff_runtime::Vweak<dyn tuff_runtime::Retain>>>,
+        }
+        impl Device {
+            pub(crate) fn from_created(physical: &PhysicalDevice, raw: vk::Device, enabled: &[&core::ffi::CStr]) -> Device {
+                // SAFETY: `raw` was just created from this physical device's instance.
+                let fns = unsafe { ash::Device::load(physical.parent().fns().fp_v1_0(), raw) };
+                #[allow(unused_mut)]
+                let mut ext = DeviceExtensions::default();
+                let _ = enabled;
+                #(#load_stmts)*
+                Device { inner: Vrc::new(DeviceInner { raw, physical: physical.clone(), fns, ext, command_buffers: Vutex::new(Default::default()) }) }
+            }
+            /// ash's device-level function tables.
+            #[inline]
+            pub fn fns(&self) -> &ash::Device {
+                &self.inner.fns
+            }
+            /// The extension function tables loaded for this device.
+            #[inline]
+            pub fn ext(&self) -> &DeviceExtensions {
+                &self.inner.ext
+            }
+            /// The physical device this device was created on.
+            #[inline]
+            pub fn parent(&self) -> &PhysicalDevice {
+                &self.inner.physical
+            }
+            /// Remembers a command buffer so that a submission naming its raw handle
+            /// can keep it alive.
+            pub(crate) fn register_command_buffer(&self, cb: &CommandBuffer) {
+                self.inner.command_buffers.lock().insert(cb.raw(), Vrc::downgrade(&cb.retained()));
+            }
+            pub(crate) fn forget_command_buffer(&self, raw: vk::CommandBuffer) {
+                self.inner.command_buffers.lock().remove(&raw);
+            }
+            /// The live command buffer with this raw handle.
+            pub(crate) fn command_buffer(&self, raw: vk::CommandBuffer) -> Option<Retained> {
+                self.inner.command_buffers.lock().get(&raw).and_then(|w| w.upgrade())
+            }
+        }
+        impl Handle for Device {
+            type Raw = vk::Device;
+            #[inline]
+            fn raw(&self) -> vk::Device {
+                self.inner.raw
+            }
+        }
+        impl core::ops::Deref for Device {
+            type Target = vk::Device;
+            #[inline]
+            fn deref(&self) -> &vk::Device {
+                &self.inner.raw
+            }
+        }
+        impl Drop for DeviceInner {
+            fn drop(&mut self) {
+                // SAFETY: every child holds a clone of the device, so none is left
+                // (VUID-vkDestroyDevice-device-00378); waiting for idle first means no
+                // submission is still executing (VUID-vkDestroyDevice-device-05137).
+                unsafe {
+                    let _ = (self.fns.fp_v1_0().device_wait_idle)(self.raw);
+                    (self.fns.fp_v1_0().destroy_device)(self.raw, core::ptr::null());
+                }
+            }
+        }
+    }
+}
+
+fn emit_handle(cx: &Context, name: &str) -> TokenStream {
+    let model = cx.model;
+    let id = type_ident(name);
+    let inner = ident(&format!("{}Inner", super::names::type_name(name)));
+    let cfg = cfg_of(model, model.condition(name));
+    let handle = &model.handles[name];
+    let parent = parent_of(cx, name);
+    let parent_ty = parent.as_deref().map(type_ident);
+    let bound = memory_bound(cx, name);
+    let destroy = handle
+        .destroyed_by
+        .iter()
+        .find(|d| model.emitted.contains(*d))
+        .cloned();
+    let doc = match &destroy {
+        Some(d) => format!(
+            "A `{name}`. Clones share it; the last one to go calls `{d}`, after every submission that used it has completed."
+        ),
+        None => format!(
+            "A `{name}`, owned by the implementation: the wrapper keeps its parent alive and never destroys it."
+        ),
+    };
+    let parent_field = parent_ty.as_ref().map(|p| quote!(parent: #p,));
+    let parent_fn = parent_ty.as_ref().map(|p| {
+        quote! {
+            /// The object this one was created from, which it keeps alive.
+            #[inline]
+            pub fn parent(&self) -> &#p {
+                &self.inner.parent
+            }
+        }
+    });
+    let bound_field = bound.then(|| quote!(bound: Vutex<Option<Retained>>,));
+    let bound_init = bound.then(|| quote!(bound: Vutex::new(None),));
+    let bound_fn = bound.then(|| {
+        quote! {
+            /// Keeps `memory` alive as long as this object, once it is bound to it.
+            pub(crate) fn retain_memory(&self, memory: Retained) {
+                *self.inner.bound.lock() = Some(memory);
+            }
+        }
+    });
+    let drop_impl = destroy.as_ref().and_then(|d| {
+        let cmd = &model.commands[d];
+        let device_path = inner_path(cx, name, &cmd.params[0].type_name)?;
+        let table = match super::names::table(model, d)? {
+            super::names::Table::Core(m) => {
+                let fp = ident(&format!("fp_v1_{m}"));
+                quote!(self #device_path.fns().#fp())
+            }
+            super::names::Table::Extension(e) => {
+                let f = ident(&feature(e.as_str()));
+                quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
+            }
+        };
+        let f = ident(&command_fn(d));
+        let mut args = Vec::new();
+        let mut has_count = false;
+        for (i, p) in cmd.params.iter().enumerate() {
+            if i == 0 {
+                args.push(quote!(self #device_path.raw()));
+            } else if p.type_name == "VkAllocationCallbacks" {
+                args.push(quote!(core::ptr::null()));
+            } else if p.type_name == name && p.pointers == 1 {
+                args.push(quote!(&self.raw));
+            } else if p.type_name == name {
+                args.push(quote!(self.raw));
+            } else if Some(&p.type_name) == parent.as_ref() {
+                args.push(quote!(self.parent.raw()));
+            } else if p.type_name == "uint32_t" {
+                has_count = true;
+                args.push(quote!(1));
+            } else {
+                return None;
+            }
+        }
+        let _ = has_count;
+        let call = quote!((#table.#f)(#(#args),*));
+        let call = if cmd.return_type == "VkResult" {
+            quote!(let _ = #call;)
+        } else {
+            quote!(#call;)
+        };
+        let safety = format!(
+            "// SAFETY: the last clone is gone, so no host reference is left, and every submission that used this object held a clone until its fence signalled; `{d}` gets the parent this object came from and no allocator, as it was created without one."
+        );
+        let safety: TokenStream = safety.parse().unwrap_or_default();
+        let _ = safety;
+        let fence_wait = (name == "VkFence").then(|| quote! {
+            if !self.pending.lock().is_empty() {
+                // SAFETY: the fence belongs to this device; waiting is always valid.
+                // Its pending submission still uses what it keeps alive, so the wait
+                // comes before those objects go (VUID-vkDestroyFence-fence-01120).
+                unsafe {
+                    let _ = (self.parent.fns().fp_v1_0().wait_for_fences)(self.parent.raw(), 1, &self.raw, vk::TRUE, u64::MAX);
+                }
+            }
+        });
+        let fence_wait = if name == "VkCommandBuffer" {
+            quote!(#fence_wait self.parent.parent().forget_command_buffer(self.raw);)
+        } else {
+            quote!(#fence_wait)
+        };
+        let guard = if name == "VkDescriptorSet" {
+            // Sets of a pool without FREE_DESCRIPTOR_SET go back with the pool.
+            quote!(if !self.parent.frees_sets() { return; })
+        } else {
+            quote!()
+        };
+        Some(quote! {
+            #cfg
+            impl Drop for #inner {
+                fn drop(&mut self) {
+                    if !self.destroy {
+                        return;
+                    }
+                    #guard
+                    #fence_wait
+                    // SAFETY: the last clone is gone, so no host reference is left, and
+                    // every submission that used the object held a clone until its fence
+                    // signalled; it is destroyed with the parent it came from and no
+                    // allocator, as it was created without one.
+                    unsafe { #call }
+                }
+            }
+        })
+    });
+    let descriptor_pool_extra = (name == "VkDescriptorPool").then(|| {
+        quote! {
+            /// Whether sets allocated from this pool may be freed one by one
+            /// (`FREE_DESCRIPTOR_SET`); otherwise they return with the pool.
+            #[inline]
+            pub fn frees_sets(&self) -> bool {
+                self.inner.flags.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
+            }
+        }
+    });
+    let flags_field =
+        (name == "VkDescriptorPool").then(|| quote!(flags: vk::DescriptorPoolCreateFlags,));
+    let flags_init = (name == "VkDescriptorPool").then(|| quote!(flags: Default::default(),));
+    let (extra_field, extra_init, extra_fns) = special_state(name);
+    let derive_clone = if name == "VkCommandBuffer" {
+        quote!()
+    } else {
+        quote!(#[derive(Clone)])
+    };
+    let parent_arg = parent_ty.as_ref().map(|p| quote!(parent: &#p,));
+    let parent_init = parent_ty.as_ref().map(|_| quote!(parent: parent.clone(),));
+    let destroy_doc = if destroy.is_some() {
+        "destroyed"
+    } else {
+        "not destroyed (the implementation owns it)"
+    };
+    let from_doc = format!(
+        "Wraps a handle created from `parent`; it is {destroy_doc} when the last clone goes."
+    );
+    let pool_setter = (name == "VkDescriptorPool").then(|| {
+        quote! {
+            pub(crate) fn with_flags(mut self, flags: vk::DescriptorPoolCreateFlags) -> Self {
+                if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+                    inner.flags = flags;
+                }
+                self
+            }
+        }
+    });
+    let _ = field_ident;
+    quote! {
+        #[doc = #doc]
+        #cfg
+        #derive_clone
+        pub struct #id {
+            inner: Vrc<#inner>,
+        }
+        #cfg
+        #[allow(dead_code)]
+        struct #inner {
+            raw: vk::#id,
+            #parent_field
+            #bound_field
+            #flags_field
+            #extra_field
+            keep: Option<Retained>,
+            destroy: bool,
+        }
+        #cfg
+        impl #id {
+            #[doc = #from_doc]
+            #[allow(dead_code)]
+            pub(crate) fn from_raw(raw: vk::#id, #parent_arg keep: Option<Retained>, destroy: bool) -> Self {
+                Self {
+                    inner: Vrc::new(#inner {
+                        raw,
+                        #parent_init
+                        #bound_init
+                        #flags_init
+                        #extra_init
+                        keep,
+                        destroy,
+                    }),
+                }
+            }
+            #parent_fn
+            #bound_fn
+            #descriptor_pool_extra
+            #pool_setter
+            #extra_fns
+            /// Another object this one keeps alive (a swapchain for its images).
+            #[inline]
+            #[allow(dead_code)]
+            pub(crate) fn kept(&self) -> Option<&Retained> {
+                self.inner.keep.as_ref()
+            }
+            /// This wrapper as a type-erased reference that keeps it alive.
+            #[inline]
+            pub fn retained(&self) -> Retained {
+                self.inner.clone()
+            }
+        }
+        #cfg
+        impl Handle for #id {
+            type Raw = vk::#id;
+            #[inline]
+            fn raw(&self) -> vk::#id {
+                self.inner.raw
+            }
+        }
+        #cfg
+        impl core::ops::Deref for #id {
+            type Target = vk::#id;
+            #[inline]
+            fn deref(&self) -> &vk::#id {
+                &self.inner.raw
+            }
+        }
+        #drop_impl
+    }
+}
+
+/// State some wrappers carry beyond their handle: what a command buffer's last
+/// recording uses, and what a fence's pending submission uses.
+fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
+    match name {
+        "VkCommandBuffer" => (
+            quote!(resources: Vutex<Vec<Retained>>, executable: Vutex<bool>,),
+            quote!(resources: Vutex::new(Vec::new()), executable: Vutex::new(false),),
+            quote! {
+                pub(crate) fn keep_alive(&self, objects: Vec<Retained>) {
+                    *self.inner.resources.lock() = objects;
+                }
+                pub(crate) fn set_executable(&self, executable: bool) {
+                    *self.inner.executable.lock() = executable;
+                }
+                /// Whether the buffer has been ended and can be submitted.
+                #[inline]
+                pub fn is_executable(&self) -> bool {
+                    *self.inner.executable.lock()
+                }
+            },
+        ),
+        "VkFence" => (
+            quote!(pending: Vutex<Vec<Retained>>,),
+            quote!(pending: Vutex::new(Vec::new()),),
+            quote! {
+                /// Keeps `objects` alive until the fence is seen signalled or reset.
+                pub(crate) fn track(&self, objects: Vec<Retained>) {
+                    self.inner.pending.lock().extend(objects);
+                }
+                /// Releases what the completed submission kept alive.
+                pub(crate) fn completed(&self) {
+                    self.inner.pending.lock().clear();
+                }
+            },
+        ),
+        _ => (quote!(), quote!(), quote!()),
+    }
+}

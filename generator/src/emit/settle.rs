@@ -1,0 +1,166 @@
+//! Settlement records: for every rule of the emitted API, how the emitted code
+//! settles it. The decisions read the same shapes and plans the emitters use.
+
+use super::commands::{handled_elsewhere, plans, Param, Plan};
+use super::shape::{struct_members, Member};
+use super::{Context, Record, Settlement};
+use crate::validity::{Category, ImplicitKind};
+use std::collections::BTreeMap;
+
+/// Records for every rule of the emitted API.
+pub fn records(cx: &Context) -> Vec<Record> {
+    let plans: BTreeMap<String, Result<Plan, String>> = plans(cx).into_iter().collect();
+    let derived: BTreeMap<&str, &crate::validity::DerivedRule> = cx
+        .validity
+        .derived
+        .iter()
+        .map(|r| (r.vuid.as_str(), r))
+        .collect();
+    let mut out = Vec::new();
+    for rule in cx.validity.rules.iter().filter(|r| r.emitted) {
+        let settlement = match (rule.category, derived.get(rule.vuid.as_str())) {
+            (Category::Implicit, Some(d)) => implicit(cx, &plans, d),
+            (Category::Implicit, None) => Settlement::User(
+                "written by hand in the specification; not derived, so not checked".into(),
+            ),
+            _ => explicit(&rule.text),
+        };
+        out.push(Record {
+            vuid: rule.vuid.clone(),
+            settlement,
+        });
+    }
+    out
+}
+
+fn explicit(text: &str) -> Settlement {
+    let t = text.to_lowercase();
+    if t.contains("all submitted commands that refer to") {
+        Settlement::Static(
+            "destroyed only when the last wrapper clone goes; recorded command buffers and pending submissions hold clones until their fence signals".into(),
+        )
+    } else if t.contains("vkallocationcallbacks were provided when") {
+        Settlement::Static("the wrappers never pass allocation callbacks".into())
+    } else {
+        Settlement::User("explicit rule; the wrappers do not check it".into())
+    }
+}
+
+fn implicit(
+    cx: &Context,
+    plans: &BTreeMap<String, Result<Plan, String>>,
+    d: &crate::validity::DerivedRule,
+) -> Settlement {
+    use ImplicitKind as K;
+    let model = cx.model;
+    if model.commands.contains_key(&d.item) {
+        if let Some(why) = handled_elsewhere(cx, &d.item) {
+            return match (why, d.kind) {
+                ("destroy", K::Parameter | K::Parent | K::CommonParent) => Settlement::Static(
+                    "called only from Drop with the wrapper's own live handle, its parent and no allocator".into(),
+                ),
+                ("recorder", K::Parameter) => {
+                    Settlement::Static("`CommandBuffer::begin` takes a wrapper and a safe struct".into())
+                }
+                _ => Settlement::User(format!("called by the wrappers' {why} code; not checked")),
+            };
+        }
+        let plan = match plans.get(&d.item) {
+            Some(Ok(plan)) => plan,
+            Some(Err(reason)) => {
+                return Settlement::User(format!(
+                    "no safe wrapper is emitted ({reason}); call it through ash"
+                ))
+            }
+            None => return Settlement::User("no safe wrapper is emitted".into()),
+        };
+        return match d.kind {
+            K::Recording => Settlement::Static(
+                "the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes"
+                    .into(),
+            ),
+            K::RenderPass => Settlement::Static(
+                "the method exists only on a `Recorder` in the render-pass state the command needs"
+                    .into(),
+            ),
+            K::Parameter => {
+                let idx = model.commands[&d.item]
+                    .params
+                    .iter()
+                    .position(|p| Some(&p.name) == d.field.as_ref());
+                match idx.and_then(|i| plan.params.get(i)) {
+                    Some(p) => param_settlement(cx, &d.item, idx.unwrap_or(0), p),
+                    None => Settlement::User("parameter not found in the plan".into()),
+                }
+            }
+            K::ArrayLength => Settlement::User("a slice may be empty; not checked".into()),
+            _ => Settlement::User(format!("`{}` rules are not checked yet", d.kind.tag())),
+        };
+    }
+    // A struct.
+    if !cx.facts.is_safe(&d.item) {
+        return match d.kind {
+            K::Parameter => Settlement::User(
+                "enum or flags value of a plain struct; ash accepts any raw value".into(),
+            ),
+            _ => Settlement::User(format!("`{}` rules are not checked yet", d.kind.tag())),
+        };
+    }
+    let members = struct_members(model, &cx.facts, &d.item);
+    let member = members
+        .iter()
+        .find(|(m, _)| Some(&m.name) == d.field.as_ref())
+        .map(|(_, s)| s.clone());
+    match (d.kind, member) {
+        (K::SType, _) => Settlement::Static("the safe struct's constructor sets `sType`".into()),
+        (K::PNext, Some(Member::PNext)) => Settlement::Static(
+            "`push_next` accepts only structs that implement `Extends` for the head".into(),
+        ),
+        (K::Parameter, Some(shape)) => member_settlement(&shape),
+        (K::ArrayLength, _) => Settlement::User("a slice may be empty; not checked".into()),
+        (kind, _) => Settlement::User(format!("`{}` rules are not checked yet", kind.tag())),
+    }
+}
+
+fn member_settlement(shape: &Member) -> Settlement {
+    match shape {
+        Member::Handle { .. } | Member::HandleSlice { .. } => {
+            Settlement::Static("set from wrappers, which always hold valid handles".into())
+        }
+        Member::StructRef { .. }
+        | Member::Slice { .. }
+        | Member::Bytes { .. }
+        | Member::Code { .. }
+        | Member::CStr { .. }
+        | Member::CStrSlice { .. } => Settlement::Static(
+            "set from a reference or slice, a valid pointer with its length".into(),
+        ),
+        Member::Value | Member::Array(_) => Settlement::User(
+            "enum or flags value; ash types accept any raw value, not checked".into(),
+        ),
+        Member::Platform => {
+            Settlement::User("a window-system pointer given through an unsafe setter".into())
+        }
+        Member::Unsupported(why) => Settlement::User(format!("not settable safely ({why})")),
+        _ => Settlement::User("not checked".into()),
+    }
+}
+
+fn param_settlement(cx: &Context, _cmd: &str, _idx: usize, p: &Param) -> Settlement {
+    let _ = cx;
+    match p {
+        Param::Dispatch => Settlement::Static("`self` is a live wrapper".into()),
+        Param::Handle { .. } | Param::HandleSlice | Param::Created | Param::CreatedArray => {
+            Settlement::Static("taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides".into())
+        }
+        Param::Allocator => Settlement::Static("always NULL".into()),
+        Param::StructRef { .. } | Param::Slice | Param::Bytes | Param::Array | Param::InOut => {
+            Settlement::Static("taken as a reference or slice: a valid pointer with its length".into())
+        }
+        Param::Output | Param::Enumerated | Param::EnumCount => {
+            Settlement::Static("written into storage the wrapper provides".into())
+        }
+        Param::Count => Settlement::Static("computed from the slice it sizes".into()),
+        Param::Value => Settlement::User("enum or flags value; ash types accept any raw value, not checked".into()),
+    }
+}

@@ -1,0 +1,240 @@
+//! The shape of every struct member: how a safe counterpart exposes it. Emitters and
+//! the settlement records both read these shapes, so what the code does and what the
+//! report claims come from one decision.
+
+use super::types::TypeFacts;
+use crate::model::{LenEntry, Model, ParsedField};
+use crate::registry::Field;
+
+/// How a member of a safe struct is set.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Member {
+    /// `sType`: fixed by the constructor.
+    SType,
+    /// `pNext`: only structs that extend this one can be pushed.
+    PNext,
+    /// A count that a slice setter fills in.
+    Count,
+    /// A value of a plain type (scalar, enum, flags, plain struct or union).
+    Value,
+    /// A fixed-size array of a plain type.
+    Array(String),
+    /// A handle, taken as a wrapper.
+    Handle {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of handles, taken as a `HandleSlice` of wrappers.
+    HandleSlice {
+        /// The member that holds the length.
+        count: String,
+    },
+    /// A pointer to one struct, taken as a reference to its safe counterpart.
+    StructRef {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of structs (safe counterparts or plain ash structs), or of scalars.
+    Slice {
+        /// The member that holds the length.
+        count: String,
+        /// The elements are safe counterparts.
+        safe: bool,
+    },
+    /// Bytes: a `void*` sized in bytes by `count`.
+    Bytes {
+        /// The member that holds the size.
+        count: String,
+    },
+    /// SPIR-V code: a `uint32_t*` sized in bytes by `count` (`codeSize / 4`).
+    Code {
+        /// The member that holds the size in bytes.
+        count: String,
+    },
+    /// A C string.
+    CStr {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of C strings.
+    CStrSlice {
+        /// The member that holds the length.
+        count: String,
+    },
+    /// Opaque user data handed back to a callback; never dereferenced by Vulkan.
+    UserData,
+    /// A pointer to a window-system object: set through an `unsafe` setter.
+    Platform,
+    /// Not exposed; the text says why.
+    Unsupported(String),
+}
+
+/// The shapes of a struct's members, in order.
+pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Field, Member)> {
+    let Some(t) = model.types.get(name) else {
+        return Vec::new();
+    };
+    let counts: Vec<String> = t
+        .members
+        .iter()
+        .filter_map(|m| m.len.as_deref())
+        .flat_map(|len| crate::model::attrs::parse_len(len).into_iter().take(1))
+        .filter_map(|e| match e {
+            LenEntry::Reference(parts) if parts.len() == 1 => Some(parts[0].clone()),
+            LenEntry::Math(m) => math_count(&m),
+            _ => None,
+        })
+        .collect();
+    t.members
+        .iter()
+        .map(|m| {
+            let parsed = model.parse_field(m);
+            let shape = member_shape(model, facts, m, &parsed, &counts, &t.members);
+            (m.clone(), shape)
+        })
+        .collect()
+}
+
+/// `\textrm{codeSize} \over 4` names `codeSize`.
+fn math_count(math: &str) -> Option<String> {
+    let start = math.find("\\textrm{")? + "\\textrm{".len();
+    let end = math[start..].find('}')? + start;
+    math.contains("\\over 4")
+        .then(|| math[start..end].to_owned())
+}
+
+fn member_shape(
+    model: &Model,
+    facts: &TypeFacts,
+    m: &Field,
+    p: &ParsedField,
+    counts: &[String],
+    members: &[Field],
+) -> Member {
+    let category = model.category(&m.type_name);
+    let optional = p.optional.first().copied().unwrap_or(false);
+    if m.name == "sType" && m.values.is_some() {
+        return Member::SType;
+    }
+    if m.name == "pNext" {
+        return Member::PNext;
+    }
+    if m.deprecated.is_some()
+        || (m.name == "ppEnabledLayerNames"
+            && members.iter().any(|x| x.name == "pQueueCreateInfos"))
+    {
+        return Member::Unsupported("deprecated by the specification".into());
+    }
+    if counts.contains(&m.name) && m.pointers == 0 {
+        // Only counts of supported arrays are filled in by setters; a count whose
+        // array is unsupported stays zero, which every array allows when empty.
+        return Member::Count;
+    }
+    if m.selector.is_some() {
+        return Member::Unsupported("a union member chosen by another member".into());
+    }
+    let first_len = p.len.first().cloned();
+    let count_of = |e: &Option<LenEntry>| -> Option<String> {
+        match e {
+            Some(LenEntry::Reference(parts)) if parts.len() == 1 => members
+                .iter()
+                .any(|x| x.name == parts[0])
+                .then(|| parts[0].clone()),
+            _ => None,
+        }
+    };
+    if m.pointers == 0 {
+        if let Some(size) = &m.static_array {
+            if category == Some("handle") || facts.is_safe(&m.type_name) {
+                return Member::Unsupported("a fixed array of handles or structs".into());
+            }
+            return Member::Array(size.clone());
+        }
+        return match category {
+            Some("handle") => Member::Handle { optional },
+            Some("struct") if facts.is_safe(&m.type_name) => {
+                Member::Unsupported("a nested struct that carries pointers or handles".into())
+            }
+            Some("union") if !facts.union_is_plain(model, &m.type_name) => {
+                Member::Unsupported("a union that carries pointers or handles".into())
+            }
+            _ if m.type_name == "VkBool32" || category.is_some() || is_c_scalar(&m.type_name) => {
+                Member::Value
+            }
+            _ => Member::Unsupported(format!("type `{}`", m.type_name)),
+        };
+    }
+    if m.name == "pUserData" && m.type_name == "void" {
+        return Member::UserData;
+    }
+    if category.is_none() && !is_c_scalar(&m.type_name) && m.type_name != "void" {
+        return Member::Platform;
+    }
+    if !m.is_const {
+        return Member::Unsupported("a pointer Vulkan writes through".into());
+    }
+    if m.pointers == 1 {
+        if m.type_name == "char" && matches!(first_len, Some(LenEntry::NullTerminated)) {
+            return Member::CStr { optional };
+        }
+        if let Some(Some(count)) = first_len.as_ref().map(|e| match e {
+            LenEntry::Math(math) if m.type_name == "uint32_t" => math_count(math),
+            _ => None,
+        }) {
+            return Member::Code { count };
+        }
+        if let Some(count) = count_of(&first_len) {
+            return match category {
+                Some("handle") => Member::HandleSlice { count },
+                _ if m.type_name == "void" => Member::Bytes { count },
+                Some("struct") => Member::Slice {
+                    count,
+                    safe: facts.is_safe(&m.type_name),
+                },
+                Some("union") if facts.union_is_plain(model, &m.type_name) => {
+                    Member::Slice { count, safe: false }
+                }
+                _ if category.is_some() || is_c_scalar(&m.type_name) => {
+                    Member::Slice { count, safe: false }
+                }
+                _ => Member::Unsupported(format!("an array of `{}`", m.type_name)),
+            };
+        }
+        if first_len.is_none() && category == Some("struct") {
+            return if facts.is_safe(&m.type_name) {
+                Member::StructRef { optional }
+            } else {
+                Member::StructRef { optional }
+            };
+        }
+        return Member::Unsupported(
+            "a pointer whose length the registry gives as an expression".into(),
+        );
+    }
+    if m.pointers == 2 && m.type_name == "char" {
+        if let Some(count) = count_of(&first_len) {
+            return Member::CStrSlice { count };
+        }
+    }
+    Member::Unsupported("a pointer to pointers".into())
+}
+
+/// C scalar types.
+pub fn is_c_scalar(name: &str) -> bool {
+    matches!(
+        name,
+        "float"
+            | "double"
+            | "uint8_t"
+            | "uint16_t"
+            | "uint32_t"
+            | "uint64_t"
+            | "int8_t"
+            | "int16_t"
+            | "int32_t"
+            | "int64_t"
+            | "size_t"
+            | "int"
+            | "char"
+    )
+}

@@ -1,0 +1,167 @@
+//! Which registry types get safe counterparts, and the `ash` spelling of every type.
+
+use super::names::{ident, type_ident};
+use crate::model::Model;
+use proc_macro2::TokenStream;
+use quote::quote;
+use std::collections::BTreeMap;
+
+/// What the generated crate knows about every struct and union of the emitted API.
+#[derive(Debug, Clone, Default)]
+pub struct TypeFacts {
+    /// ash declares the type with a lifetime parameter (`vk::X<'a>`).
+    pub lifetime: BTreeMap<String, bool>,
+    /// The type gets a safe counterpart in the generated crate (it carries handles,
+    /// pointers or an `sType`), else ash's type is used as it is.
+    pub safe: BTreeMap<String, bool>,
+}
+
+impl TypeFacts {
+    /// Compute the facts for every struct and union of the model.
+    pub fn new(model: &Model) -> TypeFacts {
+        let mut facts = TypeFacts::default();
+        for (name, t) in &model.types {
+            if matches!(t.category.as_deref(), Some("struct" | "union")) {
+                facts.lifetime_of(model, name, 0);
+                facts.safe_of(model, name, 0);
+            }
+        }
+        facts
+    }
+
+    fn lifetime_of(&mut self, model: &Model, name: &str, depth: usize) -> bool {
+        if let Some(v) = self.lifetime.get(name) {
+            return *v;
+        }
+        let Some(t) = model.types.get(name) else {
+            return false;
+        };
+        if let Some(alias) = &t.alias {
+            let v = depth < 16 && self.lifetime_of(model, &alias.clone(), depth + 1);
+            self.lifetime.insert(name.to_owned(), v);
+            return v;
+        }
+        let members = t.members.clone();
+        let v = members.iter().any(|m| {
+            m.pointers > 0
+                || (depth < 16
+                    && matches!(model.category(&m.type_name), Some("struct" | "union"))
+                    && self.lifetime_of(model, &m.type_name, depth + 1))
+        });
+        self.lifetime.insert(name.to_owned(), v);
+        v
+    }
+
+    fn safe_of(&mut self, model: &Model, name: &str, depth: usize) -> bool {
+        if let Some(v) = self.safe.get(name) {
+            return *v;
+        }
+        let Some(t) = model.types.get(name) else {
+            return false;
+        };
+        if t.category.as_deref() == Some("union") {
+            // Unions are used as ash has them; a union that holds pointers or handles
+            // makes its users unsupported instead.
+            self.safe.insert(name.to_owned(), false);
+            return false;
+        }
+        let members = t.members.clone();
+        let v = members.iter().any(|m| {
+            m.pointers > 0
+                || m.name == "sType"
+                || model.category(&m.type_name) == Some("handle")
+                || (depth < 16
+                    && model.category(&m.type_name) == Some("struct")
+                    && self.safe_of(model, &m.type_name, depth + 1))
+        });
+        self.safe.insert(name.to_owned(), v);
+        v
+    }
+
+    /// Whether `name` has a safe counterpart.
+    pub fn is_safe(&self, name: &str) -> bool {
+        self.safe.get(name).copied().unwrap_or(false)
+    }
+
+    /// Whether ash's `name` takes a lifetime.
+    pub fn has_lifetime(&self, name: &str) -> bool {
+        self.lifetime.get(name).copied().unwrap_or(false)
+    }
+
+    /// Whether a union holds anything that would need a safe counterpart.
+    pub fn union_is_plain(&self, model: &Model, name: &str) -> bool {
+        model.types.get(name).is_some_and(|t| {
+            t.members.iter().all(|m| {
+                m.pointers == 0
+                    && model.category(&m.type_name) != Some("handle")
+                    && !self.is_safe(&m.type_name)
+                    && !self.has_lifetime(&m.type_name)
+            })
+        })
+    }
+}
+
+/// ash's spelling of a base type, without pointers: `u32`, `vk::Format`,
+/// `vk::BufferCreateInfo<'a>`. `None` for types ash lacks a name for here.
+pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStream> {
+    let c = match name {
+        "void" => quote!(::core::ffi::c_void),
+        "char" => quote!(::core::ffi::c_char),
+        "float" => quote!(f32),
+        "double" => quote!(f64),
+        "uint8_t" => quote!(u8),
+        "uint16_t" => quote!(u16),
+        "uint32_t" => quote!(u32),
+        "uint64_t" => quote!(u64),
+        "int8_t" => quote!(i8),
+        "int16_t" => quote!(i16),
+        "int32_t" => quote!(i32),
+        "int64_t" => quote!(i64),
+        "size_t" => quote!(usize),
+        "int" => quote!(::core::ffi::c_int),
+        _ => {
+            let t = model.types.get(name)?;
+            return match t.category.as_deref() {
+                Some("struct" | "union") => {
+                    let id = type_ident(name);
+                    Some(if facts.has_lifetime(name) {
+                        quote!(vk::#id<'a>)
+                    } else {
+                        quote!(vk::#id)
+                    })
+                }
+                Some("enum") if name.contains("FlagBits") => {
+                    // ash has one type for a bitmask and its bits.
+                    let id = ident(&super::names::type_name(name).replace("FlagBits", "Flags"));
+                    Some(quote!(vk::#id))
+                }
+                Some("handle" | "enum" | "bitmask" | "basetype") => {
+                    let id = type_ident(name);
+                    Some(quote!(vk::#id))
+                }
+                Some("funcpointer") => {
+                    let id = ident(name);
+                    Some(quote!(vk::#id))
+                }
+                None if t.name.chars().next().is_some_and(char::is_alphabetic) => {
+                    // Platform types (Display, HWND, ...) ash re-exports under vk.
+                    let id = ident(name);
+                    Some(quote!(vk::#id))
+                }
+                _ => None,
+            };
+        }
+    };
+    Some(c)
+}
+
+/// A constant of a fixed array size as ash names it (`VK_UUID_SIZE` ->
+/// `vk::UUID_SIZE`), or the number.
+pub fn array_size(size: &str) -> TokenStream {
+    if let Ok(n) = size.parse::<usize>() {
+        quote!(#n)
+    } else {
+        let id = ident(size.strip_prefix("VK_").unwrap_or(size));
+        quote!(vk::#id)
+    }
+}
