@@ -6,22 +6,28 @@
     clippy::needless_lifetimes,
     clippy::let_unit_value,
     unused_mut,
-    clippy::unit_arg
+    clippy::unit_arg,
+    clippy::unused_unit,
+    clippy::extra_unused_lifetimes,
+    clippy::never_loop,
+    clippy::no_effect,
+    clippy::unnecessary_cast,
+    clippy::field_reassign_with_default
 )]
 use crate::handles::*;
 use crate::structs::*;
 use crate::{recorder::*, Entry, Error, Handle, Result};
 use ash::vk;
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Device {
     /**`vkAcquireNextImage2KHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkAcquireNextImage2KHR-surface-07784`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImage2KHR-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkAcquireNextImage2KHR-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkAcquireNextImage2KHR-surface-07784`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImage2KHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkAcquireNextImage2KHR-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn acquire_next_image2_khr<'a>(
         &self,
@@ -34,7 +40,8 @@ impl Device {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
         let mut out: u32 = Default::default();
         let r = unsafe {
-            (ext_table.acquire_next_image2_khr)(
+            (ext_table
+                .acquire_next_image2_khr)(
                 self.raw(),
                 acquire_info as *const AcquireNextImageInfoKHR<'a> as *const _,
                 &mut out,
@@ -46,27 +53,27 @@ impl Device {
         Ok((out, r))
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Device {
     /**`vkAcquireNextImageKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkAcquireNextImageKHR-swapchain-01285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImageKHR-semaphore-01286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImageKHR-semaphore-01779`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImageKHR-fence-01287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImageKHR-semaphore-01780`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImageKHR-surface-07783`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAcquireNextImageKHR-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkAcquireNextImageKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkAcquireNextImageKHR-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkAcquireNextImageKHR-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkAcquireNextImageKHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkAcquireNextImageKHR-swapchain-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkAcquireNextImageKHR-semaphore-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkAcquireNextImageKHR-fence-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkAcquireNextImageKHR-semaphore-03265`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkAcquireNextImageKHR-swapchain-01285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImageKHR-semaphore-01286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImageKHR-semaphore-01779`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImageKHR-fence-01287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImageKHR-semaphore-01780`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImageKHR-surface-07783`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAcquireNextImageKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkAcquireNextImageKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkAcquireNextImageKHR-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkAcquireNextImageKHR-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkAcquireNextImageKHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkAcquireNextImageKHR-swapchain-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkAcquireNextImageKHR-semaphore-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkAcquireNextImageKHR-fence-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkAcquireNextImageKHR-semaphore-03265`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn acquire_next_image_khr(
         &self,
@@ -82,7 +89,8 @@ impl Device {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
         let mut out: u32 = Default::default();
         let r = unsafe {
-            (ext_table.acquire_next_image_khr)(
+            (ext_table
+                .acquire_next_image_khr)(
                 self.raw(),
                 swapchain.raw(),
                 timeout,
@@ -100,12 +108,12 @@ impl Device {
 impl Device {
     /**`vkAllocateCommandBuffers`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkAllocateCommandBuffers-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkAllocateCommandBuffers-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`: user (a slice may be empty; not checked)*/
     #[inline]
     pub fn allocate_command_buffers<'a>(
         &self,
@@ -114,10 +122,15 @@ impl Device {
     ) -> Result<Vec<CommandBuffer>> {
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().command_pool = command_pool.raw();
-        let mut out =
-            vec![vk::CommandBuffer::null(); allocate_info.as_raw().command_buffer_count as usize];
+        let mut out = vec![
+            vk::CommandBuffer::null(); allocate_info.as_raw().command_buffer_count as
+            usize
+        ];
         let r = unsafe {
-            (self.fns().fp_v1_0().allocate_command_buffers)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .allocate_command_buffers)(
                 self.raw(),
                 allocate_info.as_raw(),
                 out.as_mut_ptr(),
@@ -141,12 +154,12 @@ impl Device {
 impl Device {
     /**`vkAllocateDescriptorSets`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkAllocateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkAllocateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: user (a slice may be empty; not checked)*/
     #[inline]
     pub fn allocate_descriptor_sets<'a>(
         &self,
@@ -155,10 +168,15 @@ impl Device {
     ) -> Result<Vec<DescriptorSet>> {
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().descriptor_pool = descriptor_pool.raw();
-        let mut out =
-            vec![vk::DescriptorSet::null(); allocate_info.as_raw().descriptor_set_count as usize];
+        let mut out = vec![
+            vk::DescriptorSet::null(); allocate_info.as_raw().descriptor_set_count as
+            usize
+        ];
         let r = unsafe {
-            (self.fns().fp_v1_0().allocate_descriptor_sets)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .allocate_descriptor_sets)(
                 self.raw(),
                 allocate_info.as_raw(),
                 out.as_mut_ptr(),
@@ -167,25 +185,27 @@ impl Device {
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(out
-            .into_iter()
-            .map(|raw| DescriptorSet::from_raw(raw, descriptor_pool, None, true))
-            .collect())
+        Ok(
+            out
+                .into_iter()
+                .map(|raw| DescriptorSet::from_raw(raw, descriptor_pool, None, true))
+                .collect(),
+        )
     }
 }
 impl Device {
     /**`vkAllocateMemory`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkAllocateMemory-pAllocateInfo-01713`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAllocateMemory-pAllocateInfo-01714`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAllocateMemory-maxMemoryAllocationCount-04101`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkAllocateMemory-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkAllocateMemory-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkAllocateMemory-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkAllocateMemory-pMemory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkAllocateMemory-deviceCoherentMemory-02790`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkAllocateMemory-pAllocateInfo-01713`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAllocateMemory-pAllocateInfo-01714`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAllocateMemory-maxMemoryAllocationCount-04101`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkAllocateMemory-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkAllocateMemory-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkAllocateMemory-pAllocator-parameter`: static (always NULL)
+- `VUID-vkAllocateMemory-pMemory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkAllocateMemory-deviceCoherentMemory-02790`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn allocate_memory<'a>(
         &self,
@@ -193,7 +213,10 @@ impl Device {
     ) -> Result<DeviceMemory> {
         let mut out = vk::DeviceMemory::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().allocate_memory)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .allocate_memory)(
                 self.raw(),
                 allocate_info as *const MemoryAllocateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -209,32 +232,32 @@ impl Device {
 impl Device {
     /**`vkBindBufferMemory`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkBindBufferMemory-buffer-07459`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-buffer-01030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memoryOffset-01031`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memory-01035`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memoryOffset-01036`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-size-01037`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkBindBufferMemory-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkBindBufferMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkBindBufferMemory-buffer-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkBindBufferMemory-memory-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkBindBufferMemory-buffer-01444`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memory-01508`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-None-01898`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-None-01899`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-buffer-01038`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-buffer-01039`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memory-02726`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memory-02727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memory-02985`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-memory-02986`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-buffer-06408`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindBufferMemory-descriptorBufferCaptureReplay-08112`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkBindBufferMemory-buffer-07459`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-buffer-01030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memoryOffset-01031`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memory-01035`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memoryOffset-01036`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-size-01037`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkBindBufferMemory-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkBindBufferMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkBindBufferMemory-buffer-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkBindBufferMemory-memory-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkBindBufferMemory-buffer-01444`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memory-01508`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-None-01898`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-None-01899`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-buffer-01038`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-buffer-01039`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memory-02726`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memory-02727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memory-02985`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-memory-02986`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-buffer-06408`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindBufferMemory-descriptorBufferCaptureReplay-08112`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn bind_buffer_memory(
         &self,
@@ -243,7 +266,10 @@ impl Device {
         memory_offset: vk::DeviceSize,
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_0().bind_buffer_memory)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .bind_buffer_memory)(
                 self.raw(),
                 buffer.raw(),
                 memory.raw(),
@@ -260,15 +286,21 @@ impl Device {
 impl Device {
     /**`vkBindBufferMemory2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkBindBufferMemory2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkBindBufferMemory2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: user (a slice may be empty; not checked)*/
     #[inline]
-    pub fn bind_buffer_memory2<'a>(&self, bind_infos: &[BindBufferMemoryInfo<'a>]) -> Result<()> {
+    pub fn bind_buffer_memory2<'a>(
+        &self,
+        bind_infos: &[BindBufferMemoryInfo<'a>],
+    ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_1().bind_buffer_memory2)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .bind_buffer_memory2)(
                 self.raw(),
                 bind_infos.len() as u32,
                 bind_infos.as_ptr().cast(),
@@ -283,34 +315,34 @@ impl Device {
 impl Device {
     /**`vkBindImageMemory`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkBindImageMemory-image-07460`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-image-01045`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memoryOffset-01046`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-01047`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memoryOffset-01048`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-size-01049`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkBindImageMemory-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkBindImageMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkBindImageMemory-image-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkBindImageMemory-memory-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkBindImageMemory-image-01445`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-01509`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-02628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-02629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-None-01901`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-None-01902`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-image-01050`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-image-01051`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-02728`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-02729`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-02989`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-memory-02990`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-descriptorBufferCaptureReplay-08113`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-image-01608`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory-image-06392`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkBindImageMemory-image-07460`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-image-01045`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memoryOffset-01046`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-01047`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memoryOffset-01048`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-size-01049`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkBindImageMemory-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkBindImageMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkBindImageMemory-image-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkBindImageMemory-memory-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkBindImageMemory-image-01445`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-01509`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-02628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-02629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-None-01901`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-None-01902`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-image-01050`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-image-01051`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-02728`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-02729`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-02989`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-memory-02990`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-descriptorBufferCaptureReplay-08113`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-image-01608`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory-image-06392`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn bind_image_memory(
         &self,
@@ -319,12 +351,10 @@ impl Device {
         memory_offset: vk::DeviceSize,
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_0().bind_image_memory)(
-                self.raw(),
-                image.raw(),
-                memory.raw(),
-                memory_offset,
-            )
+            (self
+                .fns()
+                .fp_v1_0()
+                .bind_image_memory)(self.raw(), image.raw(), memory.raw(), memory_offset)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -336,17 +366,23 @@ impl Device {
 impl Device {
     /**`vkBindImageMemory2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkBindImageMemory2-pBindInfos-02858`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory2-pBindInfos-04006`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkBindImageMemory2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkBindImageMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkBindImageMemory2-pBindInfos-02858`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory2-pBindInfos-04006`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkBindImageMemory2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkBindImageMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: user (a slice may be empty; not checked)*/
     #[inline]
-    pub fn bind_image_memory2<'a>(&self, bind_infos: &[BindImageMemoryInfo<'a>]) -> Result<()> {
+    pub fn bind_image_memory2<'a>(
+        &self,
+        bind_infos: &[BindImageMemoryInfo<'a>],
+    ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_1().bind_image_memory2)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .bind_image_memory2)(
                 self.raw(),
                 bind_infos.len() as u32,
                 bind_infos.as_ptr().cast(),
@@ -358,17 +394,17 @@ impl Device {
         Ok(())
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBeginDebugUtilsLabelEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_begin_debug_utils_label_ext<'a>(
         &mut self,
@@ -382,7 +418,8 @@ impl<'c, S: State> Recorder<'c, S> {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         Ok({
             unsafe {
-                (ext_table.cmd_begin_debug_utils_label_ext)(
+                (ext_table
+                    .cmd_begin_debug_utils_label_ext)(
                     self.raw(),
                     label_info as *const DebugUtilsLabelEXT<'a> as *const _,
                 )
@@ -394,46 +431,46 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBeginQuery`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBeginQuery-None-00807`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-02804`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-00800`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-query-00802`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-00803`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-00804`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-00805`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryPool-01922`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBeginQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBeginQuery-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBeginQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBeginQuery-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBeginQuery-queryType-04728`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-06741`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-04729`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-commandBuffer-01885`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-query-00808`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07126`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-None-07127`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07128`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-04862`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07129`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07130`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07131`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07132`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-07070`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-02327`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-02328`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-06687`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryType-06688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryPool-07289`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryPool-03223`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryPool-03224`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryPool-03225`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-queryPool-03226`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginQuery-None-02863`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBeginQuery-None-00807`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-02804`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-00800`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-query-00802`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-00803`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-00804`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-00805`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryPool-01922`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBeginQuery-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBeginQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginQuery-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBeginQuery-queryType-04728`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-06741`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-04729`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-commandBuffer-01885`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-query-00808`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07126`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-None-07127`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07128`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-04862`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07129`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07130`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07131`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07132`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-07070`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-02327`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-02328`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-06687`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryType-06688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryPool-07289`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryPool-03223`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryPool-03224`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryPool-03225`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-queryPool-03226`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginQuery-None-02863`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_begin_query(
         &mut self,
@@ -442,44 +479,43 @@ impl<'c, S: State> Recorder<'c, S> {
         flags: vk::QueryControlFlags,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_begin_query)(
-                self.raw(),
-                query_pool.raw(),
-                query,
-                flags,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_begin_query)(self.raw(), query_pool.raw(), query, flags)
         };
-        self.retain(query_pool.retained());
+        self.retain_with(query_pool.address(), || query_pool.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBeginRenderPass`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBeginRenderPass-initialLayout-00895`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-00897`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-00898`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-00899`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-00900`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-srcStageMask-06451`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-dstStageMask-06452`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-framebuffer-02532`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBeginRenderPass-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBeginRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBeginRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdBeginRenderPass-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBeginRenderPass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-00896`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-01758`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-02842`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-07000`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass-initialLayout-07001`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBeginRenderPass-initialLayout-00895`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-00897`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-00898`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-00899`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-00900`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-srcStageMask-06451`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-dstStageMask-06452`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-framebuffer-02532`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRenderPass-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRenderPass-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass-initialLayout-00896`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-01758`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-02842`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-07000`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass-initialLayout-07001`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_begin_render_pass<'a>(
         mut self,
@@ -487,7 +523,11 @@ impl<'c> Recorder<'c, Outside> {
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_begin_render_pass)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_begin_render_pass)(
                 self.raw(),
                 render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
                 contents,
@@ -500,30 +540,30 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBeginRenderPass2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBeginRenderPass2-framebuffer-02779`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-03094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-03096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-03097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-03098`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-03099`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-03100`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-framebuffer-02533`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBeginRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdBeginRenderPass2-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBeginRenderPass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-02844`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-07002`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRenderPass2-initialLayout-07003`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBeginRenderPass2-framebuffer-02779`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03098`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03099`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03100`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-framebuffer-02533`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRenderPass2-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-02844`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-07002`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-07003`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_begin_render_pass2<'a>(
         mut self,
@@ -531,7 +571,11 @@ impl<'c> Recorder<'c, Outside> {
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
         unsafe {
-            (self.device().fns().fp_v1_2().cmd_begin_render_pass2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_begin_render_pass2)(
                 self.raw(),
                 render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
@@ -544,23 +588,27 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBeginRendering`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBeginRendering-dynamicRendering-06446`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRendering-commandBuffer-06068`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdBeginRendering-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdBeginRendering-dynamicRendering-06446`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRendering-commandBuffer-06068`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRendering-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_begin_rendering<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_begin_rendering)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_begin_rendering)(
                 self.raw(),
                 rendering_info as *const RenderingInfo<'a> as *const _,
             )
@@ -572,30 +620,30 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindDescriptorSets`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-firstSet-00360`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBindDescriptorSets-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBindDescriptorSets-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBindDescriptorSets-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdBindDescriptorSets-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-04616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-graphicsPipelineLibrary-06754`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-08010`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-firstSet-00360`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBindDescriptorSets-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindDescriptorSets-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBindDescriptorSets-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdBindDescriptorSets-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-04616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-graphicsPipelineLibrary-06754`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-08010`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_descriptor_sets<'a>(
         &mut self,
@@ -608,10 +656,16 @@ impl<'c, S: State> Recorder<'c, S> {
         for h in descriptor_sets {
             self.retain(h.retained());
         }
-        let descriptor_sets: smallvec::SmallVec<[vk::DescriptorSet; 8]> =
-            descriptor_sets.iter().map(|h| h.raw()).collect();
+        let descriptor_sets: smallvec::SmallVec<[vk::DescriptorSet; 8]> = descriptor_sets
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_bind_descriptor_sets)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_bind_descriptor_sets)(
                 self.raw(),
                 pipeline_bind_point,
                 layout.raw(),
@@ -622,28 +676,28 @@ impl<'c, S: State> Recorder<'c, S> {
                 dynamic_offsets.as_ptr().cast(),
             )
         };
-        self.retain(layout.retained());
+        self.retain_with(layout.address(), || layout.retained());
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindIndexBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBindIndexBuffer-offset-00431`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindIndexBuffer-offset-00432`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindIndexBuffer-buffer-00433`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindIndexBuffer-buffer-00434`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindIndexBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBindIndexBuffer-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBindIndexBuffer-indexType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBindIndexBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBindIndexBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBindIndexBuffer-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBindIndexBuffer-indexType-02507`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindIndexBuffer-indexType-02765`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBindIndexBuffer-offset-00431`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindIndexBuffer-offset-00432`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindIndexBuffer-buffer-00433`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindIndexBuffer-buffer-00434`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindIndexBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBindIndexBuffer-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBindIndexBuffer-indexType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBindIndexBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBindIndexBuffer-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBindIndexBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindIndexBuffer-indexType-02507`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindIndexBuffer-indexType-02765`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_index_buffer(
         &mut self,
@@ -652,49 +706,48 @@ impl<'c, S: State> Recorder<'c, S> {
         index_type: vk::IndexType,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_bind_index_buffer)(
-                self.raw(),
-                buffer.raw(),
-                offset,
-                index_type,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_bind_index_buffer)(self.raw(), buffer.raw(), offset, index_type)
         };
-        self.retain(buffer.retained());
+        self.retain_with(buffer.address(), || buffer.retained());
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindPipeline`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipeline-00781`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBindPipeline-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBindPipeline-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBindPipeline-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBindPipeline-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBindPipeline-variableSampleLocations-01525`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-None-02323`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-02391`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-02392`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-06721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineProtectedAccess-07408`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineProtectedAccess-07409`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipeline-03382`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-commandBuffer-04808`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-commandBuffer-04809`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-04881`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-04949`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-04950`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipeline-06856`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindPipeline-pipelineBindPoint-06653`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipeline-00781`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBindPipeline-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBindPipeline-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBindPipeline-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBindPipeline-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindPipeline-variableSampleLocations-01525`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-None-02323`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-02391`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-02392`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-06721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineProtectedAccess-07408`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineProtectedAccess-07409`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipeline-03382`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-commandBuffer-04808`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-commandBuffer-04809`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-04881`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-04949`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-04950`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipeline-06856`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-06653`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_pipeline(
         &mut self,
@@ -702,36 +755,36 @@ impl<'c, S: State> Recorder<'c, S> {
         pipeline: &Pipeline,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_bind_pipeline)(
-                self.raw(),
-                pipeline_bind_point,
-                pipeline.raw(),
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_bind_pipeline)(self.raw(), pipeline_bind_point, pipeline.raw())
         };
-        self.retain(pipeline.retained());
+        self.retain_with(pipeline.address(), || pipeline.retained());
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBindVertexBuffers-firstBinding-00624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers-firstBinding-00625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers-pOffsets-00626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers-pBuffers-00627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers-pBuffers-00628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers-pBuffers-04001`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBindVertexBuffers-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBindVertexBuffers-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdBindVertexBuffers-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBindVertexBuffers-pBuffers-04002`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBindVertexBuffers-firstBinding-00624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers-firstBinding-00625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers-pOffsets-00626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers-pBuffers-00627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers-pBuffers-00628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers-pBuffers-04001`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindVertexBuffers-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdBindVertexBuffers-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers-pBuffers-04002`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_vertex_buffers<'a>(
         &mut self,
@@ -742,10 +795,16 @@ impl<'c, S: State> Recorder<'c, S> {
         for h in buffers {
             self.retain(h.retained());
         }
-        let buffers: smallvec::SmallVec<[vk::Buffer; 8]> =
-            buffers.iter().map(|h| h.raw()).collect();
+        let buffers: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_bind_vertex_buffers)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_bind_vertex_buffers)(
                 self.raw(),
                 first_binding,
                 buffers.len() as u32,
@@ -759,28 +818,28 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pSizes-03358`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBindVertexBuffers2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBindVertexBuffers2-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdBindVertexBuffers2-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBindVertexBuffers2-pBuffers-04112`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pSizes-03358`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindVertexBuffers2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers2-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdBindVertexBuffers2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-04112`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_vertex_buffers2<'a>(
         &mut self,
@@ -793,10 +852,16 @@ impl<'c, S: State> Recorder<'c, S> {
         for h in buffers {
             self.retain(h.retained());
         }
-        let buffers: smallvec::SmallVec<[vk::Buffer; 8]> =
-            buffers.iter().map(|h| h.raw()).collect();
+        let buffers: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_bind_vertex_buffers2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_bind_vertex_buffers2)(
                 self.raw(),
                 first_binding,
                 buffers.len() as u32,
@@ -812,68 +877,68 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBlitImage`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBlitImage-commandBuffer-01834`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-commandBuffer-01835`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-commandBuffer-01836`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-pRegions-00215`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-pRegions-00216`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-pRegions-00217`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-01999`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00219`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00220`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImageLayout-00221`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-02000`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-00224`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-00225`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImageLayout-00226`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00229`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00230`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00231`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00232`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00233`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-00234`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-filter-02001`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcSubresource-01705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstSubresource-01706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcSubresource-01707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstSubresource-01708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00240`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-aspectMask-00241`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-aspectMask-00242`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcOffset-00243`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcOffset-00244`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00245`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcOffset-00246`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImage-00247`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstOffset-00248`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstOffset-00249`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-00250`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstOffset-00251`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-00252`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBlitImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBlitImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdBlitImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBlitImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBlitImage-filter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdBlitImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBlitImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBlitImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdBlitImage-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdBlitImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdBlitImage-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdBlitImage-srcImage-06421`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-06422`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImageLayout-00222`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImageLayout-00227`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-srcImageLayout-01398`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImageLayout-01399`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-filter-02002`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-filter-00237`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage-dstImage-02545`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdBlitImage-commandBuffer-01834`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-commandBuffer-01835`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-commandBuffer-01836`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-pRegions-00215`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-pRegions-00216`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-pRegions-00217`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-01999`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00219`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00220`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImageLayout-00221`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-02000`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-00224`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-00225`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImageLayout-00226`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00229`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00230`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00231`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00232`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00233`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-00234`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-filter-02001`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcSubresource-01705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstSubresource-01706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcSubresource-01707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstSubresource-01708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00240`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-aspectMask-00241`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-aspectMask-00242`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcOffset-00243`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcOffset-00244`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00245`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcOffset-00246`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImage-00247`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstOffset-00248`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstOffset-00249`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-00250`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstOffset-00251`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-00252`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBlitImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBlitImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBlitImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBlitImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBlitImage-filter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBlitImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBlitImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBlitImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBlitImage-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdBlitImage-regionCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdBlitImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBlitImage-srcImage-06421`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-06422`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImageLayout-00222`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImageLayout-00227`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-srcImageLayout-01398`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImageLayout-01399`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-filter-02002`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-filter-00237`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage-dstImage-02545`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_blit_image<'a>(
         &mut self,
@@ -885,7 +950,11 @@ impl<'c> Recorder<'c, Outside> {
         filter: vk::Filter,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_blit_image)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_blit_image)(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -896,29 +965,33 @@ impl<'c> Recorder<'c, Outside> {
                 filter,
             )
         };
-        self.retain(src_image.retained());
-        self.retain(dst_image.retained());
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBlitImage2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdBlitImage2-commandBuffer-01834`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage2-commandBuffer-01835`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage2-commandBuffer-01836`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdBlitImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdBlitImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdBlitImage2-commandBuffer-01834`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage2-commandBuffer-01835`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage2-commandBuffer-01836`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdBlitImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBlitImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_blit_image2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_blit_image2)(
                 self.raw(),
                 blit_image_info as *const BlitImageInfo2<'a> as *const _,
             )
@@ -929,27 +1002,27 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdClearAttachments`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdClearAttachments-pAttachments-07270`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-aspectMask-07271`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-rect-02682`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-rect-02683`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-pRects-00016`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-pRects-06937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-layerCount-01934`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdClearAttachments-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdClearAttachments-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdClearAttachments-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdClearAttachments-rectCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdClearAttachments-commandBuffer-02504`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-commandBuffer-02505`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearAttachments-baseArrayLayer-00018`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdClearAttachments-pAttachments-07270`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-aspectMask-07271`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-rect-02682`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-rect-02683`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-pRects-00016`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-pRects-06937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-layerCount-01934`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearAttachments-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdClearAttachments-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdClearAttachments-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdClearAttachments-rectCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdClearAttachments-commandBuffer-02504`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-commandBuffer-02505`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearAttachments-baseArrayLayer-00018`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_clear_attachments<'a>(
         &mut self,
@@ -957,7 +1030,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
         rects: &[vk::ClearRect],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_clear_attachments)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_clear_attachments)(
                 self.raw(),
                 attachments.len() as u32,
                 attachments.as_ptr().cast(),
@@ -971,37 +1048,37 @@ impl<'c, S: Inside> Recorder<'c, S> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdClearDepthStencilImage`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdClearDepthStencilImage-image-01994`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-image-00009`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-pRanges-02658`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-pRanges-02659`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-pRanges-02660`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-image-00010`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-imageLayout-00012`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-aspectMask-02824`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-image-02825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-image-02826`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-pRanges-01694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-pRanges-01695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-image-00014`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdClearDepthStencilImage-pDepthStencil-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdClearDepthStencilImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdClearDepthStencilImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdClearDepthStencilImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdClearDepthStencilImage-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdClearDepthStencilImage-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdClearDepthStencilImage-image-01994`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-image-00009`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-02658`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-02659`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-02660`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-image-00010`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-00012`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-aspectMask-02824`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-image-02825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-image-02826`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-01694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-01695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-image-00014`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdClearDepthStencilImage-pDepthStencil-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdClearDepthStencilImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdClearDepthStencilImage-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdClearDepthStencilImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_clear_depth_stencil_image<'a>(
         &mut self,
@@ -1011,7 +1088,11 @@ impl<'c> Recorder<'c, Outside> {
         ranges: &[vk::ImageSubresourceRange],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_clear_depth_stencil_image)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_clear_depth_stencil_image)(
                 self.raw(),
                 image.raw(),
                 image_layout,
@@ -1020,37 +1101,37 @@ impl<'c> Recorder<'c, Outside> {
                 ranges.as_ptr().cast(),
             )
         };
-        self.retain(image.retained());
+        self.retain_with(image.address(), || image.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyBuffer-commandBuffer-01822`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-commandBuffer-01823`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-commandBuffer-01824`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-srcOffset-00113`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-dstOffset-00114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-size-00115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-size-00116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-pRegions-00117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-srcBuffer-00118`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-srcBuffer-00119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-dstBuffer-00120`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-dstBuffer-00121`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyBuffer-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdCopyBuffer-regionCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdCopyBuffer-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkCmdCopyBuffer-commandBuffer-01822`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-commandBuffer-01823`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-commandBuffer-01824`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-srcOffset-00113`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-dstOffset-00114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-size-00115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-size-00116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-pRegions-00117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-srcBuffer-00118`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-srcBuffer-00119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-dstBuffer-00120`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-dstBuffer-00121`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBuffer-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBuffer-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdCopyBuffer-regionCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdCopyBuffer-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn cmd_copy_buffer<'a>(
         &mut self,
@@ -1059,7 +1140,11 @@ impl<'c> Recorder<'c, Outside> {
         regions: &[vk::BufferCopy],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_copy_buffer)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_buffer)(
                 self.raw(),
                 src_buffer.raw(),
                 dst_buffer.raw(),
@@ -1067,29 +1152,36 @@ impl<'c> Recorder<'c, Outside> {
                 regions.as_ptr().cast(),
             )
         };
-        self.retain(src_buffer.retained());
-        self.retain(dst_buffer.retained());
+        self.retain_with(src_buffer.address(), || src_buffer.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyBuffer2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyBuffer2-commandBuffer-01822`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer2-commandBuffer-01823`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer2-commandBuffer-01824`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyBuffer2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01822`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01823`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01824`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBuffer2-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) -> () {
+    pub fn cmd_copy_buffer2<'a>(
+        &mut self,
+        copy_buffer_info: &CopyBufferInfo2<'a>,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_copy_buffer2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_buffer2)(
                 self.raw(),
                 copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
             )
@@ -1100,64 +1192,64 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyBufferToImage`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageOffset-07738`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-srcImage-00199`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-srcImage-00201`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07274`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07275`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07276`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07277`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07273`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-srcImage-04053`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-00171`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-00173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImage-00177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImage-00178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImage-00179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-06217`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-06218`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-06219`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyBufferToImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyBufferToImage-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdCopyBufferToImage-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-pRegions-07741`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImage-01997`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImageLayout-01396`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-dstImage-02543`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage-None-00214`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageOffset-07738`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-srcImage-00199`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-srcImage-00201`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07274`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07275`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07276`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07277`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07273`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-srcImage-04053`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-00171`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-00173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImage-00177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImage-00178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImage-00179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-06217`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-06218`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-06219`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyBufferToImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBufferToImage-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdCopyBufferToImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07741`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImage-01997`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-01396`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-dstImage-02543`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage-None-00214`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_buffer_to_image<'a>(
         &mut self,
@@ -1167,7 +1259,11 @@ impl<'c> Recorder<'c, Outside> {
         regions: &[vk::BufferImageCopy],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_copy_buffer_to_image)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_buffer_to_image)(
                 self.raw(),
                 src_buffer.raw(),
                 dst_image.raw(),
@@ -1176,37 +1272,42 @@ impl<'c> Recorder<'c, Outside> {
                 regions.as_ptr().cast(),
             )
         };
-        self.retain(src_buffer.retained());
-        self.retain(dst_image.retained());
+        self.retain_with(src_buffer.address(), || src_buffer.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyBufferToImage2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyBufferToImage2-pCopyBufferToImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyBufferToImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBufferToImage2-pCopyBufferToImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBufferToImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_copy_buffer_to_image2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_buffer_to_image2)(
                 self.raw(),
-                copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a> as *const _,
+                copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a>
+                    as *const _,
             )
         };
         ()
@@ -1215,96 +1316,96 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyImage`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyImage-commandBuffer-01825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-commandBuffer-01826`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-commandBuffer-01827`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-00124`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImageLayout-00128`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImageLayout-00133`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-00136`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcSubresource-01696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstSubresource-01697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcSubresource-01698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstSubresource-01699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcOffset-01783`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstOffset-01784`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-aspectMask-00142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-aspectMask-00143`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcOffset-00144`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcOffset-00145`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-00146`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcOffset-00147`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01785`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01786`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01787`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01788`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstOffset-00150`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstOffset-00151`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-00152`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstOffset-00153`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-07278`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-07279`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-07280`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-07281`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-07282`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-pRegions-07283`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01728`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01729`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01730`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01732`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01733`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01734`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdCopyImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdCopyImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyImage-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdCopyImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdCopyImage-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdCopyImage-srcImage-01995`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-04443`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-04444`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-07743`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-07744`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01790`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01791`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01792`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-00127`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-00132`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-00135`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01546`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01547`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01548`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-None-01549`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01554`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01555`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01556`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-01557`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImageLayout-00129`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImageLayout-00134`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImageLayout-01917`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImageLayout-01395`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-02542`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-00139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-07742`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-01789`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-srcImage-00126`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-dstImage-00131`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-aspect-06662`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-aspect-06663`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-aspect-06664`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage-aspect-06665`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdCopyImage-commandBuffer-01825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-commandBuffer-01826`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-commandBuffer-01827`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-00124`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImageLayout-00128`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImageLayout-00133`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-00136`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcSubresource-01696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstSubresource-01697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcSubresource-01698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstSubresource-01699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcOffset-01783`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstOffset-01784`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-aspectMask-00142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-aspectMask-00143`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcOffset-00144`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcOffset-00145`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-00146`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcOffset-00147`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01785`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01786`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01787`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01788`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstOffset-00150`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstOffset-00151`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-00152`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstOffset-00153`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-07278`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-07279`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-07280`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-07281`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-07282`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-pRegions-07283`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01728`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01729`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01730`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01732`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01733`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01734`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImage-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdCopyImage-regionCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdCopyImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyImage-srcImage-01995`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-04443`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-04444`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-07743`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-07744`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01790`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01791`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01792`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-00127`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-00132`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-00135`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01546`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01547`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01548`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-None-01549`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01554`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01555`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01556`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-01557`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImageLayout-00129`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImageLayout-00134`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImageLayout-01917`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImageLayout-01395`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-02542`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-00139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-07742`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-01789`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-srcImage-00126`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-dstImage-00131`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-aspect-06662`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-aspect-06663`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-aspect-06664`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage-aspect-06665`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_image<'a>(
         &mut self,
@@ -1315,7 +1416,11 @@ impl<'c> Recorder<'c, Outside> {
         regions: &[vk::ImageCopy],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_copy_image)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_image)(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -1325,29 +1430,33 @@ impl<'c> Recorder<'c, Outside> {
                 regions.as_ptr().cast(),
             )
         };
-        self.retain(src_image.retained());
-        self.retain(dst_image.retained());
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyImage2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyImage2-commandBuffer-01825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage2-commandBuffer-01826`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage2-commandBuffer-01827`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyImage2-commandBuffer-01825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage2-commandBuffer-01826`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage2-commandBuffer-01827`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_copy_image2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_image2)(
                 self.raw(),
                 copy_image_info as *const CopyImageInfo2<'a> as *const _,
             )
@@ -1358,62 +1467,62 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyImageToBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-00199`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-00201`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07274`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07275`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07276`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07277`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07273`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-04053`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-00183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-00184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-00186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-00188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-06220`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-06221`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-06222`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdCopyImageToBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyImageToBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyImageToBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdCopyImageToBuffer-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-pRegions-07741`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-01998`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-01397`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer-srcImage-02544`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00199`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00201`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07274`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07275`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07276`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07277`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07273`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-04053`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-00183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-00184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-06220`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-06221`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-06222`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyImageToBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImageToBuffer-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdCopyImageToBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07741`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-01998`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-01397`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-02544`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_image_to_buffer<'a>(
         &mut self,
@@ -1423,7 +1532,11 @@ impl<'c> Recorder<'c, Outside> {
         regions: &[vk::BufferImageCopy],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_copy_image_to_buffer)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_image_to_buffer)(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -1432,36 +1545,41 @@ impl<'c> Recorder<'c, Outside> {
                 regions.as_ptr().cast(),
             )
         };
-        self.retain(src_image.retained());
-        self.retain(dst_buffer.retained());
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyImageToBuffer2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyImageToBuffer2-pCopyImageToBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyImageToBuffer2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImageToBuffer2-pCopyImageToBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImageToBuffer2-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_copy_image_to_buffer2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_image_to_buffer2)(
                 self.raw(),
-                copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a> as *const _,
+                copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a>
+                    as *const _,
             )
         };
         ()
@@ -1470,33 +1588,33 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdCopyQueryPoolResults`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-flags-00822`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-flags-00823`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-queryType-00827`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-None-07429`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdCopyQueryPoolResults-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdCopyQueryPoolResults-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdCopyQueryPoolResults-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdCopyQueryPoolResults-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdCopyQueryPoolResults-queryType-03232`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-queryType-03233`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-queryType-03234`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-queryType-02734`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-queryType-06901`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdCopyQueryPoolResults-flags-06902`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-flags-00822`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-flags-00823`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-queryType-00827`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-None-07429`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyQueryPoolResults-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyQueryPoolResults-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyQueryPoolResults-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdCopyQueryPoolResults-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyQueryPoolResults-queryType-03232`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-queryType-03233`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-queryType-03234`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-queryType-02734`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-queryType-06901`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdCopyQueryPoolResults-flags-06902`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_query_pool_results(
         &mut self,
@@ -1509,7 +1627,11 @@ impl<'c> Recorder<'c, Outside> {
         flags: vk::QueryResultFlags,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_copy_query_pool_results)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_query_pool_results)(
                 self.raw(),
                 query_pool.raw(),
                 first_query,
@@ -1520,82 +1642,82 @@ impl<'c> Recorder<'c, Outside> {
                 flags,
             )
         };
-        self.retain(query_pool.retained());
-        self.retain(dst_buffer.retained());
+        self.retain_with(query_pool.address(), || query_pool.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdDispatch`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDispatch-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-groupCountX-00386`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-groupCountY-00387`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-groupCountZ-00388`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDispatch-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDispatch-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDispatch-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatch-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDispatch-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-groupCountX-00386`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-groupCountY-00387`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-groupCountZ-00388`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDispatch-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatch-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDispatch-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatch-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_dispatch(
         &mut self,
@@ -1604,12 +1726,11 @@ impl<'c> Recorder<'c, Outside> {
         group_count_z: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_dispatch)(
-                self.raw(),
-                group_count_x,
-                group_count_y,
-                group_count_z,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_dispatch)(self.raw(), group_count_x, group_count_y, group_count_z)
         };
         ()
     }
@@ -1617,78 +1738,78 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdDispatchBase`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDispatchBase-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-baseGroupX-00421`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-baseGroupX-00422`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-baseGroupZ-00423`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-groupCountX-00424`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-groupCountY-00425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-groupCountZ-00426`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-baseGroupX-00427`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDispatchBase-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDispatchBase-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchBase-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDispatchBase-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-baseGroupX-00421`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-baseGroupX-00422`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-baseGroupZ-00423`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-groupCountX-00424`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-groupCountY-00425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-groupCountZ-00426`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-baseGroupX-00427`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatchBase-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDispatchBase-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchBase-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_dispatch_base(
         &mut self,
@@ -1700,7 +1821,11 @@ impl<'c> Recorder<'c, Outside> {
         group_count_z: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_1().cmd_dispatch_base)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_1()
+                .cmd_dispatch_base)(
                 self.raw(),
                 base_group_x,
                 base_group_y,
@@ -1716,286 +1841,294 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdDispatchIndirect`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDispatchIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-offset-00407`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDispatchIndirect-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDispatchIndirect-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdDispatchIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDispatchIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-offset-00407`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatchIndirect-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDispatchIndirect-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDispatchIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) -> () {
+    pub fn cmd_dispatch_indirect(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_dispatch_indirect)(self.raw(), buffer.raw(), offset)
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_dispatch_indirect)(self.raw(), buffer.raw(), offset)
         };
-        self.retain(buffer.retained());
+        self.retain_with(buffer.address(), || buffer.retained());
         ()
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdDraw`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDraw-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-subpass-02685`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07748`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06537`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06538`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06887`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDraw-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDraw-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDraw-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-06666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06172`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06175`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07749`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07751`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-imageView-06184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07619`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07620`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07621`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07622`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07623`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-samples-07472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-samples-07473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07630`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07631`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07632`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07633`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07634`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07635`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07636`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07637`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07638`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07639`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07640`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07641`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07642`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07643`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07644`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07645`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07646`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07647`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-07649`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-stage-07073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04914`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-None-04875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDraw-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDraw-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-renderPass-02684`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-subpass-02685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07748`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06537`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06538`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06887`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDraw-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDraw-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDraw-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-06666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-logicOp-04878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06172`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewMask-06178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06175`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07749`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07751`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-imageView-06184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-renderPass-06198`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07619`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07620`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07621`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07622`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07623`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-samples-07472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-samples-07473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07630`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07631`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07632`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07633`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07634`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07635`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07636`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07637`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07638`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07639`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07640`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07641`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07642`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07643`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07644`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07645`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07646`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07647`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-07649`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-stage-07073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pStrides-04913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-pStrides-04884`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04914`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-None-04875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDraw-stage-06481`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_draw(
         &mut self,
@@ -2005,7 +2138,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
         first_instance: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_draw)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw)(
                 self.raw(),
                 vertex_count,
                 instance_count,
@@ -2019,207 +2156,207 @@ impl<'c, S: Inside> Recorder<'c, S> {
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdDrawIndexed`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDrawIndexed-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-subpass-02685`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07748`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06537`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06538`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06887`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07312`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDrawIndexed-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexed-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-06666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06172`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06175`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07749`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07751`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-imageView-06184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07619`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07620`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07621`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07622`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07623`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-samples-07472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-samples-07473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07630`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07631`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07632`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07633`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07634`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07635`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07636`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07637`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07638`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07639`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07640`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07641`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07642`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07643`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07644`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07645`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07646`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07647`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-07649`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-stage-07073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04914`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-None-04875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexed-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDrawIndexed-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-renderPass-02684`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-subpass-02685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07748`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06537`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06538`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06887`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07312`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexed-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDrawIndexed-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-06666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-logicOp-04878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06172`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewMask-06178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06175`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07749`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07751`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-imageView-06184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-renderPass-06198`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07619`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07620`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07621`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07622`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07623`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-samples-07472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-samples-07473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07630`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07631`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07632`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07633`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07634`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07635`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07636`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07637`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07638`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07639`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07640`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07641`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07642`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07643`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07644`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07645`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07646`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07647`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-07649`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-stage-07073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pStrides-04913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-pStrides-04884`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04914`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-None-04875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexed-stage-06481`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_draw_indexed(
         &mut self,
@@ -2230,7 +2367,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
         first_instance: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_draw_indexed)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw_indexed)(
                 self.raw(),
                 index_count,
                 instance_count,
@@ -2245,215 +2386,215 @@ impl<'c, S: Inside> Recorder<'c, S> {
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdDrawIndexedIndirect`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07748`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06537`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06538`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06887`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07312`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-drawCount-00528`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-drawCount-00539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-drawCount-00540`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDrawIndexedIndirect-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexedIndirect-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexedIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-06666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06172`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06175`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07749`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07751`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-imageView-06184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07619`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07620`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07621`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07622`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07623`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-samples-07472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-samples-07473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07630`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07631`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07632`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07633`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07634`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07635`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07636`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07637`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07638`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07639`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07640`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07641`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07642`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07643`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07644`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07645`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07646`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07647`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-07649`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-stage-07073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04914`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-None-04875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirect-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07748`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06537`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06538`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06887`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07312`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-drawCount-00528`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-drawCount-00539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-drawCount-00540`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexedIndirect-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirect-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-06666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-logicOp-04878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06172`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06175`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07749`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07751`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-imageView-06184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-renderPass-06198`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07619`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07620`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07621`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07622`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07623`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-samples-07472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-samples-07473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07630`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07631`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07632`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07633`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07634`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07635`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07636`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07637`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07638`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07639`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07640`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07641`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07642`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07643`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07644`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07645`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07646`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07647`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-07649`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-stage-07073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pStrides-04913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04914`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirect-stage-06481`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_draw_indexed_indirect(
         &mut self,
@@ -2463,7 +2604,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
         stride: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_draw_indexed_indirect)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw_indexed_indirect)(
                 self.raw(),
                 buffer.raw(),
                 offset,
@@ -2471,228 +2616,228 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 stride,
             )
         };
-        self.retain(buffer.retained());
+        self.retain_with(buffer.address(), || buffer.retained());
         ()
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdDrawIndexedIndirectCount`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07748`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06537`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06538`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06887`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-04129`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07312`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stride-03142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-maxDrawCount-03143`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03153`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03154`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdDrawIndexedIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-06666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06172`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06175`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07749`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07751`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07619`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07620`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07621`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07622`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07623`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-samples-07472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-samples-07473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07630`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07631`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07632`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07633`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07634`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07635`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07636`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07637`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07638`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07639`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07640`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07641`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07642`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07643`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07644`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07645`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07646`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07647`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-07649`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stage-07073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04914`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-stage-06481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndexedIndirectCount-None-04445`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07748`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06537`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06538`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06887`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-04129`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07312`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stride-03142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-maxDrawCount-03143`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03153`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03154`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-06666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-logicOp-04878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06172`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06175`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07749`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07751`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-renderPass-06198`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07619`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07620`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07621`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07622`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07623`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-samples-07472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-samples-07473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07630`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07631`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07632`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07633`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07634`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07635`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07636`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07637`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07638`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07639`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07640`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07641`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07642`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07643`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07644`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07645`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07646`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07647`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-07649`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stage-07073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04914`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-stage-06481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04445`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -2718,221 +2863,221 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 stride,
             )
         };
-        self.retain(buffer.retained());
-        self.retain(count_buffer.retained());
+        self.retain_with(buffer.address(), || buffer.retained());
+        self.retain_with(count_buffer.address(), || count_buffer.retained());
         ()
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdDrawIndirect`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDrawIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-subpass-02685`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07748`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06537`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06538`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06887`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-drawCount-02718`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-drawCount-02719`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-drawCount-00476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-drawCount-00487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-drawCount-00488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDrawIndirect-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDrawIndirect-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdDrawIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-06666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06172`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06175`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07749`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07751`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-imageView-06184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07619`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07620`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07621`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07622`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07623`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-samples-07472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-samples-07473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07630`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07631`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07632`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07633`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07634`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07635`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07636`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07637`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07638`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07639`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07640`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07641`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07642`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07643`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07644`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07645`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07646`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07647`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-07649`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-stage-07073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04914`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-None-04875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirect-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDrawIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-renderPass-02684`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-subpass-02685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07748`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06537`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06538`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06887`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-drawCount-02718`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-drawCount-02719`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-drawCount-00476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-drawCount-00487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-drawCount-00488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndirect-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDrawIndirect-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-06666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-logicOp-04878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06172`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewMask-06178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06175`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07749`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07751`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-imageView-06184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-renderPass-06198`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07619`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07620`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07621`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07622`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07623`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-samples-07472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-samples-07473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07630`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07631`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07632`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07633`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07634`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07635`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07636`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07637`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07638`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07639`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07640`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07641`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07642`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07643`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07644`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07645`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07646`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07647`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-07649`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-stage-07073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pStrides-04913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-pStrides-04884`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04914`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-None-04875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirect-stage-06481`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_draw_indirect(
         &mut self,
@@ -2942,234 +3087,232 @@ impl<'c, S: Inside> Recorder<'c, S> {
         stride: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_draw_indirect)(
-                self.raw(),
-                buffer.raw(),
-                offset,
-                draw_count,
-                stride,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw_indirect)(self.raw(), buffer.raw(), offset, draw_count, stride)
         };
-        self.retain(buffer.retained());
+        self.retain_with(buffer.address(), || buffer.retained());
         ()
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdDrawIndirectCount`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdDrawIndirectCount-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02697`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02700`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02702`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02703`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02704`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewType-07752`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-format-07753`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07288`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-subpass-02685`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07748`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07469`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06537`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06538`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06539`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06887`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-buffer-02708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-buffer-02709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-offset-02710`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBuffer-02714`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBuffer-02715`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBufferOffset-04129`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stride-03110`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-maxDrawCount-03111`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBuffer-03121`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-countBuffer-03122`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdDrawIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdDrawIndirectCount-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdDrawIndirectCount-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdDrawIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-flags-02696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02698`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02699`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-08114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-08115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-08116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-08117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-08119`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02705`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-02706`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06550`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-06666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06172`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06173`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06174`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06175`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06176`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06177`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07749`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07751`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06183`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-imageView-06184`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07619`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07620`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07621`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07622`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07623`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07624`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07625`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07627`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07628`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07629`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-samples-07472`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-samples-07473`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07630`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07631`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07632`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07633`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07634`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07635`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07636`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07637`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07638`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07639`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07640`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07641`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07642`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07643`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07644`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07645`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07646`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07647`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-07649`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stage-07073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04914`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-stage-06481`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdDrawIndirectCount-None-04445`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdDrawIndirectCount-magFilter-04553`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02697`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02700`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02702`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02703`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02704`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewType-07752`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-format-07753`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07288`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-renderPass-02684`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-subpass-02685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07748`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07469`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06537`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06538`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06539`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06887`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-buffer-02708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-buffer-02709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-offset-02710`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-02714`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-02715`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBufferOffset-04129`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stride-03110`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-maxDrawCount-03111`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-03121`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-03122`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndirectCount-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDrawIndirectCount-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-flags-02696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02698`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02699`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-08114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-08115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-08116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-08117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-08119`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02705`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-02706`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06550`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-SampledType-04470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-SampledType-04471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-SampledType-04472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-SampledType-04473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-06666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-logicOp-04878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06172`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06173`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewMask-06178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06174`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06175`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06176`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06177`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07749`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07751`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06183`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-imageView-06184`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-renderPass-06198`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07619`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07620`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07621`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07622`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07623`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07624`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07625`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07627`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07628`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07629`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-samples-07472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-samples-07473`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07630`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07631`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07632`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07633`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07634`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07635`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07636`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07637`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07638`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07639`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07640`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07641`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07642`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07643`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07644`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07645`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07646`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07647`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-07649`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stage-07073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pStrides-04913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-pStrides-04884`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04914`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-stage-06481`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdDrawIndirectCount-None-04445`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_draw_indirect_count(
         &mut self,
@@ -3181,7 +3324,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
         stride: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_2().cmd_draw_indirect_count)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_draw_indirect_count)(
                 self.raw(),
                 buffer.raw(),
                 offset,
@@ -3191,23 +3338,23 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 stride,
             )
         };
-        self.retain(buffer.retained());
-        self.retain(count_buffer.retained());
+        self.retain_with(buffer.address(), || buffer.retained());
+        self.retain_with(count_buffer.address(), || count_buffer.retained());
         ()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdEndDebugUtilsLabelEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01912`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01913`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01912`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01913`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         let ext_table = self
@@ -3225,45 +3372,49 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdEndQuery`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdEndQuery-None-01923`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-query-00810`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-None-07007`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-None-07008`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdEndQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdEndQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdEndQuery-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdEndQuery-commandBuffer-01886`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-query-00812`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-queryPool-03227`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndQuery-queryPool-03228`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdEndQuery-None-01923`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-query-00810`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-None-07007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-None-07008`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdEndQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndQuery-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdEndQuery-commandBuffer-01886`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-query-00812`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-queryPool-03227`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndQuery-queryPool-03228`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_end_query)(self.raw(), query_pool.raw(), query)
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_end_query)(self.raw(), query_pool.raw(), query)
         };
-        self.retain(query_pool.retained());
+        self.retain_with(query_pool.address(), || query_pool.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, InRenderPass> {
     /**`vkCmdEndRenderPass`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdEndRenderPass-None-00910`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRenderPass-None-07004`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdEndRenderPass-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdEndRenderPass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdEndRenderPass-None-02351`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRenderPass-None-06170`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdEndRenderPass-None-00910`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRenderPass-None-07004`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRenderPass-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass-None-02351`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRenderPass-None-06170`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
         unsafe { (self.device().fns().fp_v1_0().cmd_end_render_pass)(self.raw()) };
@@ -3274,26 +3425,30 @@ impl<'c> Recorder<'c, InRenderPass> {
 impl<'c> Recorder<'c, InRenderPass> {
     /**`vkCmdEndRenderPass2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdEndRenderPass2-None-03103`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRenderPass2-None-07005`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdEndRenderPass2-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdEndRenderPass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdEndRenderPass2-None-02352`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRenderPass2-None-06171`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdEndRenderPass2-None-03103`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRenderPass2-None-07005`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRenderPass2-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass2-None-02352`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRenderPass2-None-06171`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
         unsafe {
-            (self.device().fns().fp_v1_2().cmd_end_render_pass2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_end_render_pass2)(
                 self.raw(),
                 subpass_end_info as *const SubpassEndInfo<'a> as *const _,
             )
@@ -3305,17 +3460,17 @@ impl<'c> Recorder<'c, InRenderPass> {
 impl<'c> Recorder<'c, InRendering> {
     /**`vkCmdEndRendering`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdEndRendering-None-06161`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRendering-commandBuffer-06162`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRendering-None-06999`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdEndRendering-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdEndRendering-None-06781`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdEndRendering-None-06161`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRendering-commandBuffer-06162`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRendering-None-06999`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRendering-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdEndRendering-None-06781`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         unsafe { (self.device().fns().fp_v1_3().cmd_end_rendering)(self.raw()) };
@@ -3326,76 +3481,82 @@ impl<'c> Recorder<'c, InRendering> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdExecuteCommands`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00088`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00089`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00099`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-contents-06018`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-06019`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pBeginInfo-06020`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00100`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-00101`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-00102`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-00103`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-00104`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00105`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-07594`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-06533`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-06534`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-06535`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-06536`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdExecuteCommands-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdExecuteCommands-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdExecuteCommands-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdExecuteCommands-contents-00095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-00097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pInheritanceInfo-00098`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-02865`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-02866`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-02867`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-01820`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-commandBuffer-01821`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-None-02286`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-06021`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pCommandBuffers-06022`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-flags-06024`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pBeginInfo-06025`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-flags-06026`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-colorAttachmentCount-06027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-imageView-06028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-imageView-07606`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pDepthAttachment-06029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pStencilAttachment-06030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pDepthAttachment-06774`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pStencilAttachment-06775`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-variableSampleLocations-06023`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-viewMask-06031`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-06032`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-06033`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-06034`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-06035`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-06036`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdExecuteCommands-pNext-06037`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00088`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00089`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00099`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-contents-06018`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-06019`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pBeginInfo-06020`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00100`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-00101`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-00102`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-00103`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-00104`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00105`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-07594`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-06533`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-06534`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-06535`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-06536`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdExecuteCommands-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdExecuteCommands-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdExecuteCommands-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdExecuteCommands-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdExecuteCommands-contents-00095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pInheritanceInfo-00098`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-02865`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-02866`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-02867`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-01820`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-commandBuffer-01821`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-None-02286`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-06021`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-06022`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-flags-06024`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pBeginInfo-06025`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-flags-06026`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-colorAttachmentCount-06027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-imageView-06028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-imageView-07606`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pDepthAttachment-06029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pStencilAttachment-06030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pDepthAttachment-06774`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pStencilAttachment-06775`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-variableSampleLocations-06023`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-viewMask-06031`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-06032`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-06033`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-06034`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-06035`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-06036`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdExecuteCommands-pNext-06037`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_execute_commands(&mut self, command_buffers: &[&CommandBuffer]) -> () {
         for h in command_buffers {
             self.retain(h.retained());
         }
-        let command_buffers: smallvec::SmallVec<[vk::CommandBuffer; 8]> =
-            command_buffers.iter().map(|h| h.raw()).collect();
+        let command_buffers: smallvec::SmallVec<[vk::CommandBuffer; 8]> = command_buffers
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_execute_commands)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_execute_commands)(
                 self.raw(),
                 command_buffers.len() as u32,
                 command_buffers.as_ptr(),
@@ -3407,25 +3568,25 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdFillBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdFillBuffer-dstOffset-00024`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-dstOffset-00025`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-size-00026`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-size-00027`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-size-00028`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-dstBuffer-00029`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-dstBuffer-00031`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdFillBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdFillBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdFillBuffer-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdFillBuffer-commandBuffer-00030`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-commandBuffer-01811`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdFillBuffer-commandBuffer-01812`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdFillBuffer-dstOffset-00024`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-dstOffset-00025`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-size-00026`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-size-00027`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-size-00028`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-dstBuffer-00029`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-dstBuffer-00031`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdFillBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdFillBuffer-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdFillBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdFillBuffer-commandBuffer-00030`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-commandBuffer-01811`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdFillBuffer-commandBuffer-01812`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_fill_buffer(
         &mut self,
@@ -3435,29 +3596,27 @@ impl<'c> Recorder<'c, Outside> {
         data: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_fill_buffer)(
-                self.raw(),
-                dst_buffer.raw(),
-                dst_offset,
-                size,
-                data,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_fill_buffer)(self.raw(), dst_buffer.raw(), dst_offset, size, data)
         };
-        self.retain(dst_buffer.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         ()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdInsertDebugUtilsLabelEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_insert_debug_utils_label_ext<'a>(
         &mut self,
@@ -3471,7 +3630,8 @@ impl<'c, S: State> Recorder<'c, S> {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         Ok({
             unsafe {
-                (ext_table.cmd_insert_debug_utils_label_ext)(
+                (ext_table
+                    .cmd_insert_debug_utils_label_ext)(
                     self.raw(),
                     label_info as *const DebugUtilsLabelEXT<'a> as *const _,
                 )
@@ -3483,38 +3643,40 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c> Recorder<'c, InRenderPass> {
     /**`vkCmdNextSubpass`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdNextSubpass-None-00909`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdNextSubpass-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdNextSubpass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdNextSubpass-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdNextSubpass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdNextSubpass-None-02349`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdNextSubpass-None-00909`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdNextSubpass-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdNextSubpass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdNextSubpass-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdNextSubpass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdNextSubpass-None-02349`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) -> () {
-        unsafe { (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents) };
+        unsafe {
+            (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
+        };
         ()
     }
 }
 impl<'c> Recorder<'c, InRenderPass> {
     /**`vkCmdNextSubpass2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdNextSubpass2-None-03102`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdNextSubpass2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdNextSubpass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdNextSubpass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdNextSubpass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdNextSubpass2-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdNextSubpass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-    - `VUID-vkCmdNextSubpass2-None-02350`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdNextSubpass2-None-03102`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdNextSubpass2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdNextSubpass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdNextSubpass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdNextSubpass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdNextSubpass2-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdNextSubpass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdNextSubpass2-None-02350`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_next_subpass2<'a>(
         &mut self,
@@ -3522,7 +3684,11 @@ impl<'c> Recorder<'c, InRenderPass> {
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_2().cmd_next_subpass2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_next_subpass2)(
                 self.raw(),
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
                 subpass_end_info as *const SubpassEndInfo<'a> as *const _,
@@ -3534,56 +3700,56 @@ impl<'c> Recorder<'c, InRenderPass> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdPipelineBarrier`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcAccessMask-02815`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstAccessMask-02816`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-pDependencies-02285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-image-04073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-oldLayout-01181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-06461`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-06462`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdPipelineBarrier-pMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdPipelineBarrier-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier-None-06191`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcAccessMask-02815`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstAccessMask-02816`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-pDependencies-02285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-image-04073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-oldLayout-01181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-06461`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-06462`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdPipelineBarrier-pMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdPipelineBarrier-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier-None-06191`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_pipeline_barrier<'a>(
         &mut self,
@@ -3595,7 +3761,11 @@ impl<'c, S: State> Recorder<'c, S> {
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_pipeline_barrier)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_pipeline_barrier)(
                 self.raw(),
                 src_stage_mask,
                 dst_stage_mask,
@@ -3614,26 +3784,33 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdPipelineBarrier2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-image-04073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-oldLayout-01181`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-synchronization2-03848`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-srcStageMask-03849`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-dstStageMask-03850`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdPipelineBarrier2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPipelineBarrier2-None-06191`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-image-04073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-oldLayout-01181`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-synchronization2-03848`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-srcStageMask-03849`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-dstStageMask-03850`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdPipelineBarrier2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPipelineBarrier2-None-06191`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) -> () {
+    pub fn cmd_pipeline_barrier2<'a>(
+        &mut self,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_pipeline_barrier2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_pipeline_barrier2)(
                 self.raw(),
                 dependency_info as *const DependencyInfo<'a> as *const _,
             )
@@ -3644,24 +3821,24 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdPushConstants`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdPushConstants-offset-01795`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPushConstants-offset-01796`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPushConstants-offset-00368`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPushConstants-size-00369`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPushConstants-offset-00370`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPushConstants-size-00371`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdPushConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdPushConstants-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdPushConstants-stageFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkCmdPushConstants-pValues-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdPushConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdPushConstants-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdPushConstants-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdPushConstants-size-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdPushConstants-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkCmdPushConstants-offset-01795`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPushConstants-offset-01796`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPushConstants-offset-00368`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPushConstants-size-00369`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPushConstants-offset-00370`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPushConstants-size-00371`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdPushConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdPushConstants-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdPushConstants-stageFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdPushConstants-pValues-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdPushConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdPushConstants-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdPushConstants-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdPushConstants-size-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdPushConstants-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn cmd_push_constants(
         &mut self,
@@ -3671,7 +3848,11 @@ impl<'c, S: State> Recorder<'c, S> {
         values: &[u8],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_push_constants)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_push_constants)(
                 self.raw(),
                 layout.raw(),
                 stage_flags,
@@ -3680,102 +3861,118 @@ impl<'c, S: State> Recorder<'c, S> {
                 values.as_ptr().cast(),
             )
         };
-        self.retain(layout.retained());
+        self.retain_with(layout.address(), || layout.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdResetEvent`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdResetEvent-stageMask-04090`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-06458`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-01153`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-event-03834`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdResetEvent-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdResetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdResetEvent-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdResetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-07318`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-07319`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-03937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-event-03835`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent-commandBuffer-01157`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdResetEvent-stageMask-04090`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-06458`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-01153`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-event-03834`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetEvent-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetEvent-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-07318`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-07319`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-03937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-event-03835`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent-commandBuffer-01157`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_reset_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) -> () {
+    pub fn cmd_reset_event(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_reset_event)(self.raw(), event.raw(), stage_mask)
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_reset_event)(self.raw(), event.raw(), stage_mask)
         };
-        self.retain(event.retained());
+        self.retain_with(event.address(), || event.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdResetEvent2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdResetEvent2-stageMask-03929`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-03930`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-synchronization2-03829`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-03830`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-event-03831`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-event-03832`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdResetEvent2-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdResetEvent2-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdResetEvent2-stageMask-03931`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-03932`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-03933`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-03934`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-03935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-04956`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-07316`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-07317`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-04957`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-stageMask-04995`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetEvent2-commandBuffer-03833`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdResetEvent2-stageMask-03929`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-03930`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-synchronization2-03829`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-03830`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-event-03831`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-event-03832`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetEvent2-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetEvent2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResetEvent2-stageMask-03931`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-03932`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-03933`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-03934`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-03935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-04956`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-07316`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-07317`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-04957`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-stageMask-04995`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetEvent2-commandBuffer-03833`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_reset_event2(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags2) -> () {
+    pub fn cmd_reset_event2(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_reset_event2)(self.raw(), event.raw(), stage_mask)
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_reset_event2)(self.raw(), event.raw(), stage_mask)
         };
-        self.retain(event.retained());
+        self.retain_with(event.address(), || event.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdResetQueryPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdResetQueryPool-firstQuery-00796`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetQueryPool-firstQuery-00797`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetQueryPool-None-02841`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdResetQueryPool-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdResetQueryPool-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdResetQueryPool-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdResetQueryPool-firstQuery-02862`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdResetQueryPool-firstQuery-00796`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetQueryPool-firstQuery-00797`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetQueryPool-None-02841`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResetQueryPool-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetQueryPool-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdResetQueryPool-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResetQueryPool-firstQuery-02862`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_reset_query_pool(
         &mut self,
@@ -3784,72 +3981,76 @@ impl<'c> Recorder<'c, Outside> {
         query_count: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_reset_query_pool)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_reset_query_pool)(
                 self.raw(),
                 query_pool.raw(),
                 first_query,
                 query_count,
             )
         };
-        self.retain(query_pool.retained());
+        self.retain_with(query_pool.address(), || query_pool.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdResolveImage`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdResolveImage-commandBuffer-01837`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-commandBuffer-01838`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-commandBuffer-01839`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-pRegions-00255`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-00256`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-00257`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-00258`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-00259`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImageLayout-00260`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImageLayout-00262`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-02003`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-01386`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcSubresource-01709`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstSubresource-01710`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcSubresource-01711`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstSubresource-01712`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-04446`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-04447`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcOffset-00269`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcOffset-00270`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-00271`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcOffset-00272`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-00273`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstOffset-00274`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstOffset-00275`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-00276`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstOffset-00277`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-00278`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-06762`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-06764`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdResolveImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdResolveImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdResolveImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdResolveImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdResolveImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdResolveImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdResolveImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdResolveImage-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdResolveImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdResolveImage-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdResolveImage-srcImageLayout-00261`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImageLayout-00263`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImageLayout-01400`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImageLayout-01401`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-linearColorAttachment-06519`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-02546`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-srcImage-06763`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage-dstImage-06765`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdResolveImage-commandBuffer-01837`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-commandBuffer-01838`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-commandBuffer-01839`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-pRegions-00255`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-00256`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-00257`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-00258`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-00259`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImageLayout-00260`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImageLayout-00262`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-02003`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-01386`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcSubresource-01709`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstSubresource-01710`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcSubresource-01711`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstSubresource-01712`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-04446`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-04447`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcOffset-00269`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcOffset-00270`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-00271`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcOffset-00272`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-00273`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstOffset-00274`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstOffset-00275`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-00276`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstOffset-00277`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-00278`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-06762`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-06764`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResolveImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResolveImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResolveImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResolveImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdResolveImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResolveImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResolveImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResolveImage-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdResolveImage-regionCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdResolveImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResolveImage-srcImageLayout-00261`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImageLayout-00263`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImageLayout-01400`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImageLayout-01401`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-linearColorAttachment-06519`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-02546`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-srcImage-06763`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage-dstImage-06765`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_resolve_image<'a>(
         &mut self,
@@ -3860,7 +4061,11 @@ impl<'c> Recorder<'c, Outside> {
         regions: &[vk::ImageResolve],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_resolve_image)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_resolve_image)(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -3870,29 +4075,36 @@ impl<'c> Recorder<'c, Outside> {
                 regions.as_ptr().cast(),
             )
         };
-        self.retain(src_image.retained());
-        self.retain(dst_image.retained());
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdResolveImage2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdResolveImage2-commandBuffer-01837`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage2-commandBuffer-01838`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage2-commandBuffer-01839`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdResolveImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdResolveImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdResolveImage2-commandBuffer-01837`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage2-commandBuffer-01838`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage2-commandBuffer-01839`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdResolveImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResolveImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_resolve_image2<'a>(&mut self, resolve_image_info: &ResolveImageInfo2<'a>) -> () {
+    pub fn cmd_resolve_image2<'a>(
+        &mut self,
+        resolve_image_info: &ResolveImageInfo2<'a>,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_resolve_image2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_resolve_image2)(
                 self.raw(),
                 resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
             )
@@ -3903,16 +4115,20 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetBlendConstants`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetBlendConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetBlendConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetBlendConstants-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetBlendConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetBlendConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetBlendConstants-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_blend_constants)(self.raw(), blend_constants)
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_blend_constants)(self.raw(), blend_constants)
         };
         ()
     }
@@ -3920,30 +4136,32 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetCullMode`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetCullMode-None-03384`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetCullMode-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetCullMode-cullMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetCullMode-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetCullMode-None-03384`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetCullMode-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetCullMode-cullMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetCullMode-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) -> () {
-        unsafe { (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode) };
+        unsafe {
+            (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode)
+        };
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBias`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBias-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthBias-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthBias-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBias-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthBias-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthBias-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_depth_bias(
         &mut self,
@@ -3952,7 +4170,11 @@ impl<'c, S: State> Recorder<'c, S> {
         depth_bias_slope_factor: f32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_depth_bias)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_depth_bias)(
                 self.raw(),
                 depth_bias_constant_factor,
                 depth_bias_clamp,
@@ -3965,17 +4187,21 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBiasEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthBiasEnable-None-04872`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthBiasEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBiasEnable-None-04872`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthBiasEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_depth_bias_enable)(self.raw(), depth_bias_enable)
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_depth_bias_enable)(self.raw(), depth_bias_enable)
         };
         ()
     }
@@ -3983,24 +4209,28 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBounds`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthBounds-minDepthBounds-00600`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBounds-maxDepthBounds-00601`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBounds-minDepthBounds-02508`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBounds-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthBounds-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthBounds-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBounds-minDepthBounds-00600`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBounds-maxDepthBounds-00601`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBounds-minDepthBounds-02508`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBounds-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthBounds-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthBounds-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_set_depth_bounds(&mut self, min_depth_bounds: f32, max_depth_bounds: f32) -> () {
+    pub fn cmd_set_depth_bounds(
+        &mut self,
+        min_depth_bounds: f32,
+        max_depth_bounds: f32,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_depth_bounds)(
-                self.raw(),
-                min_depth_bounds,
-                max_depth_bounds,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_depth_bounds)(self.raw(), min_depth_bounds, max_depth_bounds)
         };
         ()
     }
@@ -4008,15 +4238,18 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBoundsTestEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthBoundsTestEnable-None-03349`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBoundsTestEnable-None-03349`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_set_depth_bounds_test_enable(&mut self, depth_bounds_test_enable: vk::Bool32) -> () {
+    pub fn cmd_set_depth_bounds_test_enable(
+        &mut self,
+        depth_bounds_test_enable: vk::Bool32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4030,18 +4263,22 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthCompareOp`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthCompareOp-None-03353`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthCompareOp-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthCompareOp-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthCompareOp-None-03353`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthCompareOp-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_depth_compare_op)(self.raw(), depth_compare_op)
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_depth_compare_op)(self.raw(), depth_compare_op)
         };
         ()
     }
@@ -4049,17 +4286,21 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthTestEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthTestEnable-None-03352`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthTestEnable-None-03352`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_depth_test_enable)(self.raw(), depth_test_enable)
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_depth_test_enable)(self.raw(), depth_test_enable)
         };
         ()
     }
@@ -4067,20 +4308,21 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthWriteEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDepthWriteEnable-None-03354`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetDepthWriteEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthWriteEnable-None-03354`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetDepthWriteEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_depth_write_enable)(
-                self.raw(),
-                depth_write_enable,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_depth_write_enable)(self.raw(), depth_write_enable)
         };
         ()
     }
@@ -4088,74 +4330,84 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDeviceMask`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetDeviceMask-deviceMask-00108`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDeviceMask-deviceMask-00109`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDeviceMask-deviceMask-00110`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDeviceMask-deviceMask-00111`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetDeviceMask-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)*/
+- `VUID-vkCmdSetDeviceMask-deviceMask-00108`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDeviceMask-deviceMask-00109`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDeviceMask-deviceMask-00110`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDeviceMask-deviceMask-00111`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetDeviceMask-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_device_mask(&mut self, device_mask: u32) -> () {
-        unsafe { (self.device().fns().fp_v1_1().cmd_set_device_mask)(self.raw(), device_mask) };
+        unsafe {
+            (self.device().fns().fp_v1_1().cmd_set_device_mask)(self.raw(), device_mask)
+        };
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdSetEvent`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetEvent-stageMask-04090`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-06457`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-01149`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdSetEvent-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdSetEvent-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdSetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-07318`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-07319`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-03937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent-commandBuffer-01152`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdSetEvent-stageMask-04090`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-06457`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-01149`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdSetEvent-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSetEvent-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdSetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-07318`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-07319`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-03937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent-commandBuffer-01152`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) -> () {
+    pub fn cmd_set_event(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_event)(self.raw(), event.raw(), stage_mask)
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_event)(self.raw(), event.raw(), stage_mask)
         };
-        self.retain(event.retained());
+        self.retain_with(event.address(), || event.retained());
         ()
     }
 }
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdSetEvent2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetEvent2-synchronization2-03824`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent2-dependencyFlags-03825`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent2-srcStageMask-03827`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent2-dstStageMask-03828`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdSetEvent2-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdSetEvent2-commandBuffer-03826`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdSetEvent2-synchronization2-03824`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent2-dependencyFlags-03825`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent2-srcStageMask-03827`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent2-dstStageMask-03828`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSetEvent2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdSetEvent2-commandBuffer-03826`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_event2<'a>(
         &mut self,
@@ -4163,61 +4415,72 @@ impl<'c> Recorder<'c, Outside> {
         dependency_info: &DependencyInfo<'a>,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_event2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_event2)(
                 self.raw(),
                 event.raw(),
                 dependency_info as *const DependencyInfo<'a> as *const _,
             )
         };
-        self.retain(event.retained());
+        self.retain_with(event.address(), || event.retained());
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetFrontFace`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetFrontFace-None-03383`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetFrontFace-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetFrontFace-frontFace-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetFrontFace-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetFrontFace-None-03383`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetFrontFace-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetFrontFace-frontFace-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetFrontFace-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) -> () {
-        unsafe { (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face) };
+        unsafe {
+            (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face)
+        };
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetLineWidth`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetLineWidth-lineWidth-00788`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetLineWidth-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetLineWidth-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetLineWidth-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetLineWidth-lineWidth-00788`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetLineWidth-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetLineWidth-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetLineWidth-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) -> () {
-        unsafe { (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width) };
+        unsafe {
+            (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width)
+        };
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetPrimitiveRestartEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetPrimitiveRestartEnable-None-04866`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetPrimitiveRestartEnable-None-04866`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_set_primitive_restart_enable(&mut self, primitive_restart_enable: vk::Bool32) -> () {
+    pub fn cmd_set_primitive_restart_enable(
+        &mut self,
+        primitive_restart_enable: vk::Bool32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4231,21 +4494,25 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetPrimitiveTopology`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetPrimitiveTopology-None-03347`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetPrimitiveTopology-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetPrimitiveTopology-None-03347`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetPrimitiveTopology-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_set_primitive_topology(&mut self, primitive_topology: vk::PrimitiveTopology) -> () {
+    pub fn cmd_set_primitive_topology(
+        &mut self,
+        primitive_topology: vk::PrimitiveTopology,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_primitive_topology)(
-                self.raw(),
-                primitive_topology,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_primitive_topology)(self.raw(), primitive_topology)
         };
         ()
     }
@@ -4253,13 +4520,13 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetRasterizerDiscardEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetRasterizerDiscardEnable-None-04871`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetRasterizerDiscardEnable-None-04871`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
@@ -4271,7 +4538,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 .fns()
                 .fp_v1_3()
                 .cmd_set_rasterizer_discard_enable)(
-                self.raw(), rasterizer_discard_enable
+                self.raw(),
+                rasterizer_discard_enable,
             )
         };
         ()
@@ -4280,25 +4548,33 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetScissor`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetScissor-firstScissor-00592`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissor-firstScissor-00593`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissor-scissorCount-00594`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissor-x-00595`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissor-offset-00596`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissor-offset-00597`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissor-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetScissor-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdSetScissor-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetScissor-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetScissor-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdSetScissor-scissorCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdSetScissor-viewportScissor2D-04789`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdSetScissor-firstScissor-00592`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissor-firstScissor-00593`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissor-scissorCount-00594`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissor-x-00595`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissor-offset-00596`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissor-offset-00597`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissor-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetScissor-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetScissor-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetScissor-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetScissor-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdSetScissor-scissorCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetScissor-viewportScissor2D-04789`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_scissor<'a>(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) -> () {
+    pub fn cmd_set_scissor<'a>(
+        &mut self,
+        first_scissor: u32,
+        scissors: &[vk::Rect2D],
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_scissor)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_scissor)(
                 self.raw(),
                 first_scissor,
                 scissors.len() as u32,
@@ -4311,25 +4587,29 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetScissorWithCount`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetScissorWithCount-None-03396`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissorWithCount-scissorCount-03397`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissorWithCount-scissorCount-03398`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissorWithCount-x-03399`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissorWithCount-offset-03400`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissorWithCount-offset-03401`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetScissorWithCount-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdSetScissorWithCount-commandBuffer-04820`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdSetScissorWithCount-None-03396`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-03397`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-03398`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissorWithCount-x-03399`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissorWithCount-offset-03400`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissorWithCount-offset-03401`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetScissorWithCount-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-04820`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_scissor_with_count)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_scissor_with_count)(
                 self.raw(),
                 scissors.len() as u32,
                 scissors.as_ptr().cast(),
@@ -4341,14 +4621,14 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilCompareMask`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetStencilCompareMask-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkCmdSetStencilCompareMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetStencilCompareMask-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilCompareMask-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilCompareMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetStencilCompareMask-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_stencil_compare_mask(
         &mut self,
@@ -4356,11 +4636,11 @@ impl<'c, S: State> Recorder<'c, S> {
         compare_mask: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_stencil_compare_mask)(
-                self.raw(),
-                face_mask,
-                compare_mask,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_stencil_compare_mask)(self.raw(), face_mask, compare_mask)
         };
         ()
     }
@@ -4368,19 +4648,19 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilOp`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetStencilOp-None-03351`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetStencilOp-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetStencilOp-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkCmdSetStencilOp-failOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilOp-passOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilOp-depthFailOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilOp-compareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetStencilOp-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilOp-None-03351`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetStencilOp-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilOp-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilOp-failOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilOp-passOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilOp-depthFailOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilOp-compareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetStencilOp-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_stencil_op(
         &mut self,
@@ -4391,7 +4671,11 @@ impl<'c, S: State> Recorder<'c, S> {
         compare_op: vk::CompareOp,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_stencil_op)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_stencil_op)(
                 self.raw(),
                 face_mask,
                 fail_op,
@@ -4406,14 +4690,14 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilReference`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetStencilReference-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetStencilReference-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkCmdSetStencilReference-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetStencilReference-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilReference-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilReference-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilReference-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetStencilReference-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_stencil_reference(
         &mut self,
@@ -4421,11 +4705,11 @@ impl<'c, S: State> Recorder<'c, S> {
         reference: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_stencil_reference)(
-                self.raw(),
-                face_mask,
-                reference,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_stencil_reference)(self.raw(), face_mask, reference)
         };
         ()
     }
@@ -4433,20 +4717,24 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilTestEnable`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetStencilTestEnable-None-03350`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetStencilTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilTestEnable-None-03350`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetStencilTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
-    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) -> () {
+    pub fn cmd_set_stencil_test_enable(
+        &mut self,
+        stencil_test_enable: vk::Bool32,
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_stencil_test_enable)(
-                self.raw(),
-                stencil_test_enable,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_stencil_test_enable)(self.raw(), stencil_test_enable)
         };
         ()
     }
@@ -4454,14 +4742,14 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilWriteMask`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetStencilWriteMask-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkCmdSetStencilWriteMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetStencilWriteMask-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilWriteMask-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilWriteMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetStencilWriteMask-videocoding`: user (`videocoding` rules are not checked yet)*/
     #[inline]
     pub fn cmd_set_stencil_write_mask(
         &mut self,
@@ -4469,11 +4757,11 @@ impl<'c, S: State> Recorder<'c, S> {
         write_mask: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_stencil_write_mask)(
-                self.raw(),
-                face_mask,
-                write_mask,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_stencil_write_mask)(self.raw(), face_mask, write_mask)
         };
         ()
     }
@@ -4481,22 +4769,30 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetViewport`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetViewport-firstViewport-01223`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetViewport-firstViewport-01224`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetViewport-viewportCount-01225`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetViewport-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetViewport-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdSetViewport-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetViewport-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetViewport-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdSetViewport-viewportCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdSetViewport-commandBuffer-04821`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdSetViewport-firstViewport-01223`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetViewport-firstViewport-01224`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetViewport-viewportCount-01225`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetViewport-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetViewport-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetViewport-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetViewport-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetViewport-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdSetViewport-viewportCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetViewport-commandBuffer-04821`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_viewport<'a>(&mut self, first_viewport: u32, viewports: &[vk::Viewport]) -> () {
+    pub fn cmd_set_viewport<'a>(
+        &mut self,
+        first_viewport: u32,
+        viewports: &[vk::Viewport],
+    ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_viewport)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_viewport)(
                 self.raw(),
                 first_viewport,
                 viewports.len() as u32,
@@ -4509,22 +4805,26 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetViewportWithCount`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdSetViewportWithCount-None-03393`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetViewportWithCount-viewportCount-03394`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetViewportWithCount-viewportCount-03395`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdSetViewportWithCount-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdSetViewportWithCount-commandBuffer-04819`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdSetViewportWithCount-None-03393`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-03394`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-03395`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetViewportWithCount-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-04819`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_viewport_with_count)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_viewport_with_count)(
                 self.raw(),
                 viewports.len() as u32,
                 viewports.as_ptr().cast(),
@@ -4536,26 +4836,26 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdUpdateBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdUpdateBuffer-dstOffset-00032`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-dataSize-00033`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-dstBuffer-00034`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-dstBuffer-00035`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-dstOffset-00036`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-dataSize-00037`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-dataSize-00038`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdUpdateBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdUpdateBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-    - `VUID-vkCmdUpdateBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-    - `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdUpdateBuffer-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdUpdateBuffer-commandBuffer-01813`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdUpdateBuffer-commandBuffer-01814`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdUpdateBuffer-dstOffset-00032`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-dataSize-00033`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-dstBuffer-00034`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-dstBuffer-00035`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-dstOffset-00036`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-dataSize-00037`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-dataSize-00038`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdUpdateBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdUpdateBuffer-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdUpdateBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-01813`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-01814`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_update_buffer(
         &mut self,
@@ -4564,7 +4864,11 @@ impl<'c> Recorder<'c, Outside> {
         data: &[u8],
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_update_buffer)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_update_buffer)(
                 self.raw(),
                 dst_buffer.raw(),
                 dst_offset,
@@ -4572,63 +4876,63 @@ impl<'c> Recorder<'c, Outside> {
                 data.as_ptr().cast(),
             )
         };
-        self.retain(dst_buffer.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWaitEvents`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdWaitEvents-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcAccessMask-02815`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstAccessMask-02816`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-06459`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-06460`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-01158`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-07308`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdWaitEvents-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdWaitEvents-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdWaitEvents-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdWaitEvents-pMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdWaitEvents-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdWaitEvents-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdWaitEvents-eventCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdWaitEvents-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-pEvents-03847`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents-commandBuffer-01167`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdWaitEvents-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcAccessMask-02815`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstAccessMask-02816`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-06459`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-06460`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-01158`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-07308`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdWaitEvents-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdWaitEvents-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWaitEvents-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWaitEvents-pMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdWaitEvents-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdWaitEvents-eventCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdWaitEvents-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdWaitEvents-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-pEvents-03847`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents-commandBuffer-01167`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_wait_events<'a>(
         &mut self,
@@ -4642,9 +4946,16 @@ impl<'c, S: State> Recorder<'c, S> {
         for h in events {
             self.retain(h.retained());
         }
-        let events: smallvec::SmallVec<[vk::Event; 8]> = events.iter().map(|h| h.raw()).collect();
+        let events: smallvec::SmallVec<[vk::Event; 8]> = events
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_wait_events)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_wait_events)(
                 self.raw(),
                 events.len() as u32,
                 events.as_ptr(),
@@ -4664,25 +4975,25 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWaitEvents2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdWaitEvents2-synchronization2-03836`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-pEvents-03837`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-pEvents-03838`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-pEvents-03839`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-pEvents-03840`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-pEvents-03841`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-srcStageMask-03842`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-dstStageMask-03843`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-dependencyFlags-03844`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-commandBuffer-03846`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWaitEvents2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdWaitEvents2-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCmdWaitEvents2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdWaitEvents2-eventCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCmdWaitEvents2-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkCmdWaitEvents2-synchronization2-03836`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-pEvents-03837`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-pEvents-03838`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-pEvents-03839`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-pEvents-03840`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-pEvents-03841`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-srcStageMask-03842`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-dstStageMask-03843`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-dependencyFlags-03844`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-commandBuffer-03846`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWaitEvents2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdWaitEvents2-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdWaitEvents2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdWaitEvents2-eventCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdWaitEvents2-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn cmd_wait_events2<'a>(
         &mut self,
@@ -4692,9 +5003,16 @@ impl<'c, S: State> Recorder<'c, S> {
         for h in events {
             self.retain(h.retained());
         }
-        let events: smallvec::SmallVec<[vk::Event; 8]> = events.iter().map(|h| h.raw()).collect();
+        let events: smallvec::SmallVec<[vk::Event; 8]> = events
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_wait_events2)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_wait_events2)(
                 self.raw(),
                 events.len() as u32,
                 events.as_ptr(),
@@ -4707,33 +5025,33 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWriteTimestamp`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04074`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04075`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04076`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-queryPool-01416`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-queryPool-00828`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-timestampValidBits-00829`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-query-04904`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdWriteTimestamp-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdWriteTimestamp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdWriteTimestamp-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04077`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04078`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04079`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04080`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-07077`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-04081`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-shadingRateImage-07314`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-fragmentShadingRate-07315`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-synchronization2-06489`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-pipelineStage-06490`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-None-00830`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp-query-00831`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04074`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04075`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04076`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-queryPool-01416`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-queryPool-00828`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-timestampValidBits-00829`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-query-04904`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWriteTimestamp-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdWriteTimestamp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdWriteTimestamp-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04077`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04078`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04079`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04080`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-07077`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04081`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-shadingRateImage-07314`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-fragmentShadingRate-07315`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-synchronization2-06489`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-06490`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-None-00830`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp-query-00831`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_write_timestamp(
         &mut self,
@@ -4742,49 +5060,53 @@ impl<'c, S: State> Recorder<'c, S> {
         query: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_0().cmd_write_timestamp)(
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_write_timestamp)(
                 self.raw(),
                 pipeline_stage,
                 query_pool.raw(),
                 query,
             )
         };
-        self.retain(query_pool.retained());
+        self.retain_with(query_pool.address(), || query_pool.retained());
         ()
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWriteTimestamp2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCmdWriteTimestamp2-stage-03929`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03930`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-synchronization2-03858`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03859`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03860`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-queryPool-03861`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-queryPool-03862`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-query-04903`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCmdWriteTimestamp2-stage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkCmdWriteTimestamp2-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCmdWriteTimestamp2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-    - `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-    - `VUID-vkCmdWriteTimestamp2-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkCmdWriteTimestamp2-stage-03931`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03932`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03933`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03934`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-03935`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-04956`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-07316`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-07317`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-04957`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-stage-04995`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-None-03864`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCmdWriteTimestamp2-query-03865`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCmdWriteTimestamp2-stage-03929`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03930`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-synchronization2-03858`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03859`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03860`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-queryPool-03861`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-queryPool-03862`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-query-04903`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdWriteTimestamp2-stage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWriteTimestamp2-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdWriteTimestamp2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdWriteTimestamp2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdWriteTimestamp2-stage-03931`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03932`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03933`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03934`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-03935`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-04956`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-07316`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-07317`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-04957`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-stage-04995`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-None-03864`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdWriteTimestamp2-query-03865`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_write_timestamp2(
         &mut self,
@@ -4793,33 +5115,38 @@ impl<'c, S: State> Recorder<'c, S> {
         query: u32,
     ) -> () {
         unsafe {
-            (self.device().fns().fp_v1_3().cmd_write_timestamp2)(
-                self.raw(),
-                stage,
-                query_pool.raw(),
-                query,
-            )
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_write_timestamp2)(self.raw(), stage, query_pool.raw(), query)
         };
-        self.retain(query_pool.retained());
+        self.retain_with(query_pool.address(), || query_pool.retained());
         ()
     }
 }
 impl Device {
     /**`vkCreateBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateBuffer-flags-00911`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateBuffer-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateBuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCreateBuffer-pNext-06387`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCreateBuffer-flags-00911`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateBuffer-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateBuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateBuffer-pNext-06387`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn create_buffer<'a>(&self, create_info: &BufferCreateInfo<'a>) -> Result<Buffer> {
+    pub fn create_buffer<'a>(
+        &self,
+        create_info: &BufferCreateInfo<'a>,
+    ) -> Result<Buffer> {
         let mut out = vk::Buffer::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_buffer)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_buffer)(
                 self.raw(),
                 create_info as *const BufferCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -4835,12 +5162,12 @@ impl Device {
 impl Device {
     /**`vkCreateBufferView`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateBufferView-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateBufferView-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_buffer_view<'a>(
         &self,
@@ -4848,7 +5175,10 @@ impl Device {
     ) -> Result<BufferView> {
         let mut out = vk::BufferView::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_buffer_view)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_buffer_view)(
                 self.raw(),
                 create_info as *const BufferViewCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -4864,13 +5194,13 @@ impl Device {
 impl Device {
     /**`vkCreateCommandPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_command_pool<'a>(
         &self,
@@ -4878,7 +5208,10 @@ impl Device {
     ) -> Result<CommandPool> {
         let mut out = vk::CommandPool::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_command_pool)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_command_pool)(
                 self.raw(),
                 create_info as *const CommandPoolCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -4894,18 +5227,18 @@ impl Device {
 impl Device {
     /**`vkCreateComputePipelines`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateComputePipelines-flags-00695`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateComputePipelines-flags-00696`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateComputePipelines-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCreateComputePipelines-pipelineCache-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkCreateComputePipelines-pipelineCache-02873`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCreateComputePipelines-flags-00695`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateComputePipelines-flags-00696`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateComputePipelines-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCreateComputePipelines-pipelineCache-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkCreateComputePipelines-pipelineCache-02873`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn create_compute_pipelines<'a>(
         &self,
@@ -4914,7 +5247,10 @@ impl Device {
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
         let r = unsafe {
-            (self.fns().fp_v1_0().create_compute_pipelines)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_compute_pipelines)(
                 self.raw(),
                 pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
                 create_infos.len() as u32,
@@ -4927,23 +5263,24 @@ impl Device {
             return Err(Error::Vk(r));
         }
         Ok((
-            out.into_iter()
+            out
+                .into_iter()
                 .map(|raw| Pipeline::from_raw(raw, self, None, true))
                 .collect(),
             r,
         ))
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Instance {
     /**`vkCreateDebugUtilsMessengerEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateDebugUtilsMessengerEXT-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateDebugUtilsMessengerEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateDebugUtilsMessengerEXT-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateDebugUtilsMessengerEXT-pMessenger-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDebugUtilsMessengerEXT-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDebugUtilsMessengerEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDebugUtilsMessengerEXT-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDebugUtilsMessengerEXT-pMessenger-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_debug_utils_messenger_ext<'a>(
         &self,
@@ -4956,7 +5293,8 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         let mut out = vk::DebugUtilsMessengerEXT::null();
         let r = unsafe {
-            (ext_table.create_debug_utils_messenger_ext)(
+            (ext_table
+                .create_debug_utils_messenger_ext)(
                 self.raw(),
                 create_info as *const DebugUtilsMessengerCreateInfoEXT<'a> as *const _,
                 core::ptr::null(),
@@ -4972,12 +5310,12 @@ impl Instance {
 impl Device {
     /**`vkCreateDescriptorPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateDescriptorPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDescriptorPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_descriptor_pool<'a>(
         &self,
@@ -4985,7 +5323,10 @@ impl Device {
     ) -> Result<DescriptorPool> {
         let mut out = vk::DescriptorPool::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_descriptor_pool)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_descriptor_pool)(
                 self.raw(),
                 create_info as *const DescriptorPoolCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5001,12 +5342,12 @@ impl Device {
 impl Device {
     /**`vkCreateDescriptorSetLayout`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateDescriptorSetLayout-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDescriptorSetLayout-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_descriptor_set_layout<'a>(
         &self,
@@ -5014,7 +5355,10 @@ impl Device {
     ) -> Result<DescriptorSetLayout> {
         let mut out = vk::DescriptorSetLayout::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_descriptor_set_layout)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_descriptor_set_layout)(
                 self.raw(),
                 create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5030,12 +5374,12 @@ impl Device {
 impl Device {
     /**`vkCreateDescriptorUpdateTemplate`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateDescriptorUpdateTemplate-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDescriptorUpdateTemplate-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_descriptor_update_template<'a>(
         &self,
@@ -5043,7 +5387,10 @@ impl Device {
     ) -> Result<DescriptorUpdateTemplate> {
         let mut out = vk::DescriptorUpdateTemplate::null();
         let r = unsafe {
-            (self.fns().fp_v1_1().create_descriptor_update_template)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .create_descriptor_update_template)(
                 self.raw(),
                 create_info as *const DescriptorUpdateTemplateCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5059,18 +5406,25 @@ impl Device {
 impl PhysicalDevice {
     /**`vkCreateDevice`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateDevice-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateDevice-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateDevice-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDevice-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_device<'a>(&self, create_info: &DeviceCreateInfo<'a>) -> Result<Device> {
+    pub fn create_device<'a>(
+        &self,
+        create_info: &DeviceCreateInfo<'a>,
+    ) -> Result<Device> {
         let mut out = vk::Device::null();
         let r = unsafe {
-            (self.parent().fns().fp_v1_0().create_device)(
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .create_device)(
                 self.raw(),
                 create_info as *const DeviceCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5080,28 +5434,33 @@ impl PhysicalDevice {
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(crate::handles::Device::from_created(
-            self,
-            out,
-            &create_info.enabled_extensions(),
-        ))
+        Ok(
+            crate::handles::Device::from_created(
+                self,
+                out,
+                &create_info.enabled_extensions(),
+            ),
+        )
     }
 }
 impl Device {
     /**`vkCreateEvent`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateEvent-events-04468`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateEvent-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateEvent-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateEvent-events-04468`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateEvent-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateEvent-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
         let mut out = vk::Event::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_event)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_event)(
                 self.raw(),
                 create_info as *const EventCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5117,17 +5476,20 @@ impl Device {
 impl Device {
     /**`vkCreateFence`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateFence-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateFence-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
         let mut out = vk::Fence::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_fence)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_fence)(
                 self.raw(),
                 create_info as *const FenceCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5143,13 +5505,13 @@ impl Device {
 impl Device {
     /**`vkCreateFramebuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateFramebuffer-pCreateInfo-02777`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateFramebuffer-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateFramebuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateFramebuffer-pCreateInfo-02777`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateFramebuffer-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateFramebuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_framebuffer<'a>(
         &self,
@@ -5157,7 +5519,10 @@ impl Device {
     ) -> Result<Framebuffer> {
         let mut out = vk::Framebuffer::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_framebuffer)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_framebuffer)(
                 self.raw(),
                 create_info as *const FramebufferCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5173,18 +5538,18 @@ impl Device {
 impl Device {
     /**`vkCreateGraphicsPipelines`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateGraphicsPipelines-flags-00720`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateGraphicsPipelines-flags-00721`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateGraphicsPipelines-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateGraphicsPipelines-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCreateGraphicsPipelines-flags-00720`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateGraphicsPipelines-flags-00721`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateGraphicsPipelines-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateGraphicsPipelines-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn create_graphics_pipelines<'a>(
         &self,
@@ -5193,7 +5558,10 @@ impl Device {
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
         let r = unsafe {
-            (self.fns().fp_v1_0().create_graphics_pipelines)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_graphics_pipelines)(
                 self.raw(),
                 pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
                 create_infos.len() as u32,
@@ -5206,7 +5574,8 @@ impl Device {
             return Err(Error::Vk(r));
         }
         Ok((
-            out.into_iter()
+            out
+                .into_iter()
                 .map(|raw| Pipeline::from_raw(raw, self, None, true))
                 .collect(),
             r,
@@ -5216,19 +5585,22 @@ impl Device {
 impl Device {
     /**`vkCreateImage`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateImage-flags-00939`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateImage-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateImage-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkCreateImage-pNext-06389`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkCreateImage-flags-00939`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateImage-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateImage-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateImage-pNext-06389`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
         let mut out = vk::Image::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_image)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_image)(
                 self.raw(),
                 create_info as *const ImageCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5244,12 +5616,12 @@ impl Device {
 impl Device {
     /**`vkCreateImageView`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateImageView-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateImageView-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_image_view<'a>(
         &self,
@@ -5257,7 +5629,10 @@ impl Device {
     ) -> Result<ImageView> {
         let mut out = vk::ImageView::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_image_view)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_image_view)(
                 self.raw(),
                 create_info as *const ImageViewCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5273,17 +5648,23 @@ impl Device {
 impl Entry {
     /**`vkCreateInstance`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateInstance-ppEnabledExtensionNames-01388`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateInstance-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateInstance-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateInstance-ppEnabledExtensionNames-01388`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateInstance-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateInstance-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_instance<'a>(&self, create_info: &InstanceCreateInfo<'a>) -> Result<Instance> {
+    pub fn create_instance<'a>(
+        &self,
+        create_info: &InstanceCreateInfo<'a>,
+    ) -> Result<Instance> {
         let mut out = vk::Instance::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_instance)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_instance)(
                 create_info as *const InstanceCreateInfo<'a> as *const _,
                 core::ptr::null(),
                 &mut out,
@@ -5292,23 +5673,25 @@ impl Entry {
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(crate::handles::Instance::from_created(
-            self,
-            out,
-            &create_info.enabled_extensions(),
-        ))
+        Ok(
+            crate::handles::Instance::from_created(
+                self,
+                out,
+                &create_info.enabled_extensions(),
+            ),
+        )
     }
 }
-#[cfg(all(feature = "ext_metal_surface"))]
+#[cfg(feature = "ext_metal_surface")]
 impl Instance {
     /**`vkCreateMetalSurfaceEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateMetalSurfaceEXT-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateMetalSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateMetalSurfaceEXT-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateMetalSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateMetalSurfaceEXT-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateMetalSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateMetalSurfaceEXT-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateMetalSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_metal_surface_ext<'a>(
         &self,
@@ -5321,7 +5704,8 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_metal_surface"))?;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table.create_metal_surface_ext)(
+            (ext_table
+                .create_metal_surface_ext)(
                 self.raw(),
                 create_info as *const MetalSurfaceCreateInfoEXT<'a> as *const _,
                 core::ptr::null(),
@@ -5337,12 +5721,12 @@ impl Instance {
 impl Device {
     /**`vkCreatePipelineCache`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreatePipelineCache-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePipelineCache-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_pipeline_cache<'a>(
         &self,
@@ -5350,7 +5734,10 @@ impl Device {
     ) -> Result<PipelineCache> {
         let mut out = vk::PipelineCache::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_pipeline_cache)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_pipeline_cache)(
                 self.raw(),
                 create_info as *const PipelineCacheCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5366,12 +5753,12 @@ impl Device {
 impl Device {
     /**`vkCreatePipelineLayout`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreatePipelineLayout-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePipelineLayout-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_pipeline_layout<'a>(
         &self,
@@ -5379,7 +5766,10 @@ impl Device {
     ) -> Result<PipelineLayout> {
         let mut out = vk::PipelineLayout::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_pipeline_layout)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_pipeline_layout)(
                 self.raw(),
                 create_info as *const PipelineLayoutCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5395,13 +5785,13 @@ impl Device {
 impl Device {
     /**`vkCreatePrivateDataSlot`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreatePrivateDataSlot-privateData-04564`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePrivateDataSlot-privateData-04564`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_private_data_slot<'a>(
         &self,
@@ -5409,7 +5799,10 @@ impl Device {
     ) -> Result<PrivateDataSlot> {
         let mut out = vk::PrivateDataSlot::null();
         let r = unsafe {
-            (self.fns().fp_v1_3().create_private_data_slot)(
+            (self
+                .fns()
+                .fp_v1_3()
+                .create_private_data_slot)(
                 self.raw(),
                 create_info as *const PrivateDataSlotCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5425,12 +5818,12 @@ impl Device {
 impl Device {
     /**`vkCreateQueryPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateQueryPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateQueryPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_query_pool<'a>(
         &self,
@@ -5438,7 +5831,10 @@ impl Device {
     ) -> Result<QueryPool> {
         let mut out = vk::QueryPool::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_query_pool)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_query_pool)(
                 self.raw(),
                 create_info as *const QueryPoolCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5454,12 +5850,12 @@ impl Device {
 impl Device {
     /**`vkCreateRenderPass`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateRenderPass-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateRenderPass-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_render_pass<'a>(
         &self,
@@ -5467,7 +5863,10 @@ impl Device {
     ) -> Result<RenderPass> {
         let mut out = vk::RenderPass::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_render_pass)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_render_pass)(
                 self.raw(),
                 create_info as *const RenderPassCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5483,12 +5882,12 @@ impl Device {
 impl Device {
     /**`vkCreateRenderPass2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateRenderPass2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateRenderPass2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_render_pass2<'a>(
         &self,
@@ -5496,7 +5895,10 @@ impl Device {
     ) -> Result<RenderPass> {
         let mut out = vk::RenderPass::null();
         let r = unsafe {
-            (self.fns().fp_v1_2().create_render_pass2)(
+            (self
+                .fns()
+                .fp_v1_2()
+                .create_render_pass2)(
                 self.raw(),
                 create_info as *const RenderPassCreateInfo2<'a> as *const _,
                 core::ptr::null(),
@@ -5512,18 +5914,24 @@ impl Device {
 impl Device {
     /**`vkCreateSampler`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateSampler-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateSampler-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateSampler-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSampler-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_sampler<'a>(&self, create_info: &SamplerCreateInfo<'a>) -> Result<Sampler> {
+    pub fn create_sampler<'a>(
+        &self,
+        create_info: &SamplerCreateInfo<'a>,
+    ) -> Result<Sampler> {
         let mut out = vk::Sampler::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_sampler)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_sampler)(
                 self.raw(),
                 create_info as *const SamplerCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5539,13 +5947,13 @@ impl Device {
 impl Device {
     /**`vkCreateSamplerYcbcrConversion`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateSamplerYcbcrConversion-None-01648`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateSamplerYcbcrConversion-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSamplerYcbcrConversion-None-01648`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateSamplerYcbcrConversion-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_sampler_ycbcr_conversion<'a>(
         &self,
@@ -5553,7 +5961,10 @@ impl Device {
     ) -> Result<SamplerYcbcrConversion> {
         let mut out = vk::SamplerYcbcrConversion::null();
         let r = unsafe {
-            (self.fns().fp_v1_1().create_sampler_ycbcr_conversion)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .create_sampler_ycbcr_conversion)(
                 self.raw(),
                 create_info as *const SamplerYcbcrConversionCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5569,17 +5980,23 @@ impl Device {
 impl Device {
     /**`vkCreateSemaphore`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateSemaphore-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSemaphore-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_semaphore<'a>(&self, create_info: &SemaphoreCreateInfo<'a>) -> Result<Semaphore> {
+    pub fn create_semaphore<'a>(
+        &self,
+        create_info: &SemaphoreCreateInfo<'a>,
+    ) -> Result<Semaphore> {
         let mut out = vk::Semaphore::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_semaphore)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_semaphore)(
                 self.raw(),
                 create_info as *const SemaphoreCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5595,14 +6012,14 @@ impl Device {
 impl Device {
     /**`vkCreateShaderModule`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateShaderModule-pCreateInfo-06904`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateShaderModule-pCreateInfo-06905`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkCreateShaderModule-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateShaderModule-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateShaderModule-pCreateInfo-06904`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateShaderModule-pCreateInfo-06905`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCreateShaderModule-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateShaderModule-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_shader_module<'a>(
         &self,
@@ -5610,7 +6027,10 @@ impl Device {
     ) -> Result<ShaderModule> {
         let mut out = vk::ShaderModule::null();
         let r = unsafe {
-            (self.fns().fp_v1_0().create_shader_module)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_shader_module)(
                 self.raw(),
                 create_info as *const ShaderModuleCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -5623,16 +6043,16 @@ impl Device {
         Ok(ShaderModule::from_raw(out, self, None, true))
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Device {
     /**`vkCreateSwapchainKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateSwapchainKHR-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSwapchainKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_swapchain_khr<'a>(
         &self,
@@ -5645,7 +6065,8 @@ impl Device {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
         let mut out = vk::SwapchainKHR::null();
         let r = unsafe {
-            (ext_table.create_swapchain_khr)(
+            (ext_table
+                .create_swapchain_khr)(
                 self.raw(),
                 create_info as *const SwapchainCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -5658,16 +6079,16 @@ impl Device {
         Ok(SwapchainKHR::from_raw(out, self, None, true))
     }
 }
-#[cfg(all(feature = "khr_wayland_surface"))]
+#[cfg(feature = "khr_wayland_surface")]
 impl Instance {
     /**`vkCreateWaylandSurfaceKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateWaylandSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateWaylandSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateWaylandSurfaceKHR-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateWaylandSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateWaylandSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateWaylandSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateWaylandSurfaceKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateWaylandSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_wayland_surface_khr<'a>(
         &self,
@@ -5680,7 +6101,8 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table.create_wayland_surface_khr)(
+            (ext_table
+                .create_wayland_surface_khr)(
                 self.raw(),
                 create_info as *const WaylandSurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -5693,16 +6115,16 @@ impl Instance {
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
-#[cfg(all(feature = "khr_win32_surface"))]
+#[cfg(feature = "khr_win32_surface")]
 impl Instance {
     /**`vkCreateWin32SurfaceKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateWin32SurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateWin32SurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateWin32SurfaceKHR-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateWin32SurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateWin32SurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateWin32SurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateWin32SurfaceKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateWin32SurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_win32_surface_khr<'a>(
         &self,
@@ -5715,7 +6137,8 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table.create_win32_surface_khr)(
+            (ext_table
+                .create_win32_surface_khr)(
                 self.raw(),
                 create_info as *const Win32SurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -5728,16 +6151,16 @@ impl Instance {
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
-#[cfg(all(feature = "khr_xcb_surface"))]
+#[cfg(feature = "khr_xcb_surface")]
 impl Instance {
     /**`vkCreateXcbSurfaceKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateXcbSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateXcbSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateXcbSurfaceKHR-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateXcbSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateXcbSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateXcbSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateXcbSurfaceKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateXcbSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_xcb_surface_khr<'a>(
         &self,
@@ -5750,7 +6173,8 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table.create_xcb_surface_khr)(
+            (ext_table
+                .create_xcb_surface_khr)(
                 self.raw(),
                 create_info as *const XcbSurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -5763,16 +6187,16 @@ impl Instance {
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
-#[cfg(all(feature = "khr_xlib_surface"))]
+#[cfg(feature = "khr_xlib_surface")]
 impl Instance {
     /**`vkCreateXlibSurfaceKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkCreateXlibSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkCreateXlibSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter`: static (always NULL)
-    - `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateXlibSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateXlibSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_xlib_surface_khr<'a>(
         &self,
@@ -5785,7 +6209,8 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))?;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table.create_xlib_surface_khr)(
+            (ext_table
+                .create_xlib_surface_khr)(
                 self.raw(),
                 create_info as *const XlibSurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -5801,9 +6226,9 @@ impl Instance {
 impl Device {
     /**`vkDeviceWaitIdle`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn device_wait_idle(&self) -> Result<()> {
         let r = unsafe { (self.fns().fp_v1_0().device_wait_idle)(self.raw()) };
@@ -5816,11 +6241,11 @@ impl Device {
 impl PhysicalDevice {
     /**`vkEnumerateDeviceLayerProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
         loop {
@@ -5832,7 +6257,9 @@ impl PhysicalDevice {
                     .fns()
                     .fp_v1_0()
                     .enumerate_device_layer_properties)(
-                    self.raw(), &mut count, items_ptr.cast()
+                    self.raw(),
+                    &mut count,
+                    items_ptr.cast(),
                 )
             };
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
@@ -5847,7 +6274,9 @@ impl PhysicalDevice {
                     .fns()
                     .fp_v1_0()
                     .enumerate_device_layer_properties)(
-                    self.raw(), &mut count, items_ptr.cast()
+                    self.raw(),
+                    &mut count,
+                    items_ptr.cast(),
                 )
             };
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
@@ -5864,20 +6293,22 @@ impl PhysicalDevice {
 impl Entry {
     /**`vkEnumerateInstanceLayerProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub fn enumerate_instance_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
+    pub fn enumerate_instance_layer_properties(
+        &self,
+    ) -> Result<Vec<vk::LayerProperties>> {
         loop {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::LayerProperties = core::ptr::null_mut();
             let r = unsafe {
-                (self.fns().fp_v1_0().enumerate_instance_layer_properties)(
-                    &mut count,
-                    items_ptr.cast(),
-                )
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_instance_layer_properties)(&mut count, items_ptr.cast())
             };
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
                 return Err(Error::Vk(r));
@@ -5886,10 +6317,10 @@ impl Entry {
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (self.fns().fp_v1_0().enumerate_instance_layer_properties)(
-                    &mut count,
-                    items_ptr.cast(),
-                )
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_instance_layer_properties)(&mut count, items_ptr.cast())
             };
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
                 return Err(Error::Vk(r));
@@ -5905,9 +6336,9 @@ impl Entry {
 impl Entry {
     /**`vkEnumerateInstanceVersion`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_instance_version(&self) -> Result<u32> {
         let mut out: u32 = Default::default();
@@ -5921,11 +6352,11 @@ impl Entry {
 impl Instance {
     /**`vkEnumeratePhysicalDeviceGroups`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkEnumeratePhysicalDeviceGroups-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumeratePhysicalDeviceGroups-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_physical_device_groups(
         &self,
@@ -5934,7 +6365,10 @@ impl Instance {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::PhysicalDeviceGroupProperties<'static> = core::ptr::null_mut();
             let r = unsafe {
-                (self.fns().fp_v1_1().enumerate_physical_device_groups)(
+                (self
+                    .fns()
+                    .fp_v1_1()
+                    .enumerate_physical_device_groups)(
                     self.raw(),
                     &mut count,
                     items_ptr.cast(),
@@ -5943,12 +6377,16 @@ impl Instance {
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
                 return Err(Error::Vk(r));
             }
-            let mut items: Vec<vk::PhysicalDeviceGroupProperties<'static>> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::PhysicalDeviceGroupProperties<'static>> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (self.fns().fp_v1_1().enumerate_physical_device_groups)(
+                (self
+                    .fns()
+                    .fp_v1_1()
+                    .enumerate_physical_device_groups)(
                     self.raw(),
                     &mut count,
                     items_ptr.cast(),
@@ -5968,18 +6406,21 @@ impl Instance {
 impl Instance {
     /**`vkEnumeratePhysicalDevices`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkEnumeratePhysicalDevices-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkEnumeratePhysicalDevices-pPhysicalDeviceCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumeratePhysicalDevices-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkEnumeratePhysicalDevices-pPhysicalDeviceCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_physical_devices(&self) -> Result<Vec<PhysicalDevice>> {
         loop {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::PhysicalDevice = core::ptr::null_mut();
             let r = unsafe {
-                (self.fns().fp_v1_0().enumerate_physical_devices)(
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_physical_devices)(
                     self.raw(),
                     &mut count,
                     items_ptr.cast(),
@@ -5992,7 +6433,10 @@ impl Instance {
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (self.fns().fp_v1_0().enumerate_physical_devices)(
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_physical_devices)(
                     self.raw(),
                     &mut count,
                     items_ptr.cast(),
@@ -6005,28 +6449,33 @@ impl Instance {
                 continue;
             }
             items.truncate(count as usize);
-            return Ok(items
-                .into_iter()
-                .map(|raw| PhysicalDevice::from_raw(raw, self, None, false))
-                .collect());
+            return Ok(
+                items
+                    .into_iter()
+                    .map(|raw| PhysicalDevice::from_raw(raw, self, None, false))
+                    .collect(),
+            );
         }
     }
 }
 impl Device {
     /**`vkFlushMappedMemoryRanges`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: user (a slice may be empty; not checked)*/
     #[inline]
     pub fn flush_mapped_memory_ranges<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_0().flush_mapped_memory_ranges)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .flush_mapped_memory_ranges)(
                 self.raw(),
                 memory_ranges.len() as u32,
                 memory_ranges.as_ptr().cast(),
@@ -6041,21 +6490,24 @@ impl Device {
 impl Device {
     /**`vkGetBufferDeviceAddress`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetBufferDeviceAddress-bufferDeviceAddress-03324`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetBufferDeviceAddress-device-03325`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetBufferDeviceAddress-None-06542`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetBufferDeviceAddress-device-06543`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetBufferDeviceAddress-bufferDeviceAddress-03324`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetBufferDeviceAddress-device-03325`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetBufferDeviceAddress-None-06542`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetBufferDeviceAddress-device-06543`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_buffer_device_address<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> vk::DeviceAddress {
         let r = unsafe {
-            (self.fns().fp_v1_2().get_buffer_device_address)(
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_buffer_device_address)(
                 self.raw(),
                 info as *const BufferDeviceAddressInfo<'a> as *const _,
             )
@@ -6066,21 +6518,23 @@ impl Device {
 impl Device {
     /**`vkGetBufferMemoryRequirements`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetBufferMemoryRequirements-buffer-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetBufferMemoryRequirements-buffer-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
-    pub fn get_buffer_memory_requirements(&self, buffer: &Buffer) -> vk::MemoryRequirements {
+    pub fn get_buffer_memory_requirements(
+        &self,
+        buffer: &Buffer,
+    ) -> vk::MemoryRequirements {
         let mut out: vk::MemoryRequirements = Default::default();
         unsafe {
-            (self.fns().fp_v1_0().get_buffer_memory_requirements)(
-                self.raw(),
-                buffer.raw(),
-                &mut out,
-            )
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_buffer_memory_requirements)(self.raw(), buffer.raw(), &mut out)
         };
         out
     }
@@ -6088,11 +6542,11 @@ impl Device {
 impl Device {
     /**`vkGetBufferMemoryRequirements2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_buffer_memory_requirements2<'a>(
         &self,
@@ -6100,7 +6554,10 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_1().get_buffer_memory_requirements2)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_buffer_memory_requirements2)(
                 self.raw(),
                 info as *const BufferMemoryRequirementsInfo2<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -6112,16 +6569,22 @@ impl Device {
 impl Device {
     /**`vkGetBufferOpaqueCaptureAddress`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_buffer_opaque_capture_address<'a>(&self, info: &BufferDeviceAddressInfo<'a>) -> u64 {
+    pub fn get_buffer_opaque_capture_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> u64 {
         let r = unsafe {
-            (self.fns().fp_v1_2().get_buffer_opaque_capture_address)(
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_buffer_opaque_capture_address)(
                 self.raw(),
                 info as *const BufferDeviceAddressInfo<'a> as *const _,
             )
@@ -6132,11 +6595,11 @@ impl Device {
 impl Device {
     /**`vkGetDescriptorSetLayoutSupport`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_descriptor_set_layout_support<'a>(
         &self,
@@ -6144,7 +6607,10 @@ impl Device {
         support: &mut DescriptorSetLayoutSupport<'a>,
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_1().get_descriptor_set_layout_support)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_descriptor_set_layout_support)(
                 self.raw(),
                 create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
                 support as *mut DescriptorSetLayoutSupport<'a> as *mut _,
@@ -6156,11 +6622,11 @@ impl Device {
 impl Device {
     /**`vkGetDeviceBufferMemoryRequirements`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_device_buffer_memory_requirements<'a>(
         &self,
@@ -6168,7 +6634,10 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_3().get_device_buffer_memory_requirements)(
+            (self
+                .fns()
+                .fp_v1_3()
+                .get_device_buffer_memory_requirements)(
                 self.raw(),
                 info as *const DeviceBufferMemoryRequirements<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -6180,14 +6649,14 @@ impl Device {
 impl Device {
     /**`vkGetDeviceGroupPeerMemoryFeatures`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_device_group_peer_memory_features(
         &self,
@@ -6197,7 +6666,10 @@ impl Device {
     ) -> vk::PeerMemoryFeatureFlags {
         let mut out: vk::PeerMemoryFeatureFlags = Default::default();
         unsafe {
-            (self.fns().fp_v1_1().get_device_group_peer_memory_features)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_device_group_peer_memory_features)(
                 self.raw(),
                 heap_index,
                 local_device_index,
@@ -6208,14 +6680,14 @@ impl Device {
         out
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Device {
     /**`vkGetDeviceGroupPresentCapabilitiesKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_device_group_present_capabilities_khr<'a>(
         &self,
@@ -6227,10 +6699,11 @@ impl Device {
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
         let r = unsafe {
-            (ext_table.get_device_group_present_capabilities_khr)(
+            (ext_table
+                .get_device_group_present_capabilities_khr)(
                 self.raw(),
-                device_group_present_capabilities as *mut DeviceGroupPresentCapabilitiesKHR<'a>
-                    as *mut _,
+                device_group_present_capabilities
+                    as *mut DeviceGroupPresentCapabilitiesKHR<'a> as *mut _,
             )
         };
         if r.as_raw() < 0 {
@@ -6239,17 +6712,17 @@ impl Device {
         Ok(())
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Device {
     /**`vkGetDeviceGroupSurfacePresentModesKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn get_device_group_surface_present_modes_khr(
         &self,
@@ -6262,7 +6735,8 @@ impl Device {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
         let mut out: vk::DeviceGroupPresentModeFlagsKHR = Default::default();
         let r = unsafe {
-            (ext_table.get_device_group_surface_present_modes_khr)(
+            (ext_table
+                .get_device_group_surface_present_modes_khr)(
                 self.raw(),
                 surface.raw(),
                 &mut out,
@@ -6277,11 +6751,11 @@ impl Device {
 impl Device {
     /**`vkGetDeviceImageMemoryRequirements`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_device_image_memory_requirements<'a>(
         &self,
@@ -6289,7 +6763,10 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_3().get_device_image_memory_requirements)(
+            (self
+                .fns()
+                .fp_v1_3()
+                .get_device_image_memory_requirements)(
                 self.raw(),
                 info as *const DeviceImageMemoryRequirements<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -6301,12 +6778,12 @@ impl Device {
 impl Device {
     /**`vkGetDeviceImageSparseMemoryRequirements`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_device_image_sparse_memory_requirements<'a>(
         &self,
@@ -6326,8 +6803,9 @@ impl Device {
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::SparseImageMemoryRequirements2<'static>> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::SparseImageMemoryRequirements2<'static>> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
@@ -6349,18 +6827,21 @@ impl Device {
 impl Device {
     /**`vkGetDeviceMemoryCommitment`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceMemoryCommitment-memory-00690`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetDeviceMemoryCommitment-memory-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetDeviceMemoryCommitment-memory-00690`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_device_memory_commitment(&self, memory: &DeviceMemory) -> vk::DeviceSize {
         let mut out: vk::DeviceSize = Default::default();
         unsafe {
-            (self.fns().fp_v1_0().get_device_memory_commitment)(self.raw(), memory.raw(), &mut out)
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_device_memory_commitment)(self.raw(), memory.raw(), &mut out)
         };
         out
     }
@@ -6368,12 +6849,12 @@ impl Device {
 impl Device {
     /**`vkGetDeviceMemoryOpaqueCaptureAddress`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_device_memory_opaque_capture_address<'a>(
         &self,
@@ -6394,23 +6875,21 @@ impl Device {
 impl Device {
     /**`vkGetDeviceQueue`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceQueue-queueIndex-00385`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceQueue-flags-01841`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceQueue-queueIndex-00385`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceQueue-flags-01841`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
         let mut out = vk::Queue::null();
         unsafe {
-            (self.fns().fp_v1_0().get_device_queue)(
-                self.raw(),
-                queue_family_index,
-                queue_index,
-                &mut out,
-            )
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_device_queue)(self.raw(), queue_family_index, queue_index, &mut out)
         };
         Queue::from_raw(out, self, None, true)
     }
@@ -6418,16 +6897,19 @@ impl Device {
 impl Device {
     /**`vkGetDeviceQueue2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn get_device_queue2<'a>(&self, queue_info: &DeviceQueueInfo2<'a>) -> Queue {
         let mut out = vk::Queue::null();
         unsafe {
-            (self.fns().fp_v1_1().get_device_queue2)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_device_queue2)(
                 self.raw(),
                 queue_info as *const DeviceQueueInfo2<'a> as *const _,
                 &mut out,
@@ -6439,15 +6921,17 @@ impl Device {
 impl Device {
     /**`vkGetEventStatus`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetEventStatus-event-03940`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetEventStatus-event-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetEventStatus-event-03940`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetEventStatus-event-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_event_status(&self, event: &Event) -> Result<((), vk::Result)> {
-        let r = unsafe { (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw()) };
+        let r = unsafe {
+            (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
+        };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -6457,14 +6941,16 @@ impl Device {
 impl Device {
     /**`vkGetFenceStatus`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetFenceStatus-fence-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetFenceStatus-fence-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_fence_status(&self, fence: &Fence) -> Result<((), vk::Result)> {
-        let r = unsafe { (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw()) };
+        let r = unsafe {
+            (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
+        };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -6477,19 +6963,25 @@ impl Device {
 impl Device {
     /**`vkGetImageMemoryRequirements`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetImageMemoryRequirements-image-01588`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageMemoryRequirements-image-04004`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetImageMemoryRequirements-image-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetImageMemoryRequirements-image-01588`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageMemoryRequirements-image-04004`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageMemoryRequirements-image-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
-    pub fn get_image_memory_requirements(&self, image: &Image) -> vk::MemoryRequirements {
+    pub fn get_image_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> vk::MemoryRequirements {
         let mut out: vk::MemoryRequirements = Default::default();
         unsafe {
-            (self.fns().fp_v1_0().get_image_memory_requirements)(self.raw(), image.raw(), &mut out)
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_image_memory_requirements)(self.raw(), image.raw(), &mut out)
         };
         out
     }
@@ -6497,11 +6989,11 @@ impl Device {
 impl Device {
     /**`vkGetImageMemoryRequirements2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_image_memory_requirements2<'a>(
         &self,
@@ -6509,7 +7001,10 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_1().get_image_memory_requirements2)(
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_image_memory_requirements2)(
                 self.raw(),
                 info as *const ImageMemoryRequirementsInfo2<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -6521,13 +7016,13 @@ impl Device {
 impl Device {
     /**`vkGetImageSparseMemoryRequirements`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetImageSparseMemoryRequirements-image-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements-image-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_image_sparse_memory_requirements(
         &self,
@@ -6537,19 +7032,26 @@ impl Device {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::SparseImageMemoryRequirements = core::ptr::null_mut();
             unsafe {
-                (self.fns().fp_v1_0().get_image_sparse_memory_requirements)(
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .get_image_sparse_memory_requirements)(
                     self.raw(),
                     image.raw(),
                     &mut count,
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::SparseImageMemoryRequirements> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::SparseImageMemoryRequirements> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
-                (self.fns().fp_v1_0().get_image_sparse_memory_requirements)(
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .get_image_sparse_memory_requirements)(
                     self.raw(),
                     image.raw(),
                     &mut count,
@@ -6564,12 +7066,12 @@ impl Device {
 impl Device {
     /**`vkGetImageSparseMemoryRequirements2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetImageSparseMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetImageSparseMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_image_sparse_memory_requirements2<'a>(
         &self,
@@ -6579,19 +7081,26 @@ impl Device {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::SparseImageMemoryRequirements2<'static> = core::ptr::null_mut();
             unsafe {
-                (self.fns().fp_v1_1().get_image_sparse_memory_requirements2)(
+                (self
+                    .fns()
+                    .fp_v1_1()
+                    .get_image_sparse_memory_requirements2)(
                     self.raw(),
                     info as *const ImageSparseMemoryRequirementsInfo2<'a> as *const _,
                     &mut count,
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::SparseImageMemoryRequirements2<'static>> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::SparseImageMemoryRequirements2<'static>> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
-                (self.fns().fp_v1_1().get_image_sparse_memory_requirements2)(
+                (self
+                    .fns()
+                    .fp_v1_1()
+                    .get_image_sparse_memory_requirements2)(
                     self.raw(),
                     info as *const ImageSparseMemoryRequirementsInfo2<'a> as *const _,
                     &mut count,
@@ -6606,26 +7115,26 @@ impl Device {
 impl Device {
     /**`vkGetImageSubresourceLayout`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetImageSubresourceLayout-image-07789`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-image-07790`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-tiling-02271`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-aspectMask-00997`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-mipLevel-01716`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-arrayLayer-01717`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-format-04461`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-format-04462`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-format-04463`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-format-04464`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetImageSubresourceLayout-image-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkGetImageSubresourceLayout-format-01581`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-format-01582`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetImageSubresourceLayout-image-01895`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkGetImageSubresourceLayout-image-07789`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-image-07790`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-tiling-02271`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-aspectMask-00997`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-mipLevel-01716`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-format-04461`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-format-04462`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-format-04463`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-format-04464`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSubresourceLayout-image-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkGetImageSubresourceLayout-format-01581`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-format-01582`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetImageSubresourceLayout-image-01895`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn get_image_subresource_layout<'a>(
         &self,
@@ -6634,7 +7143,10 @@ impl Device {
     ) -> vk::SubresourceLayout {
         let mut out: vk::SubresourceLayout = Default::default();
         unsafe {
-            (self.fns().fp_v1_0().get_image_subresource_layout)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_image_subresource_layout)(
                 self.raw(),
                 image.raw(),
                 subresource as *const vk::ImageSubresource as *const _,
@@ -6647,11 +7159,11 @@ impl Device {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceExternalBufferProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_external_buffer_properties<'a>(
         &self,
@@ -6665,7 +7177,8 @@ impl PhysicalDevice {
                 .fp_v1_1()
                 .get_physical_device_external_buffer_properties)(
                 self.raw(),
-                external_buffer_info as *const PhysicalDeviceExternalBufferInfo<'a> as *const _,
+                external_buffer_info as *const PhysicalDeviceExternalBufferInfo<'a>
+                    as *const _,
                 external_buffer_properties as *mut ExternalBufferProperties<'a> as *mut _,
             )
         };
@@ -6675,11 +7188,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceExternalFenceProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_external_fence_properties<'a>(
         &self,
@@ -6693,7 +7206,8 @@ impl PhysicalDevice {
                 .fp_v1_1()
                 .get_physical_device_external_fence_properties)(
                 self.raw(),
-                external_fence_info as *const PhysicalDeviceExternalFenceInfo<'a> as *const _,
+                external_fence_info as *const PhysicalDeviceExternalFenceInfo<'a>
+                    as *const _,
                 external_fence_properties as *mut ExternalFenceProperties<'a> as *mut _,
             )
         };
@@ -6703,11 +7217,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceExternalSemaphoreProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_external_semaphore_properties<'a>(
         &self,
@@ -6723,7 +7237,8 @@ impl PhysicalDevice {
                 self.raw(),
                 external_semaphore_info as *const PhysicalDeviceExternalSemaphoreInfo<'a>
                     as *const _,
-                external_semaphore_properties as *mut ExternalSemaphoreProperties<'a> as *mut _,
+                external_semaphore_properties as *mut ExternalSemaphoreProperties<'a>
+                    as *mut _,
             )
         };
         ()
@@ -6732,15 +7247,19 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFeatures`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
         let mut out: vk::PhysicalDeviceFeatures = Default::default();
         unsafe {
-            (self.parent().fns().fp_v1_0().get_physical_device_features)(self.raw(), &mut out)
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .get_physical_device_features)(self.raw(), &mut out)
         };
         out
     }
@@ -6748,17 +7267,21 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFeatures2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_features2<'a>(
         &self,
         features: &mut PhysicalDeviceFeatures2<'a>,
     ) -> () {
         unsafe {
-            (self.parent().fns().fp_v1_1().get_physical_device_features2)(
+            (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_features2)(
                 self.raw(),
                 features as *mut PhysicalDeviceFeatures2<'a> as *mut _,
             )
@@ -6769,11 +7292,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFormatProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_format_properties(
         &self,
@@ -6793,11 +7316,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFormatProperties2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_format_properties2<'a>(
         &self,
@@ -6821,17 +7344,17 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceImageFormatProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-02248`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-02248`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_image_format_properties(
         &self,
@@ -6866,12 +7389,12 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceImageFormatProperties2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pNext-01868`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pNext-01868`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_image_format_properties2<'a>(
         &self,
@@ -6885,7 +7408,8 @@ impl PhysicalDevice {
                 .fp_v1_1()
                 .get_physical_device_image_format_properties2)(
                 self.raw(),
-                image_format_info as *const PhysicalDeviceImageFormatInfo2<'a> as *const _,
+                image_format_info as *const PhysicalDeviceImageFormatInfo2<'a>
+                    as *const _,
                 image_format_properties as *mut ImageFormatProperties2<'a> as *mut _,
             )
         };
@@ -6898,12 +7422,14 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceMemoryProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub fn get_physical_device_memory_properties(&self) -> vk::PhysicalDeviceMemoryProperties {
+    pub fn get_physical_device_memory_properties(
+        &self,
+    ) -> vk::PhysicalDeviceMemoryProperties {
         let mut out: vk::PhysicalDeviceMemoryProperties = Default::default();
         unsafe {
             (self
@@ -6918,10 +7444,10 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceMemoryProperties2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_memory_properties2<'a>(
         &self,
@@ -6940,19 +7466,19 @@ impl PhysicalDevice {
         ()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDevicePresentRectanglesKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn get_physical_device_present_rectangles_khr(
         &self,
@@ -6968,7 +7494,8 @@ impl PhysicalDevice {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::Rect2D = core::ptr::null_mut();
             let r = unsafe {
-                (ext_table.get_physical_device_present_rectangles_khr)(
+                (ext_table
+                    .get_physical_device_present_rectangles_khr)(
                     self.raw(),
                     surface.raw(),
                     &mut count,
@@ -6982,7 +7509,8 @@ impl PhysicalDevice {
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (ext_table.get_physical_device_present_rectangles_khr)(
+                (ext_table
+                    .get_physical_device_present_rectangles_khr)(
                     self.raw(),
                     surface.raw(),
                     &mut count,
@@ -7003,15 +7531,19 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
         let mut out: vk::PhysicalDeviceProperties = Default::default();
         unsafe {
-            (self.parent().fns().fp_v1_0().get_physical_device_properties)(self.raw(), &mut out)
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .get_physical_device_properties)(self.raw(), &mut out)
         };
         out
     }
@@ -7019,10 +7551,10 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceProperties2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_properties2<'a>(
         &self,
@@ -7044,11 +7576,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceQueueFamilyProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_queue_family_properties(
         &self,
@@ -7067,7 +7599,9 @@ impl PhysicalDevice {
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::QueueFamilyProperties> = Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::QueueFamilyProperties> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
@@ -7089,11 +7623,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceQueueFamilyProperties2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_queue_family_properties2(
         &self,
@@ -7112,8 +7646,9 @@ impl PhysicalDevice {
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::QueueFamilyProperties2<'static>> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::QueueFamilyProperties2<'static>> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
@@ -7135,18 +7670,18 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSparseImageFormatProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties(
         &self,
@@ -7175,8 +7710,9 @@ impl PhysicalDevice {
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::SparseImageFormatProperties> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::SparseImageFormatProperties> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
@@ -7203,12 +7739,12 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSparseImageFormatProperties2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties2<'a>(
         &self,
@@ -7224,13 +7760,15 @@ impl PhysicalDevice {
                     .fp_v1_1()
                     .get_physical_device_sparse_image_format_properties2)(
                     self.raw(),
-                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a> as *const _,
+                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a>
+                        as *const _,
                     &mut count,
                     items_ptr.cast(),
                 )
             };
-            let mut items: Vec<vk::SparseImageFormatProperties2<'static>> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::SparseImageFormatProperties2<'static>> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             unsafe {
@@ -7240,7 +7778,8 @@ impl PhysicalDevice {
                     .fp_v1_1()
                     .get_physical_device_sparse_image_format_properties2)(
                     self.raw(),
-                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a> as *const _,
+                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a>
+                        as *const _,
                     &mut count,
                     items_ptr.cast(),
                 )
@@ -7250,18 +7789,18 @@ impl PhysicalDevice {
         }
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn get_physical_device_surface_capabilities_khr(
         &self,
@@ -7275,7 +7814,8 @@ impl PhysicalDevice {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
         let mut out: vk::SurfaceCapabilitiesKHR = Default::default();
         let r = unsafe {
-            (ext_table.get_physical_device_surface_capabilities_khr)(
+            (ext_table
+                .get_physical_device_surface_capabilities_khr)(
                 self.raw(),
                 surface.raw(),
                 &mut out,
@@ -7287,21 +7827,21 @@ impl PhysicalDevice {
         Ok(out)
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06524`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06525`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06524`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06525`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn get_physical_device_surface_formats_khr(
         &self,
@@ -7317,7 +7857,8 @@ impl PhysicalDevice {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::SurfaceFormatKHR = core::ptr::null_mut();
             let r = unsafe {
-                (ext_table.get_physical_device_surface_formats_khr)(
+                (ext_table
+                    .get_physical_device_surface_formats_khr)(
                     self.raw(),
                     surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
                     &mut count,
@@ -7327,11 +7868,14 @@ impl PhysicalDevice {
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
                 return Err(Error::Vk(r));
             }
-            let mut items: Vec<vk::SurfaceFormatKHR> = Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::SurfaceFormatKHR> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (ext_table.get_physical_device_surface_formats_khr)(
+                (ext_table
+                    .get_physical_device_surface_formats_khr)(
                     self.raw(),
                     surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
                     &mut count,
@@ -7349,21 +7893,21 @@ impl PhysicalDevice {
         }
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06524`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06525`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06524`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06525`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn get_physical_device_surface_present_modes_khr(
         &self,
@@ -7379,7 +7923,8 @@ impl PhysicalDevice {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::PresentModeKHR = core::ptr::null_mut();
             let r = unsafe {
-                (ext_table.get_physical_device_surface_present_modes_khr)(
+                (ext_table
+                    .get_physical_device_surface_present_modes_khr)(
                     self.raw(),
                     surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
                     &mut count,
@@ -7393,7 +7938,8 @@ impl PhysicalDevice {
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (ext_table.get_physical_device_surface_present_modes_khr)(
+                (ext_table
+                    .get_physical_device_surface_present_modes_khr)(
                     self.raw(),
                     surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
                     &mut count,
@@ -7411,17 +7957,17 @@ impl PhysicalDevice {
         }
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceSupportKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
     #[inline]
     pub fn get_physical_device_surface_support_khr(
         &self,
@@ -7436,7 +7982,8 @@ impl PhysicalDevice {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
         let mut out: vk::Bool32 = Default::default();
         let r = unsafe {
-            (ext_table.get_physical_device_surface_support_khr)(
+            (ext_table
+                .get_physical_device_surface_support_khr)(
                 self.raw(),
                 queue_family_index,
                 surface.raw(),
@@ -7452,11 +7999,11 @@ impl PhysicalDevice {
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceToolProperties`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_tool_properties(
         &self,
@@ -7470,14 +8017,17 @@ impl PhysicalDevice {
                     .fns()
                     .fp_v1_3()
                     .get_physical_device_tool_properties)(
-                    self.raw(), &mut count, items_ptr.cast()
+                    self.raw(),
+                    &mut count,
+                    items_ptr.cast(),
                 )
             };
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
                 return Err(Error::Vk(r));
             }
-            let mut items: Vec<vk::PhysicalDeviceToolProperties<'static>> =
-                Vec::with_capacity(count as usize);
+            let mut items: Vec<vk::PhysicalDeviceToolProperties<'static>> = Vec::with_capacity(
+                count as usize,
+            );
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
@@ -7486,7 +8036,9 @@ impl PhysicalDevice {
                     .fns()
                     .fp_v1_3()
                     .get_physical_device_tool_properties)(
-                    self.raw(), &mut count, items_ptr.cast()
+                    self.raw(),
+                    &mut count,
+                    items_ptr.cast(),
                 )
             };
             if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
@@ -7500,15 +8052,15 @@ impl PhysicalDevice {
         }
     }
 }
-#[cfg(all(feature = "khr_wayland_surface"))]
+#[cfg(feature = "khr_wayland_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceWaylandPresentationSupportKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_wayland_presentation_support_khr(
         &self,
@@ -7523,7 +8075,8 @@ impl PhysicalDevice {
         Ok({
             let mut out: vk::wl_display = Default::default();
             let r = unsafe {
-                (ext_table.get_physical_device_wayland_presentation_support_khr)(
+                (ext_table
+                    .get_physical_device_wayland_presentation_support_khr)(
                     self.raw(),
                     queue_family_index,
                     &mut out,
@@ -7533,14 +8086,14 @@ impl PhysicalDevice {
         })
     }
 }
-#[cfg(all(feature = "khr_win32_surface"))]
+#[cfg(feature = "khr_win32_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceWin32PresentationSupportKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn get_physical_device_win32_presentation_support_khr(
         &self,
@@ -7554,7 +8107,8 @@ impl PhysicalDevice {
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?;
         Ok({
             let r = unsafe {
-                (ext_table.get_physical_device_win32_presentation_support_khr)(
+                (ext_table
+                    .get_physical_device_win32_presentation_support_khr)(
                     self.raw(),
                     queue_family_index,
                 )
@@ -7566,20 +8120,26 @@ impl PhysicalDevice {
 impl Device {
     /**`vkGetPipelineCacheData`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPipelineCacheData-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPipelineCacheData-pipelineCache-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetPipelineCacheData-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPipelineCacheData-pipelineCache-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
-    pub fn get_pipeline_cache_data(&self, pipeline_cache: &PipelineCache) -> Result<Vec<u8>> {
+    pub fn get_pipeline_cache_data(
+        &self,
+        pipeline_cache: &PipelineCache,
+    ) -> Result<Vec<u8>> {
         loop {
             let mut count: usize = 0;
             let items_ptr: *mut u8 = core::ptr::null_mut();
             let r = unsafe {
-                (self.fns().fp_v1_0().get_pipeline_cache_data)(
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .get_pipeline_cache_data)(
                     self.raw(),
                     pipeline_cache.raw(),
                     &mut count,
@@ -7593,7 +8153,10 @@ impl Device {
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (self.fns().fp_v1_0().get_pipeline_cache_data)(
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .get_pipeline_cache_data)(
                     self.raw(),
                     pipeline_cache.raw(),
                     &mut count,
@@ -7614,14 +8177,14 @@ impl Device {
 impl Device {
     /**`vkGetPrivateData`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetPrivateData-objectType-04018`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetPrivateData-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetPrivateData-privateDataSlot-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetPrivateData-objectType-04018`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPrivateData-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPrivateData-privateDataSlot-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_private_data(
         &self,
@@ -7631,7 +8194,10 @@ impl Device {
     ) -> u64 {
         let mut out: u64 = Default::default();
         unsafe {
-            (self.fns().fp_v1_3().get_private_data)(
+            (self
+                .fns()
+                .fp_v1_3()
+                .get_private_data)(
                 self.raw(),
                 object_type,
                 object_handle,
@@ -7645,21 +8211,20 @@ impl Device {
 impl Device {
     /**`vkGetRenderAreaGranularity`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetRenderAreaGranularity-renderPass-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetRenderAreaGranularity-renderPass-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_render_area_granularity(&self, render_pass: &RenderPass) -> vk::Extent2D {
         let mut out: vk::Extent2D = Default::default();
         unsafe {
-            (self.fns().fp_v1_0().get_render_area_granularity)(
-                self.raw(),
-                render_pass.raw(),
-                &mut out,
-            )
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_render_area_granularity)(self.raw(), render_pass.raw(), &mut out)
         };
         out
     }
@@ -7667,22 +8232,21 @@ impl Device {
 impl Device {
     /**`vkGetSemaphoreCounterValue`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetSemaphoreCounterValue-semaphore-03255`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetSemaphoreCounterValue-semaphore-03255`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
         let mut out: u64 = Default::default();
         let r = unsafe {
-            (self.fns().fp_v1_2().get_semaphore_counter_value)(
-                self.raw(),
-                semaphore.raw(),
-                &mut out,
-            )
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_semaphore_counter_value)(self.raw(), semaphore.raw(), &mut out)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -7690,19 +8254,22 @@ impl Device {
         Ok(out)
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Device {
     /**`vkGetSwapchainImagesKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkGetSwapchainImagesKHR-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
-    - `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetSwapchainImagesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
-    pub fn get_swapchain_images_khr(&self, swapchain: &SwapchainKHR) -> Result<Vec<Image>> {
+    pub fn get_swapchain_images_khr(
+        &self,
+        swapchain: &SwapchainKHR,
+    ) -> Result<Vec<Image>> {
         let ext_table = self
             .ext()
             .khr_swapchain
@@ -7712,7 +8279,8 @@ impl Device {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::Image = core::ptr::null_mut();
             let r = unsafe {
-                (ext_table.get_swapchain_images_khr)(
+                (ext_table
+                    .get_swapchain_images_khr)(
                     self.raw(),
                     swapchain.raw(),
                     &mut count,
@@ -7726,7 +8294,8 @@ impl Device {
             items.resize_with(count as usize, Default::default);
             let items_ptr = items.as_mut_ptr();
             let r = unsafe {
-                (ext_table.get_swapchain_images_khr)(
+                (ext_table
+                    .get_swapchain_images_khr)(
                     self.raw(),
                     swapchain.raw(),
                     &mut count,
@@ -7740,28 +8309,38 @@ impl Device {
                 continue;
             }
             items.truncate(count as usize);
-            return Ok(items
-                .into_iter()
-                .map(|raw| Image::from_raw(raw, self, Some(swapchain.retained()), false))
-                .collect());
+            return Ok(
+                items
+                    .into_iter()
+                    .map(|raw| Image::from_raw(
+                        raw,
+                        self,
+                        Some(swapchain.retained()),
+                        false,
+                    ))
+                    .collect(),
+            );
         }
     }
 }
 impl Device {
     /**`vkInvalidateMappedMemoryRanges`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: user (a slice may be empty; not checked)*/
     #[inline]
     pub fn invalidate_mapped_memory_ranges<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_0().invalidate_mapped_memory_ranges)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .invalidate_mapped_memory_ranges)(
                 self.raw(),
                 memory_ranges.len() as u32,
                 memory_ranges.as_ptr().cast(),
@@ -7776,25 +8355,30 @@ impl Device {
 impl Device {
     /**`vkMergePipelineCaches`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkMergePipelineCaches-dstCache-00770`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkMergePipelineCaches-dstCache-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkMergePipelineCaches-pSrcCaches-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkMergePipelineCaches-dstCache-00770`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkMergePipelineCaches-dstCache-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn merge_pipeline_caches(
         &self,
         dst_cache: &PipelineCache,
         src_caches: &[&PipelineCache],
     ) -> Result<()> {
-        let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> =
-            src_caches.iter().map(|h| h.raw()).collect();
+        let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         let r = unsafe {
-            (self.fns().fp_v1_0().merge_pipeline_caches)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .merge_pipeline_caches)(
                 self.raw(),
                 dst_cache.raw(),
                 src_caches.len() as u32,
@@ -7807,14 +8391,14 @@ impl Device {
         Ok(())
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Queue {
     /**`vkQueueBeginDebugUtilsLabelEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueBeginDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkQueueBeginDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn queue_begin_debug_utils_label_ext<'a>(
         &self,
@@ -7828,7 +8412,8 @@ impl Queue {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         Ok({
             unsafe {
-                (ext_table.queue_begin_debug_utils_label_ext)(
+                (ext_table
+                    .queue_begin_debug_utils_label_ext)(
                     self.raw(),
                     label_info as *const DebugUtilsLabelEXT<'a> as *const _,
                 )
@@ -7840,19 +8425,19 @@ impl Queue {
 impl Queue {
     /**`vkQueueBindSparse`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueBindSparse-fence-01113`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueBindSparse-fence-01114`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueBindSparse-pSignalSemaphores-01115`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueBindSparse-pWaitSemaphores-01116`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueBindSparse-pWaitSemaphores-01117`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueBindSparse-queue-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkQueueBindSparse-pBindInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkQueueBindSparse-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkQueueBindSparse-queuetype`: user (`queuetype` rules are not checked yet)
-    - `VUID-vkQueueBindSparse-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkQueueBindSparse-pWaitSemaphores-03245`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkQueueBindSparse-fence-01113`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueBindSparse-fence-01114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueBindSparse-pSignalSemaphores-01115`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueBindSparse-pWaitSemaphores-01116`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueBindSparse-pWaitSemaphores-01117`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueBindSparse-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueBindSparse-pBindInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueueBindSparse-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkQueueBindSparse-queuetype`: user (`queuetype` rules are not checked yet)
+- `VUID-vkQueueBindSparse-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkQueueBindSparse-pWaitSemaphores-03245`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn queue_bind_sparse<'a>(
         &self,
@@ -7860,7 +8445,11 @@ impl Queue {
         fence: Option<&Fence>,
     ) -> Result<()> {
         let r = unsafe {
-            (self.parent().fns().fp_v1_0().queue_bind_sparse)(
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .queue_bind_sparse)(
                 self.raw(),
                 bind_info.len() as u32,
                 bind_info.as_ptr().cast(),
@@ -7873,14 +8462,14 @@ impl Queue {
         Ok(())
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Queue {
     /**`vkQueueEndDebugUtilsLabelEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueEndDebugUtilsLabelEXT-None-01911`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkQueueEndDebugUtilsLabelEXT-None-01911`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
         let ext_table = self
@@ -7895,14 +8484,14 @@ impl Queue {
         })
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Queue {
     /**`vkQueueInsertDebugUtilsLabelEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn queue_insert_debug_utils_label_ext<'a>(
         &self,
@@ -7916,7 +8505,8 @@ impl Queue {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         Ok({
             unsafe {
-                (ext_table.queue_insert_debug_utils_label_ext)(
+                (ext_table
+                    .queue_insert_debug_utils_label_ext)(
                     self.raw(),
                     label_info as *const DebugUtilsLabelEXT<'a> as *const _,
                 )
@@ -7925,20 +8515,20 @@ impl Queue {
         })
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Queue {
     /**`vkQueuePresentKHR`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueuePresentKHR-pSwapchains-01292`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkQueuePresentKHR-pSwapchains-01293`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkQueuePresentKHR-pSwapchains-01292`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueuePresentKHR-pSwapchains-01293`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn queue_present_khr<'a>(
         &self,
@@ -7951,7 +8541,8 @@ impl Queue {
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
         let r = unsafe {
-            (ext_table.queue_present_khr)(
+            (ext_table
+                .queue_present_khr)(
                 self.raw(),
                 present_info as *const PresentInfoKHR<'a> as *const _,
             )
@@ -7965,34 +8556,42 @@ impl Queue {
 impl Queue {
     /**`vkQueueSubmit`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueSubmit-fence-00063`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-fence-00064`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-00065`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pWaitDstStageMask-00066`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pSignalSemaphores-00067`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pWaitSemaphores-00068`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-00070`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-00071`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-00072`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-00073`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-00074`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pSubmits-02207`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pSubmits-02808`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pSubmits-04626`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkQueueSubmit-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkQueueSubmit-pWaitSemaphores-00069`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pWaitSemaphores-03238`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-pCommandBuffers-03220`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit-queue-06448`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkQueueSubmit-fence-00063`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-fence-00064`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00065`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pWaitDstStageMask-00066`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pSignalSemaphores-00067`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pWaitSemaphores-00068`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00070`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00071`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00072`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00074`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pSubmits-02207`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pSubmits-02808`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pSubmits-04626`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkQueueSubmit-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkQueueSubmit-pWaitSemaphores-00069`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pWaitSemaphores-03238`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-03220`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-queue-06448`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn queue_submit<'a>(&self, submits: &[SubmitInfo<'a>], fence: &Fence) -> Result<()> {
+    pub fn queue_submit<'a>(
+        &self,
+        submits: &[SubmitInfo<'a>],
+        fence: &Fence,
+    ) -> Result<()> {
         let r = unsafe {
-            (self.parent().fns().fp_v1_0().queue_submit)(
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .queue_submit)(
                 self.raw(),
                 submits.len() as u32,
                 submits.as_ptr().cast(),
@@ -8006,7 +8605,10 @@ impl Queue {
         let mut kept = Vec::new();
         for s in submits {
             let raw = unsafe {
-                core::slice::from_raw_parts(s.p_command_buffers, s.command_buffer_count as usize)
+                core::slice::from_raw_parts(
+                    s.p_command_buffers,
+                    s.command_buffer_count as usize,
+                )
             };
             kept.extend(raw.iter().filter_map(|cb| device.command_buffer(*cb)));
         }
@@ -8017,30 +8619,30 @@ impl Queue {
 impl Queue {
     /**`vkQueueSubmit2`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueSubmit2-fence-04894`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-fence-04895`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-synchronization2-03866`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03867`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-semaphore-03868`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-stageMask-03869`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-stageMask-03870`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-semaphore-03871`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-semaphore-03872`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03874`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03875`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03876`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03877`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03878`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03879`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkQueueSubmit2-commonparent`: user (`commonparent` rules are not checked yet)
-    - `VUID-vkQueueSubmit2-semaphore-03873`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-commandBuffer-03880`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkQueueSubmit2-queue-06447`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkQueueSubmit2-fence-04894`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-fence-04895`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-synchronization2-03866`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03867`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-semaphore-03868`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-stageMask-03869`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-stageMask-03870`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-semaphore-03871`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-semaphore-03872`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03874`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03875`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03876`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03878`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03879`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkQueueSubmit2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkQueueSubmit2-semaphore-03873`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03880`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-queue-06447`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn queue_submit2<'a>(
         &self,
@@ -8048,7 +8650,11 @@ impl Queue {
         fence: Option<&Fence>,
     ) -> Result<()> {
         let r = unsafe {
-            (self.parent().fns().fp_v1_3().queue_submit2)(
+            (self
+                .parent()
+                .fns()
+                .fp_v1_3()
+                .queue_submit2)(
                 self.raw(),
                 submits.len() as u32,
                 submits.as_ptr().cast(),
@@ -8064,9 +8670,9 @@ impl Queue {
 impl Queue {
     /**`vkQueueWaitIdle`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn queue_wait_idle(&self) -> Result<()> {
         let r = unsafe { (self.parent().fns().fp_v1_0().queue_wait_idle)(self.raw()) };
@@ -8079,15 +8685,20 @@ impl Queue {
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkResetCommandBuffer`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkResetCommandBuffer-commandBuffer-00045`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetCommandBuffer-commandBuffer-00046`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkResetCommandBuffer-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-vkResetCommandBuffer-commandBuffer-00045`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetCommandBuffer-commandBuffer-00046`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetCommandBuffer-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
     #[inline]
-    pub fn reset_command_buffer(&mut self, flags: vk::CommandBufferResetFlags) -> Result<()> {
-        let r = unsafe { (self.device().fns().fp_v1_0().reset_command_buffer)(self.raw(), flags) };
+    pub fn reset_command_buffer(
+        &mut self,
+        flags: vk::CommandBufferResetFlags,
+    ) -> Result<()> {
+        let r = unsafe {
+            (self.device().fns().fp_v1_0().reset_command_buffer)(self.raw(), flags)
+        };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -8097,13 +8708,13 @@ impl<'c, S: State> Recorder<'c, S> {
 impl Device {
     /**`vkResetCommandPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkResetCommandPool-commandPool-00040`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkResetCommandPool-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkResetCommandPool-commandPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetCommandPool-commandPool-00040`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetCommandPool-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkResetCommandPool-commandPool-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn reset_command_pool(
         &self,
@@ -8111,7 +8722,10 @@ impl Device {
         flags: vk::CommandPoolResetFlags,
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_0().reset_command_pool)(self.raw(), command_pool.raw(), flags)
+            (self
+                .fns()
+                .fp_v1_0()
+                .reset_command_pool)(self.raw(), command_pool.raw(), flags)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -8122,13 +8736,13 @@ impl Device {
 impl Device {
     /**`vkResetDescriptorPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkResetDescriptorPool-descriptorPool-00313`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkResetDescriptorPool-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-    - `VUID-vkResetDescriptorPool-descriptorPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetDescriptorPool-descriptorPool-00313`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetDescriptorPool-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-vkResetDescriptorPool-descriptorPool-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn reset_descriptor_pool(
         &self,
@@ -8136,7 +8750,10 @@ impl Device {
         flags: vk::DescriptorPoolResetFlags,
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_0().reset_descriptor_pool)(self.raw(), descriptor_pool.raw(), flags)
+            (self
+                .fns()
+                .fp_v1_0()
+                .reset_descriptor_pool)(self.raw(), descriptor_pool.raw(), flags)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -8147,14 +8764,14 @@ impl Device {
 impl Device {
     /**`vkResetEvent`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkResetEvent-event-03821`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkResetEvent-event-parent`: user (`parent` rules are not checked yet)
-    - `VUID-vkResetEvent-event-03822`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetEvent-event-03823`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkResetEvent-event-03821`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetEvent-event-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkResetEvent-event-03822`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetEvent-event-03823`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn reset_event(&self, event: &Event) -> Result<()> {
         let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
@@ -8167,19 +8784,25 @@ impl Device {
 impl Device {
     /**`vkResetFences`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkResetFences-pFences-01123`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkResetFences-fenceCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkResetFences-pFences-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetFences-pFences-01123`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetFences-fenceCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkResetFences-pFences-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
         let fences_w: &[&Fence] = fences;
-        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences.iter().map(|h| h.raw()).collect();
+        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         let r = unsafe {
-            (self.fns().fp_v1_0().reset_fences)(self.raw(), fences.len() as u32, fences.as_ptr())
+            (self
+                .fns()
+                .fp_v1_0()
+                .reset_fences)(self.raw(), fences.len() as u32, fences.as_ptr())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -8193,16 +8816,16 @@ impl Device {
 impl Device {
     /**`vkResetQueryPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkResetQueryPool-None-02665`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetQueryPool-firstQuery-02666`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetQueryPool-firstQuery-02667`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetQueryPool-firstQuery-02741`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetQueryPool-firstQuery-02742`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkResetQueryPool-queryPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetQueryPool-None-02665`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetQueryPool-firstQuery-02666`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetQueryPool-firstQuery-02667`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetQueryPool-firstQuery-02741`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetQueryPool-firstQuery-02742`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetQueryPool-queryPool-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn reset_query_pool(
         &self,
@@ -8211,7 +8834,10 @@ impl Device {
         query_count: u32,
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_2().reset_query_pool)(
+            (self
+                .fns()
+                .fp_v1_2()
+                .reset_query_pool)(
                 self.raw(),
                 query_pool.raw(),
                 first_query,
@@ -8221,16 +8847,16 @@ impl Device {
         ()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Device {
     /**`vkSetDebugUtilsObjectNameEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkSetDebugUtilsObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkSetDebugUtilsObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn set_debug_utils_object_name_ext<'a>(
         &self,
@@ -8242,7 +8868,8 @@ impl Device {
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         let r = unsafe {
-            (ext_table.set_debug_utils_object_name_ext)(
+            (ext_table
+                .set_debug_utils_object_name_ext)(
                 self.raw(),
                 name_info as *const DebugUtilsObjectNameInfoEXT<'a> as *const _,
             )
@@ -8253,14 +8880,14 @@ impl Device {
         Ok(())
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Device {
     /**`vkSetDebugUtilsObjectTagEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkSetDebugUtilsObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkSetDebugUtilsObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSetDebugUtilsObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSetDebugUtilsObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn set_debug_utils_object_tag_ext<'a>(
         &self,
@@ -8272,7 +8899,8 @@ impl Device {
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         let r = unsafe {
-            (ext_table.set_debug_utils_object_tag_ext)(
+            (ext_table
+                .set_debug_utils_object_tag_ext)(
                 self.raw(),
                 tag_info as *const DebugUtilsObjectTagInfoEXT<'a> as *const _,
             )
@@ -8286,12 +8914,12 @@ impl Device {
 impl Device {
     /**`vkSetEvent`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkSetEvent-event-03941`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkSetEvent-event-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkSetEvent-event-03941`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkSetEvent-event-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
         let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
@@ -8304,14 +8932,14 @@ impl Device {
 impl Device {
     /**`vkSetPrivateData`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkSetPrivateData-objectHandle-04016`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkSetPrivateData-objectHandle-04017`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkSetPrivateData-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkSetPrivateData-privateDataSlot-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkSetPrivateData-objectHandle-04016`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkSetPrivateData-objectHandle-04017`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSetPrivateData-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkSetPrivateData-privateDataSlot-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn set_private_data(
         &self,
@@ -8321,7 +8949,10 @@ impl Device {
         data: u64,
     ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_3().set_private_data)(
+            (self
+                .fns()
+                .fp_v1_3()
+                .set_private_data)(
                 self.raw(),
                 object_type,
                 object_handle,
@@ -8338,14 +8969,20 @@ impl Device {
 impl Device {
     /**`vkSignalSemaphore`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn signal_semaphore<'a>(&self, signal_info: &SemaphoreSignalInfo<'a>) -> Result<()> {
+    pub fn signal_semaphore<'a>(
+        &self,
+        signal_info: &SemaphoreSignalInfo<'a>,
+    ) -> Result<()> {
         let r = unsafe {
-            (self.fns().fp_v1_2().signal_semaphore)(
+            (self
+                .fns()
+                .fp_v1_2()
+                .signal_semaphore)(
                 self.raw(),
                 signal_info as *const SemaphoreSignalInfo<'a> as *const _,
             )
@@ -8356,18 +8993,18 @@ impl Device {
         Ok(())
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Instance {
     /**`vkSubmitDebugUtilsMessageEXT`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-    - `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-    - `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn submit_debug_utils_message_ext<'a>(
         &self,
@@ -8382,11 +9019,13 @@ impl Instance {
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         Ok({
             unsafe {
-                (ext_table.submit_debug_utils_message_ext)(
+                (ext_table
+                    .submit_debug_utils_message_ext)(
                     self.raw(),
                     message_severity,
                     message_types,
-                    callback_data as *const DebugUtilsMessengerCallbackDataEXT<'a> as *const _,
+                    callback_data as *const DebugUtilsMessengerCallbackDataEXT<'a>
+                        as *const _,
                 )
             };
             ()
@@ -8396,43 +9035,48 @@ impl Instance {
 impl Device {
     /**`vkTrimCommandPool`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkTrimCommandPool-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-    - `VUID-vkTrimCommandPool-commandPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkTrimCommandPool-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-vkTrimCommandPool-commandPool-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn trim_command_pool(
         &self,
         command_pool: &CommandPool,
         flags: vk::CommandPoolTrimFlags,
     ) -> () {
-        unsafe { (self.fns().fp_v1_1().trim_command_pool)(self.raw(), command_pool.raw(), flags) };
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .trim_command_pool)(self.raw(), command_pool.raw(), flags)
+        };
         ()
     }
 }
 impl Device {
     /**`vkUpdateDescriptorSets`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06240`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06241`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06940`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06941`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-dstSet-00314`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06992`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-None-03047`: user (explicit rule; the wrappers do not check it)
-    - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: user (explicit rule; the wrappers do not check it)*/
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06240`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06241`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06940`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06941`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-dstSet-00314`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06992`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-None-03047`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn update_descriptor_sets<'a>(
         &self,
@@ -8440,7 +9084,10 @@ impl Device {
         descriptor_copies: &[CopyDescriptorSet<'a>],
     ) -> () {
         unsafe {
-            (self.fns().fp_v1_0().update_descriptor_sets)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .update_descriptor_sets)(
                 self.raw(),
                 descriptor_writes.len() as u32,
                 descriptor_writes.as_ptr().cast(),
@@ -8454,12 +9101,12 @@ impl Device {
 impl Device {
     /**`vkWaitForFences`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-    - `VUID-vkWaitForFences-fenceCount-arraylength`: user (a slice may be empty; not checked)
-    - `VUID-vkWaitForFences-pFences-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkWaitForFences-fenceCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkWaitForFences-pFences-parent`: user (`parent` rules are not checked yet)*/
     #[inline]
     pub fn wait_for_fences(
         &self,
@@ -8468,9 +9115,15 @@ impl Device {
         timeout: u64,
     ) -> Result<((), vk::Result)> {
         let fences_w: &[&Fence] = fences;
-        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences.iter().map(|h| h.raw()).collect();
+        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
+            .iter()
+            .map(|h| h.raw())
+            .collect();
         let r = unsafe {
-            (self.fns().fp_v1_0().wait_for_fences)(
+            (self
+                .fns()
+                .fp_v1_0()
+                .wait_for_fences)(
                 self.raw(),
                 fences.len() as u32,
                 fences.as_ptr(),
@@ -8492,10 +9145,10 @@ impl Device {
 impl Device {
     /**`vkWaitSemaphores`
 
-    # Valid usage
+# Valid usage
 
-    - `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
-    - `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn wait_semaphores<'a>(
         &self,
@@ -8503,7 +9156,10 @@ impl Device {
         timeout: u64,
     ) -> Result<((), vk::Result)> {
         let r = unsafe {
-            (self.fns().fp_v1_2().wait_semaphores)(
+            (self
+                .fns()
+                .fp_v1_2()
+                .wait_semaphores)(
                 self.raw(),
                 wait_info as *const SemaphoreWaitInfo<'a> as *const _,
                 timeout,

@@ -53,6 +53,11 @@ impl Buffer {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -79,11 +84,11 @@ impl Drop for BufferInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_buffer)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_buffer)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -128,6 +133,11 @@ impl BufferView {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -154,11 +164,11 @@ impl Drop for BufferViewInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_buffer_view)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_buffer_view)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -217,6 +227,11 @@ impl CommandBuffer {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -244,7 +259,12 @@ impl Drop for CommandBufferInner {
         }
         self.parent.parent().forget_command_buffer(self.raw);
         unsafe {
-            (self.parent.parent().fns().fp_v1_0().free_command_buffers)(
+            (self
+                .parent
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .free_command_buffers)(
                 self.parent.parent().raw(),
                 self.parent.raw(),
                 1,
@@ -294,6 +314,11 @@ impl CommandPool {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -320,21 +345,21 @@ impl Drop for CommandPoolInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_command_pool)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_command_pool)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
 ///A `VkDebugUtilsMessengerEXT`. Clones share it; the last one to go calls `vkDestroyDebugUtilsMessengerEXT`, after every submission that used it has completed.
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[derive(Clone)]
 pub struct DebugUtilsMessengerEXT {
     inner: Vrc<DebugUtilsMessengerEXTInner>,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[allow(dead_code)]
 struct DebugUtilsMessengerEXTInner {
     raw: vk::DebugUtilsMessengerEXT,
@@ -342,7 +367,7 @@ struct DebugUtilsMessengerEXTInner {
     keep: Option<Retained>,
     destroy: bool,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl DebugUtilsMessengerEXT {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
     #[allow(dead_code)]
@@ -372,13 +397,18 @@ impl DebugUtilsMessengerEXT {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
         self.inner.clone()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Handle for DebugUtilsMessengerEXT {
     type Raw = vk::DebugUtilsMessengerEXT;
     #[inline]
@@ -386,7 +416,7 @@ impl Handle for DebugUtilsMessengerEXT {
         self.inner.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl core::ops::Deref for DebugUtilsMessengerEXT {
     type Target = vk::DebugUtilsMessengerEXT;
     #[inline]
@@ -394,7 +424,7 @@ impl core::ops::Deref for DebugUtilsMessengerEXT {
         &self.inner.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Drop for DebugUtilsMessengerEXTInner {
     fn drop(&mut self) {
         if !self.destroy {
@@ -405,8 +435,10 @@ impl Drop for DebugUtilsMessengerEXTInner {
                 Some(t) => t,
                 None => return,
             }
-            .destroy_debug_utils_messenger_ext)(
-                self.parent.raw(), self.raw, core::ptr::null()
+                .destroy_debug_utils_messenger_ext)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
             );
         }
     }
@@ -452,9 +484,7 @@ impl DescriptorPool {
     /// (`FREE_DESCRIPTOR_SET`); otherwise they return with the pool.
     #[inline]
     pub fn frees_sets(&self) -> bool {
-        self.inner
-            .flags
-            .contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
+        self.inner.flags.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
     }
     pub(crate) fn with_flags(mut self, flags: vk::DescriptorPoolCreateFlags) -> Self {
         if let Some(inner) = Vrc::get_mut(&mut self.inner) {
@@ -467,6 +497,11 @@ impl DescriptorPool {
     #[allow(dead_code)]
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
+    }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
     }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
@@ -494,7 +529,11 @@ impl Drop for DescriptorPoolInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_descriptor_pool)(
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_descriptor_pool)(
                 self.parent.raw(),
                 self.raw,
                 core::ptr::null(),
@@ -543,6 +582,11 @@ impl DescriptorSet {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -572,7 +616,12 @@ impl Drop for DescriptorSetInner {
             return;
         }
         unsafe {
-            let _ = (self.parent.parent().fns().fp_v1_0().free_descriptor_sets)(
+            let _ = (self
+                .parent
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .free_descriptor_sets)(
                 self.parent.parent().raw(),
                 self.parent.raw(),
                 1,
@@ -622,6 +671,11 @@ impl DescriptorSetLayout {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -648,7 +702,11 @@ impl Drop for DescriptorSetLayoutInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_descriptor_set_layout)(
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_descriptor_set_layout)(
                 self.parent.raw(),
                 self.raw,
                 core::ptr::null(),
@@ -696,6 +754,11 @@ impl DescriptorUpdateTemplate {
     #[allow(dead_code)]
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
+    }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
     }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
@@ -758,7 +821,10 @@ struct DeviceInner {
     fns: ash::Device,
     ext: DeviceExtensions,
     command_buffers: Vutex<
-        std::collections::HashMap<vk::CommandBuffer, tuff_runtime::Vweak<dyn tuff_runtime::Retain>>,
+        std::collections::HashMap<
+            vk::CommandBuffer,
+            tuff_runtime::Vweak<dyn tuff_runtime::Retain>,
+        >,
     >,
 }
 impl Device {
@@ -772,10 +838,7 @@ impl Device {
         let mut ext = DeviceExtensions::default();
         let _ = enabled;
         #[cfg(feature = "ext_debug_utils")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_EXT_debug_utils".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_debug_utils".as_bytes()) {
             ext.ext_debug_utils = Some(
                 ash::ext::debug_utils::Device::new(physical.parent().fns(), &fns)
                     .fp()
@@ -783,10 +846,7 @@ impl Device {
             );
         }
         #[cfg(feature = "khr_swapchain")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_swapchain".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_swapchain".as_bytes()) {
             ext.khr_swapchain = Some(
                 ash::khr::swapchain::Device::new(physical.parent().fns(), &fns)
                     .fp()
@@ -831,11 +891,7 @@ impl Device {
     }
     /// The live command buffer with this raw handle.
     pub(crate) fn command_buffer(&self, raw: vk::CommandBuffer) -> Option<Retained> {
-        self.inner
-            .command_buffers
-            .lock()
-            .get(&raw)
-            .and_then(|w| w.upgrade())
+        self.inner.command_buffers.lock().get(&raw).and_then(|w| w.upgrade())
     }
 }
 impl Handle for Device {
@@ -901,6 +957,11 @@ impl DeviceMemory {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -927,11 +988,11 @@ impl Drop for DeviceMemoryInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().free_memory)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .free_memory)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -976,6 +1037,11 @@ impl Event {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1002,11 +1068,11 @@ impl Drop for EventInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_event)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_event)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1061,6 +1127,11 @@ impl Fence {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1088,7 +1159,11 @@ impl Drop for FenceInner {
         }
         if !self.pending.lock().is_empty() {
             unsafe {
-                let _ = (self.parent.fns().fp_v1_0().wait_for_fences)(
+                let _ = (self
+                    .parent
+                    .fns()
+                    .fp_v1_0()
+                    .wait_for_fences)(
                     self.parent.raw(),
                     1,
                     &self.raw,
@@ -1098,11 +1173,11 @@ impl Drop for FenceInner {
             }
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_fence)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_fence)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1147,6 +1222,11 @@ impl Framebuffer {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1173,11 +1253,11 @@ impl Drop for FramebufferInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_framebuffer)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_framebuffer)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1228,6 +1308,11 @@ impl Image {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1254,11 +1339,11 @@ impl Drop for ImageInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_image)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_image)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1303,6 +1388,11 @@ impl ImageView {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1329,11 +1419,11 @@ impl Drop for ImageViewInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_image_view)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_image_view)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1390,91 +1480,51 @@ impl Instance {
         let mut ext = InstanceExtensions::default();
         let _ = enabled;
         #[cfg(feature = "ext_debug_utils")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_EXT_debug_utils".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_debug_utils".as_bytes()) {
             ext.ext_debug_utils = Some(
-                ash::ext::debug_utils::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::ext::debug_utils::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "ext_metal_surface")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_EXT_metal_surface".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_metal_surface".as_bytes()) {
             ext.ext_metal_surface = Some(
-                ash::ext::metal_surface::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::ext::metal_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_surface")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_surface".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_surface".as_bytes()) {
             ext.khr_surface = Some(
-                ash::khr::surface::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::khr::surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_swapchain")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_swapchain".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_swapchain".as_bytes()) {
             ext.khr_swapchain = Some(
-                ash::khr::swapchain::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::khr::swapchain::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_wayland_surface")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_wayland_surface".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_wayland_surface".as_bytes()) {
             ext.khr_wayland_surface = Some(
-                ash::khr::wayland_surface::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::khr::wayland_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_win32_surface")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_win32_surface".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_win32_surface".as_bytes()) {
             ext.khr_win32_surface = Some(
-                ash::khr::win32_surface::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::khr::win32_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_xcb_surface")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_xcb_surface".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_xcb_surface".as_bytes()) {
             ext.khr_xcb_surface = Some(
-                ash::khr::xcb_surface::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::khr::xcb_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_xlib_surface")]
-        if enabled
-            .iter()
-            .any(|n| n.to_bytes() == "VK_KHR_xlib_surface".as_bytes())
-        {
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_xlib_surface".as_bytes()) {
             ext.khr_xlib_surface = Some(
-                ash::khr::xlib_surface::Instance::new(entry.fns(), &fns)
-                    .fp()
-                    .clone(),
+                ash::khr::xlib_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         Instance {
@@ -1518,7 +1568,9 @@ impl core::ops::Deref for Instance {
 }
 impl Drop for InstanceInner {
     fn drop(&mut self) {
-        unsafe { (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null()) };
+        unsafe {
+            (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null())
+        };
     }
 }
 ///A `VkPhysicalDevice`, owned by the implementation: the wrapper keeps its parent alive and never destroys it.
@@ -1561,6 +1613,11 @@ impl PhysicalDevice {
     #[allow(dead_code)]
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
+    }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
     }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
@@ -1623,6 +1680,11 @@ impl Pipeline {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1649,11 +1711,11 @@ impl Drop for PipelineInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_pipeline)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_pipeline)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1698,6 +1760,11 @@ impl PipelineCache {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1724,11 +1791,11 @@ impl Drop for PipelineCacheInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_pipeline_cache)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_pipeline_cache)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1773,6 +1840,11 @@ impl PipelineLayout {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1799,7 +1871,11 @@ impl Drop for PipelineLayoutInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_pipeline_layout)(
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_pipeline_layout)(
                 self.parent.raw(),
                 self.raw,
                 core::ptr::null(),
@@ -1848,6 +1924,11 @@ impl PrivateDataSlot {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1874,7 +1955,11 @@ impl Drop for PrivateDataSlotInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_3().destroy_private_data_slot)(
+            (self
+                .parent
+                .fns()
+                .fp_v1_3()
+                .destroy_private_data_slot)(
                 self.parent.raw(),
                 self.raw,
                 core::ptr::null(),
@@ -1923,6 +2008,11 @@ impl QueryPool {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -1949,11 +2039,11 @@ impl Drop for QueryPoolInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_query_pool)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_query_pool)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -1997,6 +2087,11 @@ impl Queue {
     #[allow(dead_code)]
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
+    }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
     }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
@@ -2059,6 +2154,11 @@ impl RenderPass {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -2085,11 +2185,11 @@ impl Drop for RenderPassInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_render_pass)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_render_pass)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -2134,6 +2234,11 @@ impl Sampler {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -2160,11 +2265,11 @@ impl Drop for SamplerInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_sampler)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_sampler)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -2209,6 +2314,11 @@ impl SamplerYcbcrConversion {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -2235,7 +2345,11 @@ impl Drop for SamplerYcbcrConversionInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_1().destroy_sampler_ycbcr_conversion)(
+            (self
+                .parent
+                .fns()
+                .fp_v1_1()
+                .destroy_sampler_ycbcr_conversion)(
                 self.parent.raw(),
                 self.raw,
                 core::ptr::null(),
@@ -2284,6 +2398,11 @@ impl Semaphore {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -2310,11 +2429,11 @@ impl Drop for SemaphoreInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_semaphore)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_semaphore)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
@@ -2359,6 +2478,11 @@ impl ShaderModule {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
@@ -2385,21 +2509,21 @@ impl Drop for ShaderModuleInner {
             return;
         }
         unsafe {
-            (self.parent.fns().fp_v1_0().destroy_shader_module)(
-                self.parent.raw(),
-                self.raw,
-                core::ptr::null(),
-            );
+            (self
+                .parent
+                .fns()
+                .fp_v1_0()
+                .destroy_shader_module)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
 ///A `VkSurfaceKHR`. Clones share it; the last one to go calls `vkDestroySurfaceKHR`, after every submission that used it has completed.
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 #[derive(Clone)]
 pub struct SurfaceKHR {
     inner: Vrc<SurfaceKHRInner>,
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 #[allow(dead_code)]
 struct SurfaceKHRInner {
     raw: vk::SurfaceKHR,
@@ -2407,7 +2531,7 @@ struct SurfaceKHRInner {
     keep: Option<Retained>,
     destroy: bool,
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl SurfaceKHR {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
     #[allow(dead_code)]
@@ -2437,13 +2561,18 @@ impl SurfaceKHR {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
         self.inner.clone()
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl Handle for SurfaceKHR {
     type Raw = vk::SurfaceKHR;
     #[inline]
@@ -2451,7 +2580,7 @@ impl Handle for SurfaceKHR {
         self.inner.raw
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl core::ops::Deref for SurfaceKHR {
     type Target = vk::SurfaceKHR;
     #[inline]
@@ -2459,7 +2588,7 @@ impl core::ops::Deref for SurfaceKHR {
         &self.inner.raw
     }
 }
-#[cfg(all(feature = "khr_surface"))]
+#[cfg(feature = "khr_surface")]
 impl Drop for SurfaceKHRInner {
     fn drop(&mut self) {
         if !self.destroy {
@@ -2470,17 +2599,17 @@ impl Drop for SurfaceKHRInner {
                 Some(t) => t,
                 None => return,
             }
-            .destroy_surface_khr)(self.parent.raw(), self.raw, core::ptr::null());
+                .destroy_surface_khr)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }
 ///A `VkSwapchainKHR`. Clones share it; the last one to go calls `vkDestroySwapchainKHR`, after every submission that used it has completed.
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[derive(Clone)]
 pub struct SwapchainKHR {
     inner: Vrc<SwapchainKHRInner>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[allow(dead_code)]
 struct SwapchainKHRInner {
     raw: vk::SwapchainKHR,
@@ -2488,7 +2617,7 @@ struct SwapchainKHRInner {
     keep: Option<Retained>,
     destroy: bool,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl SwapchainKHR {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
     #[allow(dead_code)]
@@ -2518,13 +2647,18 @@ impl SwapchainKHR {
     pub(crate) fn kept(&self) -> Option<&Retained> {
         self.inner.keep.as_ref()
     }
+    /// The address of the shared state, which identifies the object.
+    #[inline]
+    pub fn address(&self) -> usize {
+        Vrc::as_ptr(&self.inner) as usize
+    }
     /// This wrapper as a type-erased reference that keeps it alive.
     #[inline]
     pub fn retained(&self) -> Retained {
         self.inner.clone()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Handle for SwapchainKHR {
     type Raw = vk::SwapchainKHR;
     #[inline]
@@ -2532,7 +2666,7 @@ impl Handle for SwapchainKHR {
         self.inner.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl core::ops::Deref for SwapchainKHR {
     type Target = vk::SwapchainKHR;
     #[inline]
@@ -2540,7 +2674,7 @@ impl core::ops::Deref for SwapchainKHR {
         &self.inner.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Drop for SwapchainKHRInner {
     fn drop(&mut self) {
         if !self.destroy {
@@ -2551,7 +2685,7 @@ impl Drop for SwapchainKHRInner {
                 Some(t) => t,
                 None => return,
             }
-            .destroy_swapchain_khr)(self.parent.raw(), self.raw, core::ptr::null());
+                .destroy_swapchain_khr)(self.parent.raw(), self.raw, core::ptr::null());
         }
     }
 }

@@ -2,7 +2,12 @@
 
 //! Safe counterparts of the registry's structs that carry handles, pointers or
 //! an `sType`. Plain structs (`vk::Extent2D`, ...) are used as ash has them.
-#![allow(clippy::needless_lifetimes, clippy::new_without_default)]
+#![allow(
+    clippy::needless_lifetimes,
+    clippy::new_without_default,
+    clippy::field_reassign_with_default,
+    clippy::unnecessary_cast
+)]
 use crate::{chain::Extends, handles::*, CStrPtr, Handle, HandleSlice};
 use ash::vk;
 use core::marker::PhantomData;
@@ -24,14 +29,14 @@ use core::marker::PhantomData;
 - `VUID-VkAcquireNextImageInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-commonparent`: user (`commonparent` rules are not checked yet)
 - `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`: user (explicit rule; the wrappers do not check it)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AcquireNextImageInfoKHR<'a> {
     raw: vk::AcquireNextImageInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> AcquireNextImageInfoKHR<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -40,10 +45,7 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::AcquireNextImageInfoKHR<'a> = Default::default();
         raw.swapchain = swapchain.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `swapchain`.
     #[inline]
@@ -102,7 +104,7 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for AcquireNextImageInfoKHR<'a> {
     type Target = vk::AcquireNextImageInfoKHR<'a>;
     #[inline]
@@ -168,7 +170,10 @@ impl<'a> AllocationCallbacks<'a> {
     }
     ///Sets `pfnInternalFree`.
     #[inline]
-    pub fn pfn_internal_free(mut self, value: vk::PFN_vkInternalFreeNotification) -> Self {
+    pub fn pfn_internal_free(
+        mut self,
+        value: vk::PFN_vkInternalFreeNotification,
+    ) -> Self {
         self.raw.pfn_internal_free = value;
         self
     }
@@ -501,7 +506,9 @@ impl<'a> AttachmentDescriptionStencilLayout<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::AttachmentDescriptionStencilLayout<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::AttachmentDescriptionStencilLayout<'a> {
         &mut self.raw
     }
 }
@@ -517,7 +524,8 @@ impl<'a> core::ops::Deref for AttachmentDescriptionStencilLayout<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<AttachmentDescription2<'b>> for AttachmentDescriptionStencilLayout<'a> {}
+unsafe impl<'a, 'b> Extends<AttachmentDescription2<'b>>
+for AttachmentDescriptionStencilLayout<'a> {}
 /**Safe counterpart of [`vk::AttachmentReference2`].
 
 # Valid usage
@@ -653,7 +661,9 @@ impl<'a> AttachmentReferenceStencilLayout<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::AttachmentReferenceStencilLayout<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::AttachmentReferenceStencilLayout<'a> {
         &mut self.raw
     }
 }
@@ -669,7 +679,8 @@ impl<'a> core::ops::Deref for AttachmentReferenceStencilLayout<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<AttachmentReference2<'b>> for AttachmentReferenceStencilLayout<'a> {}
+unsafe impl<'a, 'b> Extends<AttachmentReference2<'b>>
+for AttachmentReferenceStencilLayout<'a> {}
 /**Safe counterpart of [`vk::BaseInStructure`].
 
 # Valid usage
@@ -871,7 +882,8 @@ impl<'a> core::ops::Deref for BindBufferMemoryDeviceGroupInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BindBufferMemoryInfo<'b>> for BindBufferMemoryDeviceGroupInfo<'a> {}
+unsafe impl<'a, 'b> Extends<BindBufferMemoryInfo<'b>>
+for BindBufferMemoryDeviceGroupInfo<'a> {}
 /**Safe counterpart of [`vk::BindBufferMemoryInfo`].
 
 # Valid usage
@@ -917,10 +929,7 @@ impl<'a> BindBufferMemoryInfo<'a> {
         let mut raw: vk::BindBufferMemoryInfo<'a> = Default::default();
         raw.buffer = buffer.raw();
         raw.memory = memory.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `buffer`.
     #[inline]
@@ -1058,7 +1067,8 @@ impl<'a> core::ops::Deref for BindImageMemoryDeviceGroupInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>> for BindImageMemoryDeviceGroupInfo<'a> {}
+unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>>
+for BindImageMemoryDeviceGroupInfo<'a> {}
 /**Safe counterpart of [`vk::BindImageMemoryInfo`].
 
 # Valid usage
@@ -1118,10 +1128,7 @@ impl<'a> BindImageMemoryInfo<'a> {
         let mut raw: vk::BindImageMemoryInfo<'a> = Default::default();
         raw.image = image.raw();
         raw.memory = memory.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `image`.
     #[inline]
@@ -1183,14 +1190,14 @@ impl<'a> core::ops::Deref for BindImageMemoryInfo<'a> {
 - `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756`: user (explicit rule; the wrappers do not check it)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemorySwapchainInfoKHR<'a> {
     raw: vk::BindImageMemorySwapchainInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -1199,10 +1206,7 @@ impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::BindImageMemorySwapchainInfoKHR<'a> = Default::default();
         raw.swapchain = swapchain.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `swapchain`.
     #[inline]
@@ -1243,7 +1247,7 @@ impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for BindImageMemorySwapchainInfoKHR<'a> {
     type Target = vk::BindImageMemorySwapchainInfoKHR<'a>;
     #[inline]
@@ -1251,8 +1255,9 @@ impl<'a> core::ops::Deref for BindImageMemorySwapchainInfoKHR<'a> {
         &self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
-unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>> for BindImageMemorySwapchainInfoKHR<'a> {}
+#[cfg(feature = "khr_swapchain")]
+unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>>
+for BindImageMemorySwapchainInfoKHR<'a> {}
 /**Safe counterpart of [`vk::BindImagePlaneMemoryInfo`].
 
 # Valid usage
@@ -1372,7 +1377,10 @@ impl<'a> BindSparseInfo<'a> {
     }
     ///Sets `pImageOpaqueBinds`.
     #[inline]
-    pub fn image_opaque_binds(mut self, value: &'a [SparseImageOpaqueMemoryBindInfo<'a>]) -> Self {
+    pub fn image_opaque_binds(
+        mut self,
+        value: &'a [SparseImageOpaqueMemoryBindInfo<'a>],
+    ) -> Self {
         self.raw.image_opaque_bind_count = value.len() as _;
         self.raw.p_image_opaque_binds = value.as_ptr().cast();
         self
@@ -1506,10 +1514,7 @@ impl<'a> BlitImageInfo2<'a> {
         let mut raw: vk::BlitImageInfo2<'a> = Default::default();
         raw.src_image = src_image.raw();
         raw.dst_image = dst_image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -1807,10 +1812,7 @@ impl<'a> BufferDeviceAddressInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::BufferDeviceAddressInfo<'a> = Default::default();
         raw.buffer = buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `buffer`.
     #[inline]
@@ -1987,10 +1989,7 @@ impl<'a> BufferMemoryBarrier<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::BufferMemoryBarrier<'a> = Default::default();
         raw.buffer = buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcAccessMask`.
     #[inline]
@@ -2216,10 +2215,7 @@ impl<'a> BufferMemoryBarrier2<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::BufferMemoryBarrier2<'a> = Default::default();
         raw.buffer = buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcStageMask`.
     #[inline]
@@ -2330,10 +2326,7 @@ impl<'a> BufferMemoryRequirementsInfo2<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::BufferMemoryRequirementsInfo2<'a> = Default::default();
         raw.buffer = buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `buffer`.
     #[inline]
@@ -2424,7 +2417,9 @@ impl<'a> BufferOpaqueCaptureAddressCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferOpaqueCaptureAddressCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::BufferOpaqueCaptureAddressCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -2440,7 +2435,8 @@ impl<'a> core::ops::Deref for BufferOpaqueCaptureAddressCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BufferCreateInfo<'b>> for BufferOpaqueCaptureAddressCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<BufferCreateInfo<'b>>
+for BufferOpaqueCaptureAddressCreateInfo<'a> {}
 /**Safe counterpart of [`vk::BufferViewCreateInfo`].
 
 # Valid usage
@@ -2480,10 +2476,7 @@ impl<'a> BufferViewCreateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::BufferViewCreateInfo<'a> = Default::default();
         raw.buffer = buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -2571,10 +2564,7 @@ impl<'a> CommandBufferAllocateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::CommandBufferAllocateInfo<'a> = Default::default();
         raw.command_pool = command_pool.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `commandPool`.
     #[inline]
@@ -2666,10 +2656,15 @@ impl<'a> CommandBufferBeginInfo<'a> {
     }
     ///Sets `pInheritanceInfo`.
     #[inline]
-    pub fn inheritance_info(mut self, value: Option<&'a CommandBufferInheritanceInfo<'a>>) -> Self {
-        self.raw.p_inheritance_info = value.map_or(core::ptr::null(), |value| {
-            value as *const CommandBufferInheritanceInfo<'a> as *const _
-        });
+    pub fn inheritance_info(
+        mut self,
+        value: Option<&'a CommandBufferInheritanceInfo<'a>>,
+    ) -> Self {
+        self.raw.p_inheritance_info = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const CommandBufferInheritanceInfo<'a> as *const _,
+            );
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
@@ -2771,7 +2766,10 @@ impl<'a> CommandBufferInheritanceInfo<'a> {
     }
     ///Sets `pipelineStatistics`.
     #[inline]
-    pub fn pipeline_statistics(mut self, value: vk::QueryPipelineStatisticFlags) -> Self {
+    pub fn pipeline_statistics(
+        mut self,
+        value: vk::QueryPipelineStatisticFlags,
+    ) -> Self {
         self.raw.pipeline_statistics = value;
         self
     }
@@ -2910,7 +2908,9 @@ impl<'a> CommandBufferInheritanceRenderingInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CommandBufferInheritanceRenderingInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::CommandBufferInheritanceRenderingInfo<'a> {
         &mut self.raw
     }
 }
@@ -2927,9 +2927,7 @@ impl<'a> core::ops::Deref for CommandBufferInheritanceRenderingInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<CommandBufferInheritanceInfo<'b>>
-    for CommandBufferInheritanceRenderingInfo<'a>
-{
-}
+for CommandBufferInheritanceRenderingInfo<'a> {}
 /**Safe counterpart of [`vk::CommandBufferSubmitInfo`].
 
 # Valid usage
@@ -2953,10 +2951,7 @@ impl<'a> CommandBufferSubmitInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::CommandBufferSubmitInfo<'a> = Default::default();
         raw.command_buffer = command_buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `commandBuffer`.
     #[inline]
@@ -3124,10 +3119,7 @@ impl<'a> ComputePipelineCreateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::ComputePipelineCreateInfo<'a> = Default::default();
         raw.layout = layout.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -3222,10 +3214,7 @@ impl<'a> CopyBufferInfo2<'a> {
         let mut raw: vk::CopyBufferInfo2<'a> = Default::default();
         raw.src_buffer = src_buffer.raw();
         raw.dst_buffer = dst_buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcBuffer`.
     #[inline]
@@ -3351,10 +3340,7 @@ impl<'a> CopyBufferToImageInfo2<'a> {
         let mut raw: vk::CopyBufferToImageInfo2<'a> = Default::default();
         raw.src_buffer = src_buffer.raw();
         raw.dst_image = dst_image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcBuffer`.
     #[inline]
@@ -3458,10 +3444,7 @@ impl<'a> CopyDescriptorSet<'a> {
         let mut raw: vk::CopyDescriptorSet<'a> = Default::default();
         raw.src_set = src_set.raw();
         raw.dst_set = dst_set.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcSet`.
     #[inline]
@@ -3640,10 +3623,7 @@ impl<'a> CopyImageInfo2<'a> {
         let mut raw: vk::CopyImageInfo2<'a> = Default::default();
         raw.src_image = src_image.raw();
         raw.dst_image = dst_image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -3780,10 +3760,7 @@ impl<'a> CopyImageToBufferInfo2<'a> {
         let mut raw: vk::CopyImageToBufferInfo2<'a> = Default::default();
         raw.src_image = src_image.raw();
         raw.dst_buffer = dst_buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -3851,14 +3828,14 @@ impl<'a> core::ops::Deref for CopyImageToBufferInfo2<'a> {
 - `VUID-VkDebugUtilsLabelEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsLabelEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDebugUtilsLabelEXT-pLabelName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DebugUtilsLabelEXT<'a> {
     raw: vk::DebugUtilsLabelEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsLabelEXT<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -3867,10 +3844,7 @@ impl<'a> DebugUtilsLabelEXT<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::DebugUtilsLabelEXT<'a> = Default::default();
         raw.p_label_name = label_name.as_ptr();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `pLabelName`.
     #[inline]
@@ -3911,7 +3885,7 @@ impl<'a> DebugUtilsLabelEXT<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> core::ops::Deref for DebugUtilsLabelEXT<'a> {
     type Target = vk::DebugUtilsLabelEXT<'a>;
     #[inline]
@@ -3932,14 +3906,14 @@ impl<'a> core::ops::Deref for DebugUtilsLabelEXT<'a> {
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pQueueLabels-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pCmdBufLabels-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pObjects-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DebugUtilsMessengerCallbackDataEXT<'a> {
     raw: vk::DebugUtilsMessengerCallbackDataEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -3948,10 +3922,7 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::DebugUtilsMessengerCallbackDataEXT<'a> = Default::default();
         raw.p_message = message.as_ptr();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -4021,11 +3992,13 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DebugUtilsMessengerCallbackDataEXT<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DebugUtilsMessengerCallbackDataEXT<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> core::ops::Deref for DebugUtilsMessengerCallbackDataEXT<'a> {
     type Target = vk::DebugUtilsMessengerCallbackDataEXT<'a>;
     #[inline]
@@ -4045,14 +4018,14 @@ impl<'a> core::ops::Deref for DebugUtilsMessengerCallbackDataEXT<'a> {
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DebugUtilsMessengerCreateInfoEXT<'a> {
     raw: vk::DebugUtilsMessengerCreateInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -4070,7 +4043,10 @@ impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
     }
     ///Sets `messageSeverity`.
     #[inline]
-    pub fn message_severity(mut self, value: vk::DebugUtilsMessageSeverityFlagsEXT) -> Self {
+    pub fn message_severity(
+        mut self,
+        value: vk::DebugUtilsMessageSeverityFlagsEXT,
+    ) -> Self {
         self.raw.message_severity = value;
         self
     }
@@ -4082,7 +4058,10 @@ impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
     }
     ///Sets `pfnUserCallback`.
     #[inline]
-    pub fn pfn_user_callback(mut self, value: vk::PFN_vkDebugUtilsMessengerCallbackEXT) -> Self {
+    pub fn pfn_user_callback(
+        mut self,
+        value: vk::PFN_vkDebugUtilsMessengerCallbackEXT,
+    ) -> Self {
         self.raw.pfn_user_callback = value;
         self
     }
@@ -4115,17 +4094,19 @@ impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DebugUtilsMessengerCreateInfoEXT<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DebugUtilsMessengerCreateInfoEXT<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Default for DebugUtilsMessengerCreateInfoEXT<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> core::ops::Deref for DebugUtilsMessengerCreateInfoEXT<'a> {
     type Target = vk::DebugUtilsMessengerCreateInfoEXT<'a>;
     #[inline]
@@ -4133,8 +4114,9 @@ impl<'a> core::ops::Deref for DebugUtilsMessengerCreateInfoEXT<'a> {
         &self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
-unsafe impl<'a, 'b> Extends<InstanceCreateInfo<'b>> for DebugUtilsMessengerCreateInfoEXT<'a> {}
+#[cfg(feature = "ext_debug_utils")]
+unsafe impl<'a, 'b> Extends<InstanceCreateInfo<'b>>
+for DebugUtilsMessengerCreateInfoEXT<'a> {}
 /**Safe counterpart of [`vk::DebugUtilsObjectNameInfoEXT`].
 
 # Valid usage
@@ -4144,14 +4126,14 @@ unsafe impl<'a, 'b> Extends<InstanceCreateInfo<'b>> for DebugUtilsMessengerCreat
 - `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DebugUtilsObjectNameInfoEXT<'a> {
     raw: vk::DebugUtilsObjectNameInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsObjectNameInfoEXT<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -4206,13 +4188,13 @@ impl<'a> DebugUtilsObjectNameInfoEXT<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Default for DebugUtilsObjectNameInfoEXT<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> core::ops::Deref for DebugUtilsObjectNameInfoEXT<'a> {
     type Target = vk::DebugUtilsObjectNameInfoEXT<'a>;
     #[inline]
@@ -4220,8 +4202,9 @@ impl<'a> core::ops::Deref for DebugUtilsObjectNameInfoEXT<'a> {
         &self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
-unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>> for DebugUtilsObjectNameInfoEXT<'a> {}
+#[cfg(feature = "ext_debug_utils")]
+unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>>
+for DebugUtilsObjectNameInfoEXT<'a> {}
 /**Safe counterpart of [`vk::DebugUtilsObjectTagInfoEXT`].
 
 # Valid usage
@@ -4233,14 +4216,14 @@ unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>> for DebugUtilsObj
 - `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: user (a slice may be empty; not checked)*/
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DebugUtilsObjectTagInfoEXT<'a> {
     raw: vk::DebugUtilsObjectTagInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsObjectTagInfoEXT<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -4302,13 +4285,13 @@ impl<'a> DebugUtilsObjectTagInfoEXT<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl Default for DebugUtilsObjectTagInfoEXT<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "ext_debug_utils"))]
+#[cfg(feature = "ext_debug_utils")]
 impl<'a> core::ops::Deref for DebugUtilsObjectTagInfoEXT<'a> {
     type Target = vk::DebugUtilsObjectTagInfoEXT<'a>;
     #[inline]
@@ -4356,14 +4339,20 @@ impl<'a> DependencyInfo<'a> {
     }
     ///Sets `pBufferMemoryBarriers`.
     #[inline]
-    pub fn buffer_memory_barriers(mut self, value: &'a [BufferMemoryBarrier2<'a>]) -> Self {
+    pub fn buffer_memory_barriers(
+        mut self,
+        value: &'a [BufferMemoryBarrier2<'a>],
+    ) -> Self {
         self.raw.buffer_memory_barrier_count = value.len() as _;
         self.raw.p_buffer_memory_barriers = value.as_ptr().cast();
         self
     }
     ///Sets `pImageMemoryBarriers`.
     #[inline]
-    pub fn image_memory_barriers(mut self, value: &'a [ImageMemoryBarrier2<'a>]) -> Self {
+    pub fn image_memory_barriers(
+        mut self,
+        value: &'a [ImageMemoryBarrier2<'a>],
+    ) -> Self {
         self.raw.image_memory_barrier_count = value.len() as _;
         self.raw.p_image_memory_barriers = value.as_ptr().cast();
         self
@@ -4504,10 +4493,7 @@ impl<'a> DescriptorImageInfo<'a> {
         let mut raw: vk::DescriptorImageInfo = Default::default();
         raw.sampler = sampler.raw();
         raw.image_view = image_view.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `sampler`.
     #[inline]
@@ -4682,7 +4668,9 @@ impl<'a> DescriptorPoolInlineUniformBlockCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorPoolInlineUniformBlockCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DescriptorPoolInlineUniformBlockCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -4699,9 +4687,7 @@ impl<'a> core::ops::Deref for DescriptorPoolInlineUniformBlockCreateInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<DescriptorPoolCreateInfo<'b>>
-    for DescriptorPoolInlineUniformBlockCreateInfo<'a>
-{
-}
+for DescriptorPoolInlineUniformBlockCreateInfo<'a> {}
 /**Safe counterpart of [`vk::DescriptorSetAllocateInfo`].
 
 # Valid usage
@@ -4733,10 +4719,7 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::DescriptorSetAllocateInfo<'a> = Default::default();
         raw.descriptor_pool = descriptor_pool.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `descriptorPool`.
     #[inline]
@@ -4746,7 +4729,10 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
     }
     ///Sets `pSetLayouts`.
     #[inline]
-    pub fn set_layouts(mut self, value: &'a HandleSlice<'a, DescriptorSetLayout>) -> Self {
+    pub fn set_layouts(
+        mut self,
+        value: &'a HandleSlice<'a, DescriptorSetLayout>,
+    ) -> Self {
         self.raw.descriptor_set_count = value.len() as _;
         self.raw.p_set_layouts = value.as_ptr();
         self
@@ -4827,6 +4813,12 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
     #[inline]
     pub fn descriptor_type(mut self, value: vk::DescriptorType) -> Self {
         self.raw.descriptor_type = value;
+        self
+    }
+    ///Sets `descriptorCount`.
+    #[inline]
+    pub fn descriptor_count(mut self, value: u32) -> Self {
+        self.raw.descriptor_count = value;
         self
     }
     ///Sets `stageFlags`.
@@ -4933,7 +4925,9 @@ impl<'a> DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -4950,9 +4944,7 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<DescriptorSetLayoutCreateInfo<'b>>
-    for DescriptorSetLayoutBindingFlagsCreateInfo<'a>
-{
-}
+for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {}
 /**Safe counterpart of [`vk::DescriptorSetLayoutCreateInfo`].
 
 # Valid usage
@@ -5179,9 +5171,7 @@ impl<'a> core::ops::Deref for DescriptorSetVariableDescriptorCountAllocateInfo<'
     }
 }
 unsafe impl<'a, 'b> Extends<DescriptorSetAllocateInfo<'b>>
-    for DescriptorSetVariableDescriptorCountAllocateInfo<'a>
-{
-}
+for DescriptorSetVariableDescriptorCountAllocateInfo<'a> {}
 /**Safe counterpart of [`vk::DescriptorSetVariableDescriptorCountLayoutSupport`].
 
 # Valid usage
@@ -5244,9 +5234,7 @@ impl<'a> core::ops::Deref for DescriptorSetVariableDescriptorCountLayoutSupport<
     }
 }
 unsafe impl<'a, 'b> Extends<DescriptorSetLayoutSupport<'b>>
-    for DescriptorSetVariableDescriptorCountLayoutSupport<'a>
-{
-}
+for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 /**Safe counterpart of [`vk::DescriptorUpdateTemplateCreateInfo`].
 
 # Valid usage
@@ -5281,10 +5269,7 @@ impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
         let mut raw: vk::DescriptorUpdateTemplateCreateInfo<'a> = Default::default();
         raw.descriptor_set_layout = descriptor_set_layout.raw();
         raw.pipeline_layout = pipeline_layout.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -5355,7 +5340,9 @@ impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorUpdateTemplateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DescriptorUpdateTemplateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -5390,10 +5377,7 @@ impl<'a> DeviceBufferMemoryRequirements<'a> {
             let value = create_info;
             value as *const BufferCreateInfo<'a> as *const _
         };
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `pCreateInfo`.
     #[inline]
@@ -5515,10 +5499,15 @@ impl<'a> DeviceCreateInfo<'a> {
     }
     ///Sets `pEnabledFeatures`.
     #[inline]
-    pub fn enabled_features(mut self, value: Option<&'a vk::PhysicalDeviceFeatures>) -> Self {
-        self.raw.p_enabled_features = value.map_or(core::ptr::null(), |value| {
-            value as *const vk::PhysicalDeviceFeatures as *const _
-        });
+    pub fn enabled_features(
+        mut self,
+        value: Option<&'a vk::PhysicalDeviceFeatures>,
+    ) -> Self {
+        self.raw.p_enabled_features = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const vk::PhysicalDeviceFeatures as *const _,
+            );
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
@@ -5685,7 +5674,9 @@ impl<'a> DeviceGroupCommandBufferBeginInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupCommandBufferBeginInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DeviceGroupCommandBufferBeginInfo<'a> {
         &mut self.raw
     }
 }
@@ -5701,7 +5692,8 @@ impl<'a> core::ops::Deref for DeviceGroupCommandBufferBeginInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<CommandBufferBeginInfo<'b>> for DeviceGroupCommandBufferBeginInfo<'a> {}
+unsafe impl<'a, 'b> Extends<CommandBufferBeginInfo<'b>>
+for DeviceGroupCommandBufferBeginInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupDeviceCreateInfo`].
 
 # Valid usage
@@ -5728,7 +5720,10 @@ impl<'a> DeviceGroupDeviceCreateInfo<'a> {
     }
     ///Sets `pPhysicalDevices`.
     #[inline]
-    pub fn physical_devices(mut self, value: &'a HandleSlice<'a, PhysicalDevice>) -> Self {
+    pub fn physical_devices(
+        mut self,
+        value: &'a HandleSlice<'a, PhysicalDevice>,
+    ) -> Self {
         self.raw.physical_device_count = value.len() as _;
         self.raw.p_physical_devices = value.as_ptr();
         self
@@ -5779,14 +5774,14 @@ unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for DeviceGroupDeviceCreateInf
 
 - `VUID-VkDeviceGroupPresentCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupPresentCapabilitiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupPresentCapabilitiesKHR<'a> {
     raw: vk::DeviceGroupPresentCapabilitiesKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> DeviceGroupPresentCapabilitiesKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -5819,17 +5814,19 @@ impl<'a> DeviceGroupPresentCapabilitiesKHR<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupPresentCapabilitiesKHR<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DeviceGroupPresentCapabilitiesKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Default for DeviceGroupPresentCapabilitiesKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for DeviceGroupPresentCapabilitiesKHR<'a> {
     type Target = vk::DeviceGroupPresentCapabilitiesKHR<'a>;
     #[inline]
@@ -5851,14 +5848,14 @@ impl<'a> core::ops::Deref for DeviceGroupPresentCapabilitiesKHR<'a> {
 - `VUID-VkDeviceGroupPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupPresentInfoKHR<'a> {
     raw: vk::DeviceGroupPresentInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> DeviceGroupPresentInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -5908,13 +5905,13 @@ impl<'a> DeviceGroupPresentInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Default for DeviceGroupPresentInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for DeviceGroupPresentInfoKHR<'a> {
     type Target = vk::DeviceGroupPresentInfoKHR<'a>;
     #[inline]
@@ -5922,8 +5919,8 @@ impl<'a> core::ops::Deref for DeviceGroupPresentInfoKHR<'a> {
         &self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
+#[cfg(feature = "khr_swapchain")]
 unsafe impl<'a, 'b> Extends<PresentInfoKHR<'b>> for DeviceGroupPresentInfoKHR<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupRenderPassBeginInfo`].
 
@@ -6006,7 +6003,8 @@ impl<'a> core::ops::Deref for DeviceGroupRenderPassBeginInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassBeginInfo<'b>> for DeviceGroupRenderPassBeginInfo<'a> {}
+unsafe impl<'a, 'b> Extends<RenderPassBeginInfo<'b>>
+for DeviceGroupRenderPassBeginInfo<'a> {}
 unsafe impl<'a, 'b> Extends<RenderingInfo<'b>> for DeviceGroupRenderPassBeginInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupSubmitInfo`].
 
@@ -6104,14 +6102,14 @@ unsafe impl<'a, 'b> Extends<SubmitInfo<'b>> for DeviceGroupSubmitInfo<'a> {}
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupSwapchainCreateInfoKHR<'a> {
     raw: vk::DeviceGroupSwapchainCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> DeviceGroupSwapchainCreateInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -6150,17 +6148,19 @@ impl<'a> DeviceGroupSwapchainCreateInfoKHR<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupSwapchainCreateInfoKHR<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DeviceGroupSwapchainCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Default for DeviceGroupSwapchainCreateInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for DeviceGroupSwapchainCreateInfoKHR<'a> {
     type Target = vk::DeviceGroupSwapchainCreateInfoKHR<'a>;
     #[inline]
@@ -6168,9 +6168,10 @@ impl<'a> core::ops::Deref for DeviceGroupSwapchainCreateInfoKHR<'a> {
         &self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
-#[cfg(all(feature = "khr_swapchain"))]
-unsafe impl<'a, 'b> Extends<SwapchainCreateInfoKHR<'b>> for DeviceGroupSwapchainCreateInfoKHR<'a> {}
+#[cfg(feature = "khr_swapchain")]
+#[cfg(feature = "khr_swapchain")]
+unsafe impl<'a, 'b> Extends<SwapchainCreateInfoKHR<'b>>
+for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 /**Safe counterpart of [`vk::DeviceImageMemoryRequirements`].
 
 # Valid usage
@@ -6202,10 +6203,7 @@ impl<'a> DeviceImageMemoryRequirements<'a> {
             let value = create_info;
             value as *const ImageCreateInfo<'a> as *const _
         };
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `pCreateInfo`.
     #[inline]
@@ -6275,10 +6273,7 @@ impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::DeviceMemoryOpaqueCaptureAddressInfo<'a> = Default::default();
         raw.memory = memory.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `memory`.
     #[inline]
@@ -6309,7 +6304,9 @@ impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceMemoryOpaqueCaptureAddressInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::DeviceMemoryOpaqueCaptureAddressInfo<'a> {
         &mut self.raw
     }
 }
@@ -7008,7 +7005,8 @@ impl<'a> core::ops::Deref for ExternalImageFormatProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageFormatProperties2<'b>> for ExternalImageFormatProperties<'a> {}
+unsafe impl<'a, 'b> Extends<ImageFormatProperties2<'b>>
+for ExternalImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::ExternalMemoryBufferCreateInfo`].
 
 # Valid usage
@@ -7075,7 +7073,8 @@ impl<'a> core::ops::Deref for ExternalMemoryBufferCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BufferCreateInfo<'b>> for ExternalMemoryBufferCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<BufferCreateInfo<'b>>
+for ExternalMemoryBufferCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ExternalMemoryImageCreateInfo`].
 
 # Valid usage
@@ -7547,7 +7546,9 @@ impl<'a> FramebufferAttachmentsCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::FramebufferAttachmentsCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::FramebufferAttachmentsCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -7563,7 +7564,8 @@ impl<'a> core::ops::Deref for FramebufferAttachmentsCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<FramebufferCreateInfo<'b>> for FramebufferAttachmentsCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<FramebufferCreateInfo<'b>>
+for FramebufferAttachmentsCreateInfo<'a> {}
 /**Safe counterpart of [`vk::FramebufferCreateInfo`].
 
 # Valid usage
@@ -7646,10 +7648,7 @@ impl<'a> FramebufferCreateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::FramebufferCreateInfo<'a> = Default::default();
         raw.render_pass = render_pass.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -8046,6 +8045,12 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         self.raw.flags = value;
         self
     }
+    ///Sets `stageCount`.
+    #[inline]
+    pub fn stage_count(mut self, value: u32) -> Self {
+        self.raw.stage_count = value;
+        self
+    }
     ///Sets `pStages`.
     #[inline]
     pub fn stages(mut self, value: &'a [PipelineShaderStageCreateInfo<'a>]) -> Self {
@@ -8059,9 +8064,13 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineVertexInputStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_vertex_input_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineVertexInputStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_vertex_input_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| {
+                    value as *const PipelineVertexInputStateCreateInfo<'a> as *const _
+                },
+            );
         self
     }
     ///Sets `pInputAssemblyState`.
@@ -8070,9 +8079,13 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineInputAssemblyStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_input_assembly_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineInputAssemblyStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_input_assembly_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| {
+                    value as *const PipelineInputAssemblyStateCreateInfo<'a> as *const _
+                },
+            );
         self
     }
     ///Sets `pTessellationState`.
@@ -8081,9 +8094,13 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineTessellationStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_tessellation_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineTessellationStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_tessellation_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| {
+                    value as *const PipelineTessellationStateCreateInfo<'a> as *const _
+                },
+            );
         self
     }
     ///Sets `pViewportState`.
@@ -8092,9 +8109,11 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineViewportStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_viewport_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineViewportStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_viewport_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const PipelineViewportStateCreateInfo<'a> as *const _,
+            );
         self
     }
     ///Sets `pRasterizationState`.
@@ -8103,9 +8122,13 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineRasterizationStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_rasterization_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineRasterizationStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_rasterization_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| {
+                    value as *const PipelineRasterizationStateCreateInfo<'a> as *const _
+                },
+            );
         self
     }
     ///Sets `pMultisampleState`.
@@ -8114,9 +8137,13 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineMultisampleStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_multisample_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineMultisampleStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_multisample_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| {
+                    value as *const PipelineMultisampleStateCreateInfo<'a> as *const _
+                },
+            );
         self
     }
     ///Sets `pDepthStencilState`.
@@ -8125,9 +8152,13 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineDepthStencilStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_depth_stencil_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineDepthStencilStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_depth_stencil_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| {
+                    value as *const PipelineDepthStencilStateCreateInfo<'a> as *const _
+                },
+            );
         self
     }
     ///Sets `pColorBlendState`.
@@ -8136,17 +8167,24 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         mut self,
         value: Option<&'a PipelineColorBlendStateCreateInfo<'a>>,
     ) -> Self {
-        self.raw.p_color_blend_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineColorBlendStateCreateInfo<'a> as *const _
-        });
+        self.raw.p_color_blend_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const PipelineColorBlendStateCreateInfo<'a> as *const _,
+            );
         self
     }
     ///Sets `pDynamicState`.
     #[inline]
-    pub fn dynamic_state(mut self, value: Option<&'a PipelineDynamicStateCreateInfo<'a>>) -> Self {
-        self.raw.p_dynamic_state = value.map_or(core::ptr::null(), |value| {
-            value as *const PipelineDynamicStateCreateInfo<'a> as *const _
-        });
+    pub fn dynamic_state(
+        mut self,
+        value: Option<&'a PipelineDynamicStateCreateInfo<'a>>,
+    ) -> Self {
+        self.raw.p_dynamic_state = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const PipelineDynamicStateCreateInfo<'a> as *const _,
+            );
         self
     }
     ///Sets `layout`.
@@ -8732,9 +8770,11 @@ impl<'a> core::ops::Deref for ImageFormatListCreateInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageFormatListCreateInfo<'a> {}
-#[cfg(all(feature = "khr_swapchain"))]
-unsafe impl<'a, 'b> Extends<SwapchainCreateInfoKHR<'b>> for ImageFormatListCreateInfo<'a> {}
-unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>> for ImageFormatListCreateInfo<'a> {}
+#[cfg(feature = "khr_swapchain")]
+unsafe impl<'a, 'b> Extends<SwapchainCreateInfoKHR<'b>>
+for ImageFormatListCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
+for ImageFormatListCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ImageFormatProperties2`].
 
 # Valid usage
@@ -8866,10 +8906,7 @@ impl<'a> ImageMemoryBarrier<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::ImageMemoryBarrier<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcAccessMask`.
     #[inline]
@@ -9141,10 +9178,7 @@ impl<'a> ImageMemoryBarrier2<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::ImageMemoryBarrier2<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcStageMask`.
     #[inline]
@@ -9268,10 +9302,7 @@ impl<'a> ImageMemoryRequirementsInfo2<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::ImageMemoryRequirementsInfo2<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `image`.
     #[inline]
@@ -9365,7 +9396,9 @@ impl<'a> ImagePlaneMemoryRequirementsInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImagePlaneMemoryRequirementsInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::ImagePlaneMemoryRequirementsInfo<'a> {
         &mut self.raw
     }
 }
@@ -9382,9 +9415,7 @@ impl<'a> core::ops::Deref for ImagePlaneMemoryRequirementsInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<ImageMemoryRequirementsInfo2<'b>>
-    for ImagePlaneMemoryRequirementsInfo<'a>
-{
-}
+for ImagePlaneMemoryRequirementsInfo<'a> {}
 /**Safe counterpart of [`vk::ImageResolve2`].
 
 # Valid usage
@@ -9500,10 +9531,7 @@ impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::ImageSparseMemoryRequirementsInfo2<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `image`.
     #[inline]
@@ -9534,7 +9562,9 @@ impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageSparseMemoryRequirementsInfo2<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::ImageSparseMemoryRequirementsInfo2<'a> {
         &mut self.raw
     }
 }
@@ -9615,9 +9645,7 @@ impl<'a> core::ops::Deref for ImageStencilUsageCreateInfo<'a> {
 }
 unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageStencilUsageCreateInfo<'a> {}
 unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
-    for ImageStencilUsageCreateInfo<'a>
-{
-}
+for ImageStencilUsageCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ImageSwapchainCreateInfoKHR`].
 
 # Valid usage
@@ -9625,14 +9653,14 @@ unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
 - `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageSwapchainCreateInfoKHR<'a> {
     raw: vk::ImageSwapchainCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> ImageSwapchainCreateInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -9675,13 +9703,13 @@ impl<'a> ImageSwapchainCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Default for ImageSwapchainCreateInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for ImageSwapchainCreateInfoKHR<'a> {
     type Target = vk::ImageSwapchainCreateInfoKHR<'a>;
     #[inline]
@@ -9689,7 +9717,7 @@ impl<'a> core::ops::Deref for ImageSwapchainCreateInfoKHR<'a> {
         &self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageSwapchainCreateInfoKHR<'a> {}
 /**Safe counterpart of [`vk::ImageViewCreateInfo`].
 
@@ -9808,10 +9836,7 @@ impl<'a> ImageViewCreateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::ImageViewCreateInfo<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -9991,9 +10016,11 @@ impl<'a> InstanceCreateInfo<'a> {
     ///Sets `pApplicationInfo`.
     #[inline]
     pub fn application_info(mut self, value: Option<&'a ApplicationInfo<'a>>) -> Self {
-        self.raw.p_application_info = value.map_or(core::ptr::null(), |value| {
-            value as *const ApplicationInfo<'a> as *const _
-        });
+        self.raw.p_application_info = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const ApplicationInfo<'a> as *const _,
+            );
         self
     }
     ///Sets `ppEnabledLayerNames`.
@@ -10076,10 +10103,7 @@ impl<'a> MappedMemoryRange<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::MappedMemoryRange<'a> = Default::default();
         raw.memory = memory.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `memory`.
     #[inline]
@@ -10747,7 +10771,8 @@ impl<'a> core::ops::Deref for MemoryDedicatedRequirements<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryRequirements2<'b>> for MemoryDedicatedRequirements<'a> {}
+unsafe impl<'a, 'b> Extends<MemoryRequirements2<'b>>
+for MemoryDedicatedRequirements<'a> {}
 /**Safe counterpart of [`vk::MemoryOpaqueCaptureAddressAllocateInfo`].
 
 # Valid usage
@@ -10797,7 +10822,9 @@ impl<'a> MemoryOpaqueCaptureAddressAllocateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryOpaqueCaptureAddressAllocateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::MemoryOpaqueCaptureAddressAllocateInfo<'a> {
         &mut self.raw
     }
 }
@@ -10813,7 +10840,8 @@ impl<'a> core::ops::Deref for MemoryOpaqueCaptureAddressAllocateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>> for MemoryOpaqueCaptureAddressAllocateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>>
+for MemoryOpaqueCaptureAddressAllocateInfo<'a> {}
 /**Safe counterpart of [`vk::MemoryRequirements2`].
 
 # Valid usage
@@ -10882,14 +10910,14 @@ impl<'a> core::ops::Deref for MemoryRequirements2<'a> {
 - `VUID-VkMetalSurfaceCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMetalSurfaceCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMetalSurfaceCreateInfoEXT-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
-#[cfg(all(feature = "ext_metal_surface"))]
+#[cfg(feature = "ext_metal_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MetalSurfaceCreateInfoEXT<'a> {
     raw: vk::MetalSurfaceCreateInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "ext_metal_surface"))]
+#[cfg(feature = "ext_metal_surface")]
 impl<'a> MetalSurfaceCreateInfoEXT<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -10932,13 +10960,13 @@ impl<'a> MetalSurfaceCreateInfoEXT<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "ext_metal_surface"))]
+#[cfg(feature = "ext_metal_surface")]
 impl Default for MetalSurfaceCreateInfoEXT<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "ext_metal_surface"))]
+#[cfg(feature = "ext_metal_surface")]
 impl<'a> core::ops::Deref for MetalSurfaceCreateInfoEXT<'a> {
     type Target = vk::MetalSurfaceCreateInfoEXT<'a>;
     #[inline]
@@ -11013,7 +11041,9 @@ impl<'a> PhysicalDevice16BitStorageFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDevice16BitStorageFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDevice16BitStorageFeatures<'a> {
         &mut self.raw
     }
 }
@@ -11030,10 +11060,9 @@ impl<'a> core::ops::Deref for PhysicalDevice16BitStorageFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDevice16BitStorageFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDevice16BitStorageFeatures<'a> {}
+for PhysicalDevice16BitStorageFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDevice16BitStorageFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevice8BitStorageFeatures`].
 
 # Valid usage
@@ -11095,7 +11124,9 @@ impl<'a> PhysicalDevice8BitStorageFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDevice8BitStorageFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDevice8BitStorageFeatures<'a> {
         &mut self.raw
     }
 }
@@ -11111,8 +11142,10 @@ impl<'a> core::ops::Deref for PhysicalDevice8BitStorageFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>> for PhysicalDevice8BitStorageFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDevice8BitStorageFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+for PhysicalDevice8BitStorageFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDevice8BitStorageFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceBufferDeviceAddressFeatures`].
 
 # Valid usage
@@ -11174,7 +11207,9 @@ impl<'a> PhysicalDeviceBufferDeviceAddressFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceBufferDeviceAddressFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceBufferDeviceAddressFeatures<'a> {
         &mut self.raw
     }
 }
@@ -11191,13 +11226,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceBufferDeviceAddressFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceBufferDeviceAddressFeatures<'a>
-{
-}
+for PhysicalDeviceBufferDeviceAddressFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceBufferDeviceAddressFeatures<'a>
-{
-}
+for PhysicalDeviceBufferDeviceAddressFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDepthStencilResolveProperties`].
 
 # Valid usage
@@ -11260,9 +11291,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceDepthStencilResolveProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceDepthStencilResolveProperties<'a>
-{
-}
+for PhysicalDeviceDepthStencilResolveProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDescriptorIndexingFeatures`].
 
 # Valid usage
@@ -11285,49 +11314,73 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
     }
     ///Sets `shaderInputAttachmentArrayDynamicIndexing`.
     #[inline]
-    pub fn shader_input_attachment_array_dynamic_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_input_attachment_array_dynamic_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_input_attachment_array_dynamic_indexing = value;
         self
     }
     ///Sets `shaderUniformTexelBufferArrayDynamicIndexing`.
     #[inline]
-    pub fn shader_uniform_texel_buffer_array_dynamic_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_uniform_texel_buffer_array_dynamic_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_uniform_texel_buffer_array_dynamic_indexing = value;
         self
     }
     ///Sets `shaderStorageTexelBufferArrayDynamicIndexing`.
     #[inline]
-    pub fn shader_storage_texel_buffer_array_dynamic_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_storage_texel_buffer_array_dynamic_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_storage_texel_buffer_array_dynamic_indexing = value;
         self
     }
     ///Sets `shaderUniformBufferArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_uniform_buffer_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_uniform_buffer_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_uniform_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderSampledImageArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_sampled_image_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_sampled_image_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_sampled_image_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderStorageBufferArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_storage_buffer_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_storage_buffer_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_storage_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderStorageImageArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_storage_image_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_storage_image_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_storage_image_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderInputAttachmentArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_input_attachment_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_input_attachment_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_input_attachment_array_non_uniform_indexing = value;
         self
     }
@@ -11337,8 +11390,7 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .shader_uniform_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_uniform_texel_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderStorageTexelBufferArrayNonUniformIndexing`.
@@ -11347,8 +11399,7 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .shader_storage_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_storage_texel_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `descriptorBindingUniformBufferUpdateAfterBind`.
@@ -11362,13 +11413,19 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
     }
     ///Sets `descriptorBindingSampledImageUpdateAfterBind`.
     #[inline]
-    pub fn descriptor_binding_sampled_image_update_after_bind(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_sampled_image_update_after_bind(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_sampled_image_update_after_bind = value;
         self
     }
     ///Sets `descriptorBindingStorageImageUpdateAfterBind`.
     #[inline]
-    pub fn descriptor_binding_storage_image_update_after_bind(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_storage_image_update_after_bind(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_storage_image_update_after_bind = value;
         self
     }
@@ -11387,8 +11444,7 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .descriptor_binding_uniform_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_uniform_texel_buffer_update_after_bind = value;
         self
     }
     ///Sets `descriptorBindingStorageTexelBufferUpdateAfterBind`.
@@ -11397,13 +11453,15 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .descriptor_binding_storage_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_storage_texel_buffer_update_after_bind = value;
         self
     }
     ///Sets `descriptorBindingUpdateUnusedWhilePending`.
     #[inline]
-    pub fn descriptor_binding_update_unused_while_pending(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_update_unused_while_pending(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_update_unused_while_pending = value;
         self
     }
@@ -11415,7 +11473,10 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
     }
     ///Sets `descriptorBindingVariableDescriptorCount`.
     #[inline]
-    pub fn descriptor_binding_variable_descriptor_count(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_variable_descriptor_count(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_variable_descriptor_count = value;
         self
     }
@@ -11448,7 +11509,9 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceDescriptorIndexingFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceDescriptorIndexingFeatures<'a> {
         &mut self.raw
     }
 }
@@ -11465,10 +11528,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceDescriptorIndexingFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceDescriptorIndexingFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
+for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDescriptorIndexingProperties`].
 
 # Valid usage
@@ -11512,7 +11574,9 @@ impl<'a> PhysicalDeviceDescriptorIndexingProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceDescriptorIndexingProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceDescriptorIndexingProperties<'a> {
         &mut self.raw
     }
 }
@@ -11529,9 +11593,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceDescriptorIndexingProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceDescriptorIndexingProperties<'a>
-{
-}
+for PhysicalDeviceDescriptorIndexingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDriverProperties`].
 
 # Valid usage
@@ -11591,7 +11653,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceDriverProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>> for PhysicalDeviceDriverProperties<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+for PhysicalDeviceDriverProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDynamicRenderingFeatures`].
 
 # Valid usage
@@ -11641,7 +11704,9 @@ impl<'a> PhysicalDeviceDynamicRenderingFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceDynamicRenderingFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceDynamicRenderingFeatures<'a> {
         &mut self.raw
     }
 }
@@ -11658,10 +11723,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceDynamicRenderingFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceDynamicRenderingFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceDynamicRenderingFeatures<'a> {}
+for PhysicalDeviceDynamicRenderingFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceDynamicRenderingFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceExternalBufferInfo`].
 
 # Valid usage
@@ -11728,7 +11792,9 @@ impl<'a> PhysicalDeviceExternalBufferInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceExternalBufferInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceExternalBufferInfo<'a> {
         &mut self.raw
     }
 }
@@ -11861,7 +11927,9 @@ impl<'a> PhysicalDeviceExternalImageFormatInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceExternalImageFormatInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceExternalImageFormatInfo<'a> {
         &mut self.raw
     }
 }
@@ -11878,9 +11946,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalImageFormatInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
-    for PhysicalDeviceExternalImageFormatInfo<'a>
-{
-}
+for PhysicalDeviceExternalImageFormatInfo<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceExternalSemaphoreInfo`].
 
 # Valid usage
@@ -11933,7 +11999,9 @@ impl<'a> PhysicalDeviceExternalSemaphoreInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceExternalSemaphoreInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceExternalSemaphoreInfo<'a> {
         &mut self.raw
     }
 }
@@ -12058,7 +12126,9 @@ impl<'a> PhysicalDeviceFloatControlsProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceFloatControlsProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceFloatControlsProperties<'a> {
         &mut self.raw
     }
 }
@@ -12075,9 +12145,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceFloatControlsProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceFloatControlsProperties<'a>
-{
-}
+for PhysicalDeviceFloatControlsProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceGroupProperties`].
 
 # Valid usage
@@ -12187,7 +12255,9 @@ impl<'a> PhysicalDeviceHostQueryResetFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceHostQueryResetFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceHostQueryResetFeatures<'a> {
         &mut self.raw
     }
 }
@@ -12204,10 +12274,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceHostQueryResetFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceHostQueryResetFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceHostQueryResetFeatures<'a> {}
+for PhysicalDeviceHostQueryResetFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceHostQueryResetFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceIDProperties`].
 
 # Valid usage
@@ -12267,7 +12336,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceIDProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>> for PhysicalDeviceIDProperties<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+for PhysicalDeviceIDProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceImageFormatInfo2`].
 
 # Valid usage
@@ -12416,7 +12486,9 @@ impl<'a> PhysicalDeviceImageRobustnessFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceImageRobustnessFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceImageRobustnessFeatures<'a> {
         &mut self.raw
     }
 }
@@ -12433,10 +12505,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceImageRobustnessFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceImageRobustnessFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceImageRobustnessFeatures<'a> {}
+for PhysicalDeviceImageRobustnessFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceImageRobustnessFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceImagelessFramebufferFeatures`].
 
 # Valid usage
@@ -12486,7 +12557,9 @@ impl<'a> PhysicalDeviceImagelessFramebufferFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceImagelessFramebufferFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceImagelessFramebufferFeatures<'a> {
         &mut self.raw
     }
 }
@@ -12503,13 +12576,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceImagelessFramebufferFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceImagelessFramebufferFeatures<'a>
-{
-}
+for PhysicalDeviceImagelessFramebufferFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceImagelessFramebufferFeatures<'a>
-{
-}
+for PhysicalDeviceImagelessFramebufferFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceInlineUniformBlockFeatures`].
 
 # Valid usage
@@ -12542,8 +12611,7 @@ impl<'a> PhysicalDeviceInlineUniformBlockFeatures<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .descriptor_binding_inline_uniform_block_update_after_bind = value;
+        self.raw.descriptor_binding_inline_uniform_block_update_after_bind = value;
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
@@ -12569,7 +12637,9 @@ impl<'a> PhysicalDeviceInlineUniformBlockFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceInlineUniformBlockFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceInlineUniformBlockFeatures<'a> {
         &mut self.raw
     }
 }
@@ -12586,10 +12656,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceInlineUniformBlockFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceInlineUniformBlockFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceInlineUniformBlockFeatures<'a> {}
+for PhysicalDeviceInlineUniformBlockFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceInlineUniformBlockFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceInlineUniformBlockProperties`].
 
 # Valid usage
@@ -12633,7 +12702,9 @@ impl<'a> PhysicalDeviceInlineUniformBlockProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceInlineUniformBlockProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceInlineUniformBlockProperties<'a> {
         &mut self.raw
     }
 }
@@ -12650,9 +12721,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceInlineUniformBlockProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceInlineUniformBlockProperties<'a>
-{
-}
+for PhysicalDeviceInlineUniformBlockProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance3Properties`].
 
 # Valid usage
@@ -12696,7 +12765,9 @@ impl<'a> PhysicalDeviceMaintenance3Properties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceMaintenance3Properties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceMaintenance3Properties<'a> {
         &mut self.raw
     }
 }
@@ -12713,9 +12784,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceMaintenance3Properties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceMaintenance3Properties<'a>
-{
-}
+for PhysicalDeviceMaintenance3Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance4Features`].
 
 # Valid usage
@@ -12765,7 +12834,9 @@ impl<'a> PhysicalDeviceMaintenance4Features<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceMaintenance4Features<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceMaintenance4Features<'a> {
         &mut self.raw
     }
 }
@@ -12782,10 +12853,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceMaintenance4Features<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceMaintenance4Features<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceMaintenance4Features<'a> {}
+for PhysicalDeviceMaintenance4Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceMaintenance4Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance4Properties`].
 
 # Valid usage
@@ -12829,7 +12899,9 @@ impl<'a> PhysicalDeviceMaintenance4Properties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceMaintenance4Properties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceMaintenance4Properties<'a> {
         &mut self.raw
     }
 }
@@ -12846,9 +12918,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceMaintenance4Properties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceMaintenance4Properties<'a>
-{
-}
+for PhysicalDeviceMaintenance4Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMemoryProperties2`].
 
 # Valid usage
@@ -12989,8 +13059,10 @@ impl<'a> core::ops::Deref for PhysicalDeviceMultiviewFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>> for PhysicalDeviceMultiviewFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceMultiviewFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+for PhysicalDeviceMultiviewFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceMultiviewFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMultiviewProperties`].
 
 # Valid usage
@@ -13034,7 +13106,9 @@ impl<'a> PhysicalDeviceMultiviewProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceMultiviewProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceMultiviewProperties<'a> {
         &mut self.raw
     }
 }
@@ -13051,9 +13125,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceMultiviewProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceMultiviewProperties<'a>
-{
-}
+for PhysicalDeviceMultiviewProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePipelineCreationCacheControlFeatures`].
 
 # Valid usage
@@ -13122,13 +13194,9 @@ impl<'a> core::ops::Deref for PhysicalDevicePipelineCreationCacheControlFeatures
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDevicePipelineCreationCacheControlFeatures<'a>
-{
-}
+for PhysicalDevicePipelineCreationCacheControlFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDevicePipelineCreationCacheControlFeatures<'a>
-{
-}
+for PhysicalDevicePipelineCreationCacheControlFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePointClippingProperties`].
 
 # Valid usage
@@ -13172,7 +13240,9 @@ impl<'a> PhysicalDevicePointClippingProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDevicePointClippingProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDevicePointClippingProperties<'a> {
         &mut self.raw
     }
 }
@@ -13189,9 +13259,7 @@ impl<'a> core::ops::Deref for PhysicalDevicePointClippingProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDevicePointClippingProperties<'a>
-{
-}
+for PhysicalDevicePointClippingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePrivateDataFeatures`].
 
 # Valid usage
@@ -13241,7 +13309,9 @@ impl<'a> PhysicalDevicePrivateDataFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDevicePrivateDataFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDevicePrivateDataFeatures<'a> {
         &mut self.raw
     }
 }
@@ -13257,8 +13327,10 @@ impl<'a> core::ops::Deref for PhysicalDevicePrivateDataFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>> for PhysicalDevicePrivateDataFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDevicePrivateDataFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+for PhysicalDevicePrivateDataFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDevicePrivateDataFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceProperties2`].
 
 # Valid usage
@@ -13369,7 +13441,9 @@ impl<'a> PhysicalDeviceProtectedMemoryFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceProtectedMemoryFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceProtectedMemoryFeatures<'a> {
         &mut self.raw
     }
 }
@@ -13386,10 +13460,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceProtectedMemoryFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceProtectedMemoryFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceProtectedMemoryFeatures<'a> {}
+for PhysicalDeviceProtectedMemoryFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceProtectedMemoryFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceProtectedMemoryProperties`].
 
 # Valid usage
@@ -13433,7 +13506,9 @@ impl<'a> PhysicalDeviceProtectedMemoryProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceProtectedMemoryProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceProtectedMemoryProperties<'a> {
         &mut self.raw
     }
 }
@@ -13450,9 +13525,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceProtectedMemoryProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceProtectedMemoryProperties<'a>
-{
-}
+for PhysicalDeviceProtectedMemoryProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerFilterMinmaxProperties`].
 
 # Valid usage
@@ -13515,9 +13588,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceSamplerFilterMinmaxProperties<'a>
-{
-}
+for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerYcbcrConversionFeatures`].
 
 # Valid usage
@@ -13586,13 +13657,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceSamplerYcbcrConversionFeatures<'a>
-{
-}
+for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceSamplerYcbcrConversionFeatures<'a>
-{
-}
+for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceScalarBlockLayoutFeatures`].
 
 # Valid usage
@@ -13642,7 +13709,9 @@ impl<'a> PhysicalDeviceScalarBlockLayoutFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceScalarBlockLayoutFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceScalarBlockLayoutFeatures<'a> {
         &mut self.raw
     }
 }
@@ -13659,10 +13728,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceScalarBlockLayoutFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceScalarBlockLayoutFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
+for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSeparateDepthStencilLayoutsFeatures`].
 
 # Valid usage
@@ -13731,13 +13799,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a>
-{
-}
+for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a>
-{
-}
+for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderAtomicInt64Features`].
 
 # Valid usage
@@ -13793,7 +13857,9 @@ impl<'a> PhysicalDeviceShaderAtomicInt64Features<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceShaderAtomicInt64Features<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceShaderAtomicInt64Features<'a> {
         &mut self.raw
     }
 }
@@ -13810,10 +13876,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderAtomicInt64Features<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderAtomicInt64Features<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceShaderAtomicInt64Features<'a> {}
+for PhysicalDeviceShaderAtomicInt64Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceShaderAtomicInt64Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures`].
 
 # Valid usage
@@ -13857,7 +13922,9 @@ impl<'a> PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
     }
     /// The ash struct this lowers to.
     #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
+    pub fn as_raw(
+        &self,
+    ) -> &vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
         &self.raw
     }
     /// The ash struct, for a command that writes into it.
@@ -13882,13 +13949,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderDemoteToHelperInvocationFeatur
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a>
-{
-}
+for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a>
-{
-}
+for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderDrawParametersFeatures`].
 
 # Valid usage
@@ -13938,7 +14001,9 @@ impl<'a> PhysicalDeviceShaderDrawParametersFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceShaderDrawParametersFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceShaderDrawParametersFeatures<'a> {
         &mut self.raw
     }
 }
@@ -13955,13 +14020,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderDrawParametersFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderDrawParametersFeatures<'a>
-{
-}
+for PhysicalDeviceShaderDrawParametersFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceShaderDrawParametersFeatures<'a>
-{
-}
+for PhysicalDeviceShaderDrawParametersFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderFloat16Int8Features`].
 
 # Valid usage
@@ -14017,7 +14078,9 @@ impl<'a> PhysicalDeviceShaderFloat16Int8Features<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceShaderFloat16Int8Features<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceShaderFloat16Int8Features<'a> {
         &mut self.raw
     }
 }
@@ -14034,10 +14097,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderFloat16Int8Features<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderFloat16Int8Features<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceShaderFloat16Int8Features<'a> {}
+for PhysicalDeviceShaderFloat16Int8Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceShaderFloat16Int8Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderIntegerDotProductFeatures`].
 
 # Valid usage
@@ -14106,13 +14168,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderIntegerDotProductFeatures<'a> 
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderIntegerDotProductFeatures<'a>
-{
-}
+for PhysicalDeviceShaderIntegerDotProductFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceShaderIntegerDotProductFeatures<'a>
-{
-}
+for PhysicalDeviceShaderIntegerDotProductFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderIntegerDotProductProperties`].
 
 # Valid usage
@@ -14175,9 +14233,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderIntegerDotProductProperties<'a
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceShaderIntegerDotProductProperties<'a>
-{
-}
+for PhysicalDeviceShaderIntegerDotProductProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures`].
 
 # Valid usage
@@ -14246,13 +14302,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a>
-{
-}
+for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a>
-{
-}
+for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderTerminateInvocationFeatures`].
 
 # Valid usage
@@ -14321,13 +14373,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderTerminateInvocationFeatures<'a
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceShaderTerminateInvocationFeatures<'a>
-{
-}
+for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceShaderTerminateInvocationFeatures<'a>
-{
-}
+for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSparseImageFormatInfo2`].
 
 # Valid usage
@@ -14409,7 +14457,9 @@ impl<'a> PhysicalDeviceSparseImageFormatInfo2<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceSparseImageFormatInfo2<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceSparseImageFormatInfo2<'a> {
         &mut self.raw
     }
 }
@@ -14468,7 +14518,9 @@ impl<'a> PhysicalDeviceSubgroupProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceSubgroupProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceSubgroupProperties<'a> {
         &mut self.raw
     }
 }
@@ -14485,9 +14537,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceSubgroupProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceSubgroupProperties<'a>
-{
-}
+for PhysicalDeviceSubgroupProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupSizeControlFeatures`].
 
 # Valid usage
@@ -14543,7 +14593,9 @@ impl<'a> PhysicalDeviceSubgroupSizeControlFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceSubgroupSizeControlFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceSubgroupSizeControlFeatures<'a> {
         &mut self.raw
     }
 }
@@ -14560,13 +14612,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSubgroupSizeControlFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceSubgroupSizeControlFeatures<'a>
-{
-}
+for PhysicalDeviceSubgroupSizeControlFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceSubgroupSizeControlFeatures<'a>
-{
-}
+for PhysicalDeviceSubgroupSizeControlFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupSizeControlProperties`].
 
 # Valid usage
@@ -14629,9 +14677,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceSubgroupSizeControlProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceSubgroupSizeControlProperties<'a>
-{
-}
+for PhysicalDeviceSubgroupSizeControlProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSynchronization2Features`].
 
 # Valid usage
@@ -14681,7 +14727,9 @@ impl<'a> PhysicalDeviceSynchronization2Features<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceSynchronization2Features<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceSynchronization2Features<'a> {
         &mut self.raw
     }
 }
@@ -14698,10 +14746,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSynchronization2Features<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceSynchronization2Features<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceSynchronization2Features<'a> {}
+for PhysicalDeviceSynchronization2Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceSynchronization2Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTexelBufferAlignmentProperties`].
 
 # Valid usage
@@ -14764,9 +14811,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceTexelBufferAlignmentProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceTexelBufferAlignmentProperties<'a>
-{
-}
+for PhysicalDeviceTexelBufferAlignmentProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTextureCompressionASTCHDRFeatures`].
 
 # Valid usage
@@ -14835,13 +14880,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a>
-{
-}
+for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a>
-{
-}
+for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTimelineSemaphoreFeatures`].
 
 # Valid usage
@@ -14891,7 +14932,9 @@ impl<'a> PhysicalDeviceTimelineSemaphoreFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceTimelineSemaphoreFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceTimelineSemaphoreFeatures<'a> {
         &mut self.raw
     }
 }
@@ -14908,10 +14951,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceTimelineSemaphoreFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceTimelineSemaphoreFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
+for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTimelineSemaphoreProperties`].
 
 # Valid usage
@@ -14955,7 +14997,9 @@ impl<'a> PhysicalDeviceTimelineSemaphoreProperties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceTimelineSemaphoreProperties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceTimelineSemaphoreProperties<'a> {
         &mut self.raw
     }
 }
@@ -14972,9 +15016,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceTimelineSemaphoreProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceTimelineSemaphoreProperties<'a>
-{
-}
+for PhysicalDeviceTimelineSemaphoreProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceToolProperties`].
 
 # Valid usage
@@ -15103,13 +15145,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceUniformBufferStandardLayoutFeatures<
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a>
-{
-}
+for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a>
-{
-}
+for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVariablePointersFeatures`].
 
 # Valid usage
@@ -15166,7 +15204,9 @@ impl<'a> PhysicalDeviceVariablePointersFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVariablePointersFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceVariablePointersFeatures<'a> {
         &mut self.raw
     }
 }
@@ -15183,10 +15223,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVariablePointersFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceVariablePointersFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceVariablePointersFeatures<'a> {}
+for PhysicalDeviceVariablePointersFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceVariablePointersFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan11Features`].
 
 # Valid usage
@@ -15318,8 +15357,10 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan11Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>> for PhysicalDeviceVulkan11Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceVulkan11Features<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+for PhysicalDeviceVulkan11Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceVulkan11Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan11Properties`].
 
 # Valid usage
@@ -15363,7 +15404,9 @@ impl<'a> PhysicalDeviceVulkan11Properties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkan11Properties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceVulkan11Properties<'a> {
         &mut self.raw
     }
 }
@@ -15380,9 +15423,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan11Properties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceVulkan11Properties<'a>
-{
-}
+for PhysicalDeviceVulkan11Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan12Features`].
 
 # Valid usage
@@ -15465,49 +15506,73 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
     }
     ///Sets `shaderInputAttachmentArrayDynamicIndexing`.
     #[inline]
-    pub fn shader_input_attachment_array_dynamic_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_input_attachment_array_dynamic_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_input_attachment_array_dynamic_indexing = value;
         self
     }
     ///Sets `shaderUniformTexelBufferArrayDynamicIndexing`.
     #[inline]
-    pub fn shader_uniform_texel_buffer_array_dynamic_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_uniform_texel_buffer_array_dynamic_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_uniform_texel_buffer_array_dynamic_indexing = value;
         self
     }
     ///Sets `shaderStorageTexelBufferArrayDynamicIndexing`.
     #[inline]
-    pub fn shader_storage_texel_buffer_array_dynamic_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_storage_texel_buffer_array_dynamic_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_storage_texel_buffer_array_dynamic_indexing = value;
         self
     }
     ///Sets `shaderUniformBufferArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_uniform_buffer_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_uniform_buffer_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_uniform_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderSampledImageArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_sampled_image_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_sampled_image_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_sampled_image_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderStorageBufferArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_storage_buffer_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_storage_buffer_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_storage_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderStorageImageArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_storage_image_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_storage_image_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_storage_image_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderInputAttachmentArrayNonUniformIndexing`.
     #[inline]
-    pub fn shader_input_attachment_array_non_uniform_indexing(mut self, value: vk::Bool32) -> Self {
+    pub fn shader_input_attachment_array_non_uniform_indexing(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.shader_input_attachment_array_non_uniform_indexing = value;
         self
     }
@@ -15517,8 +15582,7 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .shader_uniform_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_uniform_texel_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `shaderStorageTexelBufferArrayNonUniformIndexing`.
@@ -15527,8 +15591,7 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .shader_storage_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_storage_texel_buffer_array_non_uniform_indexing = value;
         self
     }
     ///Sets `descriptorBindingUniformBufferUpdateAfterBind`.
@@ -15542,13 +15605,19 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
     }
     ///Sets `descriptorBindingSampledImageUpdateAfterBind`.
     #[inline]
-    pub fn descriptor_binding_sampled_image_update_after_bind(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_sampled_image_update_after_bind(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_sampled_image_update_after_bind = value;
         self
     }
     ///Sets `descriptorBindingStorageImageUpdateAfterBind`.
     #[inline]
-    pub fn descriptor_binding_storage_image_update_after_bind(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_storage_image_update_after_bind(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_storage_image_update_after_bind = value;
         self
     }
@@ -15567,8 +15636,7 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .descriptor_binding_uniform_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_uniform_texel_buffer_update_after_bind = value;
         self
     }
     ///Sets `descriptorBindingStorageTexelBufferUpdateAfterBind`.
@@ -15577,13 +15645,15 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .descriptor_binding_storage_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_storage_texel_buffer_update_after_bind = value;
         self
     }
     ///Sets `descriptorBindingUpdateUnusedWhilePending`.
     #[inline]
-    pub fn descriptor_binding_update_unused_while_pending(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_update_unused_while_pending(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_update_unused_while_pending = value;
         self
     }
@@ -15595,7 +15665,10 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
     }
     ///Sets `descriptorBindingVariableDescriptorCount`.
     #[inline]
-    pub fn descriptor_binding_variable_descriptor_count(mut self, value: vk::Bool32) -> Self {
+    pub fn descriptor_binding_variable_descriptor_count(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.descriptor_binding_variable_descriptor_count = value;
         self
     }
@@ -15685,7 +15758,10 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
     }
     ///Sets `vulkanMemoryModelAvailabilityVisibilityChains`.
     #[inline]
-    pub fn vulkan_memory_model_availability_visibility_chains(mut self, value: vk::Bool32) -> Self {
+    pub fn vulkan_memory_model_availability_visibility_chains(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.vulkan_memory_model_availability_visibility_chains = value;
         self
     }
@@ -15746,8 +15822,10 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan12Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>> for PhysicalDeviceVulkan12Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceVulkan12Features<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+for PhysicalDeviceVulkan12Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceVulkan12Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan12Properties`].
 
 # Valid usage
@@ -15791,7 +15869,9 @@ impl<'a> PhysicalDeviceVulkan12Properties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkan12Properties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceVulkan12Properties<'a> {
         &mut self.raw
     }
 }
@@ -15808,9 +15888,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan12Properties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceVulkan12Properties<'a>
-{
-}
+for PhysicalDeviceVulkan12Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan13Features`].
 
 # Valid usage
@@ -15849,8 +15927,7 @@ impl<'a> PhysicalDeviceVulkan13Features<'a> {
         mut self,
         value: vk::Bool32,
     ) -> Self {
-        self.raw
-            .descriptor_binding_inline_uniform_block_update_after_bind = value;
+        self.raw.descriptor_binding_inline_uniform_block_update_after_bind = value;
         self
     }
     ///Sets `pipelineCreationCacheControl`.
@@ -15964,8 +16041,10 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan13Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>> for PhysicalDeviceVulkan13Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceVulkan13Features<'a> {}
+unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+for PhysicalDeviceVulkan13Features<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceVulkan13Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan13Properties`].
 
 # Valid usage
@@ -16009,7 +16088,9 @@ impl<'a> PhysicalDeviceVulkan13Properties<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkan13Properties<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceVulkan13Properties<'a> {
         &mut self.raw
     }
 }
@@ -16026,9 +16107,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan13Properties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
-    for PhysicalDeviceVulkan13Properties<'a>
-{
-}
+for PhysicalDeviceVulkan13Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkanMemoryModelFeatures`].
 
 # Valid usage
@@ -16063,7 +16142,10 @@ impl<'a> PhysicalDeviceVulkanMemoryModelFeatures<'a> {
     }
     ///Sets `vulkanMemoryModelAvailabilityVisibilityChains`.
     #[inline]
-    pub fn vulkan_memory_model_availability_visibility_chains(mut self, value: vk::Bool32) -> Self {
+    pub fn vulkan_memory_model_availability_visibility_chains(
+        mut self,
+        value: vk::Bool32,
+    ) -> Self {
         self.raw.vulkan_memory_model_availability_visibility_chains = value;
         self
     }
@@ -16090,7 +16172,9 @@ impl<'a> PhysicalDeviceVulkanMemoryModelFeatures<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkanMemoryModelFeatures<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PhysicalDeviceVulkanMemoryModelFeatures<'a> {
         &mut self.raw
     }
 }
@@ -16107,10 +16191,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkanMemoryModelFeatures<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceVulkanMemoryModelFeatures<'a>
-{
-}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
+for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
+unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures`].
 
 # Valid usage
@@ -16154,7 +16237,9 @@ impl<'a> PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
     }
     /// The ash struct this lowers to.
     #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
+    pub fn as_raw(
+        &self,
+    ) -> &vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
         &self.raw
     }
     /// The ash struct, for a command that writes into it.
@@ -16179,13 +16264,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceZeroInitializeWorkgroupMemoryFeature
     }
 }
 unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
-    for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a>
-{
-}
+for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-    for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a>
-{
-}
+for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 /**Safe counterpart of [`vk::PipelineCacheCreateInfo`].
 
 # Valid usage
@@ -16312,9 +16393,18 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
         self.raw.logic_op = value;
         self
     }
+    ///Sets `attachmentCount`.
+    #[inline]
+    pub fn attachment_count(mut self, value: u32) -> Self {
+        self.raw.attachment_count = value;
+        self
+    }
     ///Sets `pAttachments`.
     #[inline]
-    pub fn attachments(mut self, value: &'a [vk::PipelineColorBlendAttachmentState]) -> Self {
+    pub fn attachments(
+        mut self,
+        value: &'a [vk::PipelineColorBlendAttachmentState],
+    ) -> Self {
         self.raw.attachment_count = value.len() as _;
         self.raw.p_attachments = value.as_ptr().cast();
         self
@@ -16348,7 +16438,9 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineColorBlendStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineColorBlendStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -16409,7 +16501,9 @@ impl<'a> PipelineCreationFeedbackCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineCreationFeedbackCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineCreationFeedbackCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -16426,13 +16520,9 @@ impl<'a> core::ops::Deref for PipelineCreationFeedbackCreateInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<GraphicsPipelineCreateInfo<'b>>
-    for PipelineCreationFeedbackCreateInfo<'a>
-{
-}
+for PipelineCreationFeedbackCreateInfo<'a> {}
 unsafe impl<'a, 'b> Extends<ComputePipelineCreateInfo<'b>>
-    for PipelineCreationFeedbackCreateInfo<'a>
-{
-}
+for PipelineCreationFeedbackCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineDepthStencilStateCreateInfo`].
 
 # Valid usage
@@ -16545,7 +16635,9 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineDepthStencilStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineDepthStencilStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -16707,7 +16799,9 @@ impl<'a> PipelineInputAssemblyStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineInputAssemblyStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineInputAssemblyStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -16819,7 +16913,10 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
     }
     ///Sets `pSetLayouts`.
     #[inline]
-    pub fn set_layouts(mut self, value: &'a HandleSlice<'a, DescriptorSetLayout>) -> Self {
+    pub fn set_layouts(
+        mut self,
+        value: &'a HandleSlice<'a, DescriptorSetLayout>,
+    ) -> Self {
         self.raw.set_layout_count = value.len() as _;
         self.raw.p_set_layouts = value.as_ptr();
         self
@@ -16958,7 +17055,9 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineMultisampleStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineMultisampleStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -17094,7 +17193,9 @@ impl<'a> PipelineRasterizationStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineRasterizationStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineRasterizationStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -17194,7 +17295,8 @@ impl<'a> core::ops::Deref for PipelineRenderingCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<GraphicsPipelineCreateInfo<'b>> for PipelineRenderingCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<GraphicsPipelineCreateInfo<'b>>
+for PipelineRenderingCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineShaderStageCreateInfo`].
 
 # Valid usage
@@ -17259,10 +17361,7 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::PipelineShaderStageCreateInfo<'a> = Default::default();
         raw.p_name = name.as_ptr();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -17290,10 +17389,15 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
     }
     ///Sets `pSpecializationInfo`.
     #[inline]
-    pub fn specialization_info(mut self, value: Option<&'a SpecializationInfo<'a>>) -> Self {
-        self.raw.p_specialization_info = value.map_or(core::ptr::null(), |value| {
-            value as *const SpecializationInfo<'a> as *const _
-        });
+    pub fn specialization_info(
+        mut self,
+        value: Option<&'a SpecializationInfo<'a>>,
+    ) -> Self {
+        self.raw.p_specialization_info = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const SpecializationInfo<'a> as *const _,
+            );
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
@@ -17395,9 +17499,7 @@ impl<'a> core::ops::Deref for PipelineShaderStageRequiredSubgroupSizeCreateInfo<
     }
 }
 unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>>
-    for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a>
-{
-}
+for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineTessellationDomainOriginStateCreateInfo`].
 
 # Valid usage
@@ -17467,9 +17569,7 @@ impl<'a> core::ops::Deref for PipelineTessellationDomainOriginStateCreateInfo<'a
     }
 }
 unsafe impl<'a, 'b> Extends<PipelineTessellationStateCreateInfo<'b>>
-    for PipelineTessellationDomainOriginStateCreateInfo<'a>
-{
-}
+for PipelineTessellationDomainOriginStateCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineTessellationStateCreateInfo`].
 
 # Valid usage
@@ -17529,7 +17629,9 @@ impl<'a> PipelineTessellationStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineTessellationStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineTessellationStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -17624,7 +17726,9 @@ impl<'a> PipelineVertexInputStateCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineVertexInputStateCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::PipelineVertexInputStateCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -17683,11 +17787,23 @@ impl<'a> PipelineViewportStateCreateInfo<'a> {
         self.raw.flags = value;
         self
     }
+    ///Sets `viewportCount`.
+    #[inline]
+    pub fn viewport_count(mut self, value: u32) -> Self {
+        self.raw.viewport_count = value;
+        self
+    }
     ///Sets `pViewports`.
     #[inline]
     pub fn viewports(mut self, value: &'a [vk::Viewport]) -> Self {
         self.raw.viewport_count = value.len() as _;
         self.raw.p_viewports = value.as_ptr().cast();
+        self
+    }
+    ///Sets `scissorCount`.
+    #[inline]
+    pub fn scissor_count(mut self, value: u32) -> Self {
+        self.raw.scissor_count = value;
         self
     }
     ///Sets `pScissors`.
@@ -17752,14 +17868,14 @@ impl<'a> core::ops::Deref for PipelineViewportStateCreateInfo<'a> {
 - `VUID-VkPresentInfoKHR-pResults-parameter`: user (not settable safely (a pointer Vulkan writes through))
 - `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: user (a slice may be empty; not checked)
 - `VUID-VkPresentInfoKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PresentInfoKHR<'a> {
     raw: vk::PresentInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> PresentInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -17817,13 +17933,13 @@ impl<'a> PresentInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl Default for PresentInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for PresentInfoKHR<'a> {
     type Target = vk::PresentInfoKHR<'a>;
     #[inline]
@@ -18015,7 +18131,10 @@ impl<'a> QueryPoolCreateInfo<'a> {
     }
     ///Sets `pipelineStatistics`.
     #[inline]
-    pub fn pipeline_statistics(mut self, value: vk::QueryPipelineStatisticFlags) -> Self {
+    pub fn pipeline_statistics(
+        mut self,
+        value: vk::QueryPipelineStatisticFlags,
+    ) -> Self {
         self.raw.pipeline_statistics = value;
         self
     }
@@ -18190,7 +18309,8 @@ impl<'a> core::ops::Deref for RenderPassAttachmentBeginInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassBeginInfo<'b>> for RenderPassAttachmentBeginInfo<'a> {}
+unsafe impl<'a, 'b> Extends<RenderPassBeginInfo<'b>>
+for RenderPassAttachmentBeginInfo<'a> {}
 /**Safe counterpart of [`vk::RenderPassBeginInfo`].
 
 # Valid usage
@@ -18243,10 +18363,7 @@ impl<'a> RenderPassBeginInfo<'a> {
         let mut raw: vk::RenderPassBeginInfo<'a> = Default::default();
         raw.render_pass = render_pass.raw();
         raw.framebuffer = framebuffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `renderPass`.
     #[inline]
@@ -18573,7 +18690,10 @@ impl<'a> RenderPassInputAttachmentAspectCreateInfo<'a> {
     }
     ///Sets `pAspectReferences`.
     #[inline]
-    pub fn aspect_references(mut self, value: &'a [vk::InputAttachmentAspectReference]) -> Self {
+    pub fn aspect_references(
+        mut self,
+        value: &'a [vk::InputAttachmentAspectReference],
+    ) -> Self {
         self.raw.aspect_reference_count = value.len() as _;
         self.raw.p_aspect_references = value.as_ptr().cast();
         self
@@ -18601,7 +18721,9 @@ impl<'a> RenderPassInputAttachmentAspectCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderPassInputAttachmentAspectCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::RenderPassInputAttachmentAspectCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -18618,9 +18740,7 @@ impl<'a> core::ops::Deref for RenderPassInputAttachmentAspectCreateInfo<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<RenderPassCreateInfo<'b>>
-    for RenderPassInputAttachmentAspectCreateInfo<'a>
-{
-}
+for RenderPassInputAttachmentAspectCreateInfo<'a> {}
 /**Safe counterpart of [`vk::RenderPassMultiviewCreateInfo`].
 
 # Valid usage
@@ -18707,7 +18827,8 @@ impl<'a> core::ops::Deref for RenderPassMultiviewCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassCreateInfo<'b>> for RenderPassMultiviewCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<RenderPassCreateInfo<'b>>
+for RenderPassMultiviewCreateInfo<'a> {}
 /**Safe counterpart of [`vk::RenderingAttachmentInfo`].
 
 # Valid usage
@@ -18967,25 +19088,38 @@ impl<'a> RenderingInfo<'a> {
     }
     ///Sets `pColorAttachments`.
     #[inline]
-    pub fn color_attachments(mut self, value: &'a [RenderingAttachmentInfo<'a>]) -> Self {
+    pub fn color_attachments(
+        mut self,
+        value: &'a [RenderingAttachmentInfo<'a>],
+    ) -> Self {
         self.raw.color_attachment_count = value.len() as _;
         self.raw.p_color_attachments = value.as_ptr().cast();
         self
     }
     ///Sets `pDepthAttachment`.
     #[inline]
-    pub fn depth_attachment(mut self, value: Option<&'a RenderingAttachmentInfo<'a>>) -> Self {
-        self.raw.p_depth_attachment = value.map_or(core::ptr::null(), |value| {
-            value as *const RenderingAttachmentInfo<'a> as *const _
-        });
+    pub fn depth_attachment(
+        mut self,
+        value: Option<&'a RenderingAttachmentInfo<'a>>,
+    ) -> Self {
+        self.raw.p_depth_attachment = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const RenderingAttachmentInfo<'a> as *const _,
+            );
         self
     }
     ///Sets `pStencilAttachment`.
     #[inline]
-    pub fn stencil_attachment(mut self, value: Option<&'a RenderingAttachmentInfo<'a>>) -> Self {
-        self.raw.p_stencil_attachment = value.map_or(core::ptr::null(), |value| {
-            value as *const RenderingAttachmentInfo<'a> as *const _
-        });
+    pub fn stencil_attachment(
+        mut self,
+        value: Option<&'a RenderingAttachmentInfo<'a>>,
+    ) -> Self {
+        self.raw.p_stencil_attachment = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const RenderingAttachmentInfo<'a> as *const _,
+            );
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
@@ -19090,10 +19224,7 @@ impl<'a> ResolveImageInfo2<'a> {
         let mut raw: vk::ResolveImageInfo2<'a> = Default::default();
         raw.src_image = src_image.raw();
         raw.dst_image = dst_image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -19432,7 +19563,8 @@ impl<'a> core::ops::Deref for SamplerReductionModeCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SamplerCreateInfo<'b>> for SamplerReductionModeCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<SamplerCreateInfo<'b>>
+for SamplerReductionModeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SamplerYcbcrConversionCreateInfo`].
 
 # Valid usage
@@ -19548,7 +19680,9 @@ impl<'a> SamplerYcbcrConversionCreateInfo<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SamplerYcbcrConversionCreateInfo<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::SamplerYcbcrConversionCreateInfo<'a> {
         &mut self.raw
     }
 }
@@ -19626,9 +19760,7 @@ impl<'a> core::ops::Deref for SamplerYcbcrConversionImageFormatProperties<'a> {
     }
 }
 unsafe impl<'a, 'b> Extends<ImageFormatProperties2<'b>>
-    for SamplerYcbcrConversionImageFormatProperties<'a>
-{
-}
+for SamplerYcbcrConversionImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::SamplerYcbcrConversionInfo`].
 
 # Valid usage
@@ -19649,10 +19781,7 @@ impl<'a> SamplerYcbcrConversionInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SamplerYcbcrConversionInfo<'a> = Default::default();
         raw.conversion = conversion.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `conversion`.
     #[inline]
@@ -19790,10 +19919,7 @@ impl<'a> SemaphoreSignalInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SemaphoreSignalInfo<'a> = Default::default();
         raw.semaphore = semaphore.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `semaphore`.
     #[inline]
@@ -19877,10 +20003,7 @@ impl<'a> SemaphoreSubmitInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SemaphoreSubmitInfo<'a> = Default::default();
         raw.semaphore = semaphore.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `semaphore`.
     #[inline]
@@ -20016,9 +20139,7 @@ impl<'a> core::ops::Deref for SemaphoreTypeCreateInfo<'a> {
 }
 unsafe impl<'a, 'b> Extends<SemaphoreCreateInfo<'b>> for SemaphoreTypeCreateInfo<'a> {}
 unsafe impl<'a, 'b> Extends<PhysicalDeviceExternalSemaphoreInfo<'b>>
-    for SemaphoreTypeCreateInfo<'a>
-{
-}
+for SemaphoreTypeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SemaphoreWaitInfo`].
 
 # Valid usage
@@ -20191,7 +20312,8 @@ impl<'a> core::ops::Deref for ShaderModuleCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>> for ShaderModuleCreateInfo<'a> {}
+unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>>
+for ShaderModuleCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SparseBufferMemoryBindInfo`].
 
 # Valid usage
@@ -20213,10 +20335,7 @@ impl<'a> SparseBufferMemoryBindInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SparseBufferMemoryBindInfo<'a> = Default::default();
         raw.buffer = buffer.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `buffer`.
     #[inline]
@@ -20427,10 +20546,7 @@ impl<'a> SparseImageMemoryBindInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SparseImageMemoryBindInfo<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `image`.
     #[inline]
@@ -20546,10 +20662,7 @@ impl<'a> SparseImageOpaqueMemoryBindInfo<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SparseImageOpaqueMemoryBindInfo<'a> = Default::default();
         raw.image = image.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `image`.
     #[inline]
@@ -20902,14 +21015,20 @@ impl<'a> SubmitInfo2<'a> {
     }
     ///Sets `pCommandBufferInfos`.
     #[inline]
-    pub fn command_buffer_infos(mut self, value: &'a [CommandBufferSubmitInfo<'a>]) -> Self {
+    pub fn command_buffer_infos(
+        mut self,
+        value: &'a [CommandBufferSubmitInfo<'a>],
+    ) -> Self {
         self.raw.command_buffer_info_count = value.len() as _;
         self.raw.p_command_buffer_infos = value.as_ptr().cast();
         self
     }
     ///Sets `pSignalSemaphoreInfos`.
     #[inline]
-    pub fn signal_semaphore_infos(mut self, value: &'a [SemaphoreSubmitInfo<'a>]) -> Self {
+    pub fn signal_semaphore_infos(
+        mut self,
+        value: &'a [SemaphoreSubmitInfo<'a>],
+    ) -> Self {
         self.raw.signal_semaphore_info_count = value.len() as _;
         self.raw.p_signal_semaphore_infos = value.as_ptr().cast();
         self
@@ -21267,10 +21386,15 @@ impl<'a> SubpassDescription<'a> {
     }
     ///Sets `pDepthStencilAttachment`.
     #[inline]
-    pub fn depth_stencil_attachment(mut self, value: Option<&'a vk::AttachmentReference>) -> Self {
-        self.raw.p_depth_stencil_attachment = value.map_or(core::ptr::null(), |value| {
-            value as *const vk::AttachmentReference as *const _
-        });
+    pub fn depth_stencil_attachment(
+        mut self,
+        value: Option<&'a vk::AttachmentReference>,
+    ) -> Self {
+        self.raw.p_depth_stencil_attachment = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const vk::AttachmentReference as *const _,
+            );
         self
     }
     ///Sets `pPreserveAttachments`.
@@ -21418,10 +21542,15 @@ impl<'a> SubpassDescription2<'a> {
     }
     ///Sets `pDepthStencilAttachment`.
     #[inline]
-    pub fn depth_stencil_attachment(mut self, value: Option<&'a AttachmentReference2<'a>>) -> Self {
-        self.raw.p_depth_stencil_attachment = value.map_or(core::ptr::null(), |value| {
-            value as *const AttachmentReference2<'a> as *const _
-        });
+    pub fn depth_stencil_attachment(
+        mut self,
+        value: Option<&'a AttachmentReference2<'a>>,
+    ) -> Self {
+        self.raw.p_depth_stencil_attachment = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const AttachmentReference2<'a> as *const _,
+            );
         self
     }
     ///Sets `pPreserveAttachments`.
@@ -21525,9 +21654,11 @@ impl<'a> SubpassDescriptionDepthStencilResolve<'a> {
         mut self,
         value: Option<&'a AttachmentReference2<'a>>,
     ) -> Self {
-        self.raw.p_depth_stencil_resolve_attachment = value.map_or(core::ptr::null(), |value| {
-            value as *const AttachmentReference2<'a> as *const _
-        });
+        self.raw.p_depth_stencil_resolve_attachment = value
+            .map_or(
+                core::ptr::null(),
+                |value| value as *const AttachmentReference2<'a> as *const _,
+            );
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
@@ -21553,7 +21684,9 @@ impl<'a> SubpassDescriptionDepthStencilResolve<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubpassDescriptionDepthStencilResolve<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::SubpassDescriptionDepthStencilResolve<'a> {
         &mut self.raw
     }
 }
@@ -21569,7 +21702,8 @@ impl<'a> core::ops::Deref for SubpassDescriptionDepthStencilResolve<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SubpassDescription2<'b>> for SubpassDescriptionDepthStencilResolve<'a> {}
+unsafe impl<'a, 'b> Extends<SubpassDescription2<'b>>
+for SubpassDescriptionDepthStencilResolve<'a> {}
 /**Safe counterpart of [`vk::SubpassEndInfo`].
 
 # Valid usage
@@ -21680,14 +21814,14 @@ impl<'a> core::ops::Deref for SubpassEndInfo<'a> {
 - `VUID-VkSwapchainCreateInfoKHR-pNext-02679`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSwapchainCreateInfoKHR-pNext-06751`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSwapchainCreateInfoKHR-pNext-06752`: user (explicit rule; the wrappers do not check it)*/
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SwapchainCreateInfoKHR<'a> {
     raw: vk::SwapchainCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> SwapchainCreateInfoKHR<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -21696,10 +21830,7 @@ impl<'a> SwapchainCreateInfoKHR<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::SwapchainCreateInfoKHR<'a> = Default::default();
         raw.surface = surface.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `flags`.
     #[inline]
@@ -21819,7 +21950,7 @@ impl<'a> SwapchainCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_swapchain"))]
+#[cfg(feature = "khr_swapchain")]
 impl<'a> core::ops::Deref for SwapchainCreateInfoKHR<'a> {
     type Target = vk::SwapchainCreateInfoKHR<'a>;
     #[inline]
@@ -21849,11 +21980,23 @@ impl<'a> TimelineSemaphoreSubmitInfo<'a> {
             _marker: PhantomData,
         }
     }
+    ///Sets `waitSemaphoreValueCount`.
+    #[inline]
+    pub fn wait_semaphore_value_count(mut self, value: u32) -> Self {
+        self.raw.wait_semaphore_value_count = value;
+        self
+    }
     ///Sets `pWaitSemaphoreValues`.
     #[inline]
     pub fn wait_semaphore_values(mut self, value: &'a [u64]) -> Self {
         self.raw.wait_semaphore_value_count = value.len() as _;
         self.raw.p_wait_semaphore_values = value.as_ptr().cast();
+        self
+    }
+    ///Sets `signalSemaphoreValueCount`.
+    #[inline]
+    pub fn signal_semaphore_value_count(mut self, value: u32) -> Self {
+        self.raw.signal_semaphore_value_count = value;
         self
     }
     ///Sets `pSignalSemaphoreValues`.
@@ -21913,14 +22056,14 @@ unsafe impl<'a, 'b> Extends<BindSparseInfo<'b>> for TimelineSemaphoreSubmitInfo<
 - `VUID-VkWaylandSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWaylandSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkWaylandSurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
-#[cfg(all(feature = "khr_wayland_surface"))]
+#[cfg(feature = "khr_wayland_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WaylandSurfaceCreateInfoKHR<'a> {
     raw: vk::WaylandSurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_wayland_surface"))]
+#[cfg(feature = "khr_wayland_surface")]
 impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -21938,9 +22081,9 @@ impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
     }
     /**Sets `display`.
 
-    # Safety
+# Safety
 
-    `value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
     #[inline]
     pub unsafe fn display(mut self, value: *mut vk::wl_display) -> Self {
         self.raw.display = value;
@@ -21948,9 +22091,9 @@ impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
     }
     /**Sets `surface`.
 
-    # Safety
+# Safety
 
-    `value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
     #[inline]
     pub unsafe fn surface(mut self, value: *mut vk::wl_surface) -> Self {
         self.raw.surface = value;
@@ -21983,13 +22126,13 @@ impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_wayland_surface"))]
+#[cfg(feature = "khr_wayland_surface")]
 impl Default for WaylandSurfaceCreateInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_wayland_surface"))]
+#[cfg(feature = "khr_wayland_surface")]
 impl<'a> core::ops::Deref for WaylandSurfaceCreateInfoKHR<'a> {
     type Target = vk::WaylandSurfaceCreateInfoKHR<'a>;
     #[inline]
@@ -22006,14 +22149,14 @@ impl<'a> core::ops::Deref for WaylandSurfaceCreateInfoKHR<'a> {
 - `VUID-VkWin32SurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWin32SurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
-#[cfg(all(feature = "khr_win32_surface"))]
+#[cfg(feature = "khr_win32_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct Win32SurfaceCreateInfoKHR<'a> {
     raw: vk::Win32SurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_win32_surface"))]
+#[cfg(feature = "khr_win32_surface")]
 impl<'a> Win32SurfaceCreateInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -22056,13 +22199,13 @@ impl<'a> Win32SurfaceCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_win32_surface"))]
+#[cfg(feature = "khr_win32_surface")]
 impl Default for Win32SurfaceCreateInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_win32_surface"))]
+#[cfg(feature = "khr_win32_surface")]
 impl<'a> core::ops::Deref for Win32SurfaceCreateInfoKHR<'a> {
     type Target = vk::Win32SurfaceCreateInfoKHR<'a>;
     #[inline]
@@ -22139,10 +22282,7 @@ impl<'a> WriteDescriptorSet<'a> {
         #[allow(unused_mut)]
         let mut raw: vk::WriteDescriptorSet<'a> = Default::default();
         raw.dst_set = dst_set.raw();
-        Self {
-            raw,
-            _marker: PhantomData,
-        }
+        Self { raw, _marker: PhantomData }
     }
     ///Sets `dstSet`.
     #[inline]
@@ -22276,7 +22416,9 @@ impl<'a> WriteDescriptorSetInlineUniformBlock<'a> {
     /// The ash struct, for a command that writes into it.
     #[inline]
     #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::WriteDescriptorSetInlineUniformBlock<'a> {
+    pub(crate) fn as_raw_mut(
+        &mut self,
+    ) -> &mut vk::WriteDescriptorSetInlineUniformBlock<'a> {
         &mut self.raw
     }
 }
@@ -22292,7 +22434,8 @@ impl<'a> core::ops::Deref for WriteDescriptorSetInlineUniformBlock<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<WriteDescriptorSet<'b>> for WriteDescriptorSetInlineUniformBlock<'a> {}
+unsafe impl<'a, 'b> Extends<WriteDescriptorSet<'b>>
+for WriteDescriptorSetInlineUniformBlock<'a> {}
 /**Safe counterpart of [`vk::XcbSurfaceCreateInfoKHR`].
 
 # Valid usage
@@ -22302,14 +22445,14 @@ unsafe impl<'a, 'b> Extends<WriteDescriptorSet<'b>> for WriteDescriptorSetInline
 - `VUID-VkXcbSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkXcbSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
-#[cfg(all(feature = "khr_xcb_surface"))]
+#[cfg(feature = "khr_xcb_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct XcbSurfaceCreateInfoKHR<'a> {
     raw: vk::XcbSurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_xcb_surface"))]
+#[cfg(feature = "khr_xcb_surface")]
 impl<'a> XcbSurfaceCreateInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -22327,9 +22470,9 @@ impl<'a> XcbSurfaceCreateInfoKHR<'a> {
     }
     /**Sets `connection`.
 
-    # Safety
+# Safety
 
-    `value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
     #[inline]
     pub unsafe fn connection(mut self, value: *mut vk::xcb_connection_t) -> Self {
         self.raw.connection = value;
@@ -22362,13 +22505,13 @@ impl<'a> XcbSurfaceCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_xcb_surface"))]
+#[cfg(feature = "khr_xcb_surface")]
 impl Default for XcbSurfaceCreateInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_xcb_surface"))]
+#[cfg(feature = "khr_xcb_surface")]
 impl<'a> core::ops::Deref for XcbSurfaceCreateInfoKHR<'a> {
     type Target = vk::XcbSurfaceCreateInfoKHR<'a>;
     #[inline]
@@ -22385,14 +22528,14 @@ impl<'a> core::ops::Deref for XcbSurfaceCreateInfoKHR<'a> {
 - `VUID-VkXlibSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkXlibSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkXlibSurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
-#[cfg(all(feature = "khr_xlib_surface"))]
+#[cfg(feature = "khr_xlib_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct XlibSurfaceCreateInfoKHR<'a> {
     raw: vk::XlibSurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(all(feature = "khr_xlib_surface"))]
+#[cfg(feature = "khr_xlib_surface")]
 impl<'a> XlibSurfaceCreateInfoKHR<'a> {
     /// A struct with every member zero or empty (and `sType` set).
     #[inline]
@@ -22410,9 +22553,9 @@ impl<'a> XlibSurfaceCreateInfoKHR<'a> {
     }
     /**Sets `dpy`.
 
-    # Safety
+# Safety
 
-    `value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
     #[inline]
     pub unsafe fn dpy(mut self, value: *mut vk::Display) -> Self {
         self.raw.dpy = value;
@@ -22445,13 +22588,13 @@ impl<'a> XlibSurfaceCreateInfoKHR<'a> {
         &mut self.raw
     }
 }
-#[cfg(all(feature = "khr_xlib_surface"))]
+#[cfg(feature = "khr_xlib_surface")]
 impl Default for XlibSurfaceCreateInfoKHR<'_> {
     fn default() -> Self {
         Self::new()
     }
 }
-#[cfg(all(feature = "khr_xlib_surface"))]
+#[cfg(feature = "khr_xlib_surface")]
 impl<'a> core::ops::Deref for XlibSurfaceCreateInfoKHR<'a> {
     type Target = vk::XlibSurfaceCreateInfoKHR<'a>;
     #[inline]

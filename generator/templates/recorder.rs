@@ -46,6 +46,9 @@ impl Inside for InRendering {}
 pub struct Recorder<'c, S: State> {
     cb: &'c mut CommandBuffer,
     kept: Vec<Retained>,
+    /// The address of the last object kept, so a run of commands on one object
+    /// (push constants before every draw) keeps it once.
+    last: usize,
     _state: PhantomData<S>,
 }
 
@@ -65,6 +68,7 @@ impl CommandBuffer {
         Ok(Recorder {
             cb: self,
             kept: Vec::new(),
+            last: 0,
             _state: PhantomData,
         })
     }
@@ -92,13 +96,24 @@ impl<'c, S: State> Recorder<'c, S> {
     /// Keeps an object alive until the command buffer is recorded again or freed.
     #[inline]
     pub fn retain(&mut self, object: Retained) {
+        self.last = Retained::as_ptr(&object) as *const () as usize;
         self.kept.push(object);
+    }
+
+    /// Keeps the object at `address` alive, unless it is the one kept last; `make`
+    /// clones the reference only when it is needed.
+    #[inline]
+    pub fn retain_with(&mut self, address: usize, make: impl FnOnce() -> Retained) {
+        if address != self.last {
+            self.retain(make());
+        }
     }
 
     pub(crate) fn into_state<T: State>(self) -> Recorder<'c, T> {
         Recorder {
             cb: self.cb,
             kept: self.kept,
+            last: self.last,
             _state: PhantomData,
         }
     }

@@ -218,35 +218,6 @@ impl<T: std::fmt::Debug> std::fmt::Debug for Vutex<T> {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn try_lock_fails_while_locked() {
-        let v = Vutex::new(1);
-        let guard = v.lock();
-        assert!(v.try_lock().is_none());
-        drop(guard);
-        assert_eq!(*v.try_lock().unwrap(), 1);
-    }
-
-    #[cfg(not(feature = "multi_thread"))]
-    mod single_thread {
-        use super::super::*;
-        static_assertions::assert_not_impl_any!(Vutex<u32>: Send, Sync);
-        static_assertions::assert_not_impl_any!(Vrc<u32>: Send, Sync);
-    }
-
-    #[cfg(feature = "multi_thread")]
-    mod multi_thread {
-        use super::super::*;
-        static_assertions::assert_impl_all!(Vutex<u32>: Send, Sync);
-        static_assertions::assert_impl_all!(Vrc<Vutex<u32>>: Send, Sync);
-        static_assertions::assert_not_impl_any!(Vutex<std::rc::Rc<u32>>: Send, Sync);
-    }
-}
-
 /// A weak reference of a [`Vrc`]: `std::rc::Weak`, or `std::sync::Weak` with
 /// `multi_thread`.
 ///
@@ -282,3 +253,32 @@ impl<T: MaybeSendSync + ?Sized> Retain for T {}
 /// drop(kept);
 /// ```
 pub type Retained = Vrc<dyn Retain>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn try_lock_fails_while_locked() {
+        let v = Vutex::new(1);
+        let guard = v.lock();
+        assert!(v.try_lock().is_none());
+        drop(guard);
+        assert_eq!(*v.try_lock().unwrap(), 1);
+    }
+
+    #[cfg(not(feature = "multi_thread"))]
+    mod single_thread {
+        use super::super::*;
+        static_assertions::assert_not_impl_any!(Vutex<u32>: Send, Sync);
+        static_assertions::assert_not_impl_any!(Vrc<u32>: Send, Sync);
+    }
+
+    #[cfg(feature = "multi_thread")]
+    mod multi_thread {
+        use super::super::*;
+        static_assertions::assert_impl_all!(Vutex<u32>: Send, Sync);
+        static_assertions::assert_impl_all!(Vrc<Vutex<u32>>: Send, Sync);
+        static_assertions::assert_not_impl_any!(Vutex<std::rc::Rc<u32>>: Send, Sync);
+    }
+}

@@ -73,7 +73,7 @@ impl DeviceOwner for TestDevice {
     }
 }
 
-unsafe extern "system" fn on_message(
+pub unsafe extern "system" fn on_message(
     severity: vk::DebugUtilsMessageSeverityFlagsEXT,
     _types: vk::DebugUtilsMessageTypeFlagsEXT,
     data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,

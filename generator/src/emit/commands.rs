@@ -267,8 +267,16 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
             clippy::needless_lifetimes,
             clippy::let_unit_value,
             unused_mut,
-            clippy::unit_arg
+            clippy::unit_arg,
+            clippy::unused_unit,
+            clippy::extra_unused_lifetimes,
+            clippy::never_loop,
+            clippy::no_effect,
+            clippy::unnecessary_cast,
+            clippy::field_reassign_with_default
         )]
+        // Generated bodies are uniform rather than minimal: a `()` return, a lifetime
+        // or a cast that one command does not need stays, so the lints above are off.
         use crate::handles::*;
         use crate::structs::*;
         use crate::{recorder::*, Entry, Error, Handle, Result};
@@ -286,8 +294,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
     let lvl = level(model, &plan.name);
     let receiver_raw = if plan.receiver == "Entry" {
         quote!()
-    } else if is_cmd {
-        quote!(self.raw(),)
     } else {
         quote!(self.raw(),)
     };
@@ -382,17 +388,13 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 let w = type_ident(&p.type_name);
                 let optional =
                     &(*optional && !(plan.name == "vkQueueSubmit" && p.type_name == "VkFence"));
-                if pool_override
-                    .as_ref()
-                    .is_some_and(|(pn, m)| pn == &p.name && m.is_none())
-                    || *optional
-                {
-                    if *optional {
+                if *optional {
+                    {
                         args.push(quote!(#name: Option<&#w>));
                         call_args.push(quote!(#name.map_or(vk::#w::null(), |h| h.raw()),));
                         if is_cmd {
                             retain.push(
-                                quote!(if let Some(h) = #name { self.retain(h.retained()); }),
+                                quote!(if let Some(h) = #name { self.retain_with(h.address(), || h.retained()); }),
                             );
                         }
                         continue;
@@ -401,7 +403,7 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 args.push(quote!(#name: &#w));
                 call_args.push(quote!(#name.raw(),));
                 if is_cmd {
-                    retain.push(quote!(self.retain(#name.retained());));
+                    retain.push(quote!(self.retain_with(#name.address(), || #name.retained());));
                 }
             }
             Param::HandleSlice => {
@@ -432,8 +434,7 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                     let (_, member) = pool_override.clone().unwrap_or_default();
                     let member = field_ident(&member.unwrap_or_default());
                     let parent_w = type_ident(&created_parent);
-                    let parent_name =
-                        ident(&param(&created_parent.trim_start_matches("Vk").to_owned()));
+                    let parent_name = ident(&param(created_parent.trim_start_matches("Vk")));
                     args.push(quote!(#parent_name: &#parent_w));
                     args.push(quote!(#name: &#ty));
                     pre.push(quote! {
@@ -486,8 +487,7 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 let parent_expr = if created_parent == plan.receiver {
                     quote!(self)
                 } else {
-                    let parent_name =
-                        ident(&param(&created_parent.trim_start_matches("Vk").to_owned()));
+                    let parent_name = ident(&param(created_parent.trim_start_matches("Vk")));
                     match &pool_override {
                         Some((pn, None)) => ident(&param(pn)).into_token_stream_ref(),
                         _ => quote!(#parent_name),
@@ -576,11 +576,8 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                     // Images of a swapchain: owned by it, kept alive with it.
                     let w = type_ident(&p.type_name);
                     let parent_w = parent_of(cx, &p.type_name).unwrap_or_default();
-                    let parent_ref = if parent_w == plan.receiver {
-                        quote!(self)
-                    } else {
-                        quote!(self)
-                    };
+                    let _ = parent_w;
+                    let parent_ref = quote!(self);
                     let keep = cmd
                         .params
                         .iter()

@@ -520,6 +520,11 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             pub(crate) fn kept(&self) -> Option<&Retained> {
                 self.inner.keep.as_ref()
             }
+            /// The address of the shared state, which identifies the object.
+            #[inline]
+            pub fn address(&self) -> usize {
+                Vrc::as_ptr(&self.inner) as usize
+            }
             /// This wrapper as a type-erased reference that keeps it alive.
             #[inline]
             pub fn retained(&self) -> Retained {

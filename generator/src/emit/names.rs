@@ -95,8 +95,11 @@ pub fn cfg_of(model: &Model, condition: &str) -> Option<TokenStream> {
     let alternatives: Vec<TokenStream> = sets
         .iter()
         .map(|set| {
-            let features = set.iter().map(|e| feature(e));
-            quote!(all(#(feature = #features),*))
+            let features: Vec<String> = set.iter().map(|e| feature(e)).collect();
+            match features.as_slice() {
+                [one] => quote!(feature = #one),
+                _ => quote!(all(#(feature = #features),*)),
+            }
         })
         .collect();
     Some(match alternatives.as_slice() {

@@ -74,9 +74,18 @@ pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Fiel
     let Some(t) = model.types.get(name) else {
         return Vec::new();
     };
+    // A count is set only by its array's setter when some array it sizes is
+    // required; a count of optional arrays (descriptorCount beside
+    // pImmutableSamplers) also means something alone, so it keeps its own setter.
     let counts: Vec<String> = t
         .members
         .iter()
+        .filter(|m| {
+            !crate::model::attrs::parse_optional(m.optional.as_deref())
+                .first()
+                .copied()
+                .unwrap_or(false)
+        })
         .filter_map(|m| m.len.as_deref())
         .flat_map(|len| crate::model::attrs::parse_len(len).into_iter().take(1))
         .filter_map(|e| match e {
@@ -201,11 +210,7 @@ fn member_shape(
             };
         }
         if first_len.is_none() && category == Some("struct") {
-            return if facts.is_safe(&m.type_name) {
-                Member::StructRef { optional }
-            } else {
-                Member::StructRef { optional }
-            };
+            return Member::StructRef { optional };
         }
         return Member::Unsupported(
             "a pointer whose length the registry gives as an expression".into(),

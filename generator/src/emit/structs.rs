@@ -34,7 +34,7 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
     quote! {
         //! Safe counterparts of the registry's structs that carry handles, pointers or
         //! an `sType`. Plain structs (`vk::Extent2D`, ...) are used as ash has them.
-        #![allow(clippy::needless_lifetimes, clippy::new_without_default)]
+        #![allow(clippy::needless_lifetimes, clippy::new_without_default, clippy::field_reassign_with_default, clippy::unnecessary_cast)]
         use crate::{chain::Extends, handles::*, CStrPtr, Handle, HandleSlice};
         use ash::vk;
         use core::marker::PhantomData;

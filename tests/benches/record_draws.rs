@@ -1,0 +1,219 @@
+//! Recording 10,000 draws, each with a 64-byte push constant, inside a render pass:
+//! raw ash against tuff's `Recorder`, on the same lavapipe command pool. Each round
+//! resets the pool, records one buffer with ash and one with tuff (in an order that
+//! alternates), and the table reports the median time per draw and the median of the
+//! per-round ratios. Nothing is submitted; recording is what is measured.
+//!
+//! Run with `cargo bench -p tuff-tests --bench record_draws`, and with
+//! `--features multi_thread` for `Vrc` = `Arc` and real locks.
+
+#[path = "../common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "../common/vulkan.rs"]
+mod vulkan;
+
+use std::hint::black_box;
+use std::time::Instant;
+use tuff::vk;
+
+const DRAWS: u32 = 10_000;
+const ROUNDS: usize = 41;
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() {
+    let s = tuff_setup::setup(false);
+    let d = &s.device;
+    let image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 64,
+                    height: 64,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT),
+        )
+        .expect("image");
+    let reqs = d.get_image_memory_requirements(&image);
+    let memory = d
+        .allocate_memory(
+            &tuff::MemoryAllocateInfo::new()
+                .allocation_size(reqs.size)
+                .memory_type_index(
+                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                ),
+        )
+        .expect("memory");
+    d.bind_image_memory(&image, &memory, 0).expect("bind");
+    let view = d
+        .create_image_view(
+            &tuff::ImageViewCreateInfo::new(&image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                }),
+        )
+        .expect("view");
+    let attachments = [vk::AttachmentDescription {
+        format: vk::Format::R8G8B8A8_UNORM,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::CLEAR,
+        store_op: vk::AttachmentStoreOp::STORE,
+        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        ..Default::default()
+    }];
+    let color = [vk::AttachmentReference {
+        attachment: 0,
+        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let subpasses = [tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color)];
+    let render_pass = d
+        .create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses),
+        )
+        .expect("render pass");
+    let views = tuff::HandleSlice::new(&[&view]);
+    let framebuffer = d
+        .create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&render_pass)
+                .attachments(&views)
+                .width(64)
+                .height(64)
+                .layers(1),
+        )
+        .expect("framebuffer");
+    let ranges = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::VERTEX,
+        offset: 0,
+        size: 64,
+    }];
+    let layout = d
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&ranges),
+        )
+        .expect("layout");
+    let pool = d
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
+    let mut cbs = d
+        .allocate_command_buffers(
+            &pool,
+            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(2),
+        )
+        .expect("command buffers");
+    let mut tuff_cb = cbs.pop().expect("two");
+    let raw_cb = cbs.pop().expect("two");
+    let ash_device = d.fns().clone();
+    let clear = [vk::ClearValue::default()];
+    let area = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 64,
+            height: 64,
+        },
+    };
+    let push: [u8; 64] = [7; 64];
+
+    let record_ash = |cb: vk::CommandBuffer| {
+        // SAFETY: the command buffer is reset with its pool before each recording, and
+        // every handle passed lives until the end of main.
+        unsafe {
+            ash_device
+                .begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default())
+                .expect("begin");
+            let begin = vk::RenderPassBeginInfo::default()
+                .render_pass(*render_pass)
+                .framebuffer(*framebuffer)
+                .render_area(area)
+                .clear_values(&clear);
+            ash_device.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
+            for i in 0..DRAWS {
+                ash_device.cmd_push_constants(
+                    cb,
+                    *layout,
+                    vk::ShaderStageFlags::VERTEX,
+                    0,
+                    black_box(&push),
+                );
+                ash_device.cmd_draw(cb, 36, 1, black_box(i), 0);
+            }
+            ash_device.cmd_end_render_pass(cb);
+            ash_device.end_command_buffer(cb).expect("end");
+        }
+    };
+    let record_tuff = |cb: &mut tuff::CommandBuffer| {
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let begin = tuff::RenderPassBeginInfo::new(&render_pass, &framebuffer)
+            .render_area(area)
+            .clear_values(&clear);
+        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        for i in 0..DRAWS {
+            rec.cmd_push_constants(&layout, vk::ShaderStageFlags::VERTEX, 0, black_box(&push));
+            rec.cmd_draw(36, 1, black_box(i), 0);
+        }
+        rec.cmd_end_render_pass().end().expect("end");
+    };
+
+    let mut ash_ns = Vec::new();
+    let mut tuff_ns = Vec::new();
+    let mut ratios = Vec::new();
+    for round in 0..ROUNDS {
+        d.reset_command_pool(&pool, vk::CommandPoolResetFlags::empty())
+            .expect("reset");
+        let mut time_ash = 0.0;
+        let mut time_tuff = 0.0;
+        for step in 0..2 {
+            if (round + step) % 2 == 0 {
+                let t = Instant::now();
+                record_ash(*raw_cb);
+                time_ash = t.elapsed().as_nanos() as f64 / f64::from(DRAWS);
+            } else {
+                let t = Instant::now();
+                record_tuff(&mut tuff_cb);
+                time_tuff = t.elapsed().as_nanos() as f64 / f64::from(DRAWS);
+            }
+        }
+        if round > 0 {
+            ash_ns.push(time_ash);
+            tuff_ns.push(time_tuff);
+            ratios.push(time_tuff / time_ash);
+        }
+    }
+    let mode = if cfg!(feature = "multi_thread") {
+        "multi_thread (Arc, mutex)"
+    } else {
+        "single-threaded (Rc)"
+    };
+    println!(
+        "recording {DRAWS} draws with push constants, {} rounds, {mode}",
+        ROUNDS - 1
+    );
+    println!("| case | median per draw (ns) | tuff / ash (median of rounds) |");
+    println!("|---|---|---|");
+    println!("| raw ash | {:.1} | 1.00 |", median(&mut ash_ns));
+    println!(
+        "| tuff Recorder | {:.1} | {:.3} |",
+        median(&mut tuff_ns),
+        median(&mut ratios)
+    );
+}

@@ -1,0 +1,121 @@
+//! An instance, device and queue made entirely through the generated wrappers.
+#![allow(dead_code)]
+
+use crate::vulkan::{on_message, Messages};
+use std::sync::{Arc, Mutex};
+use tuff::vk;
+
+/// What a wrapper test needs. Field order is drop order: the messenger goes last but
+/// one, so it hears everything the device's children report.
+pub struct Setup {
+    pub queue: tuff::Queue,
+    pub family: u32,
+    pub device: tuff::Device,
+    pub memory_types: vk::PhysicalDeviceMemoryProperties,
+    pub messenger: Option<tuff::DebugUtilsMessengerEXT>,
+    pub instance: tuff::Instance,
+    pub messages: Messages,
+    _user_data: Box<Messages>,
+}
+
+/// Build the setup, with the validation layer (and its synchronization validation)
+/// when `validation`. Panics with a clear message when no device is found.
+pub fn setup(validation: bool) -> Setup {
+    if validation {
+        // SAFETY: set before any thread of this test reads the environment.
+        unsafe {
+            std::env::set_var(
+                "VK_LAYER_ENABLES",
+                "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT",
+            )
+        };
+    }
+    let entry = tuff::Entry::load().expect("the Vulkan loader is not installed");
+    let messages: Messages = Arc::new(Mutex::new(Vec::new()));
+    let user_data = Box::new(messages.clone());
+    let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
+    let exts = [tuff::CStrPtr::from(c"VK_EXT_debug_utils")];
+    let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
+    let mut messenger_info = tuff::DebugUtilsMessengerCreateInfoEXT::new()
+        .message_severity(
+            vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
+                | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
+        )
+        .message_type(
+            vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE
+                | vk::DebugUtilsMessageTypeFlagsEXT::GENERAL,
+        )
+        .pfn_user_callback(Some(on_message))
+        .user_data(&*user_data as *const Messages as *mut _);
+    let mut info = tuff::InstanceCreateInfo::new().application_info(Some(&app));
+    if validation {
+        info = info
+            .enabled_layer_names(&layers)
+            .enabled_extension_names(&exts)
+            .push_next(&mut messenger_info);
+    }
+    let instance = entry
+        .create_instance(&info)
+        .expect("cannot create an instance (is VK_LAYER_KHRONOS_validation installed?)");
+    let messenger = validation.then(|| {
+        instance
+            .create_debug_utils_messenger_ext(&messenger_info)
+            .expect("debug messenger")
+    });
+    let physicals = instance
+        .enumerate_physical_devices()
+        .expect("enumerate physical devices");
+    let physical = physicals
+        .iter()
+        .find(|p| p.get_physical_device_properties().device_type == vk::PhysicalDeviceType::CPU)
+        .or(physicals.first())
+        .expect("no Vulkan device found: install mesa-vulkan-drivers (lavapipe)")
+        .clone();
+    let families = physical
+        .get_physical_device_queue_family_properties()
+        .expect("queue families");
+    let family = families
+        .iter()
+        .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
+        .expect("no graphics queue family") as u32;
+    let priorities = [1.0f32];
+    let queues = [tuff::DeviceQueueCreateInfo::new()
+        .queue_family_index(family)
+        .queue_priorities(&priorities)];
+    // A typed pNext chain: only structs that extend VkDeviceCreateInfo are accepted.
+    let mut features13 = tuff::PhysicalDeviceVulkan13Features::new().private_data(vk::TRUE);
+    let device = physical
+        .create_device(
+            &tuff::DeviceCreateInfo::new()
+                .queue_create_infos(&queues)
+                .push_next(&mut features13),
+        )
+        .expect("create device");
+    let queue = device.get_device_queue(family, 0);
+    let memory_types = physical.get_physical_device_memory_properties();
+    Setup {
+        queue,
+        family,
+        device,
+        memory_types,
+        messenger,
+        instance,
+        messages,
+        _user_data: user_data,
+    }
+}
+
+impl Setup {
+    /// A memory type allowed by `bits` with `flags`.
+    pub fn memory_type(&self, bits: u32, flags: vk::MemoryPropertyFlags) -> u32 {
+        (0..self.memory_types.memory_type_count)
+            .find(|i| {
+                bits & (1 << i) != 0
+                    && self.memory_types.memory_types[*i as usize]
+                        .property_flags
+                        .contains(flags)
+            })
+            .expect("no suitable memory type")
+    }
+}
