@@ -11,7 +11,7 @@ mod vulkan;
 
 use std::any::Any;
 use tuff::vk;
-use tuff_setup::{setup, Setup};
+use tuff_setup::{setup, ColorTarget, Setup};
 use vulkan::assert_silent;
 
 /// A small deterministic shuffle, so a failing order can be replayed.
@@ -63,83 +63,13 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
                 .range(vk::WHOLE_SIZE),
         )
         .expect("buffer view");
-    let image = d
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 16,
-                    height: 16,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::SAMPLED),
-        )
-        .expect("image");
-    let reqs = d.get_image_memory_requirements(&image);
-    let image_memory = d
-        .allocate_memory(
-            &tuff::MemoryAllocateInfo::new()
-                .allocation_size(reqs.size)
-                .memory_type_index(
-                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                ),
-        )
-        .expect("image memory");
-    d.bind_image_memory(&image, &image_memory, 0)
-        .expect("bind image");
-    let image_view = d
-        .create_image_view(
-            &tuff::ImageViewCreateInfo::new(&image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    base_mip_level: 0,
-                    level_count: 1,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                }),
-        )
-        .expect("image view");
-    let attachments = [vk::AttachmentDescription {
-        format: vk::Format::R8G8B8A8_UNORM,
-        samples: vk::SampleCountFlags::TYPE_1,
-        load_op: vk::AttachmentLoadOp::CLEAR,
-        store_op: vk::AttachmentStoreOp::STORE,
-        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
-        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
-        initial_layout: vk::ImageLayout::UNDEFINED,
-        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-        ..Default::default()
-    }];
-    let color = [vk::AttachmentReference {
-        attachment: 0,
-        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-    }];
-    let subpasses = [tuff::SubpassDescription::new()
-        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
-        .color_attachments(&color)];
-    let render_pass = d
-        .create_render_pass(
-            &tuff::RenderPassCreateInfo::new()
-                .attachments(&attachments)
-                .subpasses(&subpasses),
-        )
-        .expect("render pass");
-    let views = tuff::HandleSlice::new(&[&image_view]);
-    let framebuffer = d
-        .create_framebuffer(
-            &tuff::FramebufferCreateInfo::new(&render_pass)
-                .attachments(&views)
-                .width(16)
-                .height(16)
-                .layers(1),
-        )
-        .expect("framebuffer");
+    let ColorTarget {
+        image,
+        memory: image_memory,
+        view: image_view,
+        render_pass,
+        framebuffer,
+    } = s.color_target(16, vk::ImageUsageFlags::SAMPLED);
     let sampler = d
         .create_sampler(&tuff::SamplerCreateInfo::new())
         .expect("sampler");

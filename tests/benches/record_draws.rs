@@ -27,79 +27,8 @@ fn median(v: &mut [f64]) -> f64 {
 fn main() {
     let s = tuff_setup::setup(false);
     let d = &s.device;
-    let image = d
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 64,
-                    height: 64,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT),
-        )
-        .expect("image");
-    let reqs = d.get_image_memory_requirements(&image);
-    let memory = d
-        .allocate_memory(
-            &tuff::MemoryAllocateInfo::new()
-                .allocation_size(reqs.size)
-                .memory_type_index(
-                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                ),
-        )
-        .expect("memory");
-    d.bind_image_memory(&image, &memory, 0).expect("bind");
-    let view = d
-        .create_image_view(
-            &tuff::ImageViewCreateInfo::new(&image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    base_mip_level: 0,
-                    level_count: 1,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                }),
-        )
-        .expect("view");
-    let attachments = [vk::AttachmentDescription {
-        format: vk::Format::R8G8B8A8_UNORM,
-        samples: vk::SampleCountFlags::TYPE_1,
-        load_op: vk::AttachmentLoadOp::CLEAR,
-        store_op: vk::AttachmentStoreOp::STORE,
-        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-        ..Default::default()
-    }];
-    let color = [vk::AttachmentReference {
-        attachment: 0,
-        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-    }];
-    let subpasses = [tuff::SubpassDescription::new()
-        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
-        .color_attachments(&color)];
-    let render_pass = d
-        .create_render_pass(
-            &tuff::RenderPassCreateInfo::new()
-                .attachments(&attachments)
-                .subpasses(&subpasses),
-        )
-        .expect("render pass");
-    let views = tuff::HandleSlice::new(&[&view]);
-    let framebuffer = d
-        .create_framebuffer(
-            &tuff::FramebufferCreateInfo::new(&render_pass)
-                .attachments(&views)
-                .width(64)
-                .height(64)
-                .layers(1),
-        )
-        .expect("framebuffer");
+    let target = s.color_target(64, vk::ImageUsageFlags::empty());
+    let (render_pass, framebuffer) = (&target.render_pass, &target.framebuffer);
     let ranges = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::VERTEX,
         offset: 0,
@@ -140,8 +69,8 @@ fn main() {
                 .begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default())
                 .expect("begin");
             let begin = vk::RenderPassBeginInfo::default()
-                .render_pass(*render_pass)
-                .framebuffer(*framebuffer)
+                .render_pass(**render_pass)
+                .framebuffer(**framebuffer)
                 .render_area(area)
                 .clear_values(&clear);
             ash_device.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
@@ -163,7 +92,7 @@ fn main() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        let begin = tuff::RenderPassBeginInfo::new(&render_pass, &framebuffer)
+        let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             .clear_values(&clear);
         let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);

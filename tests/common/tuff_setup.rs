@@ -119,3 +119,103 @@ impl Setup {
             .expect("no suitable memory type")
     }
 }
+
+/// A square RGBA8 image with its memory and view, and a one-subpass render pass and
+/// framebuffer that clear and store it.
+pub struct ColorTarget {
+    pub image: tuff::Image,
+    pub memory: tuff::DeviceMemory,
+    pub view: tuff::ImageView,
+    pub render_pass: tuff::RenderPass,
+    pub framebuffer: tuff::Framebuffer,
+}
+
+impl Setup {
+    /// A color target of `size` x `size` pixels; `usage` is added to COLOR_ATTACHMENT.
+    pub fn color_target(&self, size: u32, usage: vk::ImageUsageFlags) -> ColorTarget {
+        let d = &self.device;
+        let image = d
+            .create_image(
+                &tuff::ImageCreateInfo::new()
+                    .image_type(vk::ImageType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .extent(vk::Extent3D {
+                        width: size,
+                        height: size,
+                        depth: 1,
+                    })
+                    .mip_levels(1)
+                    .array_layers(1)
+                    .samples(vk::SampleCountFlags::TYPE_1)
+                    .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
+            )
+            .expect("image");
+        let reqs = d.get_image_memory_requirements(&image);
+        let memory = d
+            .allocate_memory(
+                &tuff::MemoryAllocateInfo::new()
+                    .allocation_size(reqs.size)
+                    .memory_type_index(
+                        self.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                    ),
+            )
+            .expect("image memory");
+        d.bind_image_memory(&image, &memory, 0).expect("bind image");
+        let view = d
+            .create_image_view(
+                &tuff::ImageViewCreateInfo::new(&image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .subresource_range(vk::ImageSubresourceRange {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        base_mip_level: 0,
+                        level_count: 1,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    }),
+            )
+            .expect("image view");
+        let attachments = [vk::AttachmentDescription {
+            format: vk::Format::R8G8B8A8_UNORM,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::CLEAR,
+            store_op: vk::AttachmentStoreOp::STORE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: vk::ImageLayout::UNDEFINED,
+            final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+            ..Default::default()
+        }];
+        let color = [vk::AttachmentReference {
+            attachment: 0,
+            layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        }];
+        let subpasses = [tuff::SubpassDescription::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color)];
+        let render_pass = d
+            .create_render_pass(
+                &tuff::RenderPassCreateInfo::new()
+                    .attachments(&attachments)
+                    .subpasses(&subpasses),
+            )
+            .expect("render pass");
+        let views = tuff::HandleSlice::new(&[&view]);
+        let framebuffer = d
+            .create_framebuffer(
+                &tuff::FramebufferCreateInfo::new(&render_pass)
+                    .attachments(&views)
+                    .width(size)
+                    .height(size)
+                    .layers(1),
+            )
+            .expect("framebuffer");
+        ColorTarget {
+            image,
+            memory,
+            view,
+            render_pass,
+            framebuffer,
+        }
+    }
+}

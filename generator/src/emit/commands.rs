@@ -10,7 +10,7 @@ use super::structs::safe_or_ash;
 use super::types::ash_type;
 use super::Context;
 use crate::model::LenEntry;
-use crate::registry::{CommandDef, Field};
+use crate::registry::CommandDef;
 use proc_macro2::TokenStream;
 use quote::quote;
 
@@ -345,8 +345,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
     };
     for (p, shape) in cmd.params.iter().zip(&plan.params) {
         let name = ident(&param(&p.name));
-        let raw_field = field_ident(&p.name);
-        let _ = raw_field;
         match shape {
             Param::Dispatch => call_args.push(receiver_raw.clone()),
             Param::Allocator => call_args.push(quote!(core::ptr::null(),)),
@@ -414,10 +412,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 }
                 pre.push(quote!(let #name: smallvec::SmallVec<[vk::#w; 8]> = #name.iter().map(|h| h.raw()).collect();));
                 call_args.push(quote!(#name.as_ptr(),));
-                if is_cmd {
-                    // Retained before the slice is shadowed by raw handles.
-                    retain.push(quote!());
-                }
             }
             Param::StructRef { optional } => {
                 lifetimes = true;
@@ -487,11 +481,11 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 let parent_expr = if created_parent == plan.receiver {
                     quote!(self)
                 } else {
-                    let parent_name = ident(&param(created_parent.trim_start_matches("Vk")));
-                    match &pool_override {
-                        Some((pn, None)) => ident(&param(pn)).into_token_stream_ref(),
-                        _ => quote!(#parent_name),
-                    }
+                    let parent_name = match &pool_override {
+                        Some((pn, None)) => ident(&param(pn)),
+                        _ => ident(&param(created_parent.trim_start_matches("Vk"))),
+                    };
+                    quote!(#parent_name)
                 };
                 let parent_arg = if p.type_name == "VkInstance" || p.type_name == "VkDevice" {
                     quote!()
@@ -575,9 +569,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 if elem_is_handle {
                     // Images of a swapchain: owned by it, kept alive with it.
                     let w = type_ident(&p.type_name);
-                    let parent_w = parent_of(cx, &p.type_name).unwrap_or_default();
-                    let _ = parent_w;
-                    let parent_ref = quote!(self);
                     let keep = cmd
                         .params
                         .iter()
@@ -593,7 +584,7 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                         None => quote!(None),
                     };
                     ret_ty = quote!(Vec<#w>);
-                    ret_expr = quote!(items.into_iter().map(|raw| #w::from_raw(raw, #parent_ref, #keep, false)).collect());
+                    ret_expr = quote!(items.into_iter().map(|raw| #w::from_raw(raw, self, #keep, false)).collect());
                 } else {
                     ret_ty = quote!(Vec<#elem>);
                     ret_expr = quote!(items);
@@ -601,17 +592,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
             }
         }
     }
-    // Retain handles of slices for recorded commands.
-    let mut slice_retains = Vec::new();
-    if false {
-        for (p, shape) in cmd.params.iter().zip(&plan.params) {
-            if matches!(shape, Param::HandleSlice) {
-                let name = ident(&param(&p.name));
-                slice_retains.push(quote!(for h in #name { self.retain(h.retained()); }));
-            }
-        }
-    }
-    post.clear();
     match plan.name.as_str() {
         "vkBindBufferMemory" | "vkBindImageMemory" => {
             let obj = ident(&param(&cmd.params[1].name));
@@ -711,7 +691,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
             }
             #(#post)*
             #(#retain)*
-            #(#slice_retains)*
             #ok
         }
     } else if cmd.return_type == "void" {
@@ -722,7 +701,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
             // length of the slice it sizes.
             unsafe { #fp(#(#call_args)*) };
             #(#retain)*
-            #(#slice_retains)*
             #ret_expr
         }
     } else {
@@ -780,7 +758,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
             #body
         }
     };
-    let method = replace_lifetime_args(method, lifetimes);
     match plan.receiver.as_str() {
         "Entry" => quote!(#cfg impl Entry { #method }),
         "VkCommandBuffer" => {
@@ -805,20 +782,3 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
         }
     }
 }
-
-/// Methods use `'a` for the structs they take; the lifetime is declared on the method.
-fn replace_lifetime_args(method: TokenStream, _lifetimes: bool) -> TokenStream {
-    method
-}
-
-trait IntoTokens {
-    fn into_token_stream_ref(self) -> TokenStream;
-}
-impl IntoTokens for proc_macro2::Ident {
-    fn into_token_stream_ref(self) -> TokenStream {
-        quote!(#self)
-    }
-}
-
-#[allow(dead_code)]
-fn unused(_: &Field) {}

@@ -4,7 +4,7 @@
 //! command buffer or a pending submission that holds a clone keeps what it uses alive.
 
 use super::names::{
-    ash_extension_module, cfg_of, command_fn, feature, field_ident, ident, level, type_ident, Level,
+    ash_extension_module, cfg_of, command_fn, feature, ident, level, type_ident, Level,
 };
 use super::Context;
 use proc_macro2::TokenStream;
@@ -98,13 +98,20 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
     }
 }
 
-fn ext_tables(cx: &Context, at: Level, kind: &str) -> (TokenStream, Vec<(String, TokenStream)>) {
-    let exts = extensions_at(cx, at);
+/// The struct of extension function tables at `at`, and the statements that fill it
+/// for the enabled extensions, calling ash's `<module>::<kind>::new(#loader_args)`.
+fn ext_tables(
+    cx: &Context,
+    at: Level,
+    kind: &str,
+    loader_args: TokenStream,
+) -> (TokenStream, Vec<TokenStream>) {
     let struct_name = ident(&format!("{kind}Extensions"));
     let fn_ty = ident(&format!("{kind}Fn"));
+    let loader = ident(kind);
     let mut fields = Vec::new();
     let mut loads = Vec::new();
-    for e in &exts {
+    for e in &extensions_at(cx, at) {
         let f = ident(&feature(e));
         let feat = feature(e);
         let module = ash_extension_module(e);
@@ -114,7 +121,13 @@ fn ext_tables(cx: &Context, at: Level, kind: &str) -> (TokenStream, Vec<(String,
             #[doc = #doc]
             pub #f: Option<#module::#fn_ty>,
         });
-        loads.push((e.clone(), quote!(#f)));
+        let name_lit = e.as_str();
+        loads.push(quote! {
+            #[cfg(feature = #feat)]
+            if enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()) {
+                ext.#f = Some(#module::#loader::new(#loader_args).fp().clone());
+            }
+        });
     }
     let doc = format!(
         "The function tables of the enabled {} extensions.",
@@ -134,18 +147,8 @@ fn ext_tables(cx: &Context, at: Level, kind: &str) -> (TokenStream, Vec<(String,
 }
 
 fn emit_instance(cx: &Context) -> TokenStream {
-    let (ext_struct, loads) = ext_tables(cx, Level::Instance, "Instance");
-    let load_stmts = loads.iter().map(|(e, f)| {
-        let feat = feature(e);
-        let module = ash_extension_module(e);
-        let name_lit = e.as_str();
-        quote! {
-            #[cfg(feature = #feat)]
-            if enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()) {
-                ext.#f = Some(#module::Instance::new(entry.fns(), &fns).fp().clone());
-            }
-        }
-    });
+    let (ext_struct, load_stmts) =
+        ext_tables(cx, Level::Instance, "Instance", quote!(entry.fns(), &fns));
     quote! {
         #ext_struct
 
@@ -213,18 +216,12 @@ fn emit_instance(cx: &Context) -> TokenStream {
 }
 
 fn emit_device(cx: &Context) -> TokenStream {
-    let (ext_struct, loads) = ext_tables(cx, Level::Device, "Device");
-    let load_stmts = loads.iter().map(|(e, f)| {
-        let feat = feature(e);
-        let module = ash_extension_module(e);
-        let name_lit = e.as_str();
-        quote! {
-            #[cfg(feature = #feat)]
-            if enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()) {
-                ext.#f = Some(#module::Device::new(physical.parent().fns(), &fns).fp().clone());
-            }
-        }
-    });
+    let (ext_struct, load_stmts) = ext_tables(
+        cx,
+        Level::Device,
+        "Device",
+        quote!(physical.parent().fns(), &fns),
+    );
     quote! {
         #ext_struct
 
@@ -364,7 +361,6 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
         };
         let f = ident(&command_fn(d));
         let mut args = Vec::new();
-        let mut has_count = false;
         for (i, p) in cmd.params.iter().enumerate() {
             if i == 0 {
                 args.push(quote!(self #device_path.raw()));
@@ -377,24 +373,17 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             } else if Some(&p.type_name) == parent.as_ref() {
                 args.push(quote!(self.parent.raw()));
             } else if p.type_name == "uint32_t" {
-                has_count = true;
                 args.push(quote!(1));
             } else {
                 return None;
             }
         }
-        let _ = has_count;
         let call = quote!((#table.#f)(#(#args),*));
         let call = if cmd.return_type == "VkResult" {
             quote!(let _ = #call;)
         } else {
             quote!(#call;)
         };
-        let safety = format!(
-            "// SAFETY: the last clone is gone, so no host reference is left, and every submission that used this object held a clone until its fence signalled; `{d}` gets the parent this object came from and no allocator, as it was created without one."
-        );
-        let safety: TokenStream = safety.parse().unwrap_or_default();
-        let _ = safety;
         let fence_wait = (name == "VkFence").then(|| quote! {
             if !self.pending.lock().is_empty() {
                 // SAFETY: the fence belongs to this device; waiting is always valid.
@@ -473,7 +462,6 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             }
         }
     });
-    let _ = field_ident;
     quote! {
         #[doc = #doc]
         #cfg

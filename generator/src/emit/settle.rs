@@ -89,7 +89,7 @@ fn implicit(
                     .iter()
                     .position(|p| Some(&p.name) == d.field.as_ref());
                 match idx.and_then(|i| plan.params.get(i)) {
-                    Some(p) => param_settlement(cx, &d.item, idx.unwrap_or(0), p),
+                    Some(p) => param_settlement(p),
                     None => Settlement::User("parameter not found in the plan".into()),
                 }
             }
@@ -146,8 +146,7 @@ fn member_settlement(shape: &Member) -> Settlement {
     }
 }
 
-fn param_settlement(cx: &Context, _cmd: &str, _idx: usize, p: &Param) -> Settlement {
-    let _ = cx;
+fn param_settlement(p: &Param) -> Settlement {
     match p {
         Param::Dispatch => Settlement::Static("`self` is a live wrapper".into()),
         Param::Handle { .. } | Param::HandleSlice | Param::Created | Param::CreatedArray => {

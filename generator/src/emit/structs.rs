@@ -4,12 +4,12 @@
 //! at the call is free and a slice of safe structs is a valid C array. `pNext` chains
 //! are typed: `push_next` accepts only structs that `structextends` the head.
 
-use super::names::{cfg_of, field_ident, ident, type_ident};
+use super::names::{cfg_of, field_ident, type_ident};
 use super::shape::{struct_members, Member};
 use super::types::{array_size, ash_type, TypeFacts};
 use super::{doc_rules, Context};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 
 /// The structs that get safe counterparts, in name order.
 pub fn safe_structs(cx: &Context) -> Vec<String> {
@@ -331,7 +331,6 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
         .map(|head| {
             let h = type_ident(head);
             let head_cfg = cfg_of(model, model.condition(head));
-            let _ = &head_cfg;
             quote! {
                 #cfg
                 #head_cfg
@@ -340,8 +339,6 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
             }
         })
         .collect();
-    let _ = format_ident!("x");
-    let _ = ident("x");
     quote! {
         #[doc = #doc]
         #cfg
