@@ -34,7 +34,10 @@ fn buffer_with_memory(s: &Setup, size: u64) -> (tuff::Buffer, tuff::DeviceMemory
                 | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
         ))
         .expect("buffer");
-    let reqs = s.device.get_buffer_memory_requirements(&buffer);
+    let reqs = s
+        .device
+        .get_buffer_memory_requirements(&buffer)
+        .expect("memory requirements");
     let memory = s
         .device
         .allocate_memory(
@@ -108,7 +111,8 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     let writes = [tuff::WriteDescriptorSet::new(&sets[0])
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .buffer_info(&buffer_info)];
-    d.update_descriptor_sets(&writes, &[]);
+    d.update_descriptor_sets(&writes, &[])
+        .expect("descriptor writes");
     let ranges = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::VERTEX,
         offset: 0,

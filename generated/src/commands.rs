@@ -12,11 +12,14 @@
     clippy::never_loop,
     clippy::no_effect,
     clippy::unnecessary_cast,
-    clippy::field_reassign_with_default
+    clippy::field_reassign_with_default,
+    clippy::let_and_return
 )]
 use crate::handles::*;
 use crate::structs::*;
 use crate::{recorder::*, Entry, Error, Handle, Result};
+#[cfg(feature = "runtime_implicit_validations")]
+use crate::validation::fail;
 use ash::vk;
 #[cfg(feature = "khr_swapchain")]
 impl Device {
@@ -30,6 +33,28 @@ impl Device {
 - `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn acquire_next_image2_khr<'a>(
+        &self,
+        acquire_info: &AcquireNextImageInfoKHR<'a>,
+    ) -> Result<(u32, vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_acquire_next_image_info_khr(acquire_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.acquire_next_image2_khr_unchecked(acquire_info) }
+    }
+    /**`vkAcquireNextImage2KHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn acquire_next_image2_khr_unchecked<'a>(
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
     ) -> Result<(u32, vk::Result)> {
@@ -70,12 +95,66 @@ impl Device {
 - `VUID-vkAcquireNextImageKHR-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAcquireNextImageKHR-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAcquireNextImageKHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkAcquireNextImageKHR-swapchain-parent`: user (`parent` rules are not checked yet)
-- `VUID-vkAcquireNextImageKHR-semaphore-parent`: user (`parent` rules are not checked yet)
-- `VUID-vkAcquireNextImageKHR-fence-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkAcquireNextImageKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-semaphore-03265`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn acquire_next_image_khr(
+        &self,
+        swapchain: &SwapchainKHR,
+        timeout: u64,
+        semaphore: Option<&Semaphore>,
+        fence: Option<&Fence>,
+    ) -> Result<(u32, vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(swapchain.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkAcquireNextImageKHR-swapchain-parent",
+                            "`swapchain` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                if let Some(h) = semaphore {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkAcquireNextImageKHR-semaphore-parent",
+                                "`semaphore` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                if let Some(h) = fence {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkAcquireNextImageKHR-fence-parent",
+                                "`fence` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.acquire_next_image_khr_unchecked(swapchain, timeout, semaphore, fence)
+        }
+    }
+    /**`vkAcquireNextImageKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn acquire_next_image_khr_unchecked(
         &self,
         swapchain: &SwapchainKHR,
         timeout: u64,
@@ -113,9 +192,40 @@ impl Device {
 - `VUID-vkAllocateCommandBuffers-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`: dynamic (checks the count is not 0)*/
     #[inline]
     pub fn allocate_command_buffers<'a>(
+        &self,
+        command_pool: &CommandPool,
+        allocate_info: &CommandBufferAllocateInfo<'a>,
+    ) -> Result<Vec<CommandBuffer>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if allocate_info.command_buffer_count == 0 {
+                    return Err(
+                        fail(
+                            "VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength",
+                            "`pAllocateInfo::commandBufferCount` is 0".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_command_buffer_allocate_info(allocate_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.allocate_command_buffers_unchecked(command_pool, allocate_info) }
+    }
+    /**`vkAllocateCommandBuffers` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::allocate_command_buffers`] checks at run time: `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn allocate_command_buffers_unchecked<'a>(
         &self,
         command_pool: &CommandPool,
         allocate_info: &CommandBufferAllocateInfo<'a>,
@@ -144,6 +254,11 @@ impl Device {
                 .into_iter()
                 .map(|raw| CommandBuffer::from_raw(raw, command_pool, None, true))
                 .collect();
+            #[cfg(feature = "runtime_implicit_validations")]
+            let cbs: Vec<CommandBuffer> = cbs
+                .into_iter()
+                .map(|cb| cb.with_level(allocate_info.level))
+                .collect();
             for cb in &cbs {
                 self.register_command_buffer(cb);
             }
@@ -159,9 +274,42 @@ impl Device {
 - `VUID-vkAllocateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: dynamic (checks the count is not 0)*/
     #[inline]
     pub fn allocate_descriptor_sets<'a>(
+        &self,
+        descriptor_pool: &DescriptorPool,
+        allocate_info: &DescriptorSetAllocateInfo<'a>,
+    ) -> Result<Vec<DescriptorSet>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if allocate_info.descriptor_set_count == 0 {
+                    return Err(
+                        fail(
+                            "VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength",
+                            "`pAllocateInfo::descriptorSetCount` is 0".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_descriptor_set_allocate_info(allocate_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.allocate_descriptor_sets_unchecked(descriptor_pool, allocate_info)
+        }
+    }
+    /**`vkAllocateDescriptorSets` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn allocate_descriptor_sets_unchecked<'a>(
         &self,
         descriptor_pool: &DescriptorPool,
         allocate_info: &DescriptorSetAllocateInfo<'a>,
@@ -211,6 +359,28 @@ impl Device {
         &self,
         allocate_info: &MemoryAllocateInfo<'a>,
     ) -> Result<DeviceMemory> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_memory_allocate_info(allocate_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.allocate_memory_unchecked(allocate_info) }
+    }
+    /**`vkAllocateMemory` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::allocate_memory`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn allocate_memory_unchecked<'a>(
+        &self,
+        allocate_info: &MemoryAllocateInfo<'a>,
+    ) -> Result<DeviceMemory> {
         let mut out = vk::DeviceMemory::null();
         let r = unsafe {
             (self
@@ -243,8 +413,8 @@ impl Device {
 - `VUID-vkBindBufferMemory-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindBufferMemory-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindBufferMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindBufferMemory-buffer-parent`: user (`parent` rules are not checked yet)
-- `VUID-vkBindBufferMemory-memory-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkBindBufferMemory-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkBindBufferMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindBufferMemory-buffer-01444`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkBindBufferMemory-memory-01508`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkBindBufferMemory-None-01898`: user (explicit rule; the wrappers do not check it)
@@ -260,6 +430,45 @@ impl Device {
 - `VUID-vkBindBufferMemory-descriptorBufferCaptureReplay-08112`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn bind_buffer_memory(
+        &self,
+        buffer: &Buffer,
+        memory: &DeviceMemory,
+        memory_offset: vk::DeviceSize,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkBindBufferMemory-buffer-parent",
+                            "`buffer` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(memory.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkBindBufferMemory-memory-parent",
+                            "`memory` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
+    }
+    /**`vkBindBufferMemory` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run time: `VUID-vkBindBufferMemory-buffer-parent`, `VUID-vkBindBufferMemory-memory-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn bind_buffer_memory_unchecked(
         &self,
         buffer: &Buffer,
         memory: &DeviceMemory,
@@ -290,9 +499,41 @@ impl Device {
 
 - `VUID-vkBindBufferMemory2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
     pub fn bind_buffer_memory2<'a>(
+        &self,
+        bind_infos: &[BindBufferMemoryInfo<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if bind_infos.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkBindBufferMemory2-bindInfoCount-arraylength",
+                            "`bindInfoCount` is 0".into(),
+                        ),
+                    );
+                }
+                for x in bind_infos.iter() {
+                    crate::checks::check_bind_buffer_memory_info(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.bind_buffer_memory2_unchecked(bind_infos) }
+    }
+    /**`vkBindBufferMemory2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn bind_buffer_memory2_unchecked<'a>(
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
@@ -326,8 +567,8 @@ impl Device {
 - `VUID-vkBindImageMemory-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindImageMemory-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindImageMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindImageMemory-image-parent`: user (`parent` rules are not checked yet)
-- `VUID-vkBindImageMemory-memory-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkBindImageMemory-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkBindImageMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindImageMemory-image-01445`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkBindImageMemory-memory-01509`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkBindImageMemory-memory-02628`: user (explicit rule; the wrappers do not check it)
@@ -345,6 +586,45 @@ impl Device {
 - `VUID-vkBindImageMemory-image-06392`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn bind_image_memory(
+        &self,
+        image: &Image,
+        memory: &DeviceMemory,
+        memory_offset: vk::DeviceSize,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkBindImageMemory-image-parent",
+                            "`image` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(memory.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkBindImageMemory-memory-parent",
+                            "`memory` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
+    }
+    /**`vkBindImageMemory` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::bind_image_memory`] checks at run time: `VUID-vkBindImageMemory-image-parent`, `VUID-vkBindImageMemory-memory-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn bind_image_memory_unchecked(
         &self,
         image: &Image,
         memory: &DeviceMemory,
@@ -372,9 +652,41 @@ impl Device {
 - `VUID-vkBindImageMemory2-pBindInfos-04006`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkBindImageMemory2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindImageMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
     pub fn bind_image_memory2<'a>(
+        &self,
+        bind_infos: &[BindImageMemoryInfo<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if bind_infos.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkBindImageMemory2-bindInfoCount-arraylength",
+                            "`bindInfoCount` is 0".into(),
+                        ),
+                    );
+                }
+                for x in bind_infos.iter() {
+                    crate::checks::check_bind_image_memory_info(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.bind_image_memory2_unchecked(bind_infos) }
+    }
+    /**`vkBindImageMemory2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn bind_image_memory2_unchecked<'a>(
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
@@ -403,10 +715,43 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_begin_debug_utils_label_ext<'a>(
+        &mut self,
+        label_info: &DebugUtilsLabelEXT<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.cmd_begin_debug_utils_label_ext_unchecked(label_info) }
+    }
+    /**`vkCmdBeginDebugUtilsLabelEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] checks at run time: `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_debug_utils_label_ext_unchecked<'a>(
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
@@ -443,10 +788,10 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBeginQuery-queryPool-01922`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBeginQuery-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBeginQuery-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBeginQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBeginQuery-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBeginQuery-queryType-04728`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginQuery-queryType-06741`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginQuery-queryType-04729`: user (explicit rule; the wrappers do not check it)
@@ -478,6 +823,57 @@ impl<'c, S: State> Recorder<'c, S> {
         query: u32,
         flags: vk::QueryControlFlags,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_query_control_flags(
+                    flags,
+                    s,
+                    "VUID-vkCmdBeginQuery-flags-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginQuery-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginQuery-commonparent",
+                            "`queryPool` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_begin_query_unchecked(query_pool, query, flags) }
+    }
+    /**`vkCmdBeginQuery` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_query_unchecked(
+        &mut self,
+        query_pool: &QueryPool,
+        query: u32,
+        flags: vk::QueryControlFlags,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -504,12 +900,12 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBeginRenderPass-framebuffer-02532`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginRenderPass-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBeginRenderPass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBeginRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRenderPass-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBeginRenderPass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBeginRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdBeginRenderPass-initialLayout-00896`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginRenderPass-initialLayout-01758`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginRenderPass-initialLayout-02842`: user (explicit rule; the wrappers do not check it)
@@ -518,6 +914,58 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBeginRenderPass-initialLayout-07001`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_begin_render_pass<'a>(
+        mut self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        contents: vk::SubpassContents,
+    ) -> Recorder<'c, InRenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_subpass_contents(
+                    contents,
+                    s,
+                    "VUID-vkCmdBeginRenderPass-contents-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginRenderPass-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
+        }
+        unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
+    }
+    /**`vkCmdBeginRenderPass` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_render_pass_unchecked<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
@@ -556,16 +1004,66 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRenderPass2-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBeginRenderPass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdBeginRenderPass2-initialLayout-02844`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginRenderPass2-initialLayout-07002`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBeginRenderPass2-initialLayout-07003`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_begin_render_pass2<'a>(
+        mut self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+    ) -> Recorder<'c, InRenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginRenderPass2-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
+                crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
+        }
+        unsafe {
+            self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
+        }
+    }
+    /**`vkCmdBeginRenderPass2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_render_pass2_unchecked<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
@@ -595,11 +1093,49 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRendering-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_begin_rendering<'a>(
+        mut self,
+        rendering_info: &RenderingInfo<'a>,
+    ) -> Recorder<'c, InRendering> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBeginRendering-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_rendering_info(rendering_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
+        }
+        unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
+    }
+    /**`vkCmdBeginRendering` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_rendering_unchecked<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
@@ -631,21 +1167,101 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindDescriptorSets-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindDescriptorSets-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBindDescriptorSets-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBindDescriptorSets-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdBindDescriptorSets-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindDescriptorSets-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdBindDescriptorSets-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-04616`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindDescriptorSets-graphicsPipelineLibrary-06754`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-08010`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_descriptor_sets<'a>(
+        &mut self,
+        pipeline_bind_point: vk::PipelineBindPoint,
+        layout: &PipelineLayout,
+        first_set: u32,
+        descriptor_sets: &[&DescriptorSet],
+        dynamic_offsets: &[u32],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_pipeline_bind_point(
+                    pipeline_bind_point,
+                    s,
+                    "VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if descriptor_sets.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength",
+                            "`descriptorSetCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(layout.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindDescriptorSets-commonparent",
+                            "`layout` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for h in descriptor_sets.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCmdBindDescriptorSets-commonparent",
+                                "`pDescriptorSets` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_bind_descriptor_sets_unchecked(
+                pipeline_bind_point,
+                layout,
+                first_set,
+                descriptor_sets,
+                dynamic_offsets,
+            )
+        }
+    }
+    /**`vkCmdBindDescriptorSets` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_bind_descriptor_sets_unchecked<'a>(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -691,15 +1307,66 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindIndexBuffer-buffer-00434`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindIndexBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindIndexBuffer-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBindIndexBuffer-indexType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBindIndexBuffer-indexType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindIndexBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBindIndexBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBindIndexBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindIndexBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBindIndexBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBindIndexBuffer-indexType-02507`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindIndexBuffer-indexType-02765`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_index_buffer(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        index_type: vk::IndexType,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_index_type(
+                    index_type,
+                    s,
+                    "VUID-vkCmdBindIndexBuffer-indexType-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindIndexBuffer-commonparent",
+                            "`buffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
+    }
+    /**`vkCmdBindIndexBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_bind_index_buffer_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -727,12 +1394,12 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindPipeline-pipeline-00781`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindPipeline-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindPipeline-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindPipeline-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBindPipeline-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBindPipeline-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindPipeline-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBindPipeline-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBindPipeline-variableSampleLocations-01525`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindPipeline-None-02323`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-02391`: user (explicit rule; the wrappers do not check it)
@@ -750,6 +1417,56 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-06653`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_pipeline(
+        &mut self,
+        pipeline_bind_point: vk::PipelineBindPoint,
+        pipeline: &Pipeline,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_pipeline_bind_point(
+                    pipeline_bind_point,
+                    s,
+                    "VUID-vkCmdBindPipeline-pipelineBindPoint-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindPipeline-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(pipeline.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindPipeline-commonparent",
+                            "`pipeline` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
+    }
+    /**`vkCmdBindPipeline` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_bind_pipeline_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -780,13 +1497,71 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBindVertexBuffers-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdBindVertexBuffers-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindVertexBuffers-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-04002`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_vertex_buffers<'a>(
+        &mut self,
+        first_binding: u32,
+        buffers: &[&Buffer],
+        offsets: &[vk::DeviceSize],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if buffers.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindVertexBuffers-bindingCount-arraylength",
+                            "`bindingCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in buffers.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCmdBindVertexBuffers-commonparent",
+                                "`pBuffers` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
+        }
+    }
+    /**`vkCmdBindVertexBuffers` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_bind_vertex_buffers_unchecked<'a>(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -835,13 +1610,79 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdBindVertexBuffers2-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdBindVertexBuffers2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindVertexBuffers2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-04112`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_bind_vertex_buffers2<'a>(
+        &mut self,
+        first_binding: u32,
+        buffers: &[&Buffer],
+        offsets: &[vk::DeviceSize],
+        sizes: &[vk::DeviceSize],
+        strides: &[vk::DeviceSize],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if buffers.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength",
+                            "`bindingCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in buffers.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCmdBindVertexBuffers2-commonparent",
+                                "`pBuffers` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_bind_vertex_buffers2_unchecked(
+                first_binding,
+                buffers,
+                offsets,
+                sizes,
+                strides,
+            )
+        }
+    }
+    /**`vkCmdBindVertexBuffers2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_bind_vertex_buffers2_unchecked<'a>(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -919,17 +1760,17 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBlitImage-dstImage-00252`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBlitImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBlitImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBlitImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBlitImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBlitImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBlitImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBlitImage-filter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdBlitImage-filter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBlitImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBlitImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBlitImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBlitImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBlitImage-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdBlitImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdBlitImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdBlitImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBlitImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdBlitImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdBlitImage-srcImage-06421`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBlitImage-dstImage-06422`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdBlitImage-srcImageLayout-00222`: user (explicit rule; the wrappers do not check it)
@@ -941,6 +1782,99 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBlitImage-dstImage-02545`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_blit_image<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageBlit],
+        filter: vk::Filter,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    src_image_layout,
+                    s,
+                    "VUID-vkCmdBlitImage-srcImageLayout-parameter",
+                )?;
+                crate::checks::enum_image_layout(
+                    dst_image_layout,
+                    s,
+                    "VUID-vkCmdBlitImage-dstImageLayout-parameter",
+                )?;
+                crate::checks::enum_filter(
+                    filter,
+                    s,
+                    "VUID-vkCmdBlitImage-filter-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBlitImage-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if regions.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBlitImage-regionCount-arraylength",
+                            "`regionCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(src_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBlitImage-commonparent",
+                            "`srcImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBlitImage-commonparent",
+                            "`dstImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in regions.iter() {
+                    crate::checks::check_image_blit(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_blit_image_unchecked(
+                src_image,
+                src_image_layout,
+                dst_image,
+                dst_image_layout,
+                regions,
+                filter,
+            )
+        }
+    }
+    /**`vkCmdBlitImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_blit_image_unchecked<'a>(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -981,11 +1915,47 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBlitImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBlitImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdBlitImage2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_blit_image_info2(blit_image_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
+    }
+    /**`vkCmdBlitImage2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_blit_image2_unchecked<'a>(
+        &mut self,
+        blit_image_info: &BlitImageInfo2<'a>,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -1015,16 +1985,71 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdClearAttachments-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdClearAttachments-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdClearAttachments-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdClearAttachments-rectCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdClearAttachments-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearAttachments-commandBuffer-02504`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdClearAttachments-commandBuffer-02505`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdClearAttachments-baseArrayLayer-00018`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_clear_attachments<'a>(
+        &mut self,
+        attachments: &[vk::ClearAttachment],
+        rects: &[vk::ClearRect],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearAttachments-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if attachments.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearAttachments-attachmentCount-arraylength",
+                            "`attachmentCount` is 0".into(),
+                        ),
+                    );
+                }
+                if rects.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearAttachments-rectCount-arraylength",
+                            "`rectCount` is 0".into(),
+                        ),
+                    );
+                }
+                for x in attachments.iter() {
+                    crate::checks::check_clear_attachment(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
+    }
+    /**`vkCmdClearAttachments` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_clear_attachments_unchecked<'a>(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
@@ -1042,6 +2067,128 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 rects.as_ptr().cast(),
             )
         };
+        ()
+    }
+}
+impl<'c> Recorder<'c, Outside> {
+    /**`vkCmdClearColorImage`
+
+# Valid usage
+
+- `VUID-vkCmdClearColorImage-image-01993`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-image-00002`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-image-00003`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-imageLayout-00004`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-aspectMask-02498`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-baseMipLevel-01470`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-pRanges-01692`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-baseArrayLayer-01472`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-pRanges-01693`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-image-00007`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-pColor-04961`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdClearColorImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdClearColorImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdClearColorImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearColorImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdClearColorImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdClearColorImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdClearColorImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdClearColorImage-image-01545`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-imageLayout-00005`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-imageLayout-01394`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-commandBuffer-01805`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkCmdClearColorImage-commandBuffer-01806`: user (explicit rule; the wrappers do not check it)*/
+    #[inline]
+    pub fn cmd_clear_color_image<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        color: &vk::ClearColorValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    image_layout,
+                    s,
+                    "VUID-vkCmdClearColorImage-imageLayout-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearColorImage-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if ranges.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearColorImage-rangeCount-arraylength",
+                            "`rangeCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearColorImage-commonparent",
+                            "`image` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in ranges.iter() {
+                    crate::checks::check_image_subresource_range(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
+        }
+    }
+    /**`vkCmdClearColorImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_clear_color_image_unchecked<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        color: &vk::ClearColorValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) -> () {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_clear_color_image)(
+                self.raw(),
+                image.raw(),
+                image_layout,
+                color as *const vk::ClearColorValue as *const _,
+                ranges.len() as u32,
+                ranges.as_ptr().cast(),
+            )
+        };
+        self.retain_with(image.address(), || image.retained());
         ()
     }
 }
@@ -1068,19 +2215,89 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdClearDepthStencilImage-image-00014`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdClearDepthStencilImage-pDepthStencil-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdClearDepthStencilImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdClearDepthStencilImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdClearDepthStencilImage-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdClearDepthStencilImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdClearDepthStencilImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_clear_depth_stencil_image<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        depth_stencil: &vk::ClearDepthStencilValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    image_layout,
+                    s,
+                    "VUID-vkCmdClearDepthStencilImage-imageLayout-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if ranges.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength",
+                            "`rangeCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdClearDepthStencilImage-commonparent",
+                            "`image` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in ranges.iter() {
+                    crate::checks::check_image_subresource_range(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_clear_depth_stencil_image_unchecked(
+                image,
+                image_layout,
+                depth_stencil,
+                ranges,
+            )
+        }
+    }
+    /**`vkCmdClearDepthStencilImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_clear_depth_stencil_image_unchecked<'a>(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -1127,13 +2344,77 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdCopyBuffer-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdCopyBuffer-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkCmdCopyBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn cmd_copy_buffer<'a>(
+        &mut self,
+        src_buffer: &Buffer,
+        dst_buffer: &Buffer,
+        regions: &[vk::BufferCopy],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBuffer-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if regions.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBuffer-regionCount-arraylength",
+                            "`regionCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(src_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBuffer-commonparent",
+                            "`srcBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBuffer-commonparent",
+                            "`dstBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
+    }
+    /**`vkCmdCopyBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer_unchecked<'a>(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -1168,11 +2449,48 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBuffer2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_copy_buffer2<'a>(
+        &mut self,
+        copy_buffer_info: &CopyBufferInfo2<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_copy_buffer_info2(copy_buffer_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
+    }
+    /**`vkCmdCopyBuffer2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer2_unchecked<'a>(
         &mut self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
     ) -> () {
@@ -1232,14 +2550,14 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdCopyBufferToImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBufferToImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBufferToImage-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdCopyBufferToImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyBufferToImage-pRegions-07740`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyBufferToImage-pRegions-07741`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
@@ -1252,6 +2570,86 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBufferToImage-None-00214`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_buffer_to_image<'a>(
+        &mut self,
+        src_buffer: &Buffer,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::BufferImageCopy],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    dst_image_layout,
+                    s,
+                    "VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if regions.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBufferToImage-regionCount-arraylength",
+                            "`regionCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(src_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBufferToImage-commonparent",
+                            "`srcBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBufferToImage-commonparent",
+                            "`dstImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in regions.iter() {
+                    crate::checks::check_buffer_image_copy(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_buffer_to_image_unchecked(
+                src_buffer,
+                dst_image,
+                dst_image_layout,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdCopyBufferToImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer_to_image_unchecked<'a>(
         &mut self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -1291,11 +2689,51 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBufferToImage2-pCopyBufferToImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBufferToImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_copy_buffer_to_image2<'a>(
+        &mut self,
+        copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_copy_buffer_to_image_info2(
+                    copy_buffer_to_image_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
+    }
+    /**`vkCmdCopyBufferToImage2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> () {
@@ -1359,16 +2797,16 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImage-dstImage-01734`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdCopyImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdCopyImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImage-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdCopyImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdCopyImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyImage-srcImage-01995`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyImage-dstImage-01996`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyImage-srcImage-04443`: user (explicit rule; the wrappers do not check it)
@@ -1415,6 +2853,93 @@ impl<'c> Recorder<'c, Outside> {
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    src_image_layout,
+                    s,
+                    "VUID-vkCmdCopyImage-srcImageLayout-parameter",
+                )?;
+                crate::checks::enum_image_layout(
+                    dst_image_layout,
+                    s,
+                    "VUID-vkCmdCopyImage-dstImageLayout-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if regions.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage-regionCount-arraylength",
+                            "`regionCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(src_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage-commonparent",
+                            "`srcImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage-commonparent",
+                            "`dstImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in regions.iter() {
+                    crate::checks::check_image_copy(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_image_unchecked(
+                src_image,
+                src_image_layout,
+                dst_image,
+                dst_image_layout,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdCopyImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image_unchecked<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageCopy],
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -1446,11 +2971,48 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_copy_image_info2(copy_image_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
+    }
+    /**`vkCmdCopyImage2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image2_unchecked<'a>(
+        &mut self,
+        copy_image_info: &CopyImageInfo2<'a>,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -1505,15 +3067,15 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImageToBuffer-pRegions-06222`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyImageToBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImageToBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImageToBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdCopyImageToBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyImageToBuffer-pRegions-07740`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyImageToBuffer-pRegions-07741`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
@@ -1525,6 +3087,86 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImageToBuffer-srcImage-02544`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_image_to_buffer<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_buffer: &Buffer,
+        regions: &[vk::BufferImageCopy],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    src_image_layout,
+                    s,
+                    "VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if regions.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImageToBuffer-regionCount-arraylength",
+                            "`regionCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(src_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImageToBuffer-commonparent",
+                            "`srcImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImageToBuffer-commonparent",
+                            "`dstBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in regions.iter() {
+                    crate::checks::check_buffer_image_copy(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_image_to_buffer_unchecked(
+                src_image,
+                src_image_layout,
+                dst_buffer,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdCopyImageToBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image_to_buffer_unchecked<'a>(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1563,11 +3205,51 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImageToBuffer2-pCopyImageToBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImageToBuffer2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_copy_image_to_buffer2<'a>(
+        &mut self,
+        copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_copy_image_to_buffer_info2(
+                    copy_image_to_buffer_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
+    }
+    /**`vkCmdCopyImageToBuffer2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> () {
@@ -1603,12 +3285,12 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyQueryPoolResults-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdCopyQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyQueryPoolResults-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyQueryPoolResults-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdCopyQueryPoolResults-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyQueryPoolResults-queryType-03232`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyQueryPoolResults-queryType-03233`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdCopyQueryPoolResults-queryType-03234`: user (explicit rule; the wrappers do not check it)
@@ -1617,6 +3299,80 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyQueryPoolResults-flags-06902`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_copy_query_pool_results(
+        &mut self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_query_result_flags(
+                    flags,
+                    s,
+                    "VUID-vkCmdCopyQueryPoolResults-flags-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyQueryPoolResults-commonparent",
+                            "`queryPool` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyQueryPoolResults-commonparent",
+                            "`dstBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_query_pool_results_unchecked(
+                query_pool,
+                first_query,
+                query_count,
+                dst_buffer,
+                dst_offset,
+                stride,
+                flags,
+            )
+        }
+    }
+    /**`vkCmdCopyQueryPoolResults` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_query_pool_results_unchecked(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1672,9 +3428,9 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdDispatch-groupCountZ-00388`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDispatch-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDispatch-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDispatch-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatch-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatch-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatch-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -1725,6 +3481,45 @@ impl<'c> Recorder<'c, Outside> {
         group_count_y: u32,
         group_count_z: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDispatch-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
+        }
+    }
+    /**`vkCmdDispatch` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_dispatch_unchecked(
+        &mut self,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -1764,9 +3559,9 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdDispatchBase-baseGroupX-00427`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDispatchBase-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatchBase-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatchBase-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatchBase-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -1820,6 +3615,55 @@ impl<'c> Recorder<'c, Outside> {
         group_count_y: u32,
         group_count_z: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDispatchBase-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_dispatch_base_unchecked(
+                base_group_x,
+                base_group_y,
+                base_group_z,
+                group_count_x,
+                group_count_y,
+                group_count_z,
+            )
+        }
+    }
+    /**`vkCmdDispatchBase` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_dispatch_base_unchecked(
+        &mut self,
+        base_group_x: u32,
+        base_group_y: u32,
+        base_group_z: u32,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -1865,10 +3709,10 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDispatchIndirect-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdDispatchIndirect-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDispatchIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatchIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -1912,6 +3756,51 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_dispatch_indirect(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDispatchIndirect-commonparent",
+                            "`buffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
+    }
+    /**`vkCmdDispatchIndirect` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_dispatch_indirect_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -1963,9 +3852,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDraw-None-02721`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDraw-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDraw-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDraw-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDraw-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDraw-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -2137,6 +4026,51 @@ impl<'c, S: Inside> Recorder<'c, S> {
         first_vertex: u32,
         first_instance: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDraw-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_unchecked(
+                vertex_count,
+                instance_count,
+                first_vertex,
+                first_instance,
+            )
+        }
+    }
+    /**`vkCmdDraw` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_unchecked(
+        &mut self,
+        vertex_count: u32,
+        instance_count: u32,
+        first_vertex: u32,
+        first_instance: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -2191,9 +4125,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndexed-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexed-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexed-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -2366,6 +4300,53 @@ impl<'c, S: Inside> Recorder<'c, S> {
         vertex_offset: i32,
         first_instance: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndexed-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indexed_unchecked(
+                index_count,
+                instance_count,
+                first_index,
+                vertex_offset,
+                first_instance,
+            )
+        }
+    }
+    /**`vkCmdDrawIndexed` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indexed_unchecked(
+        &mut self,
+        index_count: u32,
+        instance_count: u32,
+        first_index: u32,
+        vertex_offset: i32,
+        first_instance: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -2430,10 +4411,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndexedIndirect-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdDrawIndexedIndirect-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDrawIndexedIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexedIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -2603,6 +4584,55 @@ impl<'c, S: Inside> Recorder<'c, S> {
         draw_count: u32,
         stride: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndexedIndirect-commonparent",
+                            "`buffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
+        }
+    }
+    /**`vkCmdDrawIndexedIndirect` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indexed_indirect_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        draw_count: u32,
+        stride: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -2672,10 +4702,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDrawIndexedIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexedIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -2848,6 +4878,73 @@ impl<'c, S: Inside> Recorder<'c, S> {
         max_draw_count: u32,
         stride: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                            "`buffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(count_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                            "`countBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indexed_indirect_count_unchecked(
+                buffer,
+                offset,
+                count_buffer,
+                count_buffer_offset,
+                max_draw_count,
+                stride,
+            )
+        }
+    }
+    /**`vkCmdDrawIndexedIndirectCount` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
+        max_draw_count: u32,
+        stride: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -2913,10 +5010,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndirect-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdDrawIndirect-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDrawIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -3086,6 +5183,53 @@ impl<'c, S: Inside> Recorder<'c, S> {
         draw_count: u32,
         stride: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndirect-commonparent",
+                            "`buffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
+    }
+    /**`vkCmdDrawIndirect` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indirect_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        draw_count: u32,
+        stride: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -3147,10 +5291,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndirectCount-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdDrawIndirectCount-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDrawIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
@@ -3323,6 +5467,73 @@ impl<'c, S: Inside> Recorder<'c, S> {
         max_draw_count: u32,
         stride: u32,
     ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndirectCount-commonparent",
+                            "`buffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(count_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdDrawIndirectCount-commonparent",
+                            "`countBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indirect_count_unchecked(
+                buffer,
+                offset,
+                count_buffer,
+                count_buffer_offset,
+                max_draw_count,
+                stride,
+            )
+        }
+    }
+    /**`vkCmdDrawIndirectCount` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indirect_count_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
+        max_draw_count: u32,
+        stride: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -3353,10 +5564,40 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01913`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
+    }
+    /**`vkCmdEndDebugUtilsLabelEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
         let ext_table = self
             .device()
             .ext()
@@ -3381,14 +5622,59 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdEndQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdEndQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdEndQuery-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdEndQuery-commandBuffer-01886`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndQuery-query-00812`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndQuery-queryPool-03227`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndQuery-queryPool-03228`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndQuery-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndQuery-commonparent",
+                            "`queryPool` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_end_query_unchecked(query_pool, query) }
+    }
+    /**`vkCmdEndQuery` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_query_unchecked(
+        &mut self,
+        query_pool: &QueryPool,
+        query: u32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -3409,14 +5695,55 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdEndRenderPass-None-07004`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRenderPass-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdEndRenderPass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdEndRenderPass-None-02351`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndRenderPass-None-06170`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndRenderPass-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndRenderPass-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        unsafe { self.cmd_end_render_pass_unchecked() }
+    }
+    /**`vkCmdEndRenderPass` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
         unsafe { (self.device().fns().fp_v1_0().cmd_end_render_pass)(self.raw()) };
         ();
         self.into_state()
@@ -3432,14 +5759,59 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRenderPass2-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdEndRenderPass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdEndRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdEndRenderPass2-None-02352`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndRenderPass2-None-06171`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
+        mut self,
+        subpass_end_info: &SubpassEndInfo<'a>,
+    ) -> Recorder<'c, Outside> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndRenderPass2-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_subpass_end_info(subpass_end_info, s)?;
+                Ok(())
+            })();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
+    }
+    /**`vkCmdEndRenderPass2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run time: `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass2-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_render_pass2_unchecked<'a>(
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
@@ -3467,12 +5839,45 @@ impl<'c> Recorder<'c, InRendering> {
 - `VUID-vkCmdEndRendering-None-06999`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRendering-videocoding`: user (`videocoding` rules are not checked yet)
+- `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdEndRendering-None-06781`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        unsafe { self.cmd_end_rendering_unchecked() }
+    }
+    /**`vkCmdEndRendering` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
         unsafe { (self.device().fns().fp_v1_3().cmd_end_rendering)(self.raw()) };
         ();
         self.into_state()
@@ -3508,11 +5913,11 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdExecuteCommands-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdExecuteCommands-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdExecuteCommands-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdExecuteCommands-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdExecuteCommands-bufferlevel`: user (`bufferlevel` rules are not checked yet)
-- `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdExecuteCommands-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdExecuteCommands-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdExecuteCommands-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+- `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdExecuteCommands-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdExecuteCommands-contents-00095`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdExecuteCommands-pCommandBuffers-00097`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdExecuteCommands-pInheritanceInfo-00098`: user (explicit rule; the wrappers do not check it)
@@ -3544,6 +5949,69 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdExecuteCommands-pNext-06037`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_execute_commands(&mut self, command_buffers: &[&CommandBuffer]) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdExecuteCommands-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                if command_buffers.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
+                            "`commandBufferCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in command_buffers.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCmdExecuteCommands-commonparent",
+                                "`pCommandBuffers` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
+    }
+    /**`vkCmdExecuteCommands` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_execute_commands_unchecked(
+        &mut self,
+        command_buffers: &[&CommandBuffer],
+    ) -> () {
         for h in command_buffers {
             self.retain(h.retained());
         }
@@ -3580,15 +6048,63 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdFillBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdFillBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdFillBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdFillBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdFillBuffer-commandBuffer-00030`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdFillBuffer-commandBuffer-01811`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdFillBuffer-commandBuffer-01812`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_fill_buffer(
+        &mut self,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        size: vk::DeviceSize,
+        data: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdFillBuffer-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdFillBuffer-commonparent",
+                            "`dstBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
+    }
+    /**`vkCmdFillBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_fill_buffer_unchecked(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -3615,10 +6131,43 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_insert_debug_utils_label_ext<'a>(
+        &mut self,
+        label_info: &DebugUtilsLabelEXT<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
+    }
+    /**`vkCmdInsertDebugUtilsLabelEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_insert_debug_utils_label_ext_unchecked<'a>(
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
@@ -3647,15 +6196,64 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 - `VUID-vkCmdNextSubpass-None-00909`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdNextSubpass-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdNextSubpass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdNextSubpass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdNextSubpass-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdNextSubpass-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdNextSubpass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdNextSubpass-None-02349`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_subpass_contents(
+                    contents,
+                    s,
+                    "VUID-vkCmdNextSubpass-contents-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdNextSubpass-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdNextSubpass-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return;
+            }
+        }
+        unsafe { self.cmd_next_subpass_unchecked(contents) }
+    }
+    /**`vkCmdNextSubpass` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_next_subpass_unchecked(
+        &mut self,
+        contents: vk::SubpassContents,
+    ) -> () {
         unsafe {
             (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
         };
@@ -3672,13 +6270,60 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdNextSubpass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdNextSubpass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdNextSubpass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdNextSubpass2-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdNextSubpass2-bufferlevel`: user (`bufferlevel` rules are not checked yet)
+- `VUID-vkCmdNextSubpass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdNextSubpass2-None-02350`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_next_subpass2<'a>(
+        &mut self,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+        subpass_end_info: &SubpassEndInfo<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdNextSubpass2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdNextSubpass2-bufferlevel",
+                            "the command buffer is not a primary command buffer".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
+                crate::checks::check_subpass_end_info(subpass_end_info, s)?;
+                Ok(())
+            })();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return;
+            }
+        }
+        unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
+    }
+    /**`vkCmdNextSubpass2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time: `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass2-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_next_subpass2_unchecked<'a>(
         &mut self,
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
@@ -3720,14 +6365,14 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPipelineBarrier-srcStageMask-06461`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPipelineBarrier-dstStageMask-06462`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPipelineBarrier-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdPipelineBarrier-pMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdPipelineBarrier-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPipelineBarrier-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPipelineBarrier-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
@@ -3752,6 +6397,77 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPipelineBarrier-None-06191`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_pipeline_barrier<'a>(
+        &mut self,
+        src_stage_mask: vk::PipelineStageFlags,
+        dst_stage_mask: vk::PipelineStageFlags,
+        dependency_flags: vk::DependencyFlags,
+        memory_barriers: &[MemoryBarrier<'a>],
+        buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
+        image_memory_barriers: &[ImageMemoryBarrier<'a>],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_pipeline_stage_flags(
+                    src_stage_mask,
+                    s,
+                    "VUID-vkCmdPipelineBarrier-srcStageMask-parameter",
+                )?;
+                crate::checks::flags_pipeline_stage_flags(
+                    dst_stage_mask,
+                    s,
+                    "VUID-vkCmdPipelineBarrier-dstStageMask-parameter",
+                )?;
+                crate::checks::flags_dependency_flags(
+                    dependency_flags,
+                    s,
+                    "VUID-vkCmdPipelineBarrier-dependencyFlags-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in memory_barriers.iter() {
+                    crate::checks::check_memory_barrier(x, s)?;
+                }
+                for x in image_memory_barriers.iter() {
+                    crate::checks::check_image_memory_barrier(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_pipeline_barrier_unchecked(
+                src_stage_mask,
+                dst_stage_mask,
+                dependency_flags,
+                memory_barriers,
+                buffer_memory_barriers,
+                image_memory_barriers,
+            )
+        }
+    }
+    /**`vkCmdPipelineBarrier` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_pipeline_barrier_unchecked<'a>(
         &mut self,
         src_stage_mask: vk::PipelineStageFlags,
         dst_stage_mask: vk::PipelineStageFlags,
@@ -3797,11 +6513,48 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPipelineBarrier2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPipelineBarrier2-None-06191`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_pipeline_barrier2<'a>(
+        &mut self,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_dependency_info(dependency_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_pipeline_barrier2_unchecked(dependency_info) }
+    }
+    /**`vkCmdPipelineBarrier2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_pipeline_barrier2_unchecked<'a>(
         &mut self,
         dependency_info: &DependencyInfo<'a>,
     ) -> () {
@@ -3831,16 +6584,84 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPushConstants-size-00371`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPushConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPushConstants-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdPushConstants-stageFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdPushConstants-stageFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkCmdPushConstants-pValues-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPushConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdPushConstants-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdPushConstants-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdPushConstants-size-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdPushConstants-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkCmdPushConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdPushConstants-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdPushConstants-size-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn cmd_push_constants(
+        &mut self,
+        layout: &PipelineLayout,
+        stage_flags: vk::ShaderStageFlags,
+        offset: u32,
+        values: &[u8],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_shader_stage_flags(
+                    stage_flags,
+                    s,
+                    "VUID-vkCmdPushConstants-stageFlags-parameter",
+                )?;
+                if stage_flags.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
+                            "`stageFlags` is empty".into(),
+                        ),
+                    );
+                }
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if values.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdPushConstants-size-arraylength",
+                            "`size` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(layout.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdPushConstants-commonparent",
+                            "`layout` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
+    }
+    /**`vkCmdPushConstants` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_push_constants_unchecked(
         &mut self,
         layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
@@ -3877,11 +6698,11 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetEvent-event-03834`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResetEvent-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdResetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetEvent-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdResetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
@@ -3896,6 +6717,56 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetEvent-commandBuffer-01157`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_reset_event(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_pipeline_stage_flags(
+                    stage_mask,
+                    s,
+                    "VUID-vkCmdResetEvent-stageMask-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResetEvent-commonparent",
+                            "`event` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
+    }
+    /**`vkCmdResetEvent` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_reset_event_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
@@ -3924,11 +6795,11 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetEvent2-event-03832`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResetEvent2-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetEvent2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdResetEvent2-stageMask-03931`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResetEvent2-stageMask-03932`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResetEvent2-stageMask-03933`: user (explicit rule; the wrappers do not check it)
@@ -3942,6 +6813,56 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetEvent2-commandBuffer-03833`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_reset_event2(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_pipeline_stage_flags2(
+                    stage_mask,
+                    s,
+                    "VUID-vkCmdResetEvent2-stageMask-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResetEvent2-commonparent",
+                            "`event` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
+    }
+    /**`vkCmdResetEvent2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_reset_event2_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
@@ -3968,13 +6889,61 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResetQueryPool-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetQueryPool-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdResetQueryPool-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResetQueryPool-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdResetQueryPool-firstQuery-02862`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_reset_query_pool(
+        &mut self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResetQueryPool-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode,opticalflow operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResetQueryPool-commonparent",
+                            "`queryPool` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
+        }
+    }
+    /**`vkCmdResetQueryPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_reset_query_pool_unchecked(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -4033,16 +7002,16 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResolveImage-dstImage-06764`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResolveImage-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResolveImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdResolveImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResolveImage-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdResolveImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdResolveImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdResolveImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResolveImage-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResolveImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResolveImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResolveImage-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdResolveImage-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdResolveImage-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdResolveImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdResolveImage-srcImageLayout-00261`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResolveImage-dstImageLayout-00263`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdResolveImage-srcImageLayout-01400`: user (explicit rule; the wrappers do not check it)
@@ -4053,6 +7022,92 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResolveImage-dstImage-06765`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_resolve_image<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageResolve],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_image_layout(
+                    src_image_layout,
+                    s,
+                    "VUID-vkCmdResolveImage-srcImageLayout-parameter",
+                )?;
+                crate::checks::enum_image_layout(
+                    dst_image_layout,
+                    s,
+                    "VUID-vkCmdResolveImage-dstImageLayout-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResolveImage-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if regions.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResolveImage-regionCount-arraylength",
+                            "`regionCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(src_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResolveImage-commonparent",
+                            "`srcImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResolveImage-commonparent",
+                            "`dstImage` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in regions.iter() {
+                    crate::checks::check_image_resolve(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_resolve_image_unchecked(
+                src_image,
+                src_image_layout,
+                dst_image,
+                dst_image_layout,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdResolveImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_resolve_image_unchecked<'a>(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -4091,11 +7146,47 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResolveImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResolveImage2-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_resolve_image2<'a>(
+        &mut self,
+        resolve_image_info: &ResolveImageInfo2<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdResolveImage2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_resolve_image_info2(resolve_image_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
+    }
+    /**`vkCmdResolveImage2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_resolve_image2_unchecked<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> () {
@@ -4119,10 +7210,45 @@ impl<'c, S: State> Recorder<'c, S> {
 
 - `VUID-vkCmdSetBlendConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetBlendConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetBlendConstants-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetBlendConstants-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_blend_constants_unchecked(blend_constants) }
+    }
+    /**`vkCmdSetBlendConstants` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at run time: `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_blend_constants_unchecked(
+        &mut self,
+        blend_constants: &[f32; 4usize],
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4140,12 +7266,52 @@ impl<'c, S: State> Recorder<'c, S> {
 
 - `VUID-vkCmdSetCullMode-None-03384`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetCullMode-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCullMode-cullMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetCullMode-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetCullMode-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCullMode-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_cull_mode_flags(
+                    cull_mode,
+                    s,
+                    "VUID-vkCmdSetCullMode-cullMode-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetCullMode-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
+    }
+    /**`vkCmdSetCullMode` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_cull_mode_unchecked(
+        &mut self,
+        cull_mode: vk::CullModeFlags,
+    ) -> () {
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode)
         };
@@ -4160,10 +7326,53 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthBias-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBias-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthBias-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_bias(
+        &mut self,
+        depth_bias_constant_factor: f32,
+        depth_bias_clamp: f32,
+        depth_bias_slope_factor: f32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_set_depth_bias_unchecked(
+                depth_bias_constant_factor,
+                depth_bias_clamp,
+                depth_bias_slope_factor,
+            )
+        }
+    }
+    /**`vkCmdSetDepthBias` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run time: `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_bias_unchecked(
         &mut self,
         depth_bias_constant_factor: f32,
         depth_bias_clamp: f32,
@@ -4192,10 +7401,45 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthBiasEnable-None-04872`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthBiasEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
+    }
+    /**`vkCmdSetDepthBiasEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_bias_enable_unchecked(
+        &mut self,
+        depth_bias_enable: vk::Bool32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4217,10 +7461,48 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthBounds-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBounds-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthBounds-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthBounds-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_bounds(
+        &mut self,
+        min_depth_bounds: f32,
+        max_depth_bounds: f32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds)
+        }
+    }
+    /**`vkCmdSetDepthBounds` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run time: `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_bounds_unchecked(
         &mut self,
         min_depth_bounds: f32,
         max_depth_bounds: f32,
@@ -4243,10 +7525,47 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthBoundsTestEnable-None-03349`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_bounds_test_enable(
+        &mut self,
+        depth_bounds_test_enable: vk::Bool32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
+        }
+    }
+    /**`vkCmdSetDepthBoundsTestEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
         &mut self,
         depth_bounds_test_enable: vk::Bool32,
     ) -> () {
@@ -4267,12 +7586,52 @@ impl<'c, S: State> Recorder<'c, S> {
 
 - `VUID-vkCmdSetDepthCompareOp-None-03353`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthCompareOp-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthCompareOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_compare_op(
+                    depth_compare_op,
+                    s,
+                    "VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
+    }
+    /**`vkCmdSetDepthCompareOp` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_compare_op_unchecked(
+        &mut self,
+        depth_compare_op: vk::CompareOp,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4291,10 +7650,45 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthTestEnable-None-03352`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
+    }
+    /**`vkCmdSetDepthTestEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_test_enable_unchecked(
+        &mut self,
+        depth_test_enable: vk::Bool32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4313,10 +7707,45 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthWriteEnable-None-03354`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetDepthWriteEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
+    }
+    /**`vkCmdSetDepthWriteEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_write_enable_unchecked(
+        &mut self,
+        depth_write_enable: vk::Bool32,
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4338,9 +7767,42 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDeviceMask-deviceMask-00111`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)*/
+- `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)*/
     #[inline]
     pub fn cmd_set_device_mask(&mut self, device_mask: u32) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE
+                        | vk::QueueFlags::TRANSFER,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,transfer operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_device_mask_unchecked(device_mask) }
+    }
+    /**`vkCmdSetDeviceMask` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) -> () {
         unsafe {
             (self.device().fns().fp_v1_1().cmd_set_device_mask)(self.raw(), device_mask)
         };
@@ -4358,11 +7820,11 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdSetEvent-stageMask-01149`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdSetEvent-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdSetEvent-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdSetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
@@ -4376,6 +7838,56 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdSetEvent-commandBuffer-01152`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_event(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_pipeline_stage_flags(
+                    stage_mask,
+                    s,
+                    "VUID-vkCmdSetEvent-stageMask-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetEvent-commonparent",
+                            "`event` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
+    }
+    /**`vkCmdSetEvent` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_event_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
@@ -4404,12 +7916,58 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdSetEvent2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdSetEvent2-commandBuffer-03826`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_event2<'a>(
+        &mut self,
+        event: &Event,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetEvent2-commonparent",
+                            "`event` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                crate::checks::check_dependency_info(dependency_info, s)?;
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
+    }
+    /**`vkCmdSetEvent2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_event2_unchecked<'a>(
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
@@ -4436,12 +7994,52 @@ impl<'c, S: State> Recorder<'c, S> {
 
 - `VUID-vkCmdSetFrontFace-None-03383`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetFrontFace-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetFrontFace-frontFace-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetFrontFace-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetFrontFace-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetFrontFace-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_front_face(
+                    front_face,
+                    s,
+                    "VUID-vkCmdSetFrontFace-frontFace-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetFrontFace-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_front_face_unchecked(front_face) }
+    }
+    /**`vkCmdSetFrontFace` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_front_face_unchecked(
+        &mut self,
+        front_face: vk::FrontFace,
+    ) -> () {
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face)
         };
@@ -4456,10 +8054,42 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetLineWidth-lineWidth-00788`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetLineWidth-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetLineWidth-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetLineWidth-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_line_width_unchecked(line_width) }
+    }
+    /**`vkCmdSetLineWidth` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) -> () {
         unsafe {
             (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width)
         };
@@ -4474,10 +8104,47 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetPrimitiveRestartEnable-None-04866`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_primitive_restart_enable(
+        &mut self,
+        primitive_restart_enable: vk::Bool32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
+        }
+    }
+    /**`vkCmdSetPrimitiveRestartEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
         &mut self,
         primitive_restart_enable: vk::Bool32,
     ) -> () {
@@ -4498,12 +8165,52 @@ impl<'c, S: State> Recorder<'c, S> {
 
 - `VUID-vkCmdSetPrimitiveTopology-None-03347`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetPrimitiveTopology-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_primitive_topology(
+        &mut self,
+        primitive_topology: vk::PrimitiveTopology,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_primitive_topology(
+                    primitive_topology,
+                    s,
+                    "VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
+    }
+    /**`vkCmdSetPrimitiveTopology` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_primitive_topology_unchecked(
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
     ) -> () {
@@ -4525,10 +8232,47 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetRasterizerDiscardEnable-None-04871`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
+        &mut self,
+        rasterizer_discard_enable: vk::Bool32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
+        }
+    }
+    /**`vkCmdSetRasterizerDiscardEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
         &mut self,
         rasterizer_discard_enable: vk::Bool32,
     ) -> () {
@@ -4559,12 +8303,56 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetScissor-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetScissor-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissor-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetScissor-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetScissor-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdSetScissor-scissorCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetScissor-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetScissor-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdSetScissor-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetScissor-viewportScissor2D-04789`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_scissor<'a>(
+        &mut self,
+        first_scissor: u32,
+        scissors: &[vk::Rect2D],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if scissors.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetScissor-scissorCount-arraylength",
+                            "`scissorCount` is 0".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
+    }
+    /**`vkCmdSetScissor` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_scissor_unchecked<'a>(
         &mut self,
         first_scissor: u32,
         scissors: &[vk::Rect2D],
@@ -4598,12 +8386,55 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetScissorWithCount-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetScissorWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-04820`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if scissors.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetScissorWithCount-scissorCount-arraylength",
+                            "`scissorCount` is 0".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
+    }
+    /**`vkCmdSetScissorWithCount` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_scissor_with_count_unchecked<'a>(
+        &mut self,
+        scissors: &[vk::Rect2D],
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4624,13 +8455,62 @@ impl<'c, S: State> Recorder<'c, S> {
 # Valid usage
 
 - `VUID-vkCmdSetStencilCompareMask-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkCmdSetStencilCompareMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetStencilCompareMask-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilCompareMask-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_stencil_compare_mask(
+        &mut self,
+        face_mask: vk::StencilFaceFlags,
+        compare_mask: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_stencil_face_flags(
+                    face_mask,
+                    s,
+                    "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
+                )?;
+                if face_mask.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
+                            "`faceMask` is empty".into(),
+                        ),
+                    );
+                }
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
+    }
+    /**`vkCmdSetStencilCompareMask` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks at run time: `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`, `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_compare_mask_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
@@ -4652,17 +8532,97 @@ impl<'c, S: State> Recorder<'c, S> {
 
 - `VUID-vkCmdSetStencilOp-None-03351`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetStencilOp-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetStencilOp-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-vkCmdSetStencilOp-failOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilOp-passOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilOp-depthFailOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilOp-compareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdSetStencilOp-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkCmdSetStencilOp-failOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-passOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-depthFailOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-compareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetStencilOp-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_stencil_op(
+        &mut self,
+        face_mask: vk::StencilFaceFlags,
+        fail_op: vk::StencilOp,
+        pass_op: vk::StencilOp,
+        depth_fail_op: vk::StencilOp,
+        compare_op: vk::CompareOp,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_stencil_face_flags(
+                    face_mask,
+                    s,
+                    "VUID-vkCmdSetStencilOp-faceMask-parameter",
+                )?;
+                if face_mask.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilOp-faceMask-requiredbitmask",
+                            "`faceMask` is empty".into(),
+                        ),
+                    );
+                }
+                crate::checks::enum_stencil_op(
+                    fail_op,
+                    s,
+                    "VUID-vkCmdSetStencilOp-failOp-parameter",
+                )?;
+                crate::checks::enum_stencil_op(
+                    pass_op,
+                    s,
+                    "VUID-vkCmdSetStencilOp-passOp-parameter",
+                )?;
+                crate::checks::enum_stencil_op(
+                    depth_fail_op,
+                    s,
+                    "VUID-vkCmdSetStencilOp-depthFailOp-parameter",
+                )?;
+                crate::checks::enum_compare_op(
+                    compare_op,
+                    s,
+                    "VUID-vkCmdSetStencilOp-compareOp-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilOp-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_set_stencil_op_unchecked(
+                face_mask,
+                fail_op,
+                pass_op,
+                depth_fail_op,
+                compare_op,
+            )
+        }
+    }
+    /**`vkCmdSetStencilOp` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_op_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         fail_op: vk::StencilOp,
@@ -4693,13 +8653,62 @@ impl<'c, S: State> Recorder<'c, S> {
 # Valid usage
 
 - `VUID-vkCmdSetStencilReference-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetStencilReference-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilReference-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkCmdSetStencilReference-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetStencilReference-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilReference-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_stencil_reference(
+        &mut self,
+        face_mask: vk::StencilFaceFlags,
+        reference: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_stencil_face_flags(
+                    face_mask,
+                    s,
+                    "VUID-vkCmdSetStencilReference-faceMask-parameter",
+                )?;
+                if face_mask.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
+                            "`faceMask` is empty".into(),
+                        ),
+                    );
+                }
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_stencil_reference_unchecked(face_mask, reference) }
+    }
+    /**`vkCmdSetStencilReference` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at run time: `VUID-vkCmdSetStencilReference-faceMask-parameter`, `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_reference_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         reference: u32,
@@ -4722,10 +8731,45 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetStencilTestEnable-None-03350`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetStencilTestEnable-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_stencil_test_enable(
+        &mut self,
+        stencil_test_enable: vk::Bool32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
+    }
+    /**`vkCmdSetStencilTestEnable` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_test_enable_unchecked(
         &mut self,
         stencil_test_enable: vk::Bool32,
     ) -> () {
@@ -4745,13 +8789,62 @@ impl<'c, S: State> Recorder<'c, S> {
 # Valid usage
 
 - `VUID-vkCmdSetStencilWriteMask-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkCmdSetStencilWriteMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetStencilWriteMask-videocoding`: user (`videocoding` rules are not checked yet)*/
+- `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilWriteMask-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_stencil_write_mask(
+        &mut self,
+        face_mask: vk::StencilFaceFlags,
+        write_mask: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_stencil_face_flags(
+                    face_mask,
+                    s,
+                    "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
+                )?;
+                if face_mask.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
+                            "`faceMask` is empty".into(),
+                        ),
+                    );
+                }
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_stencil_write_mask_unchecked(face_mask, write_mask) }
+    }
+    /**`vkCmdSetStencilWriteMask` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at run time: `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`, `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_write_mask_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
@@ -4777,12 +8870,56 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetViewport-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewport-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewport-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewport-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetViewport-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdSetViewport-viewportCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetViewport-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewport-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdSetViewport-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetViewport-commandBuffer-04821`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_viewport<'a>(
+        &mut self,
+        first_viewport: u32,
+        viewports: &[vk::Viewport],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if viewports.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetViewport-viewportCount-arraylength",
+                            "`viewportCount` is 0".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
+    }
+    /**`vkCmdSetViewport` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_viewport_unchecked<'a>(
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
@@ -4813,12 +8950,55 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdSetViewportWithCount-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewportWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-04819`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if viewports.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdSetViewportWithCount-viewportCount-arraylength",
+                            "`viewportCount` is 0".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
+    }
+    /**`vkCmdSetViewportWithCount` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_viewport_with_count_unchecked<'a>(
+        &mut self,
+        viewports: &[vk::Viewport],
+    ) -> () {
         unsafe {
             (self
                 .device()
@@ -4849,15 +9029,70 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdUpdateBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdUpdateBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdUpdateBuffer-videocoding`: user (`videocoding` rules are not checked yet)
-- `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdUpdateBuffer-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdUpdateBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdUpdateBuffer-commandBuffer-01813`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdUpdateBuffer-commandBuffer-01814`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_update_buffer(
+        &mut self,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        data: &[u8],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if data.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdUpdateBuffer-dataSize-arraylength",
+                            "`dataSize` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdUpdateBuffer-commonparent",
+                            "`dstBuffer` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
+    }
+    /**`vkCmdUpdateBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_update_buffer_unchecked(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -4902,15 +9137,15 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWaitEvents-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWaitEvents-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWaitEvents-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkCmdWaitEvents-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWaitEvents-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdWaitEvents-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWaitEvents-pMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdWaitEvents-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdWaitEvents-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdWaitEvents-eventCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdWaitEvents-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdWaitEvents-eventCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdWaitEvents-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdWaitEvents-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWaitEvents-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWaitEvents-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
@@ -4935,6 +9170,90 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWaitEvents-commandBuffer-01167`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_wait_events<'a>(
+        &mut self,
+        events: &[&Event],
+        src_stage_mask: vk::PipelineStageFlags,
+        dst_stage_mask: vk::PipelineStageFlags,
+        memory_barriers: &[MemoryBarrier<'a>],
+        buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
+        image_memory_barriers: &[ImageMemoryBarrier<'a>],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_pipeline_stage_flags(
+                    src_stage_mask,
+                    s,
+                    "VUID-vkCmdWaitEvents-srcStageMask-parameter",
+                )?;
+                crate::checks::flags_pipeline_stage_flags(
+                    dst_stage_mask,
+                    s,
+                    "VUID-vkCmdWaitEvents-dstStageMask-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWaitEvents-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if events.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWaitEvents-eventCount-arraylength",
+                            "`eventCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in events.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCmdWaitEvents-commonparent",
+                                "`pEvents` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                for x in memory_barriers.iter() {
+                    crate::checks::check_memory_barrier(x, s)?;
+                }
+                for x in image_memory_barriers.iter() {
+                    crate::checks::check_image_memory_barrier(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_wait_events_unchecked(
+                events,
+                src_stage_mask,
+                dst_stage_mask,
+                memory_barriers,
+                buffer_memory_barriers,
+                image_memory_barriers,
+            )
+        }
+    }
+    /**`vkCmdWaitEvents` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_wait_events_unchecked<'a>(
         &mut self,
         events: &[&Event],
         src_stage_mask: vk::PipelineStageFlags,
@@ -4991,11 +9310,69 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWaitEvents2-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdWaitEvents2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdWaitEvents2-eventCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCmdWaitEvents2-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdWaitEvents2-eventCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn cmd_wait_events2<'a>(
+        &mut self,
+        events: &[&Event],
+        dependency_infos: &[DependencyInfo<'a>],
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWaitEvents2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if events.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWaitEvents2-eventCount-arraylength",
+                            "`eventCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in events.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCmdWaitEvents2-commonparent",
+                                "`pEvents` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                for x in dependency_infos.iter() {
+                    crate::checks::check_dependency_info(x, s)?;
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
+    }
+    /**`vkCmdWaitEvents2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_wait_events2_unchecked<'a>(
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
@@ -5035,11 +9412,11 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWriteTimestamp-timestampValidBits-00829`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp-query-04904`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWriteTimestamp-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWriteTimestamp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdWriteTimestamp-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdWriteTimestamp-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04077`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04078`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04079`: user (explicit rule; the wrappers do not check it)
@@ -5054,6 +9431,58 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWriteTimestamp-query-00831`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_write_timestamp(
+        &mut self,
+        pipeline_stage: vk::PipelineStageFlags,
+        query_pool: &QueryPool,
+        query: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::enum_pipeline_stage_flag_bits(
+                    pipeline_stage,
+                    s,
+                    "VUID-vkCmdWriteTimestamp-pipelineStage-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWriteTimestamp-commonparent",
+                            "`queryPool` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_write_timestamp_unchecked(pipeline_stage, query_pool, query) }
+    }
+    /**`vkCmdWriteTimestamp` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_write_timestamp_unchecked(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
@@ -5090,11 +9519,11 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp2-query-04903`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteTimestamp2-stage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkCmdWriteTimestamp2-stage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWriteTimestamp2-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: user (`cmdpool` rules are not checked yet)
-- `VUID-vkCmdWriteTimestamp2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdWriteTimestamp2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdWriteTimestamp2-stage-03931`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp2-stage-03932`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdWriteTimestamp2-stage-03933`: user (explicit rule; the wrappers do not check it)
@@ -5109,6 +9538,58 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWriteTimestamp2-query-03865`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn cmd_write_timestamp2(
+        &mut self,
+        stage: vk::PipelineStageFlags2,
+        query_pool: &QueryPool,
+        query: u32,
+    ) -> () {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_pipeline_stage_flags2(
+                    stage,
+                    s,
+                    "VUID-vkCmdWriteTimestamp2-stage-parameter",
+                )?;
+                if !crate::validation::supports(
+                    self.command_buffer().parent().queue_flags(),
+                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
+                        | vk::QueueFlags::COMPUTE,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
+                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                                .into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdWriteTimestamp2-commonparent",
+                            "`queryPool` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_write_timestamp2_unchecked(stage, query_pool, query) }
+    }
+    /**`vkCmdWriteTimestamp2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_write_timestamp2_unchecked(
         &mut self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
@@ -5141,6 +9622,28 @@ impl Device {
         &self,
         create_info: &BufferCreateInfo<'a>,
     ) -> Result<Buffer> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_buffer_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_buffer_unchecked(create_info) }
+    }
+    /**`vkCreateBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_buffer`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_buffer_unchecked<'a>(
+        &self,
+        create_info: &BufferCreateInfo<'a>,
+    ) -> Result<Buffer> {
         let mut out = vk::Buffer::null();
         let r = unsafe {
             (self
@@ -5170,6 +9673,28 @@ impl Device {
 - `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_buffer_view<'a>(
+        &self,
+        create_info: &BufferViewCreateInfo<'a>,
+    ) -> Result<BufferView> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_buffer_view_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_buffer_view_unchecked(create_info) }
+    }
+    /**`vkCreateBufferView` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_buffer_view`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_buffer_view_unchecked<'a>(
         &self,
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<BufferView> {
@@ -5206,6 +9731,28 @@ impl Device {
         &self,
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_command_pool_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_command_pool_unchecked(create_info) }
+    }
+    /**`vkCreateCommandPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_command_pool`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_command_pool_unchecked<'a>(
+        &self,
+        create_info: &CommandPoolCreateInfo<'a>,
+    ) -> Result<CommandPool> {
         let mut out = vk::CommandPool::null();
         let r = unsafe {
             (self
@@ -5221,7 +9768,15 @@ impl Device {
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(CommandPool::from_raw(out, self, None, true))
+        Ok({
+            let pool = CommandPool::from_raw(out, self, None, true);
+            #[cfg(feature = "runtime_implicit_validations")]
+            let pool = pool
+                .with_queue_flags(
+                    crate::validation::family_flags(self, create_info.queue_family_index),
+                );
+            pool
+        })
     }
 }
 impl Device {
@@ -5236,11 +9791,54 @@ impl Device {
 - `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateComputePipelines-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCreateComputePipelines-pipelineCache-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkCreateComputePipelines-pipelineCache-02873`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn create_compute_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[ComputePipelineCreateInfo<'a>],
+    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if create_infos.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
+                            "`createInfoCount` is 0".into(),
+                        ),
+                    );
+                }
+                if let Some(h) = pipeline_cache {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCreateComputePipelines-pipelineCache-parent",
+                                "`pipelineCache` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                for x in create_infos.iter() {
+                    crate::checks::check_compute_pipeline_create_info(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
+    }
+    /**`vkCreateComputePipelines` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
@@ -5286,6 +9884,31 @@ impl Instance {
         &self,
         create_info: &DebugUtilsMessengerCreateInfoEXT<'a>,
     ) -> Result<DebugUtilsMessengerEXT> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_debug_utils_messenger_create_info_ext(
+                    create_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_debug_utils_messenger_ext_unchecked(create_info) }
+    }
+    /**`vkCreateDebugUtilsMessengerEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_debug_utils_messenger_ext`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_debug_utils_messenger_ext_unchecked<'a>(
+        &self,
+        create_info: &DebugUtilsMessengerCreateInfoEXT<'a>,
+    ) -> Result<DebugUtilsMessengerEXT> {
         let ext_table = self
             .ext()
             .ext_debug_utils
@@ -5321,6 +9944,28 @@ impl Device {
         &self,
         create_info: &DescriptorPoolCreateInfo<'a>,
     ) -> Result<DescriptorPool> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_descriptor_pool_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_descriptor_pool_unchecked(create_info) }
+    }
+    /**`vkCreateDescriptorPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_descriptor_pool_unchecked<'a>(
+        &self,
+        create_info: &DescriptorPoolCreateInfo<'a>,
+    ) -> Result<DescriptorPool> {
         let mut out = vk::DescriptorPool::null();
         let r = unsafe {
             (self
@@ -5350,6 +9995,28 @@ impl Device {
 - `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_descriptor_set_layout<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+    ) -> Result<DescriptorSetLayout> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
+    }
+    /**`vkCreateDescriptorSetLayout` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_descriptor_set_layout_unchecked<'a>(
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<DescriptorSetLayout> {
@@ -5385,6 +10052,31 @@ impl Device {
         &self,
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<DescriptorUpdateTemplate> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_descriptor_update_template_create_info(
+                    create_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_descriptor_update_template_unchecked(create_info) }
+    }
+    /**`vkCreateDescriptorUpdateTemplate` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_descriptor_update_template`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_descriptor_update_template_unchecked<'a>(
+        &self,
+        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
+    ) -> Result<DescriptorUpdateTemplate> {
         let mut out = vk::DescriptorUpdateTemplate::null();
         let r = unsafe {
             (self
@@ -5415,6 +10107,39 @@ impl PhysicalDevice {
 - `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_device<'a>(
+        &self,
+        create_info: &DeviceCreateInfo<'a>,
+    ) -> Result<Device> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &{
+                    let mut s = self.parent().scope();
+                    s.exts = s
+                        .exts
+                        .with(
+                            crate::checks::Exts::new(
+                                0,
+                                &create_info.enabled_extensions(),
+                            ),
+                        );
+                    s
+                };
+                let _ = s;
+                crate::checks::check_device_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_device_unchecked(create_info) }
+    }
+    /**`vkCreateDevice` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_device`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_device_unchecked<'a>(
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
@@ -5455,6 +10180,28 @@ impl Device {
 - `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_event_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_event_unchecked(create_info) }
+    }
+    /**`vkCreateEvent` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_event`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_event_unchecked<'a>(
+        &self,
+        create_info: &EventCreateInfo<'a>,
+    ) -> Result<Event> {
         let mut out = vk::Event::null();
         let r = unsafe {
             (self
@@ -5484,6 +10231,28 @@ impl Device {
 - `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_fence_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_fence_unchecked(create_info) }
+    }
+    /**`vkCreateFence` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_fence`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_fence_unchecked<'a>(
+        &self,
+        create_info: &FenceCreateInfo<'a>,
+    ) -> Result<Fence> {
         let mut out = vk::Fence::null();
         let r = unsafe {
             (self
@@ -5517,6 +10286,28 @@ impl Device {
         &self,
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<Framebuffer> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_framebuffer_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_framebuffer_unchecked(create_info) }
+    }
+    /**`vkCreateFramebuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_framebuffer`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_framebuffer_unchecked<'a>(
+        &self,
+        create_info: &FramebufferCreateInfo<'a>,
+    ) -> Result<Framebuffer> {
         let mut out = vk::Framebuffer::null();
         let r = unsafe {
             (self
@@ -5547,11 +10338,54 @@ impl Device {
 - `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateGraphicsPipelines-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn create_graphics_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[GraphicsPipelineCreateInfo<'a>],
+    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if create_infos.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
+                            "`createInfoCount` is 0".into(),
+                        ),
+                    );
+                }
+                if let Some(h) = pipeline_cache {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
+                                "`pipelineCache` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                for x in create_infos.iter() {
+                    crate::checks::check_graphics_pipeline_create_info(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
+    }
+    /**`vkCreateGraphicsPipelines` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn create_graphics_pipelines_unchecked<'a>(
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
@@ -5595,6 +10429,28 @@ impl Device {
 - `VUID-vkCreateImage-pNext-06389`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_image_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_image_unchecked(create_info) }
+    }
+    /**`vkCreateImage` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_image`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_image_unchecked<'a>(
+        &self,
+        create_info: &ImageCreateInfo<'a>,
+    ) -> Result<Image> {
         let mut out = vk::Image::null();
         let r = unsafe {
             (self
@@ -5624,6 +10480,28 @@ impl Device {
 - `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_image_view<'a>(
+        &self,
+        create_info: &ImageViewCreateInfo<'a>,
+    ) -> Result<ImageView> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_image_view_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_image_view_unchecked(create_info) }
+    }
+    /**`vkCreateImageView` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_image_view`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_image_view_unchecked<'a>(
         &self,
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<ImageView> {
@@ -5659,6 +10537,35 @@ impl Entry {
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &crate::validation::Scope {
+                    exts: crate::checks::Exts::new(
+                        vk::api_version_minor(create_info.api_version()),
+                        &create_info.enabled_extensions(),
+                    ),
+                    instance: None,
+                    device: None,
+                };
+                let _ = s;
+                crate::checks::check_instance_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_instance_unchecked(create_info) }
+    }
+    /**`vkCreateInstance` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_instance`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_instance_unchecked<'a>(
+        &self,
+        create_info: &InstanceCreateInfo<'a>,
+    ) -> Result<Instance> {
         let mut out = vk::Instance::null();
         let r = unsafe {
             (self
@@ -5678,6 +10585,7 @@ impl Entry {
                 self,
                 out,
                 &create_info.enabled_extensions(),
+                create_info.api_version(),
             ),
         )
     }
@@ -5694,6 +10602,28 @@ impl Instance {
 - `VUID-vkCreateMetalSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_metal_surface_ext<'a>(
+        &self,
+        create_info: &MetalSurfaceCreateInfoEXT<'a>,
+    ) -> Result<SurfaceKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_metal_surface_create_info_ext(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_metal_surface_ext_unchecked(create_info) }
+    }
+    /**`vkCreateMetalSurfaceEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_metal_surface_ext`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_metal_surface_ext_unchecked<'a>(
         &self,
         create_info: &MetalSurfaceCreateInfoEXT<'a>,
     ) -> Result<SurfaceKHR> {
@@ -5732,6 +10662,28 @@ impl Device {
         &self,
         create_info: &PipelineCacheCreateInfo<'a>,
     ) -> Result<PipelineCache> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_pipeline_cache_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_pipeline_cache_unchecked(create_info) }
+    }
+    /**`vkCreatePipelineCache` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_pipeline_cache_unchecked<'a>(
+        &self,
+        create_info: &PipelineCacheCreateInfo<'a>,
+    ) -> Result<PipelineCache> {
         let mut out = vk::PipelineCache::null();
         let r = unsafe {
             (self
@@ -5761,6 +10713,28 @@ impl Device {
 - `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_pipeline_layout<'a>(
+        &self,
+        create_info: &PipelineLayoutCreateInfo<'a>,
+    ) -> Result<PipelineLayout> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_pipeline_layout_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_pipeline_layout_unchecked(create_info) }
+    }
+    /**`vkCreatePipelineLayout` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_pipeline_layout_unchecked<'a>(
         &self,
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<PipelineLayout> {
@@ -5797,6 +10771,28 @@ impl Device {
         &self,
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<PrivateDataSlot> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_private_data_slot_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_private_data_slot_unchecked(create_info) }
+    }
+    /**`vkCreatePrivateDataSlot` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_private_data_slot`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_private_data_slot_unchecked<'a>(
+        &self,
+        create_info: &PrivateDataSlotCreateInfo<'a>,
+    ) -> Result<PrivateDataSlot> {
         let mut out = vk::PrivateDataSlot::null();
         let r = unsafe {
             (self
@@ -5826,6 +10822,28 @@ impl Device {
 - `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_query_pool<'a>(
+        &self,
+        create_info: &QueryPoolCreateInfo<'a>,
+    ) -> Result<QueryPool> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_query_pool_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_query_pool_unchecked(create_info) }
+    }
+    /**`vkCreateQueryPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_query_pool`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_query_pool_unchecked<'a>(
         &self,
         create_info: &QueryPoolCreateInfo<'a>,
     ) -> Result<QueryPool> {
@@ -5861,6 +10879,28 @@ impl Device {
         &self,
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_render_pass_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_render_pass_unchecked(create_info) }
+    }
+    /**`vkCreateRenderPass` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_render_pass`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_render_pass_unchecked<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo<'a>,
+    ) -> Result<RenderPass> {
         let mut out = vk::RenderPass::null();
         let r = unsafe {
             (self
@@ -5890,6 +10930,28 @@ impl Device {
 - `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_render_pass2<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo2<'a>,
+    ) -> Result<RenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_render_pass_create_info2(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_render_pass2_unchecked(create_info) }
+    }
+    /**`vkCreateRenderPass2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_render_pass2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_render_pass2_unchecked<'a>(
         &self,
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
@@ -5926,6 +10988,28 @@ impl Device {
         &self,
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<Sampler> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_sampler_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_sampler_unchecked(create_info) }
+    }
+    /**`vkCreateSampler` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_sampler`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_sampler_unchecked<'a>(
+        &self,
+        create_info: &SamplerCreateInfo<'a>,
+    ) -> Result<Sampler> {
         let mut out = vk::Sampler::null();
         let r = unsafe {
             (self
@@ -5959,6 +11043,31 @@ impl Device {
         &self,
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<SamplerYcbcrConversion> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_sampler_ycbcr_conversion_create_info(
+                    create_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
+    }
+    /**`vkCreateSamplerYcbcrConversion` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_sampler_ycbcr_conversion_unchecked<'a>(
+        &self,
+        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
+    ) -> Result<SamplerYcbcrConversion> {
         let mut out = vk::SamplerYcbcrConversion::null();
         let r = unsafe {
             (self
@@ -5988,6 +11097,28 @@ impl Device {
 - `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_semaphore<'a>(
+        &self,
+        create_info: &SemaphoreCreateInfo<'a>,
+    ) -> Result<Semaphore> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_semaphore_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_semaphore_unchecked(create_info) }
+    }
+    /**`vkCreateSemaphore` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_semaphore`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_semaphore_unchecked<'a>(
         &self,
         create_info: &SemaphoreCreateInfo<'a>,
     ) -> Result<Semaphore> {
@@ -6025,6 +11156,28 @@ impl Device {
         &self,
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<ShaderModule> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_shader_module_create_info(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_shader_module_unchecked(create_info) }
+    }
+    /**`vkCreateShaderModule` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_shader_module`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_shader_module_unchecked<'a>(
+        &self,
+        create_info: &ShaderModuleCreateInfo<'a>,
+    ) -> Result<ShaderModule> {
         let mut out = vk::ShaderModule::null();
         let r = unsafe {
             (self
@@ -6055,6 +11208,28 @@ impl Device {
 - `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_swapchain_khr<'a>(
+        &self,
+        create_info: &SwapchainCreateInfoKHR<'a>,
+    ) -> Result<SwapchainKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_swapchain_create_info_khr(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_swapchain_khr_unchecked(create_info) }
+    }
+    /**`vkCreateSwapchainKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_swapchain_khr_unchecked<'a>(
         &self,
         create_info: &SwapchainCreateInfoKHR<'a>,
     ) -> Result<SwapchainKHR> {
@@ -6094,6 +11269,28 @@ impl Instance {
         &self,
         create_info: &WaylandSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_wayland_surface_create_info_khr(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_wayland_surface_khr_unchecked(create_info) }
+    }
+    /**`vkCreateWaylandSurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_wayland_surface_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_wayland_surface_khr_unchecked<'a>(
+        &self,
+        create_info: &WaylandSurfaceCreateInfoKHR<'a>,
+    ) -> Result<SurfaceKHR> {
         let ext_table = self
             .ext()
             .khr_wayland_surface
@@ -6127,6 +11324,28 @@ impl Instance {
 - `VUID-vkCreateWin32SurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_win32_surface_khr<'a>(
+        &self,
+        create_info: &Win32SurfaceCreateInfoKHR<'a>,
+    ) -> Result<SurfaceKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_win32_surface_create_info_khr(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_win32_surface_khr_unchecked(create_info) }
+    }
+    /**`vkCreateWin32SurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_win32_surface_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_win32_surface_khr_unchecked<'a>(
         &self,
         create_info: &Win32SurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
@@ -6166,6 +11385,28 @@ impl Instance {
         &self,
         create_info: &XcbSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_xcb_surface_create_info_khr(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_xcb_surface_khr_unchecked(create_info) }
+    }
+    /**`vkCreateXcbSurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_xcb_surface_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_xcb_surface_khr_unchecked<'a>(
+        &self,
+        create_info: &XcbSurfaceCreateInfoKHR<'a>,
+    ) -> Result<SurfaceKHR> {
         let ext_table = self
             .ext()
             .khr_xcb_surface
@@ -6199,6 +11440,28 @@ impl Instance {
 - `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_xlib_surface_khr<'a>(
+        &self,
+        create_info: &XlibSurfaceCreateInfoKHR<'a>,
+    ) -> Result<SurfaceKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_xlib_surface_create_info_khr(create_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.create_xlib_surface_khr_unchecked(create_info) }
+    }
+    /**`vkCreateXlibSurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_xlib_surface_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_xlib_surface_khr_unchecked<'a>(
         &self,
         create_info: &XlibSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
@@ -6239,6 +11502,66 @@ impl Device {
     }
 }
 impl PhysicalDevice {
+    /**`vkEnumerateDeviceExtensionProperties`
+
+# Valid usage
+
+- `VUID-vkEnumerateDeviceExtensionProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
+- `VUID-vkEnumerateDeviceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateDeviceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn enumerate_device_extension_properties(
+        &self,
+        layer_name: Option<&core::ffi::CStr>,
+    ) -> Result<Vec<vk::ExtensionProperties>> {
+        loop {
+            let mut count: u32 = 0;
+            let items_ptr: *mut vk::ExtensionProperties = core::ptr::null_mut();
+            let r = unsafe {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_device_extension_properties)(
+                    self.raw(),
+                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
+                    &mut count,
+                    items_ptr.cast(),
+                )
+            };
+            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
+                return Err(Error::Vk(r));
+            }
+            let mut items: Vec<vk::ExtensionProperties> = Vec::with_capacity(
+                count as usize,
+            );
+            items.resize_with(count as usize, Default::default);
+            let items_ptr = items.as_mut_ptr();
+            let r = unsafe {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_device_extension_properties)(
+                    self.raw(),
+                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
+                    &mut count,
+                    items_ptr.cast(),
+                )
+            };
+            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
+                return Err(Error::Vk(r));
+            }
+            if r == vk::Result::INCOMPLETE {
+                continue;
+            }
+            items.truncate(count as usize);
+            return Ok(items);
+        }
+    }
+}
+impl PhysicalDevice {
     /**`vkEnumerateDeviceLayerProperties`
 
 # Valid usage
@@ -6275,6 +11598,61 @@ impl PhysicalDevice {
                     .fp_v1_0()
                     .enumerate_device_layer_properties)(
                     self.raw(),
+                    &mut count,
+                    items_ptr.cast(),
+                )
+            };
+            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
+                return Err(Error::Vk(r));
+            }
+            if r == vk::Result::INCOMPLETE {
+                continue;
+            }
+            items.truncate(count as usize);
+            return Ok(items);
+        }
+    }
+}
+impl Entry {
+    /**`vkEnumerateInstanceExtensionProperties`
+
+# Valid usage
+
+- `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
+- `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateInstanceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn enumerate_instance_extension_properties(
+        &self,
+        layer_name: Option<&core::ffi::CStr>,
+    ) -> Result<Vec<vk::ExtensionProperties>> {
+        loop {
+            let mut count: u32 = 0;
+            let items_ptr: *mut vk::ExtensionProperties = core::ptr::null_mut();
+            let r = unsafe {
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_instance_extension_properties)(
+                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
+                    &mut count,
+                    items_ptr.cast(),
+                )
+            };
+            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
+                return Err(Error::Vk(r));
+            }
+            let mut items: Vec<vk::ExtensionProperties> = Vec::with_capacity(
+                count as usize,
+            );
+            items.resize_with(count as usize, Default::default);
+            let items_ptr = items.as_mut_ptr();
+            let r = unsafe {
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .enumerate_instance_extension_properties)(
+                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
                     &mut count,
                     items_ptr.cast(),
                 )
@@ -6465,9 +11843,38 @@ impl Device {
 
 - `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
     pub fn flush_mapped_memory_ranges<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if memory_ranges.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
+                            "`memoryRangeCount` is 0".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
+    }
+    /**`vkFlushMappedMemoryRanges` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn flush_mapped_memory_ranges_unchecked<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
@@ -6523,9 +11930,38 @@ impl Device {
 - `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetBufferMemoryRequirements-buffer-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetBufferMemoryRequirements-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_buffer_memory_requirements(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<vk::MemoryRequirements> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(buffer.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetBufferMemoryRequirements-buffer-parent",
+                            "`buffer` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
+    }
+    /**`vkGetBufferMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_memory_requirements`] checks at run time: `VUID-vkGetBufferMemoryRequirements-buffer-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_buffer_memory_requirements_unchecked(
         &self,
         buffer: &Buffer,
     ) -> vk::MemoryRequirements {
@@ -6549,6 +11985,31 @@ impl Device {
 - `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_buffer_memory_requirements2<'a>(
+        &self,
+        info: &BufferMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_memory_requirements2(memory_requirements, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
+        })
+    }
+    /**`vkGetBufferMemoryRequirements2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_buffer_memory_requirements2_unchecked<'a>(
         &self,
         info: &BufferMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
@@ -6605,6 +12066,32 @@ impl Device {
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
+                crate::checks::check_descriptor_set_layout_support(support, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_descriptor_set_layout_support_unchecked(create_info, support)
+        })
+    }
+    /**`vkGetDescriptorSetLayoutSupport` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_descriptor_set_layout_support_unchecked<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+        support: &mut DescriptorSetLayoutSupport<'a>,
     ) -> () {
         unsafe {
             (self
@@ -6629,6 +12116,35 @@ impl Device {
 - `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_device_buffer_memory_requirements<'a>(
+        &self,
+        info: &DeviceBufferMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_device_buffer_memory_requirements(info, s)?;
+                crate::checks::check_memory_requirements2(memory_requirements, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_device_buffer_memory_requirements_unchecked(
+                info,
+                memory_requirements,
+            )
+        })
+    }
+    /**`vkGetDeviceBufferMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_buffer_memory_requirements_unchecked<'a>(
         &self,
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
@@ -6722,9 +12238,39 @@ impl Device {
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn get_device_group_surface_present_modes_khr(
+        &self,
+        surface: &SurfaceKHR,
+    ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_instance(surface.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent",
+                            "`surface` does not come from the VkInstance the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
+    }
+    /**`vkGetDeviceGroupSurfacePresentModesKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_device_group_surface_present_modes_khr_unchecked(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
@@ -6761,6 +12307,35 @@ impl Device {
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_device_image_memory_requirements(info, s)?;
+                crate::checks::check_memory_requirements2(memory_requirements, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_device_image_memory_requirements_unchecked(
+                info,
+                memory_requirements,
+            )
+        })
+    }
+    /**`vkGetDeviceImageMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_image_memory_requirements`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_image_memory_requirements_unchecked<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> () {
         unsafe {
             (self
@@ -6786,6 +12361,28 @@ impl Device {
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_device_image_sparse_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_device_image_memory_requirements(info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
+    }
+    /**`vkGetDeviceImageSparseMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_image_sparse_memory_requirements`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_image_sparse_memory_requirements_unchecked<'a>(
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
@@ -6833,9 +12430,41 @@ impl Device {
 - `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub fn get_device_memory_commitment(&self, memory: &DeviceMemory) -> vk::DeviceSize {
+    pub fn get_device_memory_commitment(
+        &self,
+        memory: &DeviceMemory,
+    ) -> Result<vk::DeviceSize> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(memory.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetDeviceMemoryCommitment-memory-parent",
+                            "`memory` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
+    }
+    /**`vkGetDeviceMemoryCommitment` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_device_memory_commitment_unchecked(
+        &self,
+        memory: &DeviceMemory,
+    ) -> vk::DeviceSize {
         let mut out: vk::DeviceSize = Default::default();
         unsafe {
             (self
@@ -6891,7 +12520,15 @@ impl Device {
                 .fp_v1_0()
                 .get_device_queue)(self.raw(), queue_family_index, queue_index, &mut out)
         };
-        Queue::from_raw(out, self, None, true)
+        {
+            let queue = Queue::from_raw(out, self, None, true);
+            #[cfg(feature = "runtime_implicit_validations")]
+            let queue = queue
+                .with_queue_flags(
+                    crate::validation::family_flags(self, queue_family_index),
+                );
+            queue
+        }
     }
 }
 impl Device {
@@ -6903,7 +12540,32 @@ impl Device {
 - `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn get_device_queue2<'a>(&self, queue_info: &DeviceQueueInfo2<'a>) -> Queue {
+    pub fn get_device_queue2<'a>(
+        &self,
+        queue_info: &DeviceQueueInfo2<'a>,
+    ) -> Result<Queue> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_device_queue_info2(queue_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
+    }
+    /**`vkGetDeviceQueue2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_queue2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_queue2_unchecked<'a>(
+        &self,
+        queue_info: &DeviceQueueInfo2<'a>,
+    ) -> Queue {
         let mut out = vk::Queue::null();
         unsafe {
             (self
@@ -6915,7 +12577,15 @@ impl Device {
                 &mut out,
             )
         };
-        Queue::from_raw(out, self, None, true)
+        {
+            let queue = Queue::from_raw(out, self, None, true);
+            #[cfg(feature = "runtime_implicit_validations")]
+            let queue = queue
+                .with_queue_flags(
+                    crate::validation::family_flags(self, queue_info.queue_family_index),
+                );
+            queue
+        }
     }
 }
 impl Device {
@@ -6926,9 +12596,38 @@ impl Device {
 - `VUID-vkGetEventStatus-event-03940`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetEventStatus-event-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_event_status(&self, event: &Event) -> Result<((), vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetEventStatus-event-parent",
+                            "`event` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_event_status_unchecked(event) }
+    }
+    /**`vkGetEventStatus` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_event_status_unchecked(
+        &self,
+        event: &Event,
+    ) -> Result<((), vk::Result)> {
         let r = unsafe {
             (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
         };
@@ -6945,9 +12644,38 @@ impl Device {
 
 - `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetFenceStatus-fence-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_fence_status(&self, fence: &Fence) -> Result<((), vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(fence.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetFenceStatus-fence-parent",
+                            "`fence` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_fence_status_unchecked(fence) }
+    }
+    /**`vkGetFenceStatus` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_fence_status`] checks at run time: `VUID-vkGetFenceStatus-fence-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_fence_status_unchecked(
+        &self,
+        fence: &Fence,
+    ) -> Result<((), vk::Result)> {
         let r = unsafe {
             (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
         };
@@ -6970,9 +12698,38 @@ impl Device {
 - `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageMemoryRequirements-image-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_image_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> Result<vk::MemoryRequirements> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetImageMemoryRequirements-image-parent",
+                            "`image` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
+    }
+    /**`vkGetImageMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_memory_requirements`] checks at run time: `VUID-vkGetImageMemoryRequirements-image-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_image_memory_requirements_unchecked(
         &self,
         image: &Image,
     ) -> vk::MemoryRequirements {
@@ -6999,6 +12756,32 @@ impl Device {
         &self,
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_image_memory_requirements_info2(info, s)?;
+                crate::checks::check_memory_requirements2(memory_requirements, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_image_memory_requirements2_unchecked(info, memory_requirements)
+        })
+    }
+    /**`vkGetImageMemoryRequirements2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_memory_requirements2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_image_memory_requirements2_unchecked<'a>(
+        &self,
+        info: &ImageMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> () {
         unsafe {
             (self
@@ -7022,9 +12805,38 @@ impl Device {
 - `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-image-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetImageSparseMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_image_sparse_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetImageSparseMemoryRequirements-image-parent",
+                            "`image` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
+    }
+    /**`vkGetImageSparseMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`] checks at run time: `VUID-vkGetImageSparseMemoryRequirements-image-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_image_sparse_memory_requirements_unchecked(
         &self,
         image: &Image,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
@@ -7131,12 +12943,43 @@ impl Device {
 - `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSubresourceLayout-image-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkGetImageSubresourceLayout-format-01581`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkGetImageSubresourceLayout-format-01582`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkGetImageSubresourceLayout-image-01895`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn get_image_subresource_layout<'a>(
+        &self,
+        image: &Image,
+        subresource: &vk::ImageSubresource,
+    ) -> Result<vk::SubresourceLayout> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(image.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetImageSubresourceLayout-image-parent",
+                            "`image` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_image_subresource(subresource, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
+    }
+    /**`vkGetImageSubresourceLayout` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_image_subresource_layout_unchecked<'a>(
         &self,
         image: &Image,
         subresource: &vk::ImageSubresource,
@@ -7169,6 +13012,37 @@ impl PhysicalDevice {
         &self,
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_external_buffer_info(
+                    external_buffer_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_external_buffer_properties_unchecked(
+                external_buffer_info,
+                external_buffer_properties,
+            )
+        })
+    }
+    /**`vkGetPhysicalDeviceExternalBufferProperties` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_external_buffer_properties`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_external_buffer_properties_unchecked<'a>(
+        &self,
+        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
+        external_buffer_properties: &mut ExternalBufferProperties<'a>,
     ) -> () {
         unsafe {
             (self
@@ -7198,6 +13072,37 @@ impl PhysicalDevice {
         &self,
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_external_fence_info(
+                    external_fence_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_external_fence_properties_unchecked(
+                external_fence_info,
+                external_fence_properties,
+            )
+        })
+    }
+    /**`vkGetPhysicalDeviceExternalFenceProperties` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_external_fence_properties`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_external_fence_properties_unchecked<'a>(
+        &self,
+        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
+        external_fence_properties: &mut ExternalFenceProperties<'a>,
     ) -> () {
         unsafe {
             (self
@@ -7224,6 +13129,37 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_external_semaphore_properties<'a>(
+        &self,
+        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
+        external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_external_semaphore_info(
+                    external_semaphore_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_external_semaphore_properties_unchecked(
+                external_semaphore_info,
+                external_semaphore_properties,
+            )
+        })
+    }
+    /**`vkGetPhysicalDeviceExternalSemaphoreProperties` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_external_semaphore_properties`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_external_semaphore_properties_unchecked<'a>(
         &self,
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
@@ -7295,10 +13231,36 @@ impl PhysicalDevice {
 # Valid usage
 
 - `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_format_properties(
+        &self,
+        format: vk::Format,
+    ) -> Result<vk::FormatProperties> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::enum_format(
+                    format,
+                    s,
+                    "VUID-vkGetPhysicalDeviceFormatProperties-format-parameter",
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
+    }
+    /**`vkGetPhysicalDeviceFormatProperties` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_format_properties_unchecked(
         &self,
         format: vk::Format,
     ) -> vk::FormatProperties {
@@ -7319,10 +13281,43 @@ impl PhysicalDevice {
 # Valid usage
 
 - `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_format_properties2<'a>(
+        &self,
+        format: vk::Format,
+        format_properties: &mut FormatProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::enum_format(
+                    format,
+                    s,
+                    "VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter",
+                )?;
+                crate::checks::check_format_properties2(format_properties, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_format_properties2_unchecked(
+                format,
+                format_properties,
+            )
+        })
+    }
+    /**`vkGetPhysicalDeviceFormatProperties2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_format_properties2_unchecked<'a>(
         &self,
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
@@ -7348,15 +13343,81 @@ impl PhysicalDevice {
 
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-02248`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_image_format_properties(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        tiling: vk::ImageTiling,
+        usage: vk::ImageUsageFlags,
+        flags: vk::ImageCreateFlags,
+    ) -> Result<vk::ImageFormatProperties> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::enum_format(
+                    format,
+                    s,
+                    "VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter",
+                )?;
+                crate::checks::enum_image_type(
+                    ty,
+                    s,
+                    "VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter",
+                )?;
+                crate::checks::enum_image_tiling(
+                    tiling,
+                    s,
+                    "VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter",
+                )?;
+                crate::checks::flags_image_usage_flags(
+                    usage,
+                    s,
+                    "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter",
+                )?;
+                if usage.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask",
+                            "`usage` is empty".into(),
+                        ),
+                    );
+                }
+                crate::checks::flags_image_create_flags(
+                    flags,
+                    s,
+                    "VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter",
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_image_format_properties_unchecked(
+                format,
+                ty,
+                tiling,
+                usage,
+                flags,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceImageFormatProperties` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_image_format_properties_unchecked(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -7397,6 +13458,41 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_image_format_properties2<'a>(
+        &self,
+        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
+        image_format_properties: &mut ImageFormatProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_image_format_info2(
+                    image_format_info,
+                    s,
+                )?;
+                crate::checks::check_image_format_properties2(
+                    image_format_properties,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_image_format_properties2_unchecked(
+                image_format_info,
+                image_format_properties,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceImageFormatProperties2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_image_format_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_image_format_properties2_unchecked<'a>(
         &self,
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
@@ -7452,6 +13548,33 @@ impl PhysicalDevice {
     pub fn get_physical_device_memory_properties2<'a>(
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_memory_properties2(
+                    memory_properties,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_memory_properties2_unchecked(memory_properties)
+        })
+    }
+    /**`vkGetPhysicalDeviceMemoryProperties2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_memory_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_memory_properties2_unchecked<'a>(
+        &self,
+        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) -> () {
         unsafe {
             (self
@@ -7478,9 +13601,39 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn get_physical_device_present_rectangles_khr(
+        &self,
+        surface: &SurfaceKHR,
+    ) -> Result<Vec<vk::Rect2D>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if !s.owned_by_instance(surface.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent",
+                            "`surface` does not come from the VkInstance the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
+    }
+    /**`vkGetPhysicalDevicePresentRectanglesKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_present_rectangles_khr_unchecked(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {
@@ -7557,6 +13710,28 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn get_physical_device_properties2<'a>(
+        &self,
+        properties: &mut PhysicalDeviceProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_properties2(properties, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
+    }
+    /**`vkGetPhysicalDeviceProperties2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_properties2_unchecked<'a>(
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) -> () {
@@ -7674,16 +13849,82 @@ impl PhysicalDevice {
 
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        samples: vk::SampleCountFlags,
+        usage: vk::ImageUsageFlags,
+        tiling: vk::ImageTiling,
+    ) -> Result<Vec<vk::SparseImageFormatProperties>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::enum_format(
+                    format,
+                    s,
+                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter",
+                )?;
+                crate::checks::enum_image_type(
+                    ty,
+                    s,
+                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter",
+                )?;
+                crate::checks::enum_sample_count_flag_bits(
+                    samples,
+                    s,
+                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter",
+                )?;
+                crate::checks::flags_image_usage_flags(
+                    usage,
+                    s,
+                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter",
+                )?;
+                if usage.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask",
+                            "`usage` is empty".into(),
+                        ),
+                    );
+                }
+                crate::checks::enum_image_tiling(
+                    tiling,
+                    s,
+                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter",
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_sparse_image_format_properties_unchecked(
+                format,
+                ty,
+                samples,
+                usage,
+                tiling,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_sparse_image_format_properties_unchecked(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -7750,6 +13991,35 @@ impl PhysicalDevice {
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_physical_device_sparse_image_format_info2(
+                    format_info,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_sparse_image_format_properties2_unchecked(
+                format_info,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_sparse_image_format_properties2_unchecked<'a>(
+        &self,
+        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
+    ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
         loop {
             let mut count: u32 = 0;
             let items_ptr: *mut vk::SparseImageFormatProperties2<'static> = core::ptr::null_mut();
@@ -7800,9 +14070,39 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn get_physical_device_surface_capabilities_khr(
+        &self,
+        surface: &SurfaceKHR,
+    ) -> Result<vk::SurfaceCapabilitiesKHR> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if !s.owned_by_instance(surface.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent",
+                            "`surface` does not come from the VkInstance the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
+    }
+    /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_surface_capabilities_khr_unchecked(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
@@ -7841,9 +14141,41 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn get_physical_device_surface_formats_khr(
+        &self,
+        surface: Option<&SurfaceKHR>,
+    ) -> Result<Vec<vk::SurfaceFormatKHR>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if let Some(h) = surface {
+                    if !s.owned_by_instance(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent",
+                                "`surface` does not come from the VkInstance the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
+    }
+    /**`vkGetPhysicalDeviceSurfaceFormatsKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_surface_formats_khr_unchecked(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
@@ -7907,9 +14239,41 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn get_physical_device_surface_present_modes_khr(
+        &self,
+        surface: Option<&SurfaceKHR>,
+    ) -> Result<Vec<vk::PresentModeKHR>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if let Some(h) = surface {
+                    if !s.owned_by_instance(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent",
+                                "`surface` does not come from the VkInstance the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
+    }
+    /**`vkGetPhysicalDeviceSurfacePresentModesKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_surface_present_modes_khr_unchecked(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
@@ -7967,9 +14331,45 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn get_physical_device_surface_support_khr(
+        &self,
+        queue_family_index: u32,
+        surface: &SurfaceKHR,
+    ) -> Result<vk::Bool32> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if !s.owned_by_instance(surface.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent",
+                            "`surface` does not come from the VkInstance the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_surface_support_khr_unchecked(
+                queue_family_index,
+                surface,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceSurfaceSupportKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_surface_support_khr_unchecked(
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,
@@ -8052,40 +14452,6 @@ impl PhysicalDevice {
         }
     }
 }
-#[cfg(feature = "khr_wayland_surface")]
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceWaylandPresentationSupportKHR`
-
-# Valid usage
-
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_wayland_presentation_support_khr(
-        &self,
-        queue_family_index: u32,
-    ) -> Result<vk::Bool32> {
-        let ext_table = self
-            .parent()
-            .ext()
-            .khr_wayland_surface
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?;
-        Ok({
-            let mut out: vk::wl_display = Default::default();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_wayland_presentation_support_khr)(
-                    self.raw(),
-                    queue_family_index,
-                    &mut out,
-                )
-            };
-            r
-        })
-    }
-}
 #[cfg(feature = "khr_win32_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceWin32PresentationSupportKHR`
@@ -8126,9 +14492,38 @@ impl Device {
 - `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pipelineCache-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetPipelineCacheData-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_pipeline_cache_data(
+        &self,
+        pipeline_cache: &PipelineCache,
+    ) -> Result<Vec<u8>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(pipeline_cache.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPipelineCacheData-pipelineCache-parent",
+                            "`pipelineCache` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
+    }
+    /**`vkGetPipelineCacheData` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at run time: `VUID-vkGetPipelineCacheData-pipelineCache-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_pipeline_cache_data_unchecked(
         &self,
         pipeline_cache: &PipelineCache,
     ) -> Result<Vec<u8>> {
@@ -8181,12 +14576,54 @@ impl Device {
 
 - `VUID-vkGetPrivateData-objectType-04018`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPrivateData-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkGetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-privateDataSlot-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_private_data(
+        &self,
+        object_type: vk::ObjectType,
+        object_handle: u64,
+        private_data_slot: &PrivateDataSlot,
+    ) -> Result<u64> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::enum_object_type(
+                    object_type,
+                    s,
+                    "VUID-vkGetPrivateData-objectType-parameter",
+                )?;
+                if !s.owned_by_device(private_data_slot.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetPrivateData-privateDataSlot-parent",
+                            "`privateDataSlot` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.get_private_data_unchecked(
+                object_type,
+                object_handle,
+                private_data_slot,
+            )
+        })
+    }
+    /**`vkGetPrivateData` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_private_data_unchecked(
         &self,
         object_type: vk::ObjectType,
         object_handle: u64,
@@ -8209,6 +14646,117 @@ impl Device {
     }
 }
 impl Device {
+    /**`vkGetQueryPoolResults`
+
+# Valid usage
+
+- `VUID-vkGetQueryPoolResults-firstQuery-00813`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-flags-00815`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-firstQuery-00816`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-dataSize-00817`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-queryType-00818`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetQueryPoolResults-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkGetQueryPoolResults-flags-02827`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-flags-02828`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-queryType-03229`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-queryType-04519`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-queryType-03230`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-queryType-03231`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-queryType-04810`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkGetQueryPoolResults-flags-04811`: user (explicit rule; the wrappers do not check it)*/
+    #[inline]
+    pub fn get_query_pool_results(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        data: &mut [u8],
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) -> Result<((), vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::flags_query_result_flags(
+                    flags,
+                    s,
+                    "VUID-vkGetQueryPoolResults-flags-parameter",
+                )?;
+                if data.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkGetQueryPoolResults-dataSize-arraylength",
+                            "`dataSize` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetQueryPoolResults-queryPool-parent",
+                            "`queryPool` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.get_query_pool_results_unchecked(
+                query_pool,
+                first_query,
+                query_count,
+                data,
+                stride,
+                flags,
+            )
+        }
+    }
+    /**`vkGetQueryPoolResults` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_query_pool_results_unchecked(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        data: &mut [u8],
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) -> Result<((), vk::Result)> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_query_pool_results)(
+                self.raw(),
+                query_pool.raw(),
+                first_query,
+                query_count,
+                data.len() as usize,
+                data.as_mut_ptr().cast(),
+                stride,
+                flags,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(((), r))
+    }
+}
+impl Device {
     /**`vkGetRenderAreaGranularity`
 
 # Valid usage
@@ -8216,9 +14764,41 @@ impl Device {
 - `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetRenderAreaGranularity-renderPass-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetRenderAreaGranularity-renderPass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub fn get_render_area_granularity(&self, render_pass: &RenderPass) -> vk::Extent2D {
+    pub fn get_render_area_granularity(
+        &self,
+        render_pass: &RenderPass,
+    ) -> Result<vk::Extent2D> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(render_pass.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetRenderAreaGranularity-renderPass-parent",
+                            "`renderPass` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
+    }
+    /**`vkGetRenderAreaGranularity` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_render_area_granularity`] checks at run time: `VUID-vkGetRenderAreaGranularity-renderPass-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_render_area_granularity_unchecked(
+        &self,
+        render_pass: &RenderPass,
+    ) -> vk::Extent2D {
         let mut out: vk::Extent2D = Default::default();
         unsafe {
             (self
@@ -8238,9 +14818,38 @@ impl Device {
 - `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(semaphore.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetSemaphoreCounterValue-semaphore-parent",
+                            "`semaphore` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
+    }
+    /**`vkGetSemaphoreCounterValue` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_semaphore_counter_value_unchecked(
+        &self,
+        semaphore: &Semaphore,
+    ) -> Result<u64> {
         let mut out: u64 = Default::default();
         let r = unsafe {
             (self
@@ -8264,9 +14873,38 @@ impl Device {
 - `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_swapchain_images_khr(
+        &self,
+        swapchain: &SwapchainKHR,
+    ) -> Result<Vec<Image>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(swapchain.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkGetSwapchainImagesKHR-swapchain-parent",
+                            "`swapchain` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
+    }
+    /**`vkGetSwapchainImagesKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at run time: `VUID-vkGetSwapchainImagesKHR-swapchain-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_swapchain_images_khr_unchecked(
         &self,
         swapchain: &SwapchainKHR,
     ) -> Result<Vec<Image>> {
@@ -8330,9 +14968,38 @@ impl Device {
 
 - `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
     pub fn invalidate_mapped_memory_ranges<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if memory_ranges.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
+                            "`memoryRangeCount` is 0".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
+    }
+    /**`vkInvalidateMappedMemoryRanges` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] checks at run time: `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn invalidate_mapped_memory_ranges_unchecked<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
@@ -8361,11 +15028,59 @@ impl Device {
 - `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkMergePipelineCaches-dstCache-parent`: user (`parent` rules are not checked yet)
-- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn merge_pipeline_caches(
+        &self,
+        dst_cache: &PipelineCache,
+        src_caches: &[&PipelineCache],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if src_caches.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
+                            "`srcCacheCount` is 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(dst_cache.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkMergePipelineCaches-dstCache-parent",
+                            "`dstCache` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                for h in src_caches.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkMergePipelineCaches-pSrcCaches-parent",
+                                "`pSrcCaches` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
+    }
+    /**`vkMergePipelineCaches` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn merge_pipeline_caches_unchecked(
         &self,
         dst_cache: &PipelineCache,
         src_caches: &[&PipelineCache],
@@ -8435,11 +15150,58 @@ impl Queue {
 - `VUID-vkQueueBindSparse-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueBindSparse-pBindInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueBindSparse-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueBindSparse-queuetype`: user (`queuetype` rules are not checked yet)
-- `VUID-vkQueueBindSparse-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkQueueBindSparse-queuetype`: dynamic (checks the queue flags of the queue's family, recorded when the queue was retrieved)
+- `VUID-vkQueueBindSparse-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkQueueBindSparse-pWaitSemaphores-03245`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn queue_bind_sparse<'a>(
+        &self,
+        bind_info: &[BindSparseInfo<'a>],
+        fence: Option<&Fence>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if !crate::validation::supports(
+                    self.queue_flags(),
+                    vk::QueueFlags::SPARSE_BINDING,
+                ) {
+                    return Err(
+                        fail(
+                            "VUID-vkQueueBindSparse-queuetype",
+                            "the queue does not support sparse_binding operations".into(),
+                        ),
+                    );
+                }
+                if let Some(h) = fence {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkQueueBindSparse-commonparent",
+                                "`fence` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                for x in bind_info.iter() {
+                    crate::checks::check_bind_sparse_info(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
+    }
+    /**`vkQueueBindSparse` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn queue_bind_sparse_unchecked<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
         fence: Option<&Fence>,
@@ -8534,6 +15296,28 @@ impl Queue {
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<((), vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                crate::checks::check_present_info_khr(present_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.queue_present_khr_unchecked(present_info) }
+    }
+    /**`vkQueuePresentKHR` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::queue_present_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn queue_present_khr_unchecked<'a>(
+        &self,
+        present_info: &PresentInfoKHR<'a>,
+    ) -> Result<((), vk::Result)> {
         let ext_table = self
             .parent()
             .ext()
@@ -8575,13 +15359,47 @@ impl Queue {
 - `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSubmit-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkQueueSubmit-pWaitSemaphores-00069`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pWaitSemaphores-03238`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pCommandBuffers-03220`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-queue-06448`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn queue_submit<'a>(
+        &self,
+        submits: &[SubmitInfo<'a>],
+        fence: &Fence,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if !s.owned_by_device(fence.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkQueueSubmit-commonparent",
+                            "`fence` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
+                }
+                for x in submits.iter() {
+                    crate::checks::check_submit_info(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.queue_submit_unchecked(submits, fence) }
+    }
+    /**`vkQueueSubmit` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn queue_submit_unchecked<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: &Fence,
@@ -8639,12 +15457,48 @@ impl Queue {
 - `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSubmit2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkQueueSubmit2-semaphore-03873`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-commandBuffer-03880`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-queue-06447`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn queue_submit2<'a>(
+        &self,
+        submits: &[SubmitInfo2<'a>],
+        fence: Option<&Fence>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.parent().scope();
+                let _ = s;
+                if let Some(h) = fence {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkQueueSubmit2-commonparent",
+                                "`fence` does not come from the VkDevice the command is called on"
+                                    .into(),
+                            ),
+                        );
+                    }
+                }
+                for x in submits.iter() {
+                    crate::checks::check_submit_info2(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.queue_submit2_unchecked(submits, fence) }
+    }
+    /**`vkQueueSubmit2` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn queue_submit2_unchecked<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: Option<&Fence>,
@@ -8690,9 +15544,35 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkResetCommandBuffer-commandBuffer-00045`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetCommandBuffer-commandBuffer-00046`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetCommandBuffer-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
     #[inline]
     pub fn reset_command_buffer(
+        &mut self,
+        flags: vk::CommandBufferResetFlags,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.device().scope();
+                let _ = s;
+                crate::checks::flags_command_buffer_reset_flags(
+                    flags,
+                    s,
+                    "VUID-vkResetCommandBuffer-flags-parameter",
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.reset_command_buffer_unchecked(flags) }
+    }
+    /**`vkResetCommandBuffer` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_command_buffer`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_command_buffer_unchecked(
         &mut self,
         flags: vk::CommandBufferResetFlags,
     ) -> Result<()> {
@@ -8713,10 +15593,45 @@ impl Device {
 - `VUID-vkResetCommandPool-commandPool-00040`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetCommandPool-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkResetCommandPool-commandPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_command_pool(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolResetFlags,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::flags_command_pool_reset_flags(
+                    flags,
+                    s,
+                    "VUID-vkResetCommandPool-flags-parameter",
+                )?;
+                if !s.owned_by_device(command_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkResetCommandPool-commandPool-parent",
+                            "`commandPool` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
+    }
+    /**`vkResetCommandPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_command_pool_unchecked(
         &self,
         command_pool: &CommandPool,
         flags: vk::CommandPoolResetFlags,
@@ -8741,10 +15656,48 @@ impl Device {
 - `VUID-vkResetDescriptorPool-descriptorPool-00313`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetDescriptorPool-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-vkResetDescriptorPool-descriptorPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_descriptor_pool(
+        &self,
+        descriptor_pool: &DescriptorPool,
+        flags: vk::DescriptorPoolResetFlags,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if flags.as_raw() != 0 {
+                    return Err(
+                        fail(
+                            "VUID-vkResetDescriptorPool-flags-zerobitmask",
+                            "`flags` is not 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(descriptor_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkResetDescriptorPool-descriptorPool-parent",
+                            "`descriptorPool` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
+    }
+    /**`vkResetDescriptorPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_descriptor_pool_unchecked(
         &self,
         descriptor_pool: &DescriptorPool,
         flags: vk::DescriptorPoolResetFlags,
@@ -8769,11 +15722,37 @@ impl Device {
 - `VUID-vkResetEvent-event-03821`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetEvent-event-parent`: user (`parent` rules are not checked yet)
+- `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkResetEvent-event-03822`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetEvent-event-03823`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn reset_event(&self, event: &Event) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkResetEvent-event-parent",
+                            "`event` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.reset_event_unchecked(event) }
+    }
+    /**`vkResetEvent` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
         let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -8789,10 +15768,46 @@ impl Device {
 - `VUID-vkResetFences-pFences-01123`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetFences-fenceCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkResetFences-pFences-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkResetFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if fences.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkResetFences-fenceCount-arraylength",
+                            "`fenceCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in fences.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkResetFences-pFences-parent",
+                                "`pFences` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.reset_fences_unchecked(fences) }
+    }
+    /**`vkResetFences` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
         let fences_w: &[&Fence] = fences;
         let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
@@ -8825,9 +15840,42 @@ impl Device {
 - `VUID-vkResetQueryPool-firstQuery-02742`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetQueryPool-queryPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_query_pool(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(query_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkResetQueryPool-queryPool-parent",
+                            "`queryPool` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.reset_query_pool_unchecked(query_pool, first_query, query_count)
+        })
+    }
+    /**`vkResetQueryPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_query_pool_unchecked(
         &self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -8862,6 +15910,28 @@ impl Device {
         &self,
         name_info: &DebugUtilsObjectNameInfoEXT<'a>,
     ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_debug_utils_object_name_info_ext(name_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.set_debug_utils_object_name_ext_unchecked(name_info) }
+    }
+    /**`vkSetDebugUtilsObjectNameEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn set_debug_utils_object_name_ext_unchecked<'a>(
+        &self,
+        name_info: &DebugUtilsObjectNameInfoEXT<'a>,
+    ) -> Result<()> {
         let ext_table = self
             .ext()
             .ext_debug_utils
@@ -8893,6 +15963,28 @@ impl Device {
         &self,
         tag_info: &DebugUtilsObjectTagInfoEXT<'a>,
     ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_debug_utils_object_tag_info_ext(tag_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.set_debug_utils_object_tag_ext_unchecked(tag_info) }
+    }
+    /**`vkSetDebugUtilsObjectTagEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn set_debug_utils_object_tag_ext_unchecked<'a>(
+        &self,
+        tag_info: &DebugUtilsObjectTagInfoEXT<'a>,
+    ) -> Result<()> {
         let ext_table = self
             .ext()
             .ext_debug_utils
@@ -8919,9 +16011,35 @@ impl Device {
 - `VUID-vkSetEvent-event-03941`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetEvent-event-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(event.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkSetEvent-event-parent",
+                            "`event` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.set_event_unchecked(event) }
+    }
+    /**`vkSetEvent` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn set_event_unchecked(&self, event: &Event) -> Result<()> {
         let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -8937,11 +16055,55 @@ impl Device {
 - `VUID-vkSetPrivateData-objectHandle-04016`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkSetPrivateData-objectHandle-04017`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetPrivateData-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetPrivateData-privateDataSlot-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn set_private_data(
+        &self,
+        object_type: vk::ObjectType,
+        object_handle: u64,
+        private_data_slot: &PrivateDataSlot,
+        data: u64,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::enum_object_type(
+                    object_type,
+                    s,
+                    "VUID-vkSetPrivateData-objectType-parameter",
+                )?;
+                if !s.owned_by_device(private_data_slot.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkSetPrivateData-privateDataSlot-parent",
+                            "`privateDataSlot` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.set_private_data_unchecked(
+                object_type,
+                object_handle,
+                private_data_slot,
+                data,
+            )
+        }
+    }
+    /**`vkSetPrivateData` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn set_private_data_unchecked(
         &self,
         object_type: vk::ObjectType,
         object_handle: u64,
@@ -9001,12 +16163,63 @@ impl Instance {
 
 - `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn submit_debug_utils_message_ext<'a>(
+        &self,
+        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
+        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::enum_debug_utils_message_severity_flag_bits_ext(
+                    message_severity,
+                    s,
+                    "VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter",
+                )?;
+                crate::checks::flags_debug_utils_message_type_flags_ext(
+                    message_types,
+                    s,
+                    "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter",
+                )?;
+                if message_types.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask",
+                            "`messageTypes` is empty".into(),
+                        ),
+                    );
+                }
+                crate::checks::check_debug_utils_messenger_callback_data_ext(
+                    callback_data,
+                    s,
+                )?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe {
+            self.submit_debug_utils_message_ext_unchecked(
+                message_severity,
+                message_types,
+                callback_data,
+            )
+        }
+    }
+    /**`vkSubmitDebugUtilsMessageEXT` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] checks at run time: `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn submit_debug_utils_message_ext_unchecked<'a>(
         &self,
         message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
         message_types: vk::DebugUtilsMessageTypeFlagsEXT,
@@ -9039,10 +16252,48 @@ impl Device {
 
 - `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkTrimCommandPool-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-vkTrimCommandPool-commandPool-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkTrimCommandPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-vkTrimCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn trim_command_pool(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolTrimFlags,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if flags.as_raw() != 0 {
+                    return Err(
+                        fail(
+                            "VUID-vkTrimCommandPool-flags-zerobitmask",
+                            "`flags` is not 0".into(),
+                        ),
+                    );
+                }
+                if !s.owned_by_device(command_pool.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkTrimCommandPool-commandPool-parent",
+                            "`commandPool` does not come from `device`".into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
+    }
+    /**`vkTrimCommandPool` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-flags-zerobitmask`, `VUID-vkTrimCommandPool-commandPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn trim_command_pool_unchecked(
         &self,
         command_pool: &CommandPool,
         flags: vk::CommandPoolTrimFlags,
@@ -9082,6 +16333,36 @@ impl Device {
         &self,
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                for x in descriptor_writes.iter() {
+                    crate::checks::check_write_descriptor_set(x, s)?;
+                }
+                for x in descriptor_copies.iter() {
+                    crate::checks::check_copy_descriptor_set(x, s)?;
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
+        })
+    }
+    /**`vkUpdateDescriptorSets` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn update_descriptor_sets_unchecked<'a>(
+        &self,
+        descriptor_writes: &[WriteDescriptorSet<'a>],
+        descriptor_copies: &[CopyDescriptorSet<'a>],
     ) -> () {
         unsafe {
             (self
@@ -9105,10 +16386,51 @@ impl Device {
 
 - `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWaitForFences-fenceCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-vkWaitForFences-pFences-parent`: user (`parent` rules are not checked yet)*/
+- `VUID-vkWaitForFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkWaitForFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn wait_for_fences(
+        &self,
+        fences: &[&Fence],
+        wait_all: vk::Bool32,
+        timeout: u64,
+    ) -> Result<((), vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if fences.is_empty() {
+                    return Err(
+                        fail(
+                            "VUID-vkWaitForFences-fenceCount-arraylength",
+                            "`fenceCount` is 0".into(),
+                        ),
+                    );
+                }
+                for h in fences.iter() {
+                    if !s.owned_by_device(h.raw()) {
+                        return Err(
+                            fail(
+                                "VUID-vkWaitForFences-pFences-parent",
+                                "`pFences` does not come from `device`".into(),
+                            ),
+                        );
+                    }
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
+    }
+    /**`vkWaitForFences` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn wait_for_fences_unchecked(
         &self,
         fences: &[&Fence],
         wait_all: vk::Bool32,
@@ -9151,6 +16473,29 @@ impl Device {
 - `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
     pub fn wait_semaphores<'a>(
+        &self,
+        wait_info: &SemaphoreWaitInfo<'a>,
+        timeout: u64,
+    ) -> Result<((), vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                crate::checks::check_semaphore_wait_info(wait_info, s)?;
+                Ok(())
+            })();
+            r?;
+        }
+        unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
+    }
+    /**`vkWaitSemaphores` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::wait_semaphores`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn wait_semaphores_unchecked<'a>(
         &self,
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,

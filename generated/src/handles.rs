@@ -28,6 +28,7 @@ impl Buffer {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(BufferInner {
                 raw,
@@ -80,6 +81,8 @@ impl core::ops::Deref for Buffer {
 }
 impl Drop for BufferInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -113,6 +116,7 @@ impl BufferView {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(BufferViewInner {
                 raw,
@@ -160,6 +164,8 @@ impl core::ops::Deref for BufferView {
 }
 impl Drop for BufferViewInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -182,6 +188,8 @@ struct CommandBufferInner {
     parent: CommandPool,
     resources: Vutex<Vec<Retained>>,
     executable: Vutex<bool>,
+    #[cfg(feature = "runtime_implicit_validations")]
+    level: vk::CommandBufferLevel,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -194,12 +202,16 @@ impl CommandBuffer {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")]
+        parent.parent().objects().add(raw);
         Self {
             inner: Vrc::new(CommandBufferInner {
                 raw,
                 parent: parent.clone(),
                 resources: Vutex::new(Vec::new()),
                 executable: Vutex::new(false),
+                #[cfg(feature = "runtime_implicit_validations")]
+                level: vk::CommandBufferLevel::PRIMARY,
                 keep,
                 destroy,
             }),
@@ -209,6 +221,19 @@ impl CommandBuffer {
     #[inline]
     pub fn parent(&self) -> &CommandPool {
         &self.inner.parent
+    }
+    /// Records the buffer's level, for the `bufferlevel` checks.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn with_level(mut self, level: vk::CommandBufferLevel) -> Self {
+        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+            inner.level = level;
+        }
+        self
+    }
+    /// The buffer's level.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn level(&self) -> vk::CommandBufferLevel {
+        self.inner.level
     }
     pub(crate) fn keep_alive(&self, objects: Vec<Retained>) {
         *self.inner.resources.lock() = objects;
@@ -254,6 +279,8 @@ impl core::ops::Deref for CommandBuffer {
 }
 impl Drop for CommandBufferInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.parent().objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -282,6 +309,8 @@ pub struct CommandPool {
 struct CommandPoolInner {
     raw: vk::CommandPool,
     parent: Device,
+    #[cfg(feature = "runtime_implicit_validations")]
+    queue_flags: vk::QueueFlags,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -294,10 +323,13 @@ impl CommandPool {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(CommandPoolInner {
                 raw,
                 parent: parent.clone(),
+                #[cfg(feature = "runtime_implicit_validations")]
+                queue_flags: vk::QueueFlags::empty(),
                 keep,
                 destroy,
             }),
@@ -307,6 +339,19 @@ impl CommandPool {
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// Records the queue flags of the pool's family, for the `cmdpool` checks.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
+        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+            inner.queue_flags = flags;
+        }
+        self
+    }
+    /// The queue flags of the pool's family.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
+        self.inner.queue_flags
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -341,6 +386,8 @@ impl core::ops::Deref for CommandPool {
 }
 impl Drop for CommandPoolInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -377,6 +424,7 @@ impl DebugUtilsMessengerEXT {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(DebugUtilsMessengerEXTInner {
                 raw,
@@ -427,6 +475,8 @@ impl core::ops::Deref for DebugUtilsMessengerEXT {
 #[cfg(feature = "ext_debug_utils")]
 impl Drop for DebugUtilsMessengerEXTInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -465,6 +515,7 @@ impl DescriptorPool {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(DescriptorPoolInner {
                 raw,
@@ -525,6 +576,8 @@ impl core::ops::Deref for DescriptorPool {
 }
 impl Drop for DescriptorPoolInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -562,6 +615,8 @@ impl DescriptorSet {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")]
+        parent.parent().objects().add(raw);
         Self {
             inner: Vrc::new(DescriptorSetInner {
                 raw,
@@ -609,6 +664,8 @@ impl core::ops::Deref for DescriptorSet {
 }
 impl Drop for DescriptorSetInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.parent().objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -651,6 +708,7 @@ impl DescriptorSetLayout {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(DescriptorSetLayoutInner {
                 raw,
@@ -698,6 +756,8 @@ impl core::ops::Deref for DescriptorSetLayout {
 }
 impl Drop for DescriptorSetLayoutInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -735,6 +795,7 @@ impl DescriptorUpdateTemplate {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(DescriptorUpdateTemplateInner {
                 raw,
@@ -782,6 +843,8 @@ impl core::ops::Deref for DescriptorUpdateTemplate {
 }
 impl Drop for DescriptorUpdateTemplateInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -826,6 +889,10 @@ struct DeviceInner {
             tuff_runtime::Vweak<dyn tuff_runtime::Retain>,
         >,
     >,
+    #[cfg(feature = "runtime_implicit_validations")]
+    exts: crate::checks::Exts,
+    #[cfg(feature = "runtime_implicit_validations")]
+    objects: crate::validation::Objects,
 }
 impl Device {
     pub(crate) fn from_created(
@@ -853,6 +920,17 @@ impl Device {
                     .clone(),
             );
         }
+        #[cfg(feature = "runtime_implicit_validations")]
+        let exts = {
+            let instance = physical.parent();
+            let props = unsafe {
+                instance.fns().get_physical_device_properties(physical.raw())
+            };
+            instance
+                .exts()
+                .cap(vk::api_version_minor(props.api_version))
+                .with(crate::checks::Exts::new(0, enabled))
+        };
         Device {
             inner: Vrc::new(DeviceInner {
                 raw,
@@ -860,8 +938,22 @@ impl Device {
                 fns,
                 ext,
                 command_buffers: Vutex::new(Default::default()),
+                #[cfg(feature = "runtime_implicit_validations")]
+                exts,
+                #[cfg(feature = "runtime_implicit_validations")]
+                objects: Default::default(),
             }),
         }
+    }
+    /// The versions and extensions enabled on this device and its instance.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn exts(&self) -> crate::checks::Exts {
+        self.inner.exts
+    }
+    /// The objects created, allocated or retrieved from this device.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn objects(&self) -> &crate::validation::Objects {
+        &self.inner.objects
     }
     /// ash's device-level function tables.
     #[inline]
@@ -937,6 +1029,7 @@ impl DeviceMemory {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(DeviceMemoryInner {
                 raw,
@@ -984,6 +1077,8 @@ impl core::ops::Deref for DeviceMemory {
 }
 impl Drop for DeviceMemoryInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1017,6 +1112,7 @@ impl Event {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(EventInner {
                 raw,
@@ -1064,6 +1160,8 @@ impl core::ops::Deref for Event {
 }
 impl Drop for EventInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1098,6 +1196,7 @@ impl Fence {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(FenceInner {
                 raw,
@@ -1154,6 +1253,8 @@ impl core::ops::Deref for Fence {
 }
 impl Drop for FenceInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1202,6 +1303,7 @@ impl Framebuffer {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(FramebufferInner {
                 raw,
@@ -1249,6 +1351,8 @@ impl core::ops::Deref for Framebuffer {
 }
 impl Drop for FramebufferInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1283,6 +1387,7 @@ impl Image {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(ImageInner {
                 raw,
@@ -1335,6 +1440,8 @@ impl core::ops::Deref for Image {
 }
 impl Drop for ImageInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1368,6 +1475,7 @@ impl ImageView {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(ImageViewInner {
                 raw,
@@ -1415,6 +1523,8 @@ impl core::ops::Deref for ImageView {
 }
 impl Drop for ImageViewInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1467,6 +1577,10 @@ struct InstanceInner {
     entry: Entry,
     fns: ash::Instance,
     ext: InstanceExtensions,
+    #[cfg(feature = "runtime_implicit_validations")]
+    exts: crate::checks::Exts,
+    #[cfg(feature = "runtime_implicit_validations")]
+    objects: crate::validation::Objects,
 }
 impl Instance {
     /// Wraps an instance created by [`Entry::create_instance`].
@@ -1474,6 +1588,7 @@ impl Instance {
         entry: &Entry,
         raw: vk::Instance,
         enabled: &[&core::ffi::CStr],
+        api_version: u32,
     ) -> Instance {
         let fns = unsafe { ash::Instance::load(entry.fns().static_fn(), raw) };
         #[allow(unused_mut)]
@@ -1527,14 +1642,32 @@ impl Instance {
                 ash::khr::xlib_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
+        let _ = api_version;
         Instance {
             inner: Vrc::new(InstanceInner {
                 raw,
                 entry: entry.clone(),
                 fns,
                 ext,
+                #[cfg(feature = "runtime_implicit_validations")]
+                exts: crate::checks::Exts::new(
+                    vk::api_version_minor(api_version),
+                    enabled,
+                ),
+                #[cfg(feature = "runtime_implicit_validations")]
+                objects: Default::default(),
             }),
         }
+    }
+    /// The versions and extensions enabled on this instance.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn exts(&self) -> crate::checks::Exts {
+        self.inner.exts
+    }
+    /// The objects created from this instance.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn objects(&self) -> &crate::validation::Objects {
+        &self.inner.objects
     }
     /// ash's instance-level function tables.
     #[inline]
@@ -1594,6 +1727,7 @@ impl PhysicalDevice {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(PhysicalDeviceInner {
                 raw,
@@ -1639,6 +1773,13 @@ impl core::ops::Deref for PhysicalDevice {
         &self.inner.raw
     }
 }
+#[cfg(feature = "runtime_implicit_validations")]
+impl Drop for PhysicalDeviceInner {
+    fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
+    }
+}
 ///A `VkPipeline`. Clones share it; the last one to go calls `vkDestroyPipeline`, after every submission that used it has completed.
 #[derive(Clone)]
 pub struct Pipeline {
@@ -1660,6 +1801,7 @@ impl Pipeline {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(PipelineInner {
                 raw,
@@ -1707,6 +1849,8 @@ impl core::ops::Deref for Pipeline {
 }
 impl Drop for PipelineInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1740,6 +1884,7 @@ impl PipelineCache {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(PipelineCacheInner {
                 raw,
@@ -1787,6 +1932,8 @@ impl core::ops::Deref for PipelineCache {
 }
 impl Drop for PipelineCacheInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1820,6 +1967,7 @@ impl PipelineLayout {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(PipelineLayoutInner {
                 raw,
@@ -1867,6 +2015,8 @@ impl core::ops::Deref for PipelineLayout {
 }
 impl Drop for PipelineLayoutInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1904,6 +2054,7 @@ impl PrivateDataSlot {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(PrivateDataSlotInner {
                 raw,
@@ -1951,6 +2102,8 @@ impl core::ops::Deref for PrivateDataSlot {
 }
 impl Drop for PrivateDataSlotInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1988,6 +2141,7 @@ impl QueryPool {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(QueryPoolInner {
                 raw,
@@ -2035,6 +2189,8 @@ impl core::ops::Deref for QueryPool {
 }
 impl Drop for QueryPoolInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2056,6 +2212,8 @@ pub struct Queue {
 struct QueueInner {
     raw: vk::Queue,
     parent: Device,
+    #[cfg(feature = "runtime_implicit_validations")]
+    queue_flags: vk::QueueFlags,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -2068,10 +2226,13 @@ impl Queue {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(QueueInner {
                 raw,
                 parent: parent.clone(),
+                #[cfg(feature = "runtime_implicit_validations")]
+                queue_flags: vk::QueueFlags::empty(),
                 keep,
                 destroy,
             }),
@@ -2081,6 +2242,19 @@ impl Queue {
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// Records the queue flags of the queue's family, for the `queuetype` checks.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
+        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+            inner.queue_flags = flags;
+        }
+        self
+    }
+    /// The queue flags of the queue's family.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
+        self.inner.queue_flags
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2113,6 +2287,13 @@ impl core::ops::Deref for Queue {
         &self.inner.raw
     }
 }
+#[cfg(feature = "runtime_implicit_validations")]
+impl Drop for QueueInner {
+    fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
+    }
+}
 ///A `VkRenderPass`. Clones share it; the last one to go calls `vkDestroyRenderPass`, after every submission that used it has completed.
 #[derive(Clone)]
 pub struct RenderPass {
@@ -2134,6 +2315,7 @@ impl RenderPass {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(RenderPassInner {
                 raw,
@@ -2181,6 +2363,8 @@ impl core::ops::Deref for RenderPass {
 }
 impl Drop for RenderPassInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2214,6 +2398,7 @@ impl Sampler {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(SamplerInner {
                 raw,
@@ -2261,6 +2446,8 @@ impl core::ops::Deref for Sampler {
 }
 impl Drop for SamplerInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2294,6 +2481,7 @@ impl SamplerYcbcrConversion {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(SamplerYcbcrConversionInner {
                 raw,
@@ -2341,6 +2529,8 @@ impl core::ops::Deref for SamplerYcbcrConversion {
 }
 impl Drop for SamplerYcbcrConversionInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2378,6 +2568,7 @@ impl Semaphore {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(SemaphoreInner {
                 raw,
@@ -2425,6 +2616,8 @@ impl core::ops::Deref for Semaphore {
 }
 impl Drop for SemaphoreInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2458,6 +2651,7 @@ impl ShaderModule {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(ShaderModuleInner {
                 raw,
@@ -2505,6 +2699,8 @@ impl core::ops::Deref for ShaderModule {
 }
 impl Drop for ShaderModuleInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2541,6 +2737,7 @@ impl SurfaceKHR {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(SurfaceKHRInner {
                 raw,
@@ -2591,6 +2788,8 @@ impl core::ops::Deref for SurfaceKHR {
 #[cfg(feature = "khr_surface")]
 impl Drop for SurfaceKHRInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2627,6 +2826,7 @@ impl SwapchainKHR {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
+        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
         Self {
             inner: Vrc::new(SwapchainKHRInner {
                 raw,
@@ -2677,6 +2877,8 @@ impl core::ops::Deref for SwapchainKHR {
 #[cfg(feature = "khr_swapchain")]
 impl Drop for SwapchainKHRInner {
     fn drop(&mut self) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
         }

@@ -17,6 +17,9 @@ pub mod api_info;
 // The generator formats its output with prettyplease; rustfmt leaves it as written,
 // so the freshness test compares exactly what the generator writes.
 #[rustfmt::skip]
+#[cfg(feature = "runtime_implicit_validations")]
+mod checks;
+#[rustfmt::skip]
 mod commands;
 #[rustfmt::skip]
 pub mod handles;
@@ -26,6 +29,9 @@ pub mod recorder;
 pub mod structs;
 #[rustfmt::skip]
 mod support;
+#[rustfmt::skip]
+#[cfg(feature = "runtime_implicit_validations")]
+mod validation;
 
 pub use ash::vk;
 pub use handles::*;

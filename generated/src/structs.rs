@@ -27,7 +27,7 @@ use core::marker::PhantomData;
 - `VUID-VkAcquireNextImageInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAcquireNextImageInfoKHR-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkAcquireNextImageInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`: user (explicit rule; the wrappers do not check it)*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
@@ -307,16 +307,16 @@ impl<'a> core::ops::Deref for ApplicationInfo<'a> {
 - `VUID-VkAttachmentDescription2-format-03283`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAttachmentDescription2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkAttachmentDescription2-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-samples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-loadOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-storeOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-stencilLoadOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-stencilStoreOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-initialLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescription2-finalLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkAttachmentDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkAttachmentDescription2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-loadOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-storeOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-stencilLoadOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-stencilStoreOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-format-06487`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentDescription2-format-06488`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284`: user (explicit rule; the wrappers do not check it)
@@ -454,8 +454,8 @@ impl<'a> core::ops::Deref for AttachmentDescription2<'a> {
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentDescriptionStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescriptionStencilLayout<'a> {
@@ -533,8 +533,8 @@ for AttachmentDescriptionStencilLayout<'a> {}
 - `VUID-VkAttachmentReference2-layout-03077`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentReference2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentReference2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAttachmentReference2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkAttachmentReference2-layout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentReference2-synchronization2-06910`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentReference2-attachmentFeedbackLoopLayout-07311`: user (explicit rule; the wrappers do not check it)*/
@@ -616,7 +616,7 @@ impl<'a> core::ops::Deref for AttachmentReference2<'a> {
 
 - `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkAttachmentReferenceStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReferenceStencilLayout<'a> {
@@ -896,10 +896,10 @@ for BindBufferMemoryDeviceGroupInfo<'a> {}
 - `VUID-VkBindBufferMemoryInfo-size-01037`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindBufferMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindBufferMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBindBufferMemoryInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkBindBufferMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindBufferMemoryInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindBufferMemoryInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindBufferMemoryInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkBindBufferMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkBindBufferMemoryInfo-buffer-01444`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindBufferMemoryInfo-memory-01508`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindBufferMemoryInfo-None-01898`: user (explicit rule; the wrappers do not check it)
@@ -1078,9 +1078,9 @@ for BindImageMemoryDeviceGroupInfo<'a> {}
 - `VUID-VkBindImageMemoryInfo-memoryOffset-01046`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindImageMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImageMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBindImageMemoryInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkBindImageMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindImageMemoryInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindImageMemoryInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkBindImageMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkBindImageMemoryInfo-image-01445`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindImageMemoryInfo-memory-01509`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindImageMemoryInfo-memory-02628`: user (explicit rule; the wrappers do not check it)
@@ -1264,7 +1264,7 @@ for BindImageMemorySwapchainInfoKHR<'a> {}
 
 - `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindImagePlaneMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02284`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1339,13 +1339,13 @@ unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>> for BindImagePlaneMemoryInf
 - `VUID-VkBindSparseInfo-pSignalSemaphores-03251`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindSparseInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBindSparseInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkBindSparseInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindSparseInfo-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindSparseInfo-pBufferBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkBindSparseInfo-pImageOpaqueBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkBindSparseInfo-pImageBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkBindSparseInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindSparseInfo-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-VkBindSparseInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindSparseInfo<'a> {
@@ -1480,13 +1480,13 @@ impl<'a> core::ops::Deref for BindSparseInfo<'a> {
 - `VUID-VkBlitImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBlitImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBlitImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBlitImageInfo2-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkBlitImageInfo2-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBlitImageInfo2-dstImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBlitImageInfo2-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkBlitImageInfo2-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBlitImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkBlitImageInfo2-filter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkBlitImageInfo2-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkBlitImageInfo2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkBlitImageInfo2-filter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBlitImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkBlitImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkBlitImageInfo2-srcImage-06421`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBlitImageInfo2-dstImage-06422`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBlitImageInfo2-srcImageLayout-00222`: user (explicit rule; the wrappers do not check it)
@@ -1679,11 +1679,11 @@ impl<'a> core::ops::Deref for BufferCopy2<'a> {
 - `VUID-VkBufferCreateInfo-flags-00918`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkBufferCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkBufferCreateInfo-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkBufferCreateInfo-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkBufferCreateInfo-sharingMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkBufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkBufferCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferCreateInfo-sharingMode-01391`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferCreateInfo-sharingMode-01419`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferCreateInfo-pNext-00920`: user (explicit rule; the wrappers do not check it)
@@ -1866,8 +1866,8 @@ impl<'a> core::ops::Deref for BufferDeviceAddressInfo<'a> {
 - `VUID-VkBufferImageCopy2-imageExtent-06661`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferImageCopy2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkBufferImageCopy2-imageSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferImageCopy2<'a> {
@@ -2116,10 +2116,10 @@ impl<'a> core::ops::Deref for BufferMemoryBarrier<'a> {
 - `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferMemoryBarrier2-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBufferMemoryBarrier2-srcStageMask-03931`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferMemoryBarrier2-srcAccessMask-03918`: user (explicit rule; the wrappers do not check it)
@@ -2453,10 +2453,10 @@ for BufferOpaqueCaptureAddressCreateInfo<'a> {}
 - `VUID-VkBufferViewCreateInfo-buffer-00935`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferViewCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkBufferViewCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkBufferViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkBufferViewCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkBufferViewCreateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBufferViewCreateInfo-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkBufferViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferViewCreateInfo-offset-00926`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferViewCreateInfo-offset-02749`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkBufferViewCreateInfo-buffer-02750`: user (explicit rule; the wrappers do not check it)
@@ -2549,7 +2549,7 @@ impl<'a> core::ops::Deref for BufferViewCreateInfo<'a> {
 - `VUID-VkCommandBufferAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferAllocateInfo-commandPool-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCommandBufferAllocateInfo-level-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkCommandBufferAllocateInfo-level-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferAllocateInfo<'a> {
@@ -2627,8 +2627,8 @@ impl<'a> core::ops::Deref for CommandBufferAllocateInfo<'a> {
 - `VUID-VkCommandBufferBeginInfo-flags-00055`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCommandBufferBeginInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkCommandBufferBeginInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkCommandBufferBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkCommandBufferBeginInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferBeginInfo-flags-06000`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferBeginInfo-flags-06001`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferBeginInfo-flags-06002`: user (explicit rule; the wrappers do not check it)
@@ -2717,8 +2717,8 @@ impl<'a> core::ops::Deref for CommandBufferBeginInfo<'a> {
 - `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferInheritanceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferInheritanceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCommandBufferInheritanceInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkCommandBufferInheritanceInfo-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-VkCommandBufferInheritanceInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceInfo<'a> {
@@ -2825,11 +2825,11 @@ impl<'a> core::ops::Deref for CommandBufferInheritanceInfo<'a> {
 - `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
+- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferInheritanceRenderingInfoKHR-pColorAttachmentFormats-06492`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009`: user (explicit rule; the wrappers do not check it)*/
@@ -3006,7 +3006,7 @@ impl<'a> core::ops::Deref for CommandBufferSubmitInfo<'a> {
 - `VUID-VkCommandPoolCreateInfo-flags-02860`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCommandPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCommandPoolCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkCommandPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandPoolCreateInfo<'a> {
@@ -3087,11 +3087,11 @@ impl<'a> core::ops::Deref for CommandPoolCreateInfo<'a> {
 - `VUID-VkComputePipelineCreateInfo-layout-01687`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkComputePipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkComputePipelineCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkComputePipelineCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkComputePipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkComputePipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkComputePipelineCreateInfo-stage-parameter`: user (not settable safely (a nested struct that carries pointers or handles))
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkComputePipelineCreateInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkComputePipelineCreateInfo-flags-03364`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkComputePipelineCreateInfo-flags-03365`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkComputePipelineCreateInfo-flags-03366`: user (explicit rule; the wrappers do not check it)
@@ -3197,8 +3197,8 @@ impl<'a> core::ops::Deref for ComputePipelineCreateInfo<'a> {
 - `VUID-VkCopyBufferInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyBufferInfo2-dstBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyBufferInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCopyBufferInfo2-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkCopyBufferInfo2-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-VkCopyBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferInfo2<'a> {
@@ -3311,10 +3311,10 @@ impl<'a> core::ops::Deref for CopyBufferInfo2<'a> {
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyBufferToImageInfo2-dstImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCopyBufferToImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkCopyBufferToImageInfo2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyBufferToImageInfo2-dstImage-01997`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-01396`: user (explicit rule; the wrappers do not check it)
@@ -3416,7 +3416,7 @@ impl<'a> core::ops::Deref for CopyBufferToImageInfo2<'a> {
 - `VUID-VkCopyDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyDescriptorSet-srcSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-dstSet-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyDescriptorSet-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkCopyDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyDescriptorSet-srcBinding-02223`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyDescriptorSet-dstBinding-02224`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyDescriptorSet-srcBinding-02225`: user (explicit rule; the wrappers do not check it)
@@ -3565,12 +3565,12 @@ impl<'a> core::ops::Deref for CopyDescriptorSet<'a> {
 - `VUID-VkCopyImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyImageInfo2-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkCopyImageInfo2-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCopyImageInfo2-dstImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyImageInfo2-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkCopyImageInfo2-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCopyImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCopyImageInfo2-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkCopyImageInfo2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkCopyImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkCopyImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyImageInfo2-srcImage-01995`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyImageInfo2-dstImage-01996`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyImageInfo2-srcImage-04443`: user (explicit rule; the wrappers do not check it)
@@ -3731,11 +3731,11 @@ impl<'a> core::ops::Deref for CopyImageInfo2<'a> {
 - `VUID-VkCopyImageToBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageToBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCopyImageToBufferInfo2-dstBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyImageToBufferInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkCopyImageToBufferInfo2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-01998`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-01397`: user (explicit rule; the wrappers do not check it)
@@ -3899,8 +3899,8 @@ impl<'a> core::ops::Deref for DebugUtilsLabelEXT<'a> {
 
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessageIdName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessage-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pQueueLabels-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -4012,12 +4012,12 @@ impl<'a> core::ops::Deref for DebugUtilsMessengerCallbackDataEXT<'a> {
 
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-01914`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -4124,7 +4124,7 @@ for DebugUtilsMessengerCreateInfoEXT<'a> {}
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
@@ -4213,9 +4213,9 @@ for DebugUtilsObjectNameInfoEXT<'a> {}
 - `VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -4305,7 +4305,7 @@ impl<'a> core::ops::Deref for DebugUtilsObjectTagInfoEXT<'a> {
 
 - `VUID-VkDependencyInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDependencyInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDependencyInfo-dependencyFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDependencyInfo-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDependencyInfo-pMemoryBarriers-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDependencyInfo-pBufferMemoryBarriers-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDependencyInfo-pImageMemoryBarriers-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
@@ -4475,7 +4475,7 @@ impl<'a> core::ops::Deref for DescriptorBufferInfo<'a> {
 - `VUID-VkDescriptorImageInfo-descriptorType-06714`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorImageInfo-imageView-01976`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorImageInfo-imageLayout-00344`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkDescriptorImageInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkDescriptorImageInfo-sampler-01564`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorImageInfo-mutableComparisonSamplers-04450`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
@@ -4539,8 +4539,8 @@ impl<'a> core::ops::Deref for DescriptorImageInfo<'a> {
 - `VUID-VkDescriptorPoolCreateInfo-maxSets-00301`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorPoolCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDescriptorPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDescriptorPoolCreateInfo-flags-04607`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorPoolCreateInfo-mutableDescriptorType-04608`: user (explicit rule; the wrappers do not check it)
@@ -4700,11 +4700,11 @@ for DescriptorPoolInlineUniformBlockCreateInfo<'a> {}
 - `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-08009`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorSetAllocateInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkDescriptorSetAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorSetAllocateInfo-descriptorPool-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkDescriptorSetAllocateInfo-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkDescriptorSetAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetAllocateInfo<'a> {
@@ -4778,7 +4778,7 @@ impl<'a> core::ops::Deref for DescriptorSetAllocateInfo<'a> {
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-04604`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-02209`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: user (explicit rule; the wrappers do not check it)
@@ -4876,7 +4876,7 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutBinding<'a> {
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-flags-03003`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingAccelerationStructureUpdateAfterBind-03570`: user (explicit rule; the wrappers do not check it)*/
@@ -4952,8 +4952,8 @@ for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {}
 - `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorSetLayoutCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDescriptorSetLayoutCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pBindings-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-00280`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-00281`: user (explicit rule; the wrappers do not check it)
@@ -5044,7 +5044,7 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutCreateInfo<'a> {
 
 - `VUID-VkDescriptorSetLayoutSupport-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutSupport-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorSetLayoutSupport-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkDescriptorSetLayoutSupport-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutSupport<'a> {
@@ -5242,11 +5242,11 @@ for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-pDescriptorUpdateEntries-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00351`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00352`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00353`: user (explicit rule; the wrappers do not check it)
@@ -5455,13 +5455,13 @@ impl<'a> core::ops::Deref for DeviceBufferMemoryRequirements<'a> {
 - `VUID-VkDeviceCreateInfo-None-08095`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkDeviceCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkDeviceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkDeviceCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDeviceCreateInfo-pQueueCreateInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-ppEnabledLayerNames-parameter`: user (not settable safely (deprecated by the specification))
 - `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-pEnabledFeatures-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceCreateInfo<'a> {
@@ -5847,7 +5847,7 @@ impl<'a> core::ops::Deref for DeviceGroupPresentCapabilitiesKHR<'a> {
 - `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceGroupPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -6100,8 +6100,8 @@ unsafe impl<'a, 'b> Extends<SubmitInfo<'b>> for DeviceGroupSubmitInfo<'a> {}
 # Valid usage
 
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)*/
+- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask`: dynamic (checks the flags are not 0)*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -6182,7 +6182,7 @@ for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 - `VUID-VkDeviceImageMemoryRequirements-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceImageMemoryRequirements-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceImageMemoryRequirements-pCreateInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceImageMemoryRequirements-planeAspect-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDeviceImageMemoryRequirements-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDeviceImageMemoryRequirements-pCreateInfo-06776`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06420`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceImageMemoryRequirements-pNext-06996`: user (explicit rule; the wrappers do not check it)*/
@@ -6392,10 +6392,10 @@ unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for DevicePrivateDataCreateInf
 - `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceQueueCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceQueueCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkDeviceQueueCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkDeviceQueueCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkDeviceQueueCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceQueueCreateInfo-queueCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-VkDeviceQueueCreateInfo-queueCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkDeviceQueueCreateInfo-flags-02861`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceQueueCreateInfo-flags-06449`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
@@ -6480,7 +6480,7 @@ impl<'a> core::ops::Deref for DeviceQueueCreateInfo<'a> {
 - `VUID-VkDeviceQueueInfo2-queueIndex-01843`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkDeviceQueueInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceQueueInfo2-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueInfo2<'a> {
@@ -6560,8 +6560,8 @@ impl<'a> core::ops::Deref for DeviceQueueInfo2<'a> {
 - `VUID-VkEventCreateInfo-pNext-06790`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkEventCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkEventCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkEventCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkEventCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkEventCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkEventCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct EventCreateInfo<'a> {
@@ -6628,7 +6628,7 @@ impl<'a> core::ops::Deref for EventCreateInfo<'a> {
 
 - `VUID-VkExportFenceCreateInfo-handleTypes-01446`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkExportFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportFenceCreateInfo<'a> {
@@ -6696,7 +6696,7 @@ unsafe impl<'a, 'b> Extends<FenceCreateInfo<'b>> for ExportFenceCreateInfo<'a> {
 
 - `VUID-VkExportMemoryAllocateInfo-handleTypes-00656`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkExportMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportMemoryAllocateInfo<'a> {
@@ -6764,7 +6764,7 @@ unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>> for ExportMemoryAllocateInfo
 
 - `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkExportSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportSemaphoreCreateInfo<'a> {
@@ -7012,7 +7012,7 @@ for ExternalImageFormatProperties<'a> {}
 # Valid usage
 
 - `VUID-VkExternalMemoryBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalMemoryBufferCreateInfo-handleTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkExternalMemoryBufferCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalMemoryBufferCreateInfo<'a> {
@@ -7080,7 +7080,7 @@ for ExternalMemoryBufferCreateInfo<'a> {}
 # Valid usage
 
 - `VUID-VkExternalMemoryImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalMemoryImageCreateInfo-handleTypes-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkExternalMemoryImageCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalMemoryImageCreateInfo<'a> {
@@ -7208,8 +7208,8 @@ impl<'a> core::ops::Deref for ExternalSemaphoreProperties<'a> {
 
 - `VUID-VkFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFenceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFenceCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkFenceCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkFenceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkFenceCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FenceCreateInfo<'a> {
@@ -7276,7 +7276,7 @@ impl<'a> core::ops::Deref for FenceCreateInfo<'a> {
 
 - `VUID-VkFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFormatProperties2-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FormatProperties2<'a> {
@@ -7397,10 +7397,10 @@ unsafe impl<'a, 'b> Extends<FormatProperties2<'b>> for FormatProperties3<'a> {}
 
 - `VUID-VkFramebufferAttachmentImageInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFramebufferAttachmentImageInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFramebufferAttachmentImageInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkFramebufferAttachmentImageInfo-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkFramebufferAttachmentImageInfo-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkFramebufferAttachmentImageInfo-pViewFormats-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkFramebufferAttachmentImageInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkFramebufferAttachmentImageInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkFramebufferAttachmentImageInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkFramebufferAttachmentImageInfo-pViewFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferAttachmentImageInfo<'a> {
@@ -7591,10 +7591,10 @@ for FramebufferAttachmentsCreateInfo<'a> {}
 - `VUID-VkFramebufferCreateInfo-flags-04113`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkFramebufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFramebufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFramebufferCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkFramebufferCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkFramebufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkFramebufferCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkFramebufferCreateInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkFramebufferCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkFramebufferCreateInfo-pAttachments-02634`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkFramebufferCreateInfo-pAttachments-02552`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkFramebufferCreateInfo-renderPass-02553`: user (explicit rule; the wrappers do not check it)
@@ -7767,10 +7767,10 @@ impl<'a> core::ops::Deref for FramebufferCreateInfo<'a> {
 - `VUID-VkGraphicsPipelineCreateInfo-stage-06897`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkGraphicsPipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkGraphicsPipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGraphicsPipelineCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkGraphicsPipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkGraphicsPipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkGraphicsPipelineCreateInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkGraphicsPipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkGraphicsPipelineCreateInfo-stage-00727`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-02095`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkGraphicsPipelineCreateInfo-stage-02096`: user (explicit rule; the wrappers do not check it)
@@ -8264,9 +8264,9 @@ impl<'a> core::ops::Deref for GraphicsPipelineCreateInfo<'a> {
 - `VUID-VkImageBlit2-layerCount-00239`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageBlit2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageBlit2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageBlit2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkImageBlit2-srcSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageBlit2-dstSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkImageBlit2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkImageBlit2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageBlit2-dstSubresource-parameter`: dynamic (checks the struct's own rules)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageBlit2<'a> {
@@ -8356,8 +8356,8 @@ impl<'a> core::ops::Deref for ImageBlit2<'a> {
 - `VUID-VkImageCopy2-extent-06670`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageCopy2-srcSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCopy2-dstSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkImageCopy2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageCopy2-dstSubresource-parameter`: dynamic (checks the struct's own rules)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCopy2<'a> {
@@ -8487,16 +8487,16 @@ impl<'a> core::ops::Deref for ImageCopy2<'a> {
 - `VUID-VkImageCreateInfo-initialLayout-00993`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkImageCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-imageType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-samples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkImageCreateInfo-sharingMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageCreateInfo-initialLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkImageCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-imageType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkImageCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-sharingMode-01392`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageCreateInfo-sharingMode-01420`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageCreateInfo-format-00943`: user (explicit rule; the wrappers do not check it)
@@ -8707,7 +8707,7 @@ impl<'a> core::ops::Deref for ImageCreateInfo<'a> {
 # Valid usage
 
 - `VUID-VkImageFormatListCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageFormatListCreateInfo-pViewFormats-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkImageFormatListCreateInfo-pViewFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageFormatListCreateInfo<'a> {
@@ -8781,7 +8781,7 @@ for ImageFormatListCreateInfo<'a> {}
 
 - `VUID-VkImageFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageFormatProperties2-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkImageFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageFormatProperties2<'a> {
@@ -8855,11 +8855,11 @@ impl<'a> core::ops::Deref for ImageFormatProperties2<'a> {
 - `VUID-VkImageMemoryBarrier-image-01932`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageMemoryBarrier-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkImageMemoryBarrier-oldLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageMemoryBarrier-newLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageMemoryBarrier-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkImageMemoryBarrier-oldLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageMemoryBarrier-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageMemoryBarrier-oldLayout-01658`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryBarrier-oldLayout-01659`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065`: user (explicit rule; the wrappers do not check it)
@@ -9049,15 +9049,15 @@ impl<'a> core::ops::Deref for ImageMemoryBarrier<'a> {
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageMemoryBarrier2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageMemoryBarrier2-oldLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageMemoryBarrier2-newLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageMemoryBarrier2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkImageMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageMemoryBarrier2-oldLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageMemoryBarrier2-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier2-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImageMemoryBarrier2-subresourceRange-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageMemoryBarrier2-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03931`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryBarrier2-srcAccessMask-03918`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryBarrier2-dstStageMask-03931`: user (explicit rule; the wrappers do not check it)
@@ -9286,7 +9286,7 @@ impl<'a> core::ops::Deref for ImageMemoryBarrier2<'a> {
 - `VUID-VkImageMemoryRequirementsInfo2-image-01897`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageMemoryRequirementsInfo2-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkImageMemoryRequirementsInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -9350,7 +9350,7 @@ impl<'a> core::ops::Deref for ImageMemoryRequirementsInfo2<'a> {
 
 - `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImagePlaneMemoryRequirementsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02282`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -9424,8 +9424,8 @@ for ImagePlaneMemoryRequirementsInfo<'a> {}
 - `VUID-VkImageResolve2-layerCount-00267`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageResolve2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageResolve2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageResolve2-srcSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageResolve2-dstSubresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkImageResolve2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageResolve2-dstSubresource-parameter`: dynamic (checks the struct's own rules)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageResolve2<'a> {
@@ -9581,8 +9581,8 @@ impl<'a> core::ops::Deref for ImageSparseMemoryRequirementsInfo2<'a> {
 
 - `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageStencilUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)*/
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageStencilUsageCreateInfo<'a> {
@@ -9744,13 +9744,13 @@ unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageSwapchainCreateInfoKHR
 - `VUID-VkImageViewCreateInfo-viewType-02963`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageViewCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkImageViewCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkImageViewCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageViewCreateInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImageViewCreateInfo-viewType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageViewCreateInfo-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageViewCreateInfo-components-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkImageViewCreateInfo-viewType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-image-06723`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageViewCreateInfo-image-04970`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkImageViewCreateInfo-image-04971`: user (explicit rule; the wrappers do not check it)
@@ -9913,8 +9913,8 @@ impl<'a> core::ops::Deref for ImageViewCreateInfo<'a> {
 # Valid usage
 
 - `VUID-VkImageViewUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewUsageCreateInfo-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)*/
+- `VUID-VkImageViewUsageCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewUsageCreateInfo<'a> {
@@ -9987,8 +9987,8 @@ unsafe impl<'a, 'b> Extends<ImageViewCreateInfo<'b>> for ImageViewUsageCreateInf
 - `VUID-VkInstanceCreateInfo-pNext`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkInstanceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkInstanceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkInstanceCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkInstanceCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkInstanceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkInstanceCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkInstanceCreateInfo-pApplicationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkInstanceCreateInfo-ppEnabledLayerNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkInstanceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
@@ -10164,7 +10164,7 @@ impl<'a> core::ops::Deref for MappedMemoryRange<'a> {
 - `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryAllocateFlagsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryAllocateFlagsInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkMemoryAllocateFlagsInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateFlagsInfo<'a> {
@@ -10239,7 +10239,7 @@ unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>> for MemoryAllocateFlagsInfo<
 - `VUID-VkMemoryAllocateInfo-None-06657`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryAllocateInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkMemoryAllocateInfo-allocationSize-00638`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryAllocateInfo-buffer-06380`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryAllocateInfo-image-06381`: user (explicit rule; the wrappers do not check it)
@@ -10353,8 +10353,8 @@ impl<'a> core::ops::Deref for MemoryAllocateInfo<'a> {
 
 - `VUID-VkMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryBarrier-srcAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkMemoryBarrier-dstAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkMemoryBarrier-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkMemoryBarrier-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryBarrier<'a> {
@@ -10464,10 +10464,10 @@ impl<'a> core::ops::Deref for MemoryBarrier<'a> {
 - `VUID-VkMemoryBarrier2-dstAccessMask-03916`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryBarrier2-dstAccessMask-03917`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryBarrier2-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkMemoryBarrier2-srcAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkMemoryBarrier2-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkMemoryBarrier2-dstAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkMemoryBarrier2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-srcStageMask-03931`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryBarrier2-srcAccessMask-03918`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryBarrier2-dstStageMask-03931`: user (explicit rule; the wrappers do not check it)
@@ -10633,7 +10633,7 @@ unsafe impl<'a, 'b> Extends<SubpassDependency2<'b>> for MemoryBarrier2<'a> {}
 - `VUID-VkMemoryDedicatedAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryDedicatedAllocateInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryDedicatedAllocateInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkMemoryDedicatedAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkMemoryDedicatedAllocateInfo-image-01433`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryDedicatedAllocateInfo-buffer-01435`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkMemoryDedicatedAllocateInfo-image-02964`: user (explicit rule; the wrappers do not check it)
@@ -10848,7 +10848,7 @@ for MemoryOpaqueCaptureAddressAllocateInfo<'a> {}
 
 - `VUID-VkMemoryRequirements2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryRequirements2-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkMemoryRequirements2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryRequirements2<'a> {
@@ -10909,7 +10909,7 @@ impl<'a> core::ops::Deref for MemoryRequirements2<'a> {
 
 - `VUID-VkMetalSurfaceCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMetalSurfaceCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMetalSurfaceCreateInfoEXT-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkMetalSurfaceCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[cfg(feature = "ext_metal_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -11732,10 +11732,10 @@ for PhysicalDeviceDynamicRenderingFeatures<'a> {}
 
 - `VUID-VkPhysicalDeviceExternalBufferInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalBufferInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-handleType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPhysicalDeviceExternalBufferInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkPhysicalDeviceExternalBufferInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalBufferInfo<'a> {
@@ -11816,7 +11816,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalBufferInfo<'a> {
 
 - `VUID-VkPhysicalDeviceExternalFenceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalFenceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceExternalFenceInfo-handleType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPhysicalDeviceExternalFenceInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalFenceInfo<'a> {
@@ -11882,7 +11882,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalFenceInfo<'a> {
 # Valid usage
 
 - `VUID-VkPhysicalDeviceExternalImageFormatInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceExternalImageFormatInfo-handleType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPhysicalDeviceExternalImageFormatInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalImageFormatInfo<'a> {
@@ -11953,8 +11953,8 @@ for PhysicalDeviceExternalImageFormatInfo<'a> {}
 
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-handleType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalSemaphoreInfo<'a> {
@@ -12346,13 +12346,13 @@ for PhysicalDeviceIDProperties<'a> {}
 - `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-02313`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceImageFormatInfo2<'a> {
@@ -12925,7 +12925,7 @@ for PhysicalDeviceMaintenance4Properties<'a> {}
 
 - `VUID-VkPhysicalDeviceMemoryProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceMemoryProperties2-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkPhysicalDeviceMemoryProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMemoryProperties2<'a> {
@@ -13337,7 +13337,7 @@ for PhysicalDevicePrivateDataFeatures<'a> {}
 
 - `VUID-VkPhysicalDeviceProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceProperties2-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkPhysicalDeviceProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceProperties2<'a> {
@@ -14383,12 +14383,12 @@ for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-type-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSparseImageFormatInfo2<'a> {
@@ -16275,7 +16275,7 @@ for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 - `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineCacheCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineCacheCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineCacheCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineCacheCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineCacheCreateInfo-pInitialData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
@@ -16354,8 +16354,8 @@ impl<'a> core::ops::Deref for PipelineCacheCreateInfo<'a> {
 - `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineColorBlendStateCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineColorBlendStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineColorBlendStateCreateInfo-rasterizationOrderColorAttachmentAccess-06465`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07353`: user (explicit rule; the wrappers do not check it)
@@ -16530,10 +16530,10 @@ for PipelineCreationFeedbackCreateInfo<'a> {}
 - `VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-depthCompareOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-front-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-back-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineDepthStencilStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineDepthStencilStateCreateInfo-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineDepthStencilStateCreateInfo-front-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkPipelineDepthStencilStateCreateInfo-back-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-separateStencilMaskRef-04453`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-rasterizationOrderDepthAttachmentAccess-06463`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-rasterizationOrderStencilAttachmentAccess-06464`: user (explicit rule; the wrappers do not check it)*/
@@ -16660,8 +16660,8 @@ impl<'a> core::ops::Deref for PipelineDepthStencilStateCreateInfo<'a> {
 - `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineDynamicStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineDynamicStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDynamicStateCreateInfo<'a> {
@@ -16740,8 +16740,8 @@ impl<'a> core::ops::Deref for PipelineDynamicStateCreateInfo<'a> {
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-triangleFans-04452`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -16825,7 +16825,7 @@ impl<'a> core::ops::Deref for PipelineInputAssemblyStateCreateInfo<'a> {
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineLayoutCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineLayoutCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00287`: user (explicit rule; the wrappers do not check it)
@@ -16976,9 +16976,9 @@ impl<'a> core::ops::Deref for PipelineLayoutCreateInfo<'a> {
 - `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineMultisampleStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineMultisampleStateCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineMultisampleStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineMultisampleStateCreateInfo-pSampleMask-parameter`: user (not settable safely (a pointer whose length the registry gives as an expression))
 - `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-01415`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
@@ -17080,11 +17080,11 @@ impl<'a> core::ops::Deref for PipelineMultisampleStateCreateInfo<'a> {
 - `VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineRasterizationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineRasterizationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineRasterizationStateCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineRasterizationStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPipelineRasterizationStateCreateInfo-cullMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineRasterizationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineRasterizationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineRasterizationStateCreateInfo-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01507`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01414`: user (explicit rule; the wrappers do not check it)
@@ -17319,9 +17319,9 @@ for PipelineRenderingCreateInfo<'a> {}
 - `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineShaderStageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineShaderStageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineShaderStageCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineShaderStageCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkPipelineShaderStageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineShaderStageCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineShaderStageCreateInfo-stage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineShaderStageCreateInfo-module-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -17505,7 +17505,7 @@ for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {}
 # Valid usage
 
 - `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-domainOrigin-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-domainOrigin-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineTessellationDomainOriginStateCreateInfo<'a> {
@@ -17577,8 +17577,8 @@ for PipelineTessellationDomainOriginStateCreateInfo<'a> {}
 - `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineTessellationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineTessellationStateCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkPipelineTessellationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineTessellationStateCreateInfo<'a> {
@@ -17658,8 +17658,8 @@ impl<'a> core::ops::Deref for PipelineTessellationStateCreateInfo<'a> {
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineVertexInputStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineVertexInputStateCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineVertexInputStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkPipelineVertexInputStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineVertexInputStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[repr(transparent)]
@@ -17757,8 +17757,8 @@ impl<'a> core::ops::Deref for PipelineVertexInputStateCreateInfo<'a> {
 - `VUID-VkPipelineViewportStateCreateInfo-offset-02823`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineViewportStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineViewportStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineViewportStateCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkPipelineViewportStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01220`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength`: user (written by hand in the specification; not derived, so not checked)
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength`: user (written by hand in the specification; not derived, so not checked)
@@ -17861,13 +17861,13 @@ impl<'a> core::ops::Deref for PipelineViewportStateCreateInfo<'a> {
 - `VUID-VkPresentInfoKHR-pNext-06235`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPresentInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPresentInfoKHR-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkPresentInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pSwapchains-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pImageIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPresentInfoKHR-pResults-parameter`: user (not settable safely (a pointer Vulkan writes through))
-- `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkPresentInfoKHR-commonparent`: user (`commonparent` rules are not checked yet)*/
+- `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -17953,7 +17953,7 @@ impl<'a> core::ops::Deref for PresentInfoKHR<'a> {
 
 - `VUID-VkPrivateDataSlotCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPrivateDataSlotCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPrivateDataSlotCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkPrivateDataSlotCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PrivateDataSlotCreateInfo<'a> {
@@ -18089,9 +18089,9 @@ unsafe impl<'a, 'b> Extends<SubmitInfo<'b>> for ProtectedSubmitInfo<'a> {}
 - `VUID-VkQueryPoolCreateInfo-queryCount-02763`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkQueryPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueryPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkQueryPoolCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
-- `VUID-VkQueryPoolCreateInfo-queryType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkQueryPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkQueryPoolCreateInfo-meshShaderQueries-07068`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkQueryPoolCreateInfo-meshShaderQueries-07069`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkQueryPoolCreateInfo-queryType-03222`: user (explicit rule; the wrappers do not check it)
@@ -18183,7 +18183,7 @@ impl<'a> core::ops::Deref for QueryPoolCreateInfo<'a> {
 
 - `VUID-VkQueueFamilyProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueueFamilyProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkQueueFamilyProperties2-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkQueueFamilyProperties2-sType-unique`: static (the wrappers create it themselves, with an empty `pNext` chain)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueueFamilyProperties2<'a> {
@@ -18320,10 +18320,10 @@ for RenderPassAttachmentBeginInfo<'a> {}
 - `VUID-VkRenderPassBeginInfo-renderPass-00904`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkRenderPassBeginInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkRenderPassBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderPassBeginInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-framebuffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRenderPassBeginInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkRenderPassBeginInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkRenderPassBeginInfo-renderArea-02846`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassBeginInfo-renderArea-02847`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassBeginInfo-renderArea-02848`: user (explicit rule; the wrappers do not check it)
@@ -18437,12 +18437,12 @@ impl<'a> core::ops::Deref for RenderPassBeginInfo<'a> {
 - `VUID-VkRenderPassCreateInfo-pDependencies-06867`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkRenderPassCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkRenderPassCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkRenderPassCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkRenderPassCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderPassCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-pSubpasses-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassCreateInfo-subpassCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-VkRenderPassCreateInfo-subpassCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkRenderPassCreateInfo-fragmentDensityMapAttachment-06471`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassCreateInfo-pAttachments-01566`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassCreateInfo-pAttachments-01567`: user (explicit rule; the wrappers do not check it)
@@ -18558,13 +18558,13 @@ impl<'a> core::ops::Deref for RenderPassCreateInfo<'a> {
 - `VUID-VkRenderPassCreateInfo2-dstSubpass-02527`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassCreateInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassCreateInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkRenderPassCreateInfo2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkRenderPassCreateInfo2-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkRenderPassCreateInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkRenderPassCreateInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderPassCreateInfo2-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-pSubpasses-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength`: user (a slice may be empty; not checked)
+- `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkRenderPassCreateInfo2-fragmentDensityMapAttachment-06472`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassCreateInfo2-pSubpasses-06473`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderPassCreateInfo2-pAttachments-04585`: user (explicit rule; the wrappers do not check it)
@@ -18672,7 +18672,7 @@ impl<'a> core::ops::Deref for RenderPassCreateInfo2<'a> {
 
 - `VUID-VkRenderPassInputAttachmentAspectCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassInputAttachmentAspectCreateInfo-pAspectReferences-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassInputAttachmentAspectCreateInfo<'a> {
@@ -18842,14 +18842,14 @@ for RenderPassMultiviewCreateInfo<'a> {}
 - `VUID-VkRenderingAttachmentInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderingAttachmentInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderingAttachmentInfo-imageView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRenderingAttachmentInfo-imageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkRenderingAttachmentInfo-resolveMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkRenderingAttachmentInfo-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkRenderingAttachmentInfo-resolveMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderingAttachmentInfo-resolveImageView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRenderingAttachmentInfo-resolveImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkRenderingAttachmentInfo-loadOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkRenderingAttachmentInfo-storeOp-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkRenderingAttachmentInfo-clearValue-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkRenderingAttachmentInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkRenderingAttachmentInfo-resolveImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkRenderingAttachmentInfo-loadOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkRenderingAttachmentInfo-storeOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkRenderingAttachmentInfo-clearValue-parameter`: static (a union of plain numbers: every value is valid)
+- `VUID-VkRenderingAttachmentInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkRenderingAttachmentInfo-imageView-06132`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderingAttachmentInfo-imageView-06860`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderingAttachmentInfo-imageView-06861`: user (explicit rule; the wrappers do not check it)
@@ -18992,8 +18992,8 @@ impl<'a> core::ops::Deref for RenderingAttachmentInfo<'a> {
 - `VUID-VkRenderingInfo-multiview-06127`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderingInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkRenderingInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkRenderingInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkRenderingInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkRenderingInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderingInfo-pColorAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pDepthAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -19195,12 +19195,12 @@ impl<'a> core::ops::Deref for RenderingInfo<'a> {
 - `VUID-VkResolveImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkResolveImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkResolveImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkResolveImageInfo2-srcImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkResolveImageInfo2-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkResolveImageInfo2-dstImage-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkResolveImageInfo2-dstImageLayout-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkResolveImageInfo2-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkResolveImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkResolveImageInfo2-regionCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkResolveImageInfo2-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkResolveImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkResolveImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkResolveImageInfo2-srcImageLayout-00261`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkResolveImageInfo2-dstImageLayout-00263`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkResolveImageInfo2-srcImageLayout-01400`: user (explicit rule; the wrappers do not check it)
@@ -19310,14 +19310,14 @@ impl<'a> core::ops::Deref for ResolveImageInfo2<'a> {
 - `VUID-VkSamplerCreateInfo-compareEnable-01080`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSamplerCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSamplerCreateInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerCreateInfo-magFilter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerCreateInfo-minFilter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerCreateInfo-mipmapMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerCreateInfo-addressModeU-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerCreateInfo-addressModeV-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerCreateInfo-addressModeW-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSamplerCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSamplerCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-magFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-minFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-mipmapMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-addressModeU-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-samplerMipLodBias-04467`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSamplerCreateInfo-minFilter-01645`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSamplerCreateInfo-addressModeU-01646`: user (explicit rule; the wrappers do not check it)
@@ -19502,7 +19502,7 @@ impl<'a> core::ops::Deref for SamplerCreateInfo<'a> {
 # Valid usage
 
 - `VUID-VkSamplerReductionModeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerReductionModeCreateInfo-reductionMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkSamplerReductionModeCreateInfo-reductionMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerReductionModeCreateInfo<'a> {
@@ -19586,14 +19586,14 @@ for SamplerReductionModeCreateInfo<'a> {}
 - `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-yChromaOffset-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-yChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionCreateInfo<'a> {
@@ -19832,8 +19832,8 @@ unsafe impl<'a, 'b> Extends<ImageViewCreateInfo<'b>> for SamplerYcbcrConversionI
 - `VUID-VkSemaphoreCreateInfo-pNext-06789`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreCreateInfo-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSemaphoreCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkSemaphoreCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSemaphoreCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreCreateInfo<'a> {
@@ -19977,7 +19977,7 @@ impl<'a> core::ops::Deref for SemaphoreSignalInfo<'a> {
 - `VUID-VkSemaphoreSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreSubmitInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSemaphoreSubmitInfo-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03931`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03932`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03933`: user (explicit rule; the wrappers do not check it)
@@ -20070,7 +20070,7 @@ impl<'a> core::ops::Deref for SemaphoreSubmitInfo<'a> {
 - `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSemaphoreTypeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreTypeCreateInfo<'a> {
@@ -20147,10 +20147,10 @@ for SemaphoreTypeCreateInfo<'a> {}
 - `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSemaphoreWaitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreWaitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreWaitInfo-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSemaphoreWaitInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreWaitInfo-pValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreWaitInfo<'a> {
@@ -20236,7 +20236,7 @@ impl<'a> core::ops::Deref for SemaphoreWaitInfo<'a> {
 - `VUID-VkShaderModuleCreateInfo-pCode-04146`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkShaderModuleCreateInfo-pCode-04147`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkShaderModuleCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkShaderModuleCreateInfo-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)
+- `VUID-VkShaderModuleCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkShaderModuleCreateInfo-pCode-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkShaderModuleCreateInfo-codeSize-01086`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkShaderModuleCreateInfo-pCode-01087`: user (explicit rule; the wrappers do not check it)
@@ -20320,7 +20320,7 @@ for ShaderModuleCreateInfo<'a> {}
 
 - `VUID-VkSparseBufferMemoryBindInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseBufferMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSparseBufferMemoryBindInfo-bindCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkSparseBufferMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseBufferMemoryBindInfo<'a> {
@@ -20442,9 +20442,9 @@ impl<'a> core::ops::Deref for SparseImageFormatProperties2<'a> {
 - `VUID-VkSparseImageMemoryBind-extent-01110`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseImageMemoryBind-offset-01111`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseImageMemoryBind-extent-01112`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-subresource-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSparseImageMemoryBind-subresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkSparseImageMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSparseImageMemoryBind-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSparseImageMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSparseImageMemoryBind-memory-02732`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseImageMemoryBind-memory-02733`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
@@ -20531,7 +20531,7 @@ impl<'a> core::ops::Deref for SparseImageMemoryBind<'a> {
 - `VUID-VkSparseImageMemoryBindInfo-image-02901`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseImageMemoryBindInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseImageMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBindInfo<'a> {
@@ -20647,7 +20647,7 @@ impl<'a> core::ops::Deref for SparseImageMemoryRequirements2<'a> {
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-01103`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageOpaqueMemoryBindInfo<'a> {
@@ -20708,7 +20708,7 @@ impl<'a> core::ops::Deref for SparseImageOpaqueMemoryBindInfo<'a> {
 - `VUID-VkSparseMemoryBind-memoryOffset-01101`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseMemoryBind-size-01102`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSparseMemoryBind-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSparseMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSparseMemoryBind-memory-02730`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSparseMemoryBind-memory-02731`: user (explicit rule; the wrappers do not check it)*/
 #[repr(transparent)]
@@ -20852,12 +20852,12 @@ impl<'a> core::ops::Deref for SpecializationInfo<'a> {
 - `VUID-VkSubmitInfo-pWaitDstStageMask-00078`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubmitInfo-sType-unique`: user (`unique` rules are not checked yet)
+- `VUID-VkSubmitInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSubmitInfo-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkSubmitInfo-pWaitDstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
 - `VUID-VkSubmitInfo-pCommandBuffers-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSubmitInfo-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkSubmitInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-04093`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-04094`: user (explicit rule; the wrappers do not check it)
@@ -20980,8 +20980,8 @@ impl<'a> core::ops::Deref for SubmitInfo<'a> {
 - `VUID-VkSubmitInfo2KHR-variableSampleLocations-06013`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubmitInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubmitInfo2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSubmitInfo2-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSubmitInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSubmitInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubmitInfo2-pWaitSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubmitInfo2-pCommandBufferInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubmitInfo2-pSignalSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
@@ -21078,7 +21078,7 @@ impl<'a> core::ops::Deref for SubmitInfo2<'a> {
 
 - `VUID-VkSubpassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubpassBeginInfo-contents-parameter`: user (enum or flags value; ash types accept any raw value, not checked)*/
+- `VUID-VkSubpassBeginInfo-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassBeginInfo<'a> {
@@ -21159,12 +21159,12 @@ impl<'a> core::ops::Deref for SubpassBeginInfo<'a> {
 - `VUID-VkSubpassDependency2-dependencyFlags-03092`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubpassDependency2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDependency2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubpassDependency2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSubpassDependency2-srcStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSubpassDependency2-dstStageMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSubpassDependency2-srcAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSubpassDependency2-dstAccessMask-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSubpassDependency2-dependencyFlags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSubpassDependency2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSubpassDependency2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSubpassDependency2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSubpassDependency2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubpassDependency2-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubpassDependency2-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
@@ -21311,8 +21311,8 @@ impl<'a> core::ops::Deref for SubpassDependency2<'a> {
 - `VUID-VkSubpassDescription-pPreserveAttachments-00854`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubpassDescription-layout-02519`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-04438`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSubpassDescription-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSubpassDescription-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSubpassDescription-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDescription-pInputAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pColorAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -21456,9 +21456,9 @@ impl<'a> core::ops::Deref for SubpassDescription<'a> {
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubpassDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubpassDescription2-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSubpassDescription2-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSubpassDescription2-pipelineBindPoint-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSubpassDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSubpassDescription2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSubpassDescription2-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDescription2-pInputAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pColorAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -21710,7 +21710,7 @@ for SubpassDescriptionDepthStencilResolve<'a> {}
 
 - `VUID-VkSubpassEndInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassEndInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubpassEndInfo-sType-unique`: user (`unique` rules are not checked yet)*/
+- `VUID-VkSubpassEndInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassEndInfo<'a> {
@@ -21784,19 +21784,19 @@ impl<'a> core::ops::Deref for SubpassEndInfo<'a> {
 - `VUID-VkSwapchainCreateInfoKHR-imageFormat-01778`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSwapchainCreateInfoKHR-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkSwapchainCreateInfoKHR-flags-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSwapchainCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkSwapchainCreateInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSwapchainCreateInfoKHR-surface-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSwapchainCreateInfoKHR-imageColorSpace-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSwapchainCreateInfoKHR-imageUsage-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSwapchainCreateInfoKHR-imageUsage-requiredbitmask`: user (`requiredbitmask` rules are not checked yet)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSwapchainCreateInfoKHR-preTransform-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSwapchainCreateInfoKHR-imageColorSpace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSwapchainCreateInfoKHR-imageUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSwapchainCreateInfoKHR-imageUsage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSwapchainCreateInfoKHR-preTransform-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSwapchainCreateInfoKHR-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSwapchainCreateInfoKHR-presentMode-02839`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSwapchainCreateInfoKHR-minImageCount-01383`: user (explicit rule; the wrappers do not check it)
@@ -22055,7 +22055,7 @@ unsafe impl<'a, 'b> Extends<BindSparseInfo<'b>> for TimelineSemaphoreSubmitInfo<
 - `VUID-VkWaylandSurfaceCreateInfoKHR-surface-01305`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkWaylandSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWaylandSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkWaylandSurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkWaylandSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[cfg(feature = "khr_wayland_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22148,7 +22148,7 @@ impl<'a> core::ops::Deref for WaylandSurfaceCreateInfoKHR<'a> {
 - `VUID-VkWin32SurfaceCreateInfoKHR-hwnd-01308`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkWin32SurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWin32SurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[cfg(feature = "khr_win32_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22252,10 +22252,10 @@ impl<'a> core::ops::Deref for Win32SurfaceCreateInfoKHR<'a> {
 - `VUID-VkWriteDescriptorSet-descriptorType-02752`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkWriteDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWriteDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkWriteDescriptorSet-sType-unique`: user (`unique` rules are not checked yet)
-- `VUID-VkWriteDescriptorSet-descriptorType-parameter`: user (enum or flags value; ash types accept any raw value, not checked)
-- `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: user (a slice may be empty; not checked)
-- `VUID-VkWriteDescriptorSet-commonparent`: user (`commonparent` rules are not checked yet)
+- `VUID-VkWriteDescriptorSet-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkWriteDescriptorSet-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkWriteDescriptorSet-descriptorType-02219`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkWriteDescriptorSet-descriptorType-02220`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkWriteDescriptorSet-descriptorType-02221`: user (explicit rule; the wrappers do not check it)
@@ -22370,7 +22370,7 @@ impl<'a> core::ops::Deref for WriteDescriptorSet<'a> {
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength`: user (a slice may be empty; not checked)*/
+- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSetInlineUniformBlock<'a> {
@@ -22444,7 +22444,7 @@ for WriteDescriptorSetInlineUniformBlock<'a> {}
 - `VUID-VkXcbSurfaceCreateInfoKHR-window-01311`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkXcbSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkXcbSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[cfg(feature = "khr_xcb_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22527,7 +22527,7 @@ impl<'a> core::ops::Deref for XcbSurfaceCreateInfoKHR<'a> {
 - `VUID-VkXlibSurfaceCreateInfoKHR-window-01314`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkXlibSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkXlibSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkXlibSurfaceCreateInfoKHR-flags-zerobitmask`: user (`zerobitmask` rules are not checked yet)*/
+- `VUID-VkXlibSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[cfg(feature = "khr_xlib_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -45,10 +45,21 @@ impl Inside for InRendering {}
 #[must_use = "a command buffer must be ended before it is submitted"]
 pub struct Recorder<'c, S: State> {
     cb: &'c mut CommandBuffer,
+    /// The command buffer's device and raw handle, held here so a recorded command
+    /// reaches ash's table in one step instead of through the pool.
+    device: Device,
+    raw: vk::CommandBuffer,
     kept: Vec<Retained>,
     /// The address of the last object kept, so a run of commands on one object
     /// (push constants before every draw) keeps it once.
     last: usize,
+    /// The first failed check; later commands are not recorded and `end` returns it.
+    #[cfg(feature = "runtime_implicit_validations")]
+    poisoned: Option<Error>,
+    /// Whether the open render pass instance was not begun because of a failed
+    /// check, so its end is not recorded either.
+    #[cfg(feature = "runtime_implicit_validations")]
+    skipped_begin: bool,
     _state: PhantomData<S>,
 }
 
@@ -56,6 +67,8 @@ impl CommandBuffer {
     /// `vkBeginCommandBuffer`: starts recording. Recording again drops what the
     /// previous recording kept alive.
     pub fn begin(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        crate::checks::check_command_buffer_begin_info(info, &self.device().scope())?;
         // SAFETY: the command buffer is borrowed mutably, so no other recording or
         // submission of it is under way on the host; `info` is a valid struct.
         let r = unsafe {
@@ -66,9 +79,15 @@ impl CommandBuffer {
         }
         self.set_executable(false);
         Ok(Recorder {
+            device: self.device().clone(),
+            raw: self.raw(),
             cb: self,
             kept: Vec::new(),
             last: 0,
+            #[cfg(feature = "runtime_implicit_validations")]
+            poisoned: None,
+            #[cfg(feature = "runtime_implicit_validations")]
+            skipped_begin: false,
             _state: PhantomData,
         })
     }
@@ -84,13 +103,45 @@ impl<'c, S: State> Recorder<'c, S> {
     /// The raw command buffer.
     #[inline]
     pub fn raw(&self) -> vk::CommandBuffer {
-        self.cb.raw()
+        self.raw
     }
 
     /// The device the command buffer belongs to.
     #[inline]
     pub fn device(&self) -> &Device {
-        self.cb.device()
+        &self.device
+    }
+
+    /// The command buffer being recorded.
+    #[inline]
+    pub fn command_buffer(&self) -> &CommandBuffer {
+        self.cb
+    }
+
+    /// Takes the result of a command's checks: true when the command may be
+    /// recorded, false when this or an earlier check failed.
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn accept(&mut self, r: Result<()>) -> bool {
+        if self.poisoned.is_some() {
+            return false;
+        }
+        match r {
+            Ok(()) => true,
+            Err(e) => {
+                self.poisoned = Some(e);
+                false
+            }
+        }
+    }
+
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn skip_begin(&mut self, skipped: bool) {
+        self.skipped_begin = skipped;
+    }
+
+    #[cfg(feature = "runtime_implicit_validations")]
+    pub(crate) fn begin_skipped(&self) -> bool {
+        self.skipped_begin
     }
 
     /// Keeps an object alive until the command buffer is recorded again or freed.
@@ -112,8 +163,14 @@ impl<'c, S: State> Recorder<'c, S> {
     pub(crate) fn into_state<T: State>(self) -> Recorder<'c, T> {
         Recorder {
             cb: self.cb,
+            device: self.device,
+            raw: self.raw,
             kept: self.kept,
             last: self.last,
+            #[cfg(feature = "runtime_implicit_validations")]
+            poisoned: self.poisoned,
+            #[cfg(feature = "runtime_implicit_validations")]
+            skipped_begin: self.skipped_begin,
             _state: PhantomData,
         }
     }
@@ -121,6 +178,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 impl<'c> Recorder<'c, Outside> {
     /// `vkEndCommandBuffer`: ends recording; the command buffer can be submitted.
+    /// With `runtime_implicit_validations`, a check that failed during recording is
+    /// returned here, and the buffer cannot be submitted.
     pub fn end(self) -> Result<()> {
         // SAFETY: the recorder proves the buffer is recording and outside any render
         // pass instance (VUID-vkEndCommandBuffer-commandBuffer-00060).
@@ -129,6 +188,12 @@ impl<'c> Recorder<'c, Outside> {
             return Err(Error::Vk(r));
         }
         self.cb.keep_alive(self.kept);
+        #[cfg(feature = "runtime_implicit_validations")]
+        if let Some(e) = self.poisoned {
+            // The buffer holds only the commands before the failed check: it is
+            // ended but not submittable.
+            return Err(e);
+        }
         self.cb.set_executable(true);
         Ok(())
     }

@@ -190,6 +190,17 @@ impl crate::structs::InstanceCreateInfo<'_> {
     }
 }
 
+impl crate::structs::InstanceCreateInfo<'_> {
+    /// The API version the application asks for (1.0 without application info).
+    pub(crate) fn api_version(&self) -> u32 {
+        if self.p_application_info.is_null() {
+            return vk::API_VERSION_1_0;
+        }
+        // SAFETY: the safe setter stores a reference that outlives `self`.
+        unsafe { (*self.p_application_info).api_version }
+    }
+}
+
 impl crate::structs::DeviceCreateInfo<'_> {
     /// The extensions this info enables.
     pub(crate) fn enabled_extensions(&self) -> Vec<&CStr> {

@@ -150,7 +150,9 @@ impl Setup {
                     .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
             )
             .expect("image");
-        let reqs = d.get_image_memory_requirements(&image);
+        let reqs = d
+            .get_image_memory_requirements(&image)
+            .expect("memory requirements");
         let memory = d
             .allocate_memory(
                 &tuff::MemoryAllocateInfo::new()

@@ -4,6 +4,7 @@
 //! with a parameter of no safe shape is not emitted; its rules are recorded as left to
 //! the user, who can call it through ash on the raw handles.
 
+use super::checks::Checker;
 use super::handles::parent_of;
 use super::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
 use super::structs::safe_or_ash;
@@ -43,6 +44,13 @@ pub enum Param {
     Slice,
     /// Bytes sized by a count parameter.
     Bytes,
+    /// Bytes Vulkan writes, sized by a count parameter.
+    BytesOut,
+    /// A C string.
+    CStr {
+        /// May be null.
+        optional: bool,
+    },
     /// A struct Vulkan fills in, whose `pNext` chain the caller builds.
     InOut,
     /// The value the command writes, returned.
@@ -129,7 +137,12 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             if p.static_array.is_some() {
                 Param::Array
             } else if category == Some("handle") {
-                Param::Handle { optional }
+                // A submission's fence is required: it is what keeps the submitted
+                // command buffers alive until they complete.
+                let fence_of_submit = name == "vkQueueSubmit" && p.type_name == "VkFence";
+                Param::Handle {
+                    optional: optional && !fence_of_submit,
+                }
             } else if category.is_some() || super::shape::is_c_scalar(&p.type_name) {
                 if matches!(category, Some("struct" | "union"))
                     && cx.facts.has_lifetime(&p.type_name)
@@ -144,6 +157,12 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             let len = pp.len.first();
             match (len, category) {
                 (None, Some("struct")) => Param::StructRef { optional },
+                (None, Some("union")) if cx.facts.union_is_plain(model, &p.type_name) => {
+                    Param::StructRef { optional }
+                }
+                (Some(LenEntry::NullTerminated), None) if p.type_name == "char" => {
+                    Param::CStr { optional }
+                }
                 (Some(LenEntry::Reference(parts)), _) if parts.len() == 1 => match category {
                     Some("handle") => Param::HandleSlice,
                     _ if p.type_name == "void" => Param::Bytes,
@@ -158,6 +177,16 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             let enumerated = matches!(len, Some(LenEntry::Reference(parts))
                 if parts.len() == 1 && cmd.params.iter().any(|q| q.name == parts[0] && q.pointers == 1));
             match (len, category) {
+                (None, None)
+                    if p.type_name != "void" && !super::shape::is_c_scalar(&p.type_name) =>
+                {
+                    return Err(format!("`{}`: a window-system object", p.name))
+                }
+                (Some(LenEntry::Reference(parts)), None)
+                    if p.type_name == "void" && parts.len() == 1 && !enumerated =>
+                {
+                    Param::BytesOut
+                }
                 (None, Some("handle")) => Param::Created,
                 (_, Some("handle")) if !enumerated => Param::CreatedArray,
                 (_, _) if enumerated => Param::Enumerated,
@@ -253,12 +282,10 @@ pub fn plans(cx: &Context) -> Vec<(String, Result<Plan, String>)> {
         .collect()
 }
 
-pub(super) fn emit(cx: &Context) -> TokenStream {
+pub(super) fn emit(cx: &Context, checker: &Checker, plans: &[&Plan]) -> TokenStream {
     let mut items = Vec::new();
-    for (_, plan) in plans(cx) {
-        if let Ok(plan) = plan {
-            items.push(emit_command(cx, &plan));
-        }
+    for plan in plans {
+        items.push(emit_command(cx, checker, plan));
     }
     quote! {
         //! Commands as methods on the wrappers they dispatch on.
@@ -273,19 +300,22 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
             clippy::never_loop,
             clippy::no_effect,
             clippy::unnecessary_cast,
-            clippy::field_reassign_with_default
+            clippy::field_reassign_with_default,
+            clippy::let_and_return
         )]
         // Generated bodies are uniform rather than minimal: a `()` return, a lifetime
         // or a cast that one command does not need stays, so the lints above are off.
         use crate::handles::*;
         use crate::structs::*;
         use crate::{recorder::*, Entry, Error, Handle, Result};
+        #[cfg(feature = "runtime_implicit_validations")]
+        use crate::validation::fail;
         use ash::vk;
         #(#items)*
     }
 }
 
-fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
+fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
     let cfg = super::names::cfg_of(model, model.condition(&plan.name));
@@ -384,8 +414,6 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
             }
             Param::Handle { optional } => {
                 let w = type_ident(&p.type_name);
-                let optional =
-                    &(*optional && !(plan.name == "vkQueueSubmit" && p.type_name == "VkFence"));
                 if *optional {
                     {
                         args.push(quote!(#name: Option<&#w>));
@@ -457,6 +485,18 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                 args.push(quote!(#name: &[u8]));
                 call_args.push(quote!(#name.as_ptr().cast(),));
             }
+            Param::BytesOut => {
+                args.push(quote!(#name: &mut [u8]));
+                call_args.push(quote!(#name.as_mut_ptr().cast(),));
+            }
+            Param::CStr { optional: true } => {
+                args.push(quote!(#name: Option<&core::ffi::CStr>));
+                call_args.push(quote!(#name.map_or(core::ptr::null(), |s| s.as_ptr()),));
+            }
+            Param::CStr { optional: false } => {
+                args.push(quote!(#name: &core::ffi::CStr));
+                call_args.push(quote!(#name.as_ptr(),));
+            }
             Param::InOut => {
                 lifetimes = true;
                 let ty = safe_or_ash(cx, &p.type_name);
@@ -500,7 +540,8 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                         "VkInstance" => quote!(crate::handles::Instance::from_created(
                             self,
                             out,
-                            &create_info.enabled_extensions()
+                            &create_info.enabled_extensions(),
+                            create_info.api_version()
                         )),
                         "VkDevice" => quote!(crate::handles::Device::from_created(
                             self,
@@ -509,6 +550,25 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
                         )),
                         "VkDescriptorPool" => {
                             quote!(#w::from_raw(out, #parent_arg None, true).with_flags(create_info.flags))
+                        }
+                        "VkCommandPool" => quote!({
+                            let pool = #w::from_raw(out, #parent_arg None, true);
+                            #[cfg(feature = "runtime_implicit_validations")]
+                            let pool = pool.with_queue_flags(crate::validation::family_flags(self, create_info.queue_family_index));
+                            pool
+                        }),
+                        "VkQueue" => {
+                            let family = if plan.name == "vkGetDeviceQueue2" {
+                                quote!(queue_info.queue_family_index)
+                            } else {
+                                quote!(queue_family_index)
+                            };
+                            quote!({
+                                let queue = #w::from_raw(out, #parent_arg None, true);
+                                #[cfg(feature = "runtime_implicit_validations")]
+                                let queue = queue.with_queue_flags(crate::validation::family_flags(self, #family));
+                                queue
+                            })
                         }
                         _ => quote!(#w::from_raw(out, #parent_arg None, true)),
                     };
@@ -620,6 +680,8 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
     if plan.name == "vkAllocateCommandBuffers" {
         ret_expr = quote!({
             let cbs: Vec<CommandBuffer> = #ret_expr;
+            #[cfg(feature = "runtime_implicit_validations")]
+            let cbs: Vec<CommandBuffer> = cbs.into_iter().map(|cb| cb.with_level(allocate_info.level)).collect();
             for cb in &cbs { self.register_command_buffer(cb); }
             cbs
         });
@@ -751,11 +813,116 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
         None => (ret, body),
     };
     let doc = format!("`{}`{}", plan.name, super::doc_rules(cx, &plan.name));
-    let method = quote! {
-        #[doc = #doc]
-        #[inline]
-        pub fn #f #lt(#self_ref, #(#args),*) -> #ret {
-            #body
+    let checks = checker.command_checks(plan);
+    let method = if checks.is_empty() {
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #f #lt(#self_ref, #(#args),*) -> #ret {
+                #body
+            }
+        }
+    } else {
+        let unchecked = ident(&format!("{}_unchecked", command_fn(&plan.name)));
+        let names: Vec<TokenStream> = args
+            .iter()
+            .filter_map(|a| a.clone().into_iter().next())
+            .map(TokenStream::from)
+            .collect();
+        let codes = checks.iter().map(|c| &c.code);
+        let scope = scope_expr(cx, plan, &device_path);
+        let owned: Vec<String> = checks
+            .iter()
+            .filter_map(|c| c.vuid.as_ref())
+            .map(|v| format!("`{v}`"))
+            .collect();
+        let unchecked_doc = format!(
+            "`{}` without the dynamic checks of `runtime_implicit_validations`.\n\n# Safety\n\nThe caller upholds the rules that [`Self::{}`] checks at run time{}.",
+            plan.name,
+            command_fn(&plan.name),
+            if owned.is_empty() {
+                " (those of the structs it takes)".to_owned()
+            } else {
+                format!(": {}, and those of the structs it takes", owned.join(", "))
+            }
+        );
+        let run = quote! {
+            let r: Result<()> = (|| {
+                let s = &#scope;
+                let _ = s;
+                #(#codes)*
+                Ok(())
+            })();
+        };
+        let (ret_checked, guard, call) = match (&transition, is_cmd) {
+            (Some(state), _) => {
+                let begins = !matches!(
+                    plan.name.as_str(),
+                    "vkCmdEndRenderPass"
+                        | "vkCmdEndRenderPass2"
+                        | "vkCmdEndRendering"
+                        | "vkCmdNextSubpass"
+                        | "vkCmdNextSubpass2"
+                );
+                let guard = if begins {
+                    quote!(if !self.accept(r) { self.skip_begin(true); return self.into_state(); } self.skip_begin(false);)
+                } else {
+                    quote!(let _ = self.accept(r); if self.begin_skipped() { return self.into_state(); })
+                };
+                (
+                    quote!(Recorder<'c, #state>),
+                    guard,
+                    quote!(unsafe { self.#unchecked(#(#names),*) }),
+                )
+            }
+            (None, true) if !fallible => {
+                let guard =
+                    if matches!(plan.name.as_str(), "vkCmdNextSubpass" | "vkCmdNextSubpass2") {
+                        quote!(let _ = self.accept(r); if self.begin_skipped() { return; })
+                    } else {
+                        quote!(if !self.accept(r) {
+                            return;
+                        })
+                    };
+                (
+                    ret.clone(),
+                    guard,
+                    quote!(unsafe { self.#unchecked(#(#names),*) }),
+                )
+            }
+            _ => {
+                let call = if fallible {
+                    quote!(unsafe { self.#unchecked(#(#names),*) })
+                } else {
+                    quote!(Ok(unsafe { self.#unchecked(#(#names),*) }))
+                };
+                let ret_checked = if fallible {
+                    ret.clone()
+                } else {
+                    quote!(Result<#ret>)
+                };
+                (ret_checked, quote!(r?;), call)
+            }
+        };
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #f #lt(#self_ref, #(#args),*) -> #ret_checked {
+                #[cfg(feature = "runtime_implicit_validations")]
+                {
+                    #run
+                    #guard
+                }
+                // SAFETY: with runtime_implicit_validations the rules the unchecked call
+                // leaves to its caller were checked above; without it they are left to
+                // the user, as VALIDATION.md lists.
+                #call
+            }
+            #[doc = #unchecked_doc]
+            #[inline]
+            pub unsafe fn #unchecked #lt(#self_ref, #(#args),*) -> #ret {
+                #body
+            }
         }
     };
     match plan.receiver.as_str() {
@@ -780,5 +947,31 @@ fn emit_command(cx: &Context, plan: &Plan) -> TokenStream {
             let w = type_ident(r);
             quote!(#cfg impl #w { #method })
         }
+    }
+}
+
+/// The scope of a command's checks: what is enabled where it runs, and the objects of
+/// its instance and device.
+fn scope_expr(cx: &Context, plan: &Plan, device_path: &TokenStream) -> TokenStream {
+    match (level(cx.model, &plan.name), plan.name.as_str()) {
+        (_, "vkCreateInstance") => quote!(crate::validation::Scope {
+            exts: crate::checks::Exts::new(
+                vk::api_version_minor(create_info.api_version()),
+                &create_info.enabled_extensions(),
+            ),
+            instance: None,
+            device: None,
+        }),
+        (Level::Entry, _) => quote!(crate::validation::Scope {
+            exts: crate::checks::Exts::new(0, &[]),
+            instance: None,
+            device: None,
+        }),
+        (_, "vkCreateDevice") => quote!({
+            let mut s = #device_path.scope();
+            s.exts = s.exts.with(crate::checks::Exts::new(0, &create_info.enabled_extensions()));
+            s
+        }),
+        _ => quote!(#device_path.scope()),
     }
 }

@@ -163,17 +163,38 @@ fn emit_instance(cx: &Context) -> TokenStream {
             entry: Entry,
             fns: ash::Instance,
             ext: InstanceExtensions,
+            #[cfg(feature = "runtime_implicit_validations")]
+            exts: crate::checks::Exts,
+            #[cfg(feature = "runtime_implicit_validations")]
+            objects: crate::validation::Objects,
         }
         impl Instance {
             /// Wraps an instance created by [`Entry::create_instance`].
-            pub(crate) fn from_created(entry: &Entry, raw: vk::Instance, enabled: &[&core::ffi::CStr]) -> Instance {
+            pub(crate) fn from_created(entry: &Entry, raw: vk::Instance, enabled: &[&core::ffi::CStr], api_version: u32) -> Instance {
                 // SAFETY: `raw` was just created from `entry`'s loader.
                 let fns = unsafe { ash::Instance::load(entry.fns().static_fn(), raw) };
                 #[allow(unused_mut)]
                 let mut ext = InstanceExtensions::default();
                 let _ = enabled;
                 #(#load_stmts)*
-                Instance { inner: Vrc::new(InstanceInner { raw, entry: entry.clone(), fns, ext }) }
+                let _ = api_version;
+                Instance { inner: Vrc::new(InstanceInner {
+                    raw, entry: entry.clone(), fns, ext,
+                    #[cfg(feature = "runtime_implicit_validations")]
+                    exts: crate::checks::Exts::new(vk::api_version_minor(api_version), enabled),
+                    #[cfg(feature = "runtime_implicit_validations")]
+                    objects: Default::default(),
+                }) }
+            }
+            /// The versions and extensions enabled on this instance.
+            #[cfg(feature = "runtime_implicit_validations")]
+            pub(crate) fn exts(&self) -> crate::checks::Exts {
+                self.inner.exts
+            }
+            /// The objects created from this instance.
+            #[cfg(feature = "runtime_implicit_validations")]
+            pub(crate) fn objects(&self) -> &crate::validation::Objects {
+                &self.inner.objects
             }
             /// ash's instance-level function tables.
             #[inline]
@@ -237,6 +258,10 @@ fn emit_device(cx: &Context) -> TokenStream {
             fns: ash::Device,
             ext: DeviceExtensions,
             command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, tuff_runtime::Vweak<dyn tuff_runtime::Retain>>>,
+            #[cfg(feature = "runtime_implicit_validations")]
+            exts: crate::checks::Exts,
+            #[cfg(feature = "runtime_implicit_validations")]
+            objects: crate::validation::Objects,
         }
         impl Device {
             pub(crate) fn from_created(physical: &PhysicalDevice, raw: vk::Device, enabled: &[&core::ffi::CStr]) -> Device {
@@ -246,7 +271,30 @@ fn emit_device(cx: &Context) -> TokenStream {
                 let mut ext = DeviceExtensions::default();
                 let _ = enabled;
                 #(#load_stmts)*
-                Device { inner: Vrc::new(DeviceInner { raw, physical: physical.clone(), fns, ext, command_buffers: Vutex::new(Default::default()) }) }
+                #[cfg(feature = "runtime_implicit_validations")]
+                let exts = {
+                    let instance = physical.parent();
+                    // SAFETY: the physical device is a live wrapper of its instance.
+                    let props = unsafe { instance.fns().get_physical_device_properties(physical.raw()) };
+                    instance.exts().cap(vk::api_version_minor(props.api_version)).with(crate::checks::Exts::new(0, enabled))
+                };
+                Device { inner: Vrc::new(DeviceInner {
+                    raw, physical: physical.clone(), fns, ext, command_buffers: Vutex::new(Default::default()),
+                    #[cfg(feature = "runtime_implicit_validations")]
+                    exts,
+                    #[cfg(feature = "runtime_implicit_validations")]
+                    objects: Default::default(),
+                }) }
+            }
+            /// The versions and extensions enabled on this device and its instance.
+            #[cfg(feature = "runtime_implicit_validations")]
+            pub(crate) fn exts(&self) -> crate::checks::Exts {
+                self.inner.exts
+            }
+            /// The objects created, allocated or retrieved from this device.
+            #[cfg(feature = "runtime_implicit_validations")]
+            pub(crate) fn objects(&self) -> &crate::validation::Objects {
+                &self.inner.objects
             }
             /// ash's device-level function tables.
             #[inline]
@@ -346,6 +394,24 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             }
         }
     });
+    // With runtime_implicit_validations, every object is counted in the objects of
+    // the device (or, above devices, the instance) it comes from, for the `parent`
+    // and `commonparent` checks.
+    let owner = parent
+        .as_deref()
+        .and_then(|p| path_to(cx, p, "VkDevice").or_else(|| path_to(cx, p, "VkInstance")));
+    let register = owner.as_ref().map(|path| {
+        quote! {
+            #[cfg(feature = "runtime_implicit_validations")]
+            parent #path.objects().add(raw);
+        }
+    });
+    let unregister = owner.as_ref().map(|path| {
+        quote! {
+            #[cfg(feature = "runtime_implicit_validations")]
+            self.parent #path.objects().remove(self.raw);
+        }
+    });
     let drop_impl = destroy.as_ref().and_then(|d| {
         let cmd = &model.commands[d];
         let device_path = inner_path(cx, name, &cmd.params[0].type_name)?;
@@ -409,6 +475,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             #cfg
             impl Drop for #inner {
                 fn drop(&mut self) {
+                    #unregister
                     if !self.destroy {
                         return;
                     }
@@ -441,6 +508,19 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
         quote!()
     } else {
         quote!(#[derive(Clone)])
+    };
+    let drop_impl = match (drop_impl, &unregister) {
+        (Some(d), _) => Some(d),
+        (None, Some(unregister)) => Some(quote! {
+            #cfg
+            #[cfg(feature = "runtime_implicit_validations")]
+            impl Drop for #inner {
+                fn drop(&mut self) {
+                    #unregister
+                }
+            }
+        }),
+        (None, None) => None,
     };
     let parent_arg = parent_ty.as_ref().map(|p| quote!(parent: &#p,));
     let parent_init = parent_ty.as_ref().map(|_| quote!(parent: parent.clone(),));
@@ -485,6 +565,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             #[doc = #from_doc]
             #[allow(dead_code)]
             pub(crate) fn from_raw(raw: vk::#id, #parent_arg keep: Option<Retained>, destroy: bool) -> Self {
+                #register
                 Self {
                     inner: Vrc::new(#inner {
                         raw,
@@ -544,9 +625,22 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
 fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
     match name {
         "VkCommandBuffer" => (
-            quote!(resources: Vutex<Vec<Retained>>, executable: Vutex<bool>,),
-            quote!(resources: Vutex::new(Vec::new()), executable: Vutex::new(false),),
+            quote!(resources: Vutex<Vec<Retained>>, executable: Vutex<bool>, #[cfg(feature = "runtime_implicit_validations")] level: vk::CommandBufferLevel,),
+            quote!(resources: Vutex::new(Vec::new()), executable: Vutex::new(false), #[cfg(feature = "runtime_implicit_validations")] level: vk::CommandBufferLevel::PRIMARY,),
             quote! {
+                /// Records the buffer's level, for the `bufferlevel` checks.
+                #[cfg(feature = "runtime_implicit_validations")]
+                pub(crate) fn with_level(mut self, level: vk::CommandBufferLevel) -> Self {
+                    if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+                        inner.level = level;
+                    }
+                    self
+                }
+                /// The buffer's level.
+                #[cfg(feature = "runtime_implicit_validations")]
+                pub(crate) fn level(&self) -> vk::CommandBufferLevel {
+                    self.inner.level
+                }
                 pub(crate) fn keep_alive(&self, objects: Vec<Retained>) {
                     *self.inner.resources.lock() = objects;
                 }
@@ -557,6 +651,44 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                 #[inline]
                 pub fn is_executable(&self) -> bool {
                     *self.inner.executable.lock()
+                }
+            },
+        ),
+        "VkCommandPool" => (
+            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags,),
+            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags::empty(),),
+            quote! {
+                /// Records the queue flags of the pool's family, for the `cmdpool` checks.
+                #[cfg(feature = "runtime_implicit_validations")]
+                pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
+                    if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+                        inner.queue_flags = flags;
+                    }
+                    self
+                }
+                /// The queue flags of the pool's family.
+                #[cfg(feature = "runtime_implicit_validations")]
+                pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
+                    self.inner.queue_flags
+                }
+            },
+        ),
+        "VkQueue" => (
+            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags,),
+            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags::empty(),),
+            quote! {
+                /// Records the queue flags of the queue's family, for the `queuetype` checks.
+                #[cfg(feature = "runtime_implicit_validations")]
+                pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
+                    if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+                        inner.queue_flags = flags;
+                    }
+                    self
+                }
+                /// The queue flags of the queue's family.
+                #[cfg(feature = "runtime_implicit_validations")]
+                pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
+                    self.inner.queue_flags
                 }
             },
         ),

@@ -1,6 +1,7 @@
 //! Settlement records: for every rule of the emitted API, how the emitted code
 //! settles it. The decisions read the same shapes and plans the emitters use.
 
+use super::checks::Checker;
 use super::commands::{handled_elsewhere, plans, Param, Plan};
 use super::shape::{struct_members, Member};
 use super::{Context, Record, Settlement};
@@ -8,7 +9,7 @@ use crate::validity::{Category, ImplicitKind};
 use std::collections::BTreeMap;
 
 /// Records for every rule of the emitted API.
-pub fn records(cx: &Context) -> Vec<Record> {
+pub fn records(cx: &Context, checker: &Checker) -> Vec<Record> {
     let plans: BTreeMap<String, Result<Plan, String>> = plans(cx).into_iter().collect();
     let derived: BTreeMap<&str, &crate::validity::DerivedRule> = cx
         .validity
@@ -19,7 +20,10 @@ pub fn records(cx: &Context) -> Vec<Record> {
     let mut out = Vec::new();
     for rule in cx.validity.rules.iter().filter(|r| r.emitted) {
         let settlement = match (rule.category, derived.get(rule.vuid.as_str())) {
-            (Category::Implicit, Some(d)) => implicit(cx, &plans, d),
+            (Category::Implicit, _) if checker.dynamic(&rule.vuid).is_some() => {
+                Settlement::Dynamic(checker.dynamic(&rule.vuid).unwrap_or_default().to_owned())
+            }
+            (Category::Implicit, Some(d)) => implicit(cx, checker, &plans, d),
             (Category::Implicit, None) => Settlement::User(
                 "written by hand in the specification; not derived, so not checked".into(),
             ),
@@ -48,6 +52,7 @@ fn explicit(text: &str) -> Settlement {
 
 fn implicit(
     cx: &Context,
+    checker: &Checker,
     plans: &BTreeMap<String, Result<Plan, String>>,
     d: &crate::validity::DerivedRule,
 ) -> Settlement {
@@ -62,6 +67,15 @@ fn implicit(
                 ("recorder", K::Parameter) => {
                     Settlement::Static("`CommandBuffer::begin` takes a wrapper and a safe struct".into())
                 }
+                ("destroy", K::ArrayLength) => Settlement::Static(
+                    "called only from Drop, freeing exactly one object".into(),
+                ),
+                ("loader", K::Parameter) => Settlement::Static(
+                    "called only by ash's loader code, with the wrapper's live handle and NUL-terminated names".into(),
+                ),
+                ("mapping", K::Parameter | K::Parent | K::ZeroBitmask) => Settlement::Static(
+                    "called only by the runtime's mapping code, with memory it allocated from the same device, flags 0 and its own output pointer".into(),
+                ),
                 _ => Settlement::User(format!("called by the wrappers' {why} code; not checked")),
             };
         }
@@ -75,6 +89,10 @@ fn implicit(
             None => return Settlement::User("no safe wrapper is emitted".into()),
         };
         return match d.kind {
+            K::VideoCoding if !model.emitted.contains("vkCmdBeginVideoCodingKHR") => Settlement::Static(
+                "no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`"
+                    .into(),
+            ),
             K::Recording => Settlement::Static(
                 "the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes"
                     .into(),
@@ -98,6 +116,13 @@ fn implicit(
         };
     }
     // A struct.
+    let returned_only = model.types.get(&d.item).is_some_and(|t| t.returned_only);
+    if d.kind == K::Unique && returned_only && !checker.reaches(&d.item) {
+        // Only commands that return it in an array they allocate take it.
+        return Settlement::Static(
+            "the wrappers create it themselves, with an empty `pNext` chain".into(),
+        );
+    }
     if !cx.facts.is_safe(&d.item) {
         return match d.kind {
             K::Parameter => Settlement::User(
@@ -116,6 +141,9 @@ fn implicit(
         (K::PNext, Some(Member::PNext)) => Settlement::Static(
             "`push_next` accepts only structs that implement `Extends` for the head".into(),
         ),
+        (K::Parameter, Some(Member::Value)) if plain_numbers(cx, d) => {
+            Settlement::Static("a union of plain numbers: every value is valid".into())
+        }
         (K::Parameter, Some(shape)) => member_settlement(&shape),
         (K::ArrayLength, _) => Settlement::User("a slice may be empty; not checked".into()),
         (kind, _) => Settlement::User(format!("`{}` rules are not checked yet", kind.tag())),
@@ -153,7 +181,15 @@ fn param_settlement(p: &Param) -> Settlement {
             Settlement::Static("taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides".into())
         }
         Param::Allocator => Settlement::Static("always NULL".into()),
-        Param::StructRef { .. } | Param::Slice | Param::Bytes | Param::Array | Param::InOut => {
+        Param::CStr { .. } => {
+            Settlement::Static("taken as a `CStr`: a valid NUL-terminated string".into())
+        }
+        Param::StructRef { .. }
+        | Param::Slice
+        | Param::Bytes
+        | Param::BytesOut
+        | Param::Array
+        | Param::InOut => {
             Settlement::Static("taken as a reference or slice: a valid pointer with its length".into())
         }
         Param::Output | Param::Enumerated | Param::EnumCount => {
@@ -162,4 +198,29 @@ fn param_settlement(p: &Param) -> Settlement {
         Param::Count => Settlement::Static("computed from the slice it sizes".into()),
         Param::Value => Settlement::User("enum or flags value; ash types accept any raw value, not checked".into()),
     }
+}
+
+/// Whether the member a rule is about is a union of numbers only (`VkClearValue`).
+fn plain_numbers(cx: &Context, d: &crate::validity::DerivedRule) -> bool {
+    fn numbers(cx: &Context, name: &str, depth: usize) -> bool {
+        let Some(t) = cx.model.types.get(name) else {
+            return super::shape::is_c_scalar(name);
+        };
+        depth < 8
+            && matches!(t.category.as_deref(), Some("union" | "struct"))
+            && t.members.iter().all(|m| {
+                m.pointers == 0
+                    && (super::shape::is_c_scalar(&m.type_name)
+                        || numbers(cx, &m.type_name, depth + 1))
+            })
+    }
+    let Some(t) = cx.model.types.get(&d.item) else {
+        return false;
+    };
+    t.members
+        .iter()
+        .find(|m| Some(&m.name) == d.field.as_ref())
+        .is_some_and(|m| {
+            cx.model.category(&m.type_name) == Some("union") && numbers(cx, &m.type_name, 0)
+        })
 }

@@ -33,6 +33,11 @@ pub struct Model {
     pub extended_by: BTreeMap<String, Vec<String>>,
     /// For each enum group, its values that the all-extensions build contains.
     pub enum_values: BTreeMap<String, Vec<String>>,
+    /// The numeric value of each enum value name.
+    pub enum_numbers: BTreeMap<String, i64>,
+    /// For each enum value, the features and extensions that add it
+    /// (`VK_VERSION_1_0` for the values written in the group itself).
+    pub enum_origins: BTreeMap<String, Vec<String>>,
     /// For each type and command: the condition under which it exists, as a
     /// vk.xml-style expression, or `core` for Vulkan 1.0.
     pub conditions: BTreeMap<String, String>,
@@ -173,6 +178,7 @@ impl Model {
         // require blocks.
         let mut alternatives: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
         let mut enum_additions: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        let mut enum_origins: BTreeMap<String, Vec<String>> = BTreeMap::new();
         let interfaces = registry.features.iter().chain(
             registry
                 .extensions
@@ -197,6 +203,10 @@ impl Model {
                         .entry(group.clone())
                         .or_default()
                         .push(value.clone());
+                    let origins = enum_origins.entry(value.clone()).or_default();
+                    if !origins.contains(&iface.name) {
+                        origins.push(iface.name.clone());
+                    }
                 }
             }
         }
@@ -274,6 +284,12 @@ impl Model {
             } else {
                 Vec::new()
             };
+            for v in &values {
+                enum_origins
+                    .entry(v.clone())
+                    .or_default()
+                    .insert(0, "VK_VERSION_1_0".to_owned());
+            }
             values.extend(enum_additions.remove(&group.name).unwrap_or_default());
             enum_values.insert(group.name.clone(), values);
         }
@@ -296,6 +312,8 @@ impl Model {
             handles,
             extended_by,
             enum_values,
+            enum_numbers: registry.enum_numbers.clone(),
+            enum_origins,
             conditions,
             required,
             emitted,

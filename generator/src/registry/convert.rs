@@ -2,11 +2,14 @@
 
 use super::{is_vulkan_api, CommandDef, EnumGroup, Field, Interface, Registry, Require, TypeDef};
 use crate::error::{Error, Result};
+use std::collections::BTreeMap;
 use std::path::Path;
 use vk_parse as vk;
 
 pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
     let mut reg = Registry::default();
+    let mut numbers: BTreeMap<String, i64> = BTreeMap::new();
+    let mut aliases: Vec<(String, String)> = Vec::new();
     for child in parsed.0 {
         match child {
             vk::RegistryChild::Types(types) => {
@@ -25,6 +28,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                         .into_iter()
                         .filter_map(|c| match c {
                             vk::EnumsChild::Enum(e) if is_vulkan_api(e.api.as_deref()) => {
+                                note_number(&mut numbers, &mut aliases, &e, None);
                                 Some(e.name)
                             }
                             _ => None,
@@ -50,7 +54,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                     number: f.number,
                     supported: None,
                     depends: f.depends,
-                    requires: convert_requires(f.children),
+                    requires: convert_requires(f.children, None, &mut numbers, &mut aliases),
                 });
             }
             vk::RegistryChild::Extensions(exts) => {
@@ -67,18 +71,29 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                         }
                         (!parts.is_empty()).then(|| parts.join("+"))
                     });
+                    let requires =
+                        convert_requires(e.children, e.number, &mut numbers, &mut aliases);
                     reg.extensions.push(Interface {
                         name: e.name,
                         number: e.number.map(|n| n.to_string()),
                         supported: e.supported,
                         depends,
-                        requires: convert_requires(e.children),
+                        requires,
                     });
                 }
             }
             _ => {}
         }
     }
+    // Aliases may name values defined later in the file, or other aliases.
+    for _ in 0..4 {
+        for (name, target) in &aliases {
+            if let Some(v) = numbers.get(target).copied() {
+                numbers.entry(name.clone()).or_insert(v);
+            }
+        }
+    }
+    reg.enum_numbers = numbers;
     reg.version = header_version(&reg.types).ok_or_else(|| Error::BadRegistry {
         path: path.to_owned(),
         message: "no VK_HEADER_VERSION / VK_HEADER_VERSION_COMPLETE define was found".to_owned(),
@@ -275,7 +290,58 @@ fn convert_command(c: vk::Command) -> Option<CommandDef> {
     }
 }
 
-fn convert_requires(children: Vec<vk::ExtensionChild>) -> Vec<Require> {
+/// Records the numeric value of one `<enum>`, or the alias it names. `extnumber` is
+/// the number of the enclosing extension, which offsets count from unless the
+/// element names its own.
+fn note_number(
+    numbers: &mut BTreeMap<String, i64>,
+    aliases: &mut Vec<(String, String)>,
+    e: &vk::Enum,
+    extnumber: Option<i64>,
+) {
+    let value = match &e.spec {
+        vk::EnumSpec::Value { value, .. } => parse_c_int(value),
+        vk::EnumSpec::Bitpos { bitpos, .. } => {
+            (0..64).contains(bitpos).then(|| (1u64 << bitpos) as i64)
+        }
+        vk::EnumSpec::Offset {
+            offset,
+            extnumber: own,
+            dir,
+            ..
+        } => own.or(extnumber).and_then(|n| {
+            let v = 1_000_000_000i64
+                .checked_add(n.checked_sub(1)?.checked_mul(1000)?)?
+                .checked_add(*offset)?;
+            Some(if *dir { v } else { -v })
+        }),
+        vk::EnumSpec::Alias { alias, .. } => {
+            aliases.push((e.name.clone(), alias.clone()));
+            None
+        }
+        _ => None,
+    };
+    if let Some(v) = value {
+        numbers.insert(e.name.clone(), v);
+    }
+}
+
+/// An integer literal as vk.xml writes them: `9`, `-1`, `0x7FFFFFFF`; anything else
+/// (`(~0U)`, `1000.0F`) is not an enum value and gives `None`.
+fn parse_c_int(text: &str) -> Option<i64> {
+    let t = text.trim();
+    if let Some(hex) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+        return i64::from_str_radix(hex, 16).ok();
+    }
+    t.parse().ok()
+}
+
+fn convert_requires(
+    children: Vec<vk::ExtensionChild>,
+    extnumber: Option<i64>,
+    numbers: &mut BTreeMap<String, i64>,
+    aliases: &mut Vec<(String, String)>,
+) -> Vec<Require> {
     let mut out = Vec::new();
     for child in children {
         if let vk::ExtensionChild::Require {
@@ -306,6 +372,7 @@ fn convert_requires(children: Vec<vk::ExtensionChild>) -> Vec<Require> {
                         if !is_vulkan_api(e.api.as_deref()) {
                             continue;
                         }
+                        note_number(numbers, aliases, &e, extnumber);
                         let extends = match &e.spec {
                             vk::EnumSpec::Alias { extends, .. }
                             | vk::EnumSpec::Bitpos { extends, .. }

@@ -29,6 +29,9 @@ pub struct Registry {
     pub features: Vec<Interface>,
     /// The `<extension>` blocks, all of them (check `supported`).
     pub extensions: Vec<Interface>,
+    /// The numeric value of every enum value name the file defines, aliases resolved
+    /// (`VK_FORMAT_R8_UNORM` is 9; extension values from their offset and number).
+    pub enum_numbers: std::collections::BTreeMap<String, i64>,
 }
 
 /// One `<type>` element.

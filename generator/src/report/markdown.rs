@@ -36,7 +36,10 @@ pub(super) fn render(r: &Report) -> String {
     let _ = writeln!(
         s,
         "Each rule is **statically solved** (the types make breaking it impossible), \
-         **dynamically solved** (a run-time check returns an error naming the VUID) or \
+         **dynamically solved** (a run-time check returns an error naming the VUID; the \
+         checks are compiled in only with the generated crate's \
+         `runtime_implicit_validations` feature, and without it these rules are the \
+         user's) or \
          **left to the user**. Statuses come only from the records the emitters write \
          for the code they generate; a rule no emitter settles is left to the user.\n"
     );
@@ -169,6 +172,18 @@ pub(super) fn render(r: &Report) -> String {
     let _ = writeln!(s, "|---|---|---|---|");
     for (reason, n) in &reasons {
         let _ = writeln!(s, "| {reason} | {} | {} | {} |", n[0], n[1], n[2]);
+    }
+
+    let _ = writeln!(
+        s,
+        "\n### Implicit rules left to the user in the emitted API\n"
+    );
+    for st in r.settled.iter().filter(|st| {
+        st.rule.emitted
+            && st.rule.category == Category::Implicit
+            && st.settlement.status() == "user"
+    }) {
+        let _ = writeln!(s, "- `{}`: {}", st.rule.vuid, st.settlement.mechanism());
     }
 
     let _ = writeln!(s, "\n## Per item (emitted API)\n");

@@ -165,6 +165,11 @@ pub struct DerivedRule {
     pub field: Option<String>,
     /// A one-line statement of the rule.
     pub text: String,
+    /// The other parameters or members the rule names: the parent of a `parent`
+    /// rule, every handle of a `commonparent` rule.
+    pub related: Vec<String>,
+    /// The handle type a `parent` or `commonparent` rule's handles must come from.
+    pub ancestor: Option<String>,
 }
 
 /// Derive the implicit rules of every command and struct the all-extensions build
@@ -244,6 +249,8 @@ impl<'a> Deriver<'a> {
             kind,
             field: field.map(str::to_owned),
             text,
+            related: Vec::new(),
+            ancestor: None,
         });
     }
 
@@ -501,6 +508,10 @@ impl<'a> Deriver<'a> {
                 h.name, parent_param.name
             ),
         );
+        if let Some(rule) = self.out.last_mut() {
+            rule.related = vec![parent_param.name.clone()];
+            rule.ancestor = Some(parent_param.type_name.clone());
+        }
     }
 
     fn dispatchable_ancestors(&self, type_name: &str) -> Vec<String> {
@@ -558,6 +569,10 @@ impl<'a> Deriver<'a> {
                 ImplicitKind::CommonParent,
                 format!("{} must come from the same `{ancestor}`", names.join(", ")),
             );
+            if let Some(rule) = self.out.last_mut() {
+                rule.related = ancestors.iter().map(|(h, _)| h.name.clone()).collect();
+                rule.ancestor = Some(ancestor.clone());
+            }
         }
     }
 
