@@ -1,0 +1,18 @@
+//! The static guarantees of the generated wrappers, as programs that must not compile
+//! (trybuild compares each compiler error with the `.stderr` file beside it).
+
+#[test]
+fn misuse_does_not_compile() {
+    let t = trybuild::TestCases::new();
+    t.compile_fail("compile_fail/draw_outside_render_pass.rs");
+    t.compile_fail("compile_fail/record_without_begin.rs");
+    t.compile_fail("compile_fail/push_non_extending.rs");
+    t.compile_fail("compile_fail/raw_handle_for_wrapper.rs");
+    if cfg!(feature = "multi_thread") {
+        // With Arc the same program is fine: the guarantee belongs to the
+        // single-threaded build.
+        t.pass("compile_pass/handle_across_threads.rs");
+    } else {
+        t.compile_fail("compile_fail/handle_across_threads.rs");
+    }
+}
