@@ -77,7 +77,11 @@ fn buffer_create_drop_and_bind() {
     items.extend(items_of(&handles, "BufferInner"));
     items.extend(methods(
         &commands,
-        &["create_buffer", "bind_buffer_memory", "bind_buffer_memory_unchecked"],
+        &[
+            "create_buffer",
+            "bind_buffer_memory",
+            "bind_buffer_memory_unchecked",
+        ],
     ));
     snapshot("emitted-buffer", show(items));
 }
@@ -129,7 +133,9 @@ fn physical_device_features2_chain() {
             _ => None,
         })
         .collect();
-    assert!(extenders.iter().any(|e| e.starts_with("PhysicalDeviceVulkan13Features")));
+    assert!(extenders
+        .iter()
+        .any(|e| e.starts_with("PhysicalDeviceVulkan13Features")));
     items.retain(|i| !matches!(i, syn::Item::Impl(imp) if imp.unsafety.is_some()));
     snapshot(
         "emitted-VkPhysicalDeviceFeatures2",
