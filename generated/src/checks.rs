@@ -2865,6 +2865,19 @@ pub(crate) fn enum_vertex_input_rate(
         )
     }
 }
+/// The array a struct member points to, `count` long; empty when the
+/// pointer is NULL, as an optional array that shares its count may be.
+///
+/// # Safety
+///
+/// A non-NULL `ptr` must point to `count` live elements, as the safe
+/// setters store them.
+unsafe fn members<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
+    if ptr.is_null() || count == 0 {
+        return &[];
+    }
+    unsafe { core::slice::from_raw_parts(ptr, count as usize) }
+}
 /// Structure types that may appear more than once in a chain.
 const DUPLICATES_ALLOWED: &[i32] = &[1000128004, 1000295001];
 /// Walks a `pNext` chain: no structure type twice (when `unique` names that
@@ -3376,65 +3389,36 @@ pub(crate) fn check_bind_sparse_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     let _ = s;
-    if v.wait_semaphore_count > 0 && !v.p_wait_semaphores.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_wait_semaphores,
-                v.wait_semaphore_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkBindSparseInfo-commonparent",
-                        "`pWaitSemaphores` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkBindSparseInfo-commonparent",
+                    "`pWaitSemaphores` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
-    if v.signal_semaphore_count > 0 && !v.p_signal_semaphores.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_signal_semaphores,
-                v.signal_semaphore_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkBindSparseInfo-commonparent",
-                        "`pSignalSemaphores` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkBindSparseInfo-commonparent",
+                    "`pSignalSemaphores` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
-    if v.buffer_bind_count > 0 && !v.p_buffer_binds.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_buffer_binds, v.buffer_bind_count as usize)
-        } {
-            crate::checks::check_sparse_buffer_memory_bind_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_buffer_binds, v.buffer_bind_count) } {
+        crate::checks::check_sparse_buffer_memory_bind_info(e, s)?;
     }
-    if v.image_opaque_bind_count > 0 && !v.p_image_opaque_binds.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_image_opaque_binds,
-                v.image_opaque_bind_count as usize,
-            )
-        } {
-            crate::checks::check_sparse_image_opaque_memory_bind_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_image_opaque_binds, v.image_opaque_bind_count) } {
+        crate::checks::check_sparse_image_opaque_memory_bind_info(e, s)?;
     }
-    if v.image_bind_count > 0 && !v.p_image_binds.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_image_binds, v.image_bind_count as usize)
-        } {
-            crate::checks::check_sparse_image_memory_bind_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_image_binds, v.image_bind_count) } {
+        crate::checks::check_sparse_image_memory_bind_info(e, s)?;
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkBindSparseInfo-sType-unique"))?;
     Ok(())
@@ -3482,12 +3466,8 @@ pub(crate) fn check_blit_image_info2(
             ),
         );
     }
-    if v.region_count > 0 && !v.p_regions.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_regions, v.region_count as usize)
-        } {
-            crate::checks::check_image_blit2(e, s)?;
-        }
+    for e in unsafe { members(v.p_regions, v.region_count) } {
+        crate::checks::check_image_blit2(e, s)?;
     }
     Ok(())
 }
@@ -3694,19 +3674,12 @@ pub(crate) fn check_command_buffer_inheritance_rendering_info(
         s,
         "VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter",
     )?;
-    if v.color_attachment_count > 0 && !v.p_color_attachment_formats.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_color_attachment_formats,
-                v.color_attachment_count as usize,
-            )
-        } {
-            crate::checks::enum_format(
-                *e,
-                s,
-                "VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter",
-            )?;
-        }
+    for e in unsafe { members(v.p_color_attachment_formats, v.color_attachment_count) } {
+        crate::checks::enum_format(
+            *e,
+            s,
+            "VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter",
+        )?;
     }
     crate::checks::enum_format(
         v.depth_attachment_format,
@@ -3875,12 +3848,8 @@ pub(crate) fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if v.region_count > 0 && !v.p_regions.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_regions, v.region_count as usize)
-        } {
-            crate::checks::check_buffer_image_copy2(e, s)?;
-        }
+    for e in unsafe { members(v.p_regions, v.region_count) } {
+        crate::checks::check_buffer_image_copy2(e, s)?;
     }
     Ok(())
 }
@@ -3952,12 +3921,8 @@ pub(crate) fn check_copy_image_info2(
             ),
         );
     }
-    if v.region_count > 0 && !v.p_regions.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_regions, v.region_count as usize)
-        } {
-            crate::checks::check_image_copy2(e, s)?;
-        }
+    for e in unsafe { members(v.p_regions, v.region_count) } {
+        crate::checks::check_image_copy2(e, s)?;
     }
     Ok(())
 }
@@ -3998,12 +3963,8 @@ pub(crate) fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if v.region_count > 0 && !v.p_regions.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_regions, v.region_count as usize)
-        } {
-            crate::checks::check_buffer_image_copy2(e, s)?;
-        }
+    for e in unsafe { members(v.p_regions, v.region_count) } {
+        crate::checks::check_buffer_image_copy2(e, s)?;
     }
     Ok(())
 }
@@ -4022,12 +3983,8 @@ pub(crate) fn check_debug_utils_messenger_callback_data_ext(
             ),
         );
     }
-    if v.object_count > 0 && !v.p_objects.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_objects, v.object_count as usize)
-        } {
-            crate::checks::check_debug_utils_object_name_info_ext(e, s)?;
-        }
+    for e in unsafe { members(v.p_objects, v.object_count) } {
+        crate::checks::check_debug_utils_object_name_info_ext(e, s)?;
     }
     crate::checks::chain(
         v.p_next,
@@ -4134,35 +4091,18 @@ pub(crate) fn check_dependency_info(
         s,
         "VUID-VkDependencyInfo-dependencyFlags-parameter",
     )?;
-    if v.memory_barrier_count > 0 && !v.p_memory_barriers.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_memory_barriers,
-                v.memory_barrier_count as usize,
-            )
-        } {
-            crate::checks::check_memory_barrier2(e, s)?;
-        }
+    for e in unsafe { members(v.p_memory_barriers, v.memory_barrier_count) } {
+        crate::checks::check_memory_barrier2(e, s)?;
     }
-    if v.buffer_memory_barrier_count > 0 && !v.p_buffer_memory_barriers.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_buffer_memory_barriers,
-                v.buffer_memory_barrier_count as usize,
-            )
-        } {
-            crate::checks::check_buffer_memory_barrier2(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_buffer_memory_barriers, v.buffer_memory_barrier_count)
+    } {
+        crate::checks::check_buffer_memory_barrier2(e, s)?;
     }
-    if v.image_memory_barrier_count > 0 && !v.p_image_memory_barriers.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_image_memory_barriers,
-                v.image_memory_barrier_count as usize,
-            )
-        } {
-            crate::checks::check_image_memory_barrier2(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_image_memory_barriers, v.image_memory_barrier_count)
+    } {
+        crate::checks::check_image_memory_barrier2(e, s)?;
     }
     Ok(())
 }
@@ -4203,12 +4143,8 @@ pub(crate) fn check_descriptor_pool_create_info(
         s,
         "VUID-VkDescriptorPoolCreateInfo-flags-parameter",
     )?;
-    if v.pool_size_count > 0 && !v.p_pool_sizes.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_pool_sizes, v.pool_size_count as usize)
-        } {
-            crate::checks::check_descriptor_pool_size(e, s)?;
-        }
+    for e in unsafe { members(v.p_pool_sizes, v.pool_size_count) } {
+        crate::checks::check_descriptor_pool_size(e, s)?;
     }
     crate::checks::chain(
         v.p_next,
@@ -4253,19 +4189,15 @@ pub(crate) fn check_descriptor_set_allocate_info(
             ),
         );
     }
-    if v.descriptor_set_count > 0 && !v.p_set_layouts.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(v.p_set_layouts, v.descriptor_set_count as usize)
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkDescriptorSetAllocateInfo-commonparent",
-                        "`pSetLayouts` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_set_layouts, v.descriptor_set_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkDescriptorSetAllocateInfo-commonparent",
+                    "`pSetLayouts` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
     crate::checks::chain(
@@ -4294,16 +4226,12 @@ pub(crate) fn check_descriptor_set_layout_binding_flags_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     let _ = s;
-    if v.binding_count > 0 && !v.p_binding_flags.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_binding_flags, v.binding_count as usize)
-        } {
-            crate::checks::flags_descriptor_binding_flags(
-                *e,
-                s,
-                "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter",
-            )?;
-        }
+    for e in unsafe { members(v.p_binding_flags, v.binding_count) } {
+        crate::checks::flags_descriptor_binding_flags(
+            *e,
+            s,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter",
+        )?;
     }
     Ok(())
 }
@@ -4318,12 +4246,8 @@ pub(crate) fn check_descriptor_set_layout_create_info(
         s,
         "VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter",
     )?;
-    if v.binding_count > 0 && !v.p_bindings.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_bindings, v.binding_count as usize)
-        } {
-            crate::checks::check_descriptor_set_layout_binding(e, s)?;
-        }
+    for e in unsafe { members(v.p_bindings, v.binding_count) } {
+        crate::checks::check_descriptor_set_layout_binding(e, s)?;
     }
     crate::checks::chain(
         v.p_next,
@@ -4392,15 +4316,10 @@ pub(crate) fn check_descriptor_update_template_create_info(
             ),
         );
     }
-    if v.descriptor_update_entry_count > 0 && !v.p_descriptor_update_entries.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_descriptor_update_entries,
-                v.descriptor_update_entry_count as usize,
-            )
-        } {
-            crate::checks::check_descriptor_update_template_entry(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_descriptor_update_entries, v.descriptor_update_entry_count)
+    } {
+        crate::checks::check_descriptor_update_template_entry(e, s)?;
     }
     Ok(())
 }
@@ -4447,15 +4366,8 @@ pub(crate) fn check_device_create_info(
             ),
         );
     }
-    if v.queue_create_info_count > 0 && !v.p_queue_create_infos.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_queue_create_infos,
-                v.queue_create_info_count as usize,
-            )
-        } {
-            crate::checks::check_device_queue_create_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_queue_create_infos, v.queue_create_info_count) } {
+        crate::checks::check_device_queue_create_info(e, s)?;
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkDeviceCreateInfo-sType-unique"))?;
     Ok(())
@@ -4677,16 +4589,12 @@ pub(crate) fn check_framebuffer_attachment_image_info(
             ),
         );
     }
-    if v.view_format_count > 0 && !v.p_view_formats.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_view_formats, v.view_format_count as usize)
-        } {
-            crate::checks::enum_format(
-                *e,
-                s,
-                "VUID-VkFramebufferAttachmentImageInfo-pViewFormats-parameter",
-            )?;
-        }
+    for e in unsafe { members(v.p_view_formats, v.view_format_count) } {
+        crate::checks::enum_format(
+            *e,
+            s,
+            "VUID-VkFramebufferAttachmentImageInfo-pViewFormats-parameter",
+        )?;
     }
     Ok(())
 }
@@ -4696,15 +4604,10 @@ pub(crate) fn check_framebuffer_attachments_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     let _ = s;
-    if v.attachment_image_info_count > 0 && !v.p_attachment_image_infos.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_attachment_image_infos,
-                v.attachment_image_info_count as usize,
-            )
-        } {
-            crate::checks::check_framebuffer_attachment_image_info(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_attachment_image_infos, v.attachment_image_info_count)
+    } {
+        crate::checks::check_framebuffer_attachment_image_info(e, s)?;
     }
     Ok(())
 }
@@ -4728,19 +4631,15 @@ pub(crate) fn check_framebuffer_create_info(
             ),
         );
     }
-    if v.attachment_count > 0 && !v.p_attachments.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(v.p_attachments, v.attachment_count as usize)
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkFramebufferCreateInfo-commonparent",
-                        "`pAttachments` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_attachments, v.attachment_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkFramebufferCreateInfo-commonparent",
+                    "`pAttachments` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
     crate::checks::chain(
@@ -4790,12 +4689,8 @@ pub(crate) fn check_graphics_pipeline_create_info(
             ),
         );
     }
-    if v.stage_count > 0 && !v.p_stages.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_stages, v.stage_count as usize)
-        } {
-            crate::checks::check_pipeline_shader_stage_create_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_stages, v.stage_count) } {
+        crate::checks::check_pipeline_shader_stage_create_info(e, s)?;
     }
     if !v.p_vertex_input_state.is_null() {
         crate::checks::check_pipeline_vertex_input_state_create_info(
@@ -4954,16 +4849,12 @@ pub(crate) fn check_image_format_list_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     let _ = s;
-    if v.view_format_count > 0 && !v.p_view_formats.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_view_formats, v.view_format_count as usize)
-        } {
-            crate::checks::enum_format(
-                *e,
-                s,
-                "VUID-VkImageFormatListCreateInfo-pViewFormats-parameter",
-            )?;
-        }
+    for e in unsafe { members(v.p_view_formats, v.view_format_count) } {
+        crate::checks::enum_format(
+            *e,
+            s,
+            "VUID-VkImageFormatListCreateInfo-pViewFormats-parameter",
+        )?;
     }
     Ok(())
 }
@@ -5644,12 +5535,8 @@ pub(crate) fn check_pipeline_color_blend_state_create_info(
         s,
         "VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter",
     )?;
-    if v.attachment_count > 0 && !v.p_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_attachments, v.attachment_count as usize)
-        } {
-            crate::checks::check_pipeline_color_blend_attachment_state(e, s)?;
-        }
+    for e in unsafe { members(v.p_attachments, v.attachment_count) } {
+        crate::checks::check_pipeline_color_blend_attachment_state(e, s)?;
     }
     crate::checks::chain(
         v.p_next,
@@ -5694,19 +5581,12 @@ pub(crate) fn check_pipeline_dynamic_state_create_info(
             ),
         );
     }
-    if v.dynamic_state_count > 0 && !v.p_dynamic_states.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_dynamic_states,
-                v.dynamic_state_count as usize,
-            )
-        } {
-            crate::checks::enum_dynamic_state(
-                *e,
-                s,
-                "VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter",
-            )?;
-        }
+    for e in unsafe { members(v.p_dynamic_states, v.dynamic_state_count) } {
+        crate::checks::enum_dynamic_state(
+            *e,
+            s,
+            "VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter",
+        )?;
     }
     Ok(())
 }
@@ -5742,15 +5622,8 @@ pub(crate) fn check_pipeline_layout_create_info(
         s,
         "VUID-VkPipelineLayoutCreateInfo-flags-parameter",
     )?;
-    if v.push_constant_range_count > 0 && !v.p_push_constant_ranges.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_push_constant_ranges,
-                v.push_constant_range_count as usize,
-            )
-        } {
-            crate::checks::check_push_constant_range(e, s)?;
-        }
+    for e in unsafe { members(v.p_push_constant_ranges, v.push_constant_range_count) } {
+        crate::checks::check_push_constant_range(e, s)?;
     }
     Ok(())
 }
@@ -5887,29 +5760,15 @@ pub(crate) fn check_pipeline_vertex_input_state_create_info(
             ),
         );
     }
-    if v.vertex_binding_description_count > 0
-        && !v.p_vertex_binding_descriptions.is_null()
-    {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_vertex_binding_descriptions,
-                v.vertex_binding_description_count as usize,
-            )
-        } {
-            crate::checks::check_vertex_input_binding_description(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_vertex_binding_descriptions, v.vertex_binding_description_count)
+    } {
+        crate::checks::check_vertex_input_binding_description(e, s)?;
     }
-    if v.vertex_attribute_description_count > 0
-        && !v.p_vertex_attribute_descriptions.is_null()
-    {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_vertex_attribute_descriptions,
-                v.vertex_attribute_description_count as usize,
-            )
-        } {
-            crate::checks::check_vertex_input_attribute_description(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_vertex_attribute_descriptions, v.vertex_attribute_description_count)
+    } {
+        crate::checks::check_vertex_input_attribute_description(e, s)?;
     }
     crate::checks::chain(
         v.p_next,
@@ -5954,37 +5813,26 @@ pub(crate) fn check_present_info_khr(
             ),
         );
     }
-    if v.wait_semaphore_count > 0 && !v.p_wait_semaphores.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_wait_semaphores,
-                v.wait_semaphore_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkPresentInfoKHR-commonparent",
-                        "`pWaitSemaphores` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkPresentInfoKHR-commonparent",
+                    "`pWaitSemaphores` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
-    if v.swapchain_count > 0 && !v.p_swapchains.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(v.p_swapchains, v.swapchain_count as usize)
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkPresentInfoKHR-commonparent",
-                        "`pSwapchains` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_swapchains, v.swapchain_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkPresentInfoKHR-commonparent",
+                    "`pSwapchains` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkPresentInfoKHR-sType-unique"))?;
@@ -6108,26 +5956,14 @@ pub(crate) fn check_render_pass_create_info(
             ),
         );
     }
-    if v.attachment_count > 0 && !v.p_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_attachments, v.attachment_count as usize)
-        } {
-            crate::checks::check_attachment_description(e, s)?;
-        }
+    for e in unsafe { members(v.p_attachments, v.attachment_count) } {
+        crate::checks::check_attachment_description(e, s)?;
     }
-    if v.subpass_count > 0 && !v.p_subpasses.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_subpasses, v.subpass_count as usize)
-        } {
-            crate::checks::check_subpass_description(e, s)?;
-        }
+    for e in unsafe { members(v.p_subpasses, v.subpass_count) } {
+        crate::checks::check_subpass_description(e, s)?;
     }
-    if v.dependency_count > 0 && !v.p_dependencies.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_dependencies, v.dependency_count as usize)
-        } {
-            crate::checks::check_subpass_dependency(e, s)?;
-        }
+    for e in unsafe { members(v.p_dependencies, v.dependency_count) } {
+        crate::checks::check_subpass_dependency(e, s)?;
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkRenderPassCreateInfo-sType-unique"))?;
     Ok(())
@@ -6151,26 +5987,14 @@ pub(crate) fn check_render_pass_create_info2(
             ),
         );
     }
-    if v.attachment_count > 0 && !v.p_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_attachments, v.attachment_count as usize)
-        } {
-            crate::checks::check_attachment_description2(e, s)?;
-        }
+    for e in unsafe { members(v.p_attachments, v.attachment_count) } {
+        crate::checks::check_attachment_description2(e, s)?;
     }
-    if v.subpass_count > 0 && !v.p_subpasses.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_subpasses, v.subpass_count as usize)
-        } {
-            crate::checks::check_subpass_description2(e, s)?;
-        }
+    for e in unsafe { members(v.p_subpasses, v.subpass_count) } {
+        crate::checks::check_subpass_description2(e, s)?;
     }
-    if v.dependency_count > 0 && !v.p_dependencies.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_dependencies, v.dependency_count as usize)
-        } {
-            crate::checks::check_subpass_dependency2(e, s)?;
-        }
+    for e in unsafe { members(v.p_dependencies, v.dependency_count) } {
+        crate::checks::check_subpass_dependency2(e, s)?;
     }
     crate::checks::chain(
         v.p_next,
@@ -6193,15 +6017,8 @@ pub(crate) fn check_render_pass_input_attachment_aspect_create_info(
             ),
         );
     }
-    if v.aspect_reference_count > 0 && !v.p_aspect_references.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_aspect_references,
-                v.aspect_reference_count as usize,
-            )
-        } {
-            crate::checks::check_input_attachment_aspect_reference(e, s)?;
-        }
+    for e in unsafe { members(v.p_aspect_references, v.aspect_reference_count) } {
+        crate::checks::check_input_attachment_aspect_reference(e, s)?;
     }
     Ok(())
 }
@@ -6269,15 +6086,8 @@ pub(crate) fn check_rendering_info(
         s,
         "VUID-VkRenderingInfo-flags-parameter",
     )?;
-    if v.color_attachment_count > 0 && !v.p_color_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_color_attachments,
-                v.color_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_rendering_attachment_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_color_attachments, v.color_attachment_count) } {
+        crate::checks::check_rendering_attachment_info(e, s)?;
     }
     if !v.p_depth_attachment.is_null() {
         crate::checks::check_rendering_attachment_info(
@@ -6336,12 +6146,8 @@ pub(crate) fn check_resolve_image_info2(
             ),
         );
     }
-    if v.region_count > 0 && !v.p_regions.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_regions, v.region_count as usize)
-        } {
-            crate::checks::check_image_resolve2(e, s)?;
-        }
+    for e in unsafe { members(v.p_regions, v.region_count) } {
+        crate::checks::check_image_resolve2(e, s)?;
     }
     Ok(())
 }
@@ -6541,12 +6347,8 @@ pub(crate) fn check_sparse_buffer_memory_bind_info(
             ),
         );
     }
-    if v.bind_count > 0 && !v.p_binds.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_binds, v.bind_count as usize)
-        } {
-            crate::checks::check_sparse_memory_bind(e, s)?;
-        }
+    for e in unsafe { members(v.p_binds, v.bind_count) } {
+        crate::checks::check_sparse_memory_bind(e, s)?;
     }
     Ok(())
 }
@@ -6579,12 +6381,8 @@ pub(crate) fn check_sparse_image_memory_bind_info(
             ),
         );
     }
-    if v.bind_count > 0 && !v.p_binds.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_binds, v.bind_count as usize)
-        } {
-            crate::checks::check_sparse_image_memory_bind(e, s)?;
-        }
+    for e in unsafe { members(v.p_binds, v.bind_count) } {
+        crate::checks::check_sparse_image_memory_bind(e, s)?;
     }
     Ok(())
 }
@@ -6602,12 +6400,8 @@ pub(crate) fn check_sparse_image_opaque_memory_bind_info(
             ),
         );
     }
-    if v.bind_count > 0 && !v.p_binds.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_binds, v.bind_count as usize)
-        } {
-            crate::checks::check_sparse_memory_bind(e, s)?;
-        }
+    for e in unsafe { members(v.p_binds, v.bind_count) } {
+        crate::checks::check_sparse_memory_bind(e, s)?;
     }
     Ok(())
 }
@@ -6655,72 +6449,44 @@ pub(crate) fn check_stencil_op_state(
 ///The implicit rules of `VkSubmitInfo` that are checked at run time.
 pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
     let _ = s;
-    if v.wait_semaphore_count > 0 && !v.p_wait_dst_stage_mask.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_wait_dst_stage_mask,
-                v.wait_semaphore_count as usize,
-            )
-        } {
-            crate::checks::flags_pipeline_stage_flags(
-                *e,
-                s,
-                "VUID-VkSubmitInfo-pWaitDstStageMask-parameter",
-            )?;
+    for e in unsafe { members(v.p_wait_dst_stage_mask, v.wait_semaphore_count) } {
+        crate::checks::flags_pipeline_stage_flags(
+            *e,
+            s,
+            "VUID-VkSubmitInfo-pWaitDstStageMask-parameter",
+        )?;
+    }
+    for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkSubmitInfo-commonparent",
+                    "`pWaitSemaphores` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
-    if v.wait_semaphore_count > 0 && !v.p_wait_semaphores.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_wait_semaphores,
-                v.wait_semaphore_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkSubmitInfo-commonparent",
-                        "`pWaitSemaphores` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_command_buffers, v.command_buffer_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkSubmitInfo-commonparent",
+                    "`pCommandBuffers` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
-    if v.command_buffer_count > 0 && !v.p_command_buffers.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_command_buffers,
-                v.command_buffer_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkSubmitInfo-commonparent",
-                        "`pCommandBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
-        }
-    }
-    if v.signal_semaphore_count > 0 && !v.p_signal_semaphores.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_signal_semaphores,
-                v.signal_semaphore_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkSubmitInfo-commonparent",
-                        "`pSignalSemaphores` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkSubmitInfo-commonparent",
+                    "`pSignalSemaphores` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkSubmitInfo-sType-unique"))?;
@@ -6730,25 +6496,13 @@ pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result
 pub(crate) fn check_submit_info2(v: &vk::SubmitInfo2<'_>, s: &Scope<'_>) -> Result<()> {
     let _ = s;
     crate::checks::flags_submit_flags(v.flags, s, "VUID-VkSubmitInfo2-flags-parameter")?;
-    if v.wait_semaphore_info_count > 0 && !v.p_wait_semaphore_infos.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_wait_semaphore_infos,
-                v.wait_semaphore_info_count as usize,
-            )
-        } {
-            crate::checks::check_semaphore_submit_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_wait_semaphore_infos, v.wait_semaphore_info_count) } {
+        crate::checks::check_semaphore_submit_info(e, s)?;
     }
-    if v.signal_semaphore_info_count > 0 && !v.p_signal_semaphore_infos.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_signal_semaphore_infos,
-                v.signal_semaphore_info_count as usize,
-            )
-        } {
-            crate::checks::check_semaphore_submit_info(e, s)?;
-        }
+    for e in unsafe {
+        members(v.p_signal_semaphore_infos, v.signal_semaphore_info_count)
+    } {
+        crate::checks::check_semaphore_submit_info(e, s)?;
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkSubmitInfo2-sType-unique"))?;
     Ok(())
@@ -6849,35 +6603,14 @@ pub(crate) fn check_subpass_description(
         s,
         "VUID-VkSubpassDescription-pipelineBindPoint-parameter",
     )?;
-    if v.input_attachment_count > 0 && !v.p_input_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_input_attachments,
-                v.input_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_attachment_reference(e, s)?;
-        }
+    for e in unsafe { members(v.p_input_attachments, v.input_attachment_count) } {
+        crate::checks::check_attachment_reference(e, s)?;
     }
-    if v.color_attachment_count > 0 && !v.p_color_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_color_attachments,
-                v.color_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_attachment_reference(e, s)?;
-        }
+    for e in unsafe { members(v.p_color_attachments, v.color_attachment_count) } {
+        crate::checks::check_attachment_reference(e, s)?;
     }
-    if v.color_attachment_count > 0 && !v.p_resolve_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_resolve_attachments,
-                v.color_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_attachment_reference(e, s)?;
-        }
+    for e in unsafe { members(v.p_resolve_attachments, v.color_attachment_count) } {
+        crate::checks::check_attachment_reference(e, s)?;
     }
     if !v.p_depth_stencil_attachment.is_null() {
         crate::checks::check_attachment_reference(
@@ -6903,35 +6636,14 @@ pub(crate) fn check_subpass_description2(
         s,
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
-    if v.input_attachment_count > 0 && !v.p_input_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_input_attachments,
-                v.input_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_attachment_reference2(e, s)?;
-        }
+    for e in unsafe { members(v.p_input_attachments, v.input_attachment_count) } {
+        crate::checks::check_attachment_reference2(e, s)?;
     }
-    if v.color_attachment_count > 0 && !v.p_color_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_color_attachments,
-                v.color_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_attachment_reference2(e, s)?;
-        }
+    for e in unsafe { members(v.p_color_attachments, v.color_attachment_count) } {
+        crate::checks::check_attachment_reference2(e, s)?;
     }
-    if v.color_attachment_count > 0 && !v.p_resolve_attachments.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(
-                v.p_resolve_attachments,
-                v.color_attachment_count as usize,
-            )
-        } {
-            crate::checks::check_attachment_reference2(e, s)?;
-        }
+    for e in unsafe { members(v.p_resolve_attachments, v.color_attachment_count) } {
+        crate::checks::check_attachment_reference2(e, s)?;
     }
     if !v.p_depth_stencil_attachment.is_null() {
         crate::checks::check_attachment_reference2(
@@ -7133,30 +6845,19 @@ pub(crate) fn check_write_descriptor_set(
             ),
         );
     }
-    if v.descriptor_count > 0 && !v.p_texel_buffer_view.is_null() {
-        for h in unsafe {
-            core::slice::from_raw_parts(
-                v.p_texel_buffer_view,
-                v.descriptor_count as usize,
-            )
-        } {
-            if *h != Default::default() && !s.owned_by_device(*h) {
-                return Err(
-                    fail(
-                        "VUID-VkWriteDescriptorSet-commonparent",
-                        "`pTexelBufferView` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+    for h in unsafe { members(v.p_texel_buffer_view, v.descriptor_count) } {
+        if *h != Default::default() && !s.owned_by_device(*h) {
+            return Err(
+                fail(
+                    "VUID-VkWriteDescriptorSet-commonparent",
+                    "`pTexelBufferView` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
     }
-    if v.descriptor_count > 0 && !v.p_image_info.is_null() {
-        for e in unsafe {
-            core::slice::from_raw_parts(v.p_image_info, v.descriptor_count as usize)
-        } {
-            crate::checks::check_descriptor_image_info(e, s)?;
-        }
+    for e in unsafe { members(v.p_image_info, v.descriptor_count) } {
+        crate::checks::check_descriptor_image_info(e, s)?;
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkWriteDescriptorSet-sType-unique"))?;
     Ok(())

@@ -340,7 +340,7 @@ impl CommandPool {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// Records the queue flags of the pool's family, for the `cmdpool` checks.
+    ///Records the queue flags of the pool's family, for the `cmdpool` checks.
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
         if let Some(inner) = Vrc::get_mut(&mut self.inner) {
@@ -348,7 +348,7 @@ impl CommandPool {
         }
         self
     }
-    /// The queue flags of the pool's family.
+    ///The queue flags of the pool's family, for the `cmdpool` checks.
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags
@@ -2243,7 +2243,7 @@ impl Queue {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// Records the queue flags of the queue's family, for the `queuetype` checks.
+    ///Records the queue flags of the queue's family, for the `queuetype` checks.
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
         if let Some(inner) = Vrc::get_mut(&mut self.inner) {
@@ -2251,7 +2251,7 @@ impl Queue {
         }
         self
     }
-    /// The queue flags of the queue's family.
+    ///The queue flags of the queue's family, for the `queuetype` checks.
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags

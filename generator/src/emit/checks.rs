@@ -41,6 +41,10 @@ pub struct Checker<'c, 'm> {
     reachable: BTreeSet<String>,
     /// The rules checked, with what checks them.
     dynamic: BTreeMap<String, String>,
+    /// The checks of each struct that has a check function.
+    struct_cache: BTreeMap<String, Vec<Check>>,
+    /// The checks of each emitted command.
+    command_cache: BTreeMap<String, Vec<Check>>,
 }
 
 const ENUM_VALUE: &str = "checks the value is one that the versions and extensions enabled on the instance or device define";
@@ -59,6 +63,8 @@ impl<'c, 'm> Checker<'c, 'm> {
             checked: BTreeSet::new(),
             reachable: BTreeSet::new(),
             dynamic: BTreeMap::new(),
+            struct_cache: BTreeMap::new(),
+            command_cache: BTreeMap::new(),
         };
         let structs: Vec<String> = cx
             .model
@@ -75,7 +81,7 @@ impl<'c, 'm> Checker<'c, 'm> {
         loop {
             let before = checker.checked.len();
             for s in &structs {
-                if !checker.checked.contains(s) && !checker.struct_checks(s).is_empty() {
+                if !checker.checked.contains(s) && !checker.build_struct_checks(s).is_empty() {
                     checker.checked.insert(s.clone());
                 }
             }
@@ -83,11 +89,21 @@ impl<'c, 'm> Checker<'c, 'm> {
                 break;
             }
         }
+        // The checks are final now that every nested struct's function is known.
+        checker.struct_cache = checker
+            .checked
+            .iter()
+            .map(|s| (s.clone(), checker.build_struct_checks(s)))
+            .collect();
+        checker.command_cache = plans
+            .iter()
+            .map(|p| (p.name.clone(), checker.build_command_checks(p)))
+            .collect();
         let mut todo: Vec<String> = Vec::new();
         for plan in plans {
-            for check in checker.command_checks(plan) {
-                if let Some(v) = check.vuid {
-                    checker.dynamic.insert(v, check.what);
+            for check in &checker.command_cache[&plan.name] {
+                if let Some(v) = &check.vuid {
+                    checker.dynamic.insert(v.clone(), check.what.clone());
                 }
             }
             todo.extend(checker.struct_params(plan));
@@ -98,9 +114,9 @@ impl<'c, 'm> Checker<'c, 'm> {
             if !checker.checked.contains(&s) || !checker.reachable.insert(s.clone()) {
                 continue;
             }
-            for check in checker.struct_checks(&s) {
-                if let Some(v) = check.vuid {
-                    checker.dynamic.insert(v, check.what);
+            for check in &checker.struct_cache[&s] {
+                if let Some(v) = &check.vuid {
+                    checker.dynamic.insert(v.clone(), check.what.clone());
                 }
             }
             todo.extend(checker.nested(&s));
@@ -196,8 +212,16 @@ impl<'c, 'm> Checker<'c, 'm> {
         }
     }
 
+    /// The checks of an emitted command, with its parameters as the method's
+    /// arguments and `self` as the wrapper (or recorder) it is called on.
+    pub fn command_checks(&self, plan: &Plan) -> &[Check] {
+        self.command_cache
+            .get(&plan.name)
+            .map_or(&[], Vec::as_slice)
+    }
+
     /// The checks of one struct, over `v: &vk::Struct`.
-    pub fn struct_checks(&self, name: &str) -> Vec<Check> {
+    fn build_struct_checks(&self, name: &str) -> Vec<Check> {
         let model = self.cx.model;
         let members = struct_members(model, &self.cx.facts, name);
         let member = |n: &str| members.iter().find(|(m, _)| m.name == n);
@@ -239,18 +263,17 @@ impl<'c, 'm> Checker<'c, 'm> {
                 {
                     let f = field_ident(&m.name);
                     let n = field_ident(count);
-                    self.value_check(&m.type_name, quote!(*e), vuid).map(|(c, needs, w)| {
-                        (
-                            quote! {
-                                if v.#n > 0 && !v.#f.is_null() {
-                                    // SAFETY: a safe setter stores a slice's pointer and length; an optional array that shares its count may be NULL, which is tested first.
-                                    for e in unsafe { core::slice::from_raw_parts(v.#f, v.#n as usize) } { #c }
-                                }
-                            },
-                            needs,
-                            format!("{w}, for each element"),
-                        )
-                    })
+                    self.value_check(&m.type_name, quote!(*e), vuid)
+                        .map(|(c, needs, w)| {
+                            (
+                                quote! {
+                                    // SAFETY: the safe setter stored this array and its count.
+                                    for e in unsafe { members(v.#f, v.#n) } { #c }
+                                },
+                                needs,
+                                format!("{w}, for each element"),
+                            )
+                        })
                 }
                 (K::ArrayLength, Some((m, _))) if m.pointers == 0 => {
                     let f = field_ident(&m.name);
@@ -313,11 +336,9 @@ impl<'c, 'm> Checker<'c, 'm> {
                 Member::Slice { count, .. } => {
                     let n = field_ident(count);
                     quote! {
-                        if v.#n > 0 && !v.#f.is_null() {
-                            // SAFETY: a safe setter stores a slice's pointer and length; an optional array that shares its count may be NULL, which is tested first.
-                            for e in unsafe { core::slice::from_raw_parts(v.#f, v.#n as usize) } {
-                                crate::checks::#call(e, s)?;
-                            }
+                        // SAFETY: the safe setter stored this array and its count.
+                        for e in unsafe { members(v.#f, v.#n) } {
+                            crate::checks::#call(e, s)?;
                         }
                     }
                 }
@@ -376,12 +397,10 @@ impl<'c, 'm> Checker<'c, 'm> {
                 Member::HandleSlice { count } => {
                     let n = field_ident(count);
                     quote! {
-                        if v.#n > 0 && !v.#f.is_null() {
-                            // SAFETY: the safe setter stores a HandleSlice's pointer and length.
-                            for h in unsafe { core::slice::from_raw_parts(v.#f, v.#n as usize) } {
-                                if *h != Default::default() && !s.#owner(*h) {
-                                    return Err(fail(#vuid, #msg.into()));
-                                }
+                        // SAFETY: the safe setter stored this HandleSlice and its count.
+                        for h in unsafe { members(v.#f, v.#n) } {
+                            if *h != Default::default() && !s.#owner(*h) {
+                                return Err(fail(#vuid, #msg.into()));
                             }
                         }
                     }
@@ -396,9 +415,8 @@ impl<'c, 'm> Checker<'c, 'm> {
         ))
     }
 
-    /// The checks of one command, with its parameters as the method's arguments and
-    /// `self` as the wrapper (or recorder) it is called on.
-    pub fn command_checks(&self, plan: &Plan) -> Vec<Check> {
+    /// The checks of one command.
+    fn build_command_checks(&self, plan: &Plan) -> Vec<Check> {
         let model = self.cx.model;
         let cmd = &model.commands[&plan.name];
         let arg = |name: &str| -> Option<(usize, &Param)> {
@@ -642,12 +660,11 @@ impl<'c, 'm> Checker<'c, 'm> {
     }
 
     /// `src/checks.rs`.
-    pub fn emit(&self, plans: &[&Plan]) -> TokenStream {
+    pub fn emit(&self) -> TokenStream {
         let model = self.cx.model;
         let mut needs: BTreeSet<String> = BTreeSet::new();
         let mut fns = Vec::new();
-        for name in &self.checked {
-            let checks = self.struct_checks(name);
+        for (name, checks) in &self.struct_cache {
             needs.extend(checks.iter().flat_map(|c| c.needs.clone()));
             let f = ident(&format!("check_{}", snake(name)));
             let ty = super::names::type_ident(name);
@@ -669,10 +686,8 @@ impl<'c, 'm> Checker<'c, 'm> {
                 }
             });
         }
-        for plan in plans {
-            for c in self.command_checks(plan) {
-                needs.extend(c.needs);
-            }
+        for c in self.command_cache.values().flatten() {
+            needs.extend(c.needs.iter().cloned());
         }
         let origins = Origins::new(model, &needs);
         let mut values = Vec::new();
@@ -683,6 +698,22 @@ impl<'c, 'm> Checker<'c, 'm> {
             });
         }
         let chain = self.chain_fn();
+        let members = quote! {
+            /// The array a struct member points to, `count` long; empty when the
+            /// pointer is NULL, as an optional array that shares its count may be.
+            ///
+            /// # Safety
+            ///
+            /// A non-NULL `ptr` must point to `count` live elements, as the safe
+            /// setters store them.
+            unsafe fn members<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
+                if ptr.is_null() || count == 0 {
+                    return &[];
+                }
+                // SAFETY: the caller promises `count` live elements at `ptr`.
+                unsafe { core::slice::from_raw_parts(ptr, count as usize) }
+            }
+        };
         let exts = origins.emit();
         quote! {
             //! The dynamic checks of implicit rules, compiled in with
@@ -693,6 +724,7 @@ impl<'c, 'm> Checker<'c, 'm> {
             use ash::vk;
             #exts
             #(#values)*
+            #members
             #chain
             #(#fns)*
         }

@@ -654,44 +654,8 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                 }
             },
         ),
-        "VkCommandPool" => (
-            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags,),
-            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags::empty(),),
-            quote! {
-                /// Records the queue flags of the pool's family, for the `cmdpool` checks.
-                #[cfg(feature = "runtime_implicit_validations")]
-                pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
-                    if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-                        inner.queue_flags = flags;
-                    }
-                    self
-                }
-                /// The queue flags of the pool's family.
-                #[cfg(feature = "runtime_implicit_validations")]
-                pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
-                    self.inner.queue_flags
-                }
-            },
-        ),
-        "VkQueue" => (
-            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags,),
-            quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags::empty(),),
-            quote! {
-                /// Records the queue flags of the queue's family, for the `queuetype` checks.
-                #[cfg(feature = "runtime_implicit_validations")]
-                pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
-                    if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-                        inner.queue_flags = flags;
-                    }
-                    self
-                }
-                /// The queue flags of the queue's family.
-                #[cfg(feature = "runtime_implicit_validations")]
-                pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
-                    self.inner.queue_flags
-                }
-            },
-        ),
+        "VkCommandPool" => queue_flags_state("the pool's family, for the `cmdpool` checks"),
+        "VkQueue" => queue_flags_state("the queue's family, for the `queuetype` checks"),
         "VkFence" => (
             quote!(pending: Vutex<Vec<Retained>>,),
             quote!(pending: Vutex::new(Vec::new()),),
@@ -708,4 +672,30 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
         ),
         _ => (quote!(), quote!(), quote!()),
     }
+}
+
+/// The queue flags of a family, recorded when a pool or queue is made, for the checks
+/// of `runtime_implicit_validations`; `of` says whose family and for which checks.
+fn queue_flags_state(of: &str) -> (TokenStream, TokenStream, TokenStream) {
+    let set_doc = format!("Records the queue flags of {of}.");
+    let get_doc = format!("The queue flags of {of}.");
+    (
+        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags,),
+        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags::empty(),),
+        quote! {
+            #[doc = #set_doc]
+            #[cfg(feature = "runtime_implicit_validations")]
+            pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
+                if let Some(inner) = Vrc::get_mut(&mut self.inner) {
+                    inner.queue_flags = flags;
+                }
+                self
+            }
+            #[doc = #get_doc]
+            #[cfg(feature = "runtime_implicit_validations")]
+            pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
+                self.inner.queue_flags
+            }
+        },
+    )
 }

@@ -150,7 +150,7 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
         ("src/handles.rs", handles::emit(&cx)),
         ("src/structs.rs", structs::emit(&cx)),
         ("src/commands.rs", commands::emit(&cx, &checker, &ok)),
-        ("src/checks.rs", checker.emit(&ok)),
+        ("src/checks.rs", checker.emit()),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),
