@@ -3770,6 +3770,7 @@ pub(crate) fn check_compute_pipeline_create_info(
             ),
         );
     }
+    crate::checks::check_pipeline_shader_stage_create_info(&v.stage, s)?;
     crate::checks::chain(
         v.p_next,
         s,

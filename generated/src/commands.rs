@@ -981,6 +981,14 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
                 contents,
             )
         };
+        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().render_pass)
+        {
+            self.retain(o);
+        }
+        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().framebuffer)
+        {
+            self.retain(o);
+        }
         ();
         self.into_state()
     }
@@ -1079,6 +1087,14 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
             )
         };
+        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().render_pass)
+        {
+            self.retain(o);
+        }
+        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().framebuffer)
+        {
+            self.retain(o);
+        }
         ();
         self.into_state()
     }
@@ -1966,6 +1982,12 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
                 blit_image_info as *const BlitImageInfo2<'a> as *const _,
             )
         };
+        if let Some(o) = self.device().live().get(blit_image_info.as_raw().src_image) {
+            self.retain(o);
+        }
+        if let Some(o) = self.device().live().get(blit_image_info.as_raw().dst_image) {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -2504,6 +2526,12 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
                 copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
             )
         };
+        if let Some(o) = self.device().live().get(copy_buffer_info.as_raw().src_buffer) {
+            self.retain(o);
+        }
+        if let Some(o) = self.device().live().get(copy_buffer_info.as_raw().dst_buffer) {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -2748,6 +2776,20 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
                     as *const _,
             )
         };
+        if let Some(o) = self
+            .device()
+            .live()
+            .get(copy_buffer_to_image_info.as_raw().src_buffer)
+        {
+            self.retain(o);
+        }
+        if let Some(o) = self
+            .device()
+            .live()
+            .get(copy_buffer_to_image_info.as_raw().dst_image)
+        {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -3023,6 +3065,12 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
                 copy_image_info as *const CopyImageInfo2<'a> as *const _,
             )
         };
+        if let Some(o) = self.device().live().get(copy_image_info.as_raw().src_image) {
+            self.retain(o);
+        }
+        if let Some(o) = self.device().live().get(copy_image_info.as_raw().dst_image) {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -3264,6 +3312,20 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
                     as *const _,
             )
         };
+        if let Some(o) = self
+            .device()
+            .live()
+            .get(copy_image_to_buffer_info.as_raw().src_image)
+        {
+            self.retain(o);
+        }
+        if let Some(o) = self
+            .device()
+            .live()
+            .get(copy_image_to_buffer_info.as_raw().dst_buffer)
+        {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -6494,6 +6556,16 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
                 image_memory_barriers.as_ptr().cast(),
             )
         };
+        for e in buffer_memory_barriers {
+            if let Some(o) = self.device().live().get(e.as_raw().buffer) {
+                self.retain(o);
+            }
+        }
+        for e in image_memory_barriers {
+            if let Some(o) = self.device().live().get(e.as_raw().image) {
+                self.retain(o);
+            }
+        }
         ()
     }
 }
@@ -7200,6 +7272,14 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
                 resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
             )
         };
+        if let Some(o) = self.device().live().get(resolve_image_info.as_raw().src_image)
+        {
+            self.retain(o);
+        }
+        if let Some(o) = self.device().live().get(resolve_image_info.as_raw().dst_image)
+        {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -9288,6 +9368,16 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
                 image_memory_barriers.as_ptr().cast(),
             )
         };
+        for e in buffer_memory_barriers {
+            if let Some(o) = self.device().live().get(e.as_raw().buffer) {
+                self.retain(o);
+            }
+        }
+        for e in image_memory_barriers {
+            if let Some(o) = self.device().live().get(e.as_raw().image) {
+                self.retain(o);
+            }
+        }
         ()
     }
 }
@@ -9713,7 +9803,20 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(BufferView::from_raw(out, self, None, true))
+        Ok(
+            BufferView::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    kept.extend(live.get(create_info.as_raw().buffer));
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Device {
@@ -9863,7 +9966,22 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
         Ok((
             out
                 .into_iter()
-                .map(|raw| Pipeline::from_raw(raw, self, None, true))
+                .zip(create_infos.iter())
+                .map(|(raw, info)| Pipeline::from_raw(
+                    raw,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        kept.extend(live.get(info.as_raw().layout));
+                        kept.extend(live.get(info.as_raw().base_pipeline_handle));
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ))
                 .collect(),
             r,
         ))
@@ -10092,7 +10210,29 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(DescriptorUpdateTemplate::from_raw(out, self, None, true))
+        Ok({
+            let template: DescriptorUpdateTemplate = DescriptorUpdateTemplate::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    kept.extend(live.get(create_info.as_raw().descriptor_set_layout));
+                    kept.extend(live.get(create_info.as_raw().pipeline_layout));
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            );
+            let raw = create_info.as_raw();
+            template
+                .with_entries(unsafe {
+                    crate::retention::raw_slice(
+                        raw.p_descriptor_update_entries,
+                        raw.descriptor_update_entry_count,
+                    )
+                })
+        })
     }
 }
 impl PhysicalDevice {
@@ -10323,7 +10463,29 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(Framebuffer::from_raw(out, self, None, true))
+        Ok(
+            Framebuffer::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    kept.extend(live.get(create_info.as_raw().render_pass));
+                    kept.extend(
+                        live
+                            .keep(unsafe {
+                                crate::retention::raw_slice(
+                                    create_info.as_raw().p_attachments,
+                                    create_info.as_raw().attachment_count,
+                                )
+                            }),
+                    );
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Device {
@@ -10410,7 +10572,23 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
         Ok((
             out
                 .into_iter()
-                .map(|raw| Pipeline::from_raw(raw, self, None, true))
+                .zip(create_infos.iter())
+                .map(|(raw, info)| Pipeline::from_raw(
+                    raw,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        kept.extend(live.get(info.as_raw().layout));
+                        kept.extend(live.get(info.as_raw().render_pass));
+                        kept.extend(live.get(info.as_raw().base_pipeline_handle));
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ))
                 .collect(),
             r,
         ))
@@ -10520,7 +10698,20 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(ImageView::from_raw(out, self, None, true))
+        Ok(
+            ImageView::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    kept.extend(live.get(create_info.as_raw().image));
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Entry {
@@ -10753,7 +10944,28 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(PipelineLayout::from_raw(out, self, None, true))
+        Ok(
+            PipelineLayout::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    kept.extend(
+                        live
+                            .keep(unsafe {
+                                crate::retention::raw_slice(
+                                    create_info.as_raw().p_set_layouts,
+                                    create_info.as_raw().set_layout_count,
+                                )
+                            }),
+                    );
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Device {
@@ -11209,6 +11421,7 @@ impl Device {
     #[inline]
     pub fn create_swapchain_khr<'a>(
         &self,
+        surface: &SurfaceKHR,
         create_info: &SwapchainCreateInfoKHR<'a>,
     ) -> Result<SwapchainKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -11221,7 +11434,7 @@ impl Device {
             })();
             r?;
         }
-        unsafe { self.create_swapchain_khr_unchecked(create_info) }
+        unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
     }
     /**`vkCreateSwapchainKHR` without the dynamic checks of `runtime_implicit_validations`.
 
@@ -11231,6 +11444,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
     #[inline]
     pub unsafe fn create_swapchain_khr_unchecked<'a>(
         &self,
+        surface: &SurfaceKHR,
         create_info: &SwapchainCreateInfoKHR<'a>,
     ) -> Result<SwapchainKHR> {
         let ext_table = self
@@ -11238,12 +11452,14 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
             .khr_swapchain
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let mut create_info = *create_info;
+        create_info.as_raw_mut().surface = surface.raw();
         let mut out = vk::SwapchainKHR::null();
         let r = unsafe {
             (ext_table
                 .create_swapchain_khr)(
                 self.raw(),
-                create_info as *const SwapchainCreateInfoKHR<'a> as *const _,
+                create_info.as_raw(),
                 core::ptr::null(),
                 &mut out,
             )
@@ -11251,7 +11467,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(SwapchainKHR::from_raw(out, self, None, true))
+        Ok(SwapchainKHR::from_raw(out, self, Some(surface.retained()), true))
     }
 }
 #[cfg(feature = "khr_wayland_surface")]
@@ -12598,7 +12814,7 @@ impl Device {
 - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub fn get_event_status(&self, event: &Event) -> Result<((), vk::Result)> {
+    pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -12627,14 +12843,14 @@ The caller upholds the rules that [`Self::get_event_status`] checks at run time:
     pub unsafe fn get_event_status_unchecked(
         &self,
         event: &Event,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         let r = unsafe {
             (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(((), r))
+        Ok(r)
     }
 }
 impl Device {
@@ -12646,7 +12862,7 @@ impl Device {
 - `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub fn get_fence_status(&self, fence: &Fence) -> Result<((), vk::Result)> {
+    pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -12675,7 +12891,7 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
     pub unsafe fn get_fence_status_unchecked(
         &self,
         fence: &Fence,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         let r = unsafe {
             (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
         };
@@ -12685,7 +12901,7 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
         if r == vk::Result::SUCCESS {
             fence.completed();
         }
-        Ok(((), r))
+        Ok(r)
     }
 }
 impl Device {
@@ -14678,7 +14894,7 @@ impl Device {
         data: &mut [u8],
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -14734,7 +14950,7 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
         data: &mut [u8],
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         let r = unsafe {
             (self
                 .fns()
@@ -14753,7 +14969,7 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(((), r))
+        Ok(r)
     }
 }
 impl Device {
@@ -15295,7 +15511,7 @@ impl Queue {
     pub fn queue_present_khr<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15317,7 +15533,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
     pub unsafe fn queue_present_khr_unchecked<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         let ext_table = self
             .parent()
             .ext()
@@ -15334,7 +15550,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(((), r))
+        Ok(r)
     }
 }
 impl Queue {
@@ -16308,6 +16524,89 @@ The caller upholds the rules that [`Self::trim_command_pool`] checks at run time
     }
 }
 impl Device {
+    /**`vkUpdateDescriptorSetWithTemplate`
+
+# Safety
+
+`data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.
+
+# Valid usage
+
+- `VUID-vkUpdateDescriptorSetWithTemplate-pData-01685`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSetWithTemplate-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06994`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06995`: user (explicit rule; the wrappers do not check it)*/
+    #[inline]
+    pub unsafe fn update_descriptor_set_with_template(
+        &self,
+        descriptor_set: &DescriptorSet,
+        descriptor_update_template: &DescriptorUpdateTemplate,
+        data: *const core::ffi::c_void,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r: Result<()> = (|| {
+                let s = &self.scope();
+                let _ = s;
+                if !s.owned_by_device(descriptor_update_template.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent",
+                            "`descriptorUpdateTemplate` does not come from `device`"
+                                .into(),
+                        ),
+                    );
+                }
+                Ok(())
+            })();
+            r?;
+        }
+        Ok(unsafe {
+            self.update_descriptor_set_with_template_unchecked(
+                descriptor_set,
+                descriptor_update_template,
+                data,
+            )
+        })
+    }
+    /**`vkUpdateDescriptorSetWithTemplate` without the dynamic checks of `runtime_implicit_validations`.
+
+# Safety
+
+The caller upholds the rules that [`Self::update_descriptor_set_with_template`] checks at run time: `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.*/
+    #[inline]
+    pub unsafe fn update_descriptor_set_with_template_unchecked(
+        &self,
+        descriptor_set: &DescriptorSet,
+        descriptor_update_template: &DescriptorUpdateTemplate,
+        data: *const core::ffi::c_void,
+    ) -> () {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .update_descriptor_set_with_template)(
+                self.raw(),
+                descriptor_set.raw(),
+                descriptor_update_template.raw(),
+                data,
+            )
+        };
+        unsafe {
+            self.live()
+                .write_template(
+                    descriptor_set.raw(),
+                    descriptor_update_template.entries(),
+                    data,
+                )
+        };
+        ()
+    }
+}
+impl Device {
     /**`vkUpdateDescriptorSets`
 
 # Valid usage
@@ -16376,6 +16675,19 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
                 descriptor_copies.as_ptr().cast(),
             )
         };
+        unsafe {
+            self.live()
+                .write_sets(
+                    core::slice::from_raw_parts(
+                        descriptor_writes.as_ptr().cast(),
+                        descriptor_writes.len(),
+                    ),
+                    core::slice::from_raw_parts(
+                        descriptor_copies.as_ptr().cast(),
+                        descriptor_copies.len(),
+                    ),
+                );
+        }
         ()
     }
 }
@@ -16394,7 +16706,7 @@ impl Device {
         fences: &[&Fence],
         wait_all: vk::Bool32,
         timeout: u64,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16435,7 +16747,7 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
         fences: &[&Fence],
         wait_all: vk::Bool32,
         timeout: u64,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         let fences_w: &[&Fence] = fences;
         let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
@@ -16461,7 +16773,7 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
                 f.completed();
             }
         }
-        Ok(((), r))
+        Ok(r)
     }
 }
 impl Device {
@@ -16476,7 +16788,7 @@ impl Device {
         &self,
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16499,7 +16811,7 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time (
         &self,
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
-    ) -> Result<((), vk::Result)> {
+    ) -> Result<vk::Result> {
         let r = unsafe {
             (self
                 .fns()
@@ -16513,6 +16825,6 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time (
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(((), r))
+        Ok(r)
     }
 }

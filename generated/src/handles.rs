@@ -2,7 +2,7 @@
 
 //! Handle wrappers. Each derefs to its raw `ash::vk` handle, so anything the
 //! wrappers lack can still be called through ash.
-#![allow(clippy::new_without_default)]
+#![allow(clippy::new_without_default, clippy::let_and_return)]
 use crate::{Entry, Handle};
 use ash::vk;
 use tuff_runtime::{Retained, Vrc, Vutex};
@@ -29,7 +29,7 @@ impl Buffer {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(BufferInner {
                 raw,
                 parent: parent.clone(),
@@ -37,7 +37,9 @@ impl Buffer {
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -83,6 +85,7 @@ impl Drop for BufferInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -117,14 +120,16 @@ impl BufferView {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(BufferViewInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -166,6 +171,7 @@ impl Drop for BufferViewInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -204,7 +210,7 @@ impl CommandBuffer {
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")]
         parent.parent().objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(CommandBufferInner {
                 raw,
                 parent: parent.clone(),
@@ -215,7 +221,8 @@ impl CommandBuffer {
                 keep,
                 destroy,
             }),
-        }
+        };
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -310,7 +317,7 @@ struct CommandPoolInner {
     raw: vk::CommandPool,
     parent: Device,
     #[cfg(feature = "runtime_implicit_validations")]
-    queue_flags: vk::QueueFlags,
+    queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -324,16 +331,18 @@ impl CommandPool {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(CommandPoolInner {
                 raw,
                 parent: parent.clone(),
                 #[cfg(feature = "runtime_implicit_validations")]
-                queue_flags: vk::QueueFlags::empty(),
+                queue_flags: std::sync::OnceLock::new(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -342,16 +351,14 @@ impl CommandPool {
     }
     ///Records the queue flags of the pool's family, for the `cmdpool` checks.
     #[cfg(feature = "runtime_implicit_validations")]
-    pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
-        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-            inner.queue_flags = flags;
-        }
+    pub(crate) fn with_queue_flags(self, flags: vk::QueueFlags) -> Self {
+        let _ = self.inner.queue_flags.set(flags);
         self
     }
     ///The queue flags of the pool's family, for the `cmdpool` checks.
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
-        self.inner.queue_flags
+        self.inner.queue_flags.get().copied().unwrap_or_default()
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -388,6 +395,7 @@ impl Drop for CommandPoolInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -425,14 +433,15 @@ impl DebugUtilsMessengerEXT {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(DebugUtilsMessengerEXTInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -502,7 +511,7 @@ pub struct DescriptorPool {
 struct DescriptorPoolInner {
     raw: vk::DescriptorPool,
     parent: Device,
-    flags: vk::DescriptorPoolCreateFlags,
+    flags: std::sync::OnceLock<vk::DescriptorPoolCreateFlags>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -516,15 +525,17 @@ impl DescriptorPool {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(DescriptorPoolInner {
                 raw,
                 parent: parent.clone(),
-                flags: Default::default(),
+                flags: std::sync::OnceLock::new(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -535,12 +546,15 @@ impl DescriptorPool {
     /// (`FREE_DESCRIPTOR_SET`); otherwise they return with the pool.
     #[inline]
     pub fn frees_sets(&self) -> bool {
-        self.inner.flags.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
+        self.inner
+            .flags
+            .get()
+            .is_some_and(|f| {
+                f.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
+            })
     }
-    pub(crate) fn with_flags(mut self, flags: vk::DescriptorPoolCreateFlags) -> Self {
-        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-            inner.flags = flags;
-        }
+    pub(crate) fn with_flags(self, flags: vk::DescriptorPoolCreateFlags) -> Self {
+        let _ = self.inner.flags.set(flags);
         self
     }
     /// Another object this one keeps alive (a swapchain for its images).
@@ -578,6 +592,7 @@ impl Drop for DescriptorPoolInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -617,14 +632,16 @@ impl DescriptorSet {
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")]
         parent.parent().objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(DescriptorSetInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.parent().live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -666,6 +683,7 @@ impl Drop for DescriptorSetInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.parent().objects().remove(self.raw);
+        self.parent.parent().live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -709,14 +727,16 @@ impl DescriptorSetLayout {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(DescriptorSetLayoutInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -758,6 +778,7 @@ impl Drop for DescriptorSetLayoutInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -783,6 +804,7 @@ pub struct DescriptorUpdateTemplate {
 struct DescriptorUpdateTemplateInner {
     raw: vk::DescriptorUpdateTemplate,
     parent: Device,
+    entries: std::sync::OnceLock<Vec<vk::DescriptorUpdateTemplateEntry>>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -796,19 +818,35 @@ impl DescriptorUpdateTemplate {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(DescriptorUpdateTemplateInner {
                 raw,
                 parent: parent.clone(),
+                entries: std::sync::OnceLock::new(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// Records the template's entries, which say where its data names the
+    /// objects the updated set then keeps alive.
+    pub(crate) fn with_entries(
+        self,
+        entries: &[vk::DescriptorUpdateTemplateEntry],
+    ) -> Self {
+        let _ = self.inner.entries.set(entries.to_vec());
+        self
+    }
+    /// The template's entries.
+    pub(crate) fn entries(&self) -> &[vk::DescriptorUpdateTemplateEntry] {
+        self.inner.entries.get().map_or(&[], Vec::as_slice)
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -845,6 +883,7 @@ impl Drop for DescriptorUpdateTemplateInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -889,6 +928,7 @@ struct DeviceInner {
             tuff_runtime::Vweak<dyn tuff_runtime::Retain>,
         >,
     >,
+    live: crate::retention::Live,
     #[cfg(feature = "runtime_implicit_validations")]
     exts: crate::checks::Exts,
     #[cfg(feature = "runtime_implicit_validations")]
@@ -938,6 +978,7 @@ impl Device {
                 fns,
                 ext,
                 command_buffers: Vutex::new(Default::default()),
+                live: Default::default(),
                 #[cfg(feature = "runtime_implicit_validations")]
                 exts,
                 #[cfg(feature = "runtime_implicit_validations")]
@@ -980,6 +1021,12 @@ impl Device {
     }
     pub(crate) fn forget_command_buffer(&self, raw: vk::CommandBuffer) {
         self.inner.command_buffers.lock().remove(&raw);
+    }
+    /// The live objects of this device by raw handle, and what its descriptor
+    /// sets refer to.
+    #[inline]
+    pub(crate) fn live(&self) -> &crate::retention::Live {
+        &self.inner.live
     }
     /// The live command buffer with this raw handle.
     pub(crate) fn command_buffer(&self, raw: vk::CommandBuffer) -> Option<Retained> {
@@ -1030,14 +1077,16 @@ impl DeviceMemory {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(DeviceMemoryInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1079,6 +1128,7 @@ impl Drop for DeviceMemoryInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1113,14 +1163,16 @@ impl Event {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(EventInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1162,6 +1214,7 @@ impl Drop for EventInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1197,7 +1250,7 @@ impl Fence {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(FenceInner {
                 raw,
                 parent: parent.clone(),
@@ -1205,7 +1258,9 @@ impl Fence {
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1255,6 +1310,7 @@ impl Drop for FenceInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1304,14 +1360,16 @@ impl Framebuffer {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(FramebufferInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1353,6 +1411,7 @@ impl Drop for FramebufferInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1388,7 +1447,7 @@ impl Image {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(ImageInner {
                 raw,
                 parent: parent.clone(),
@@ -1396,7 +1455,9 @@ impl Image {
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1442,6 +1503,7 @@ impl Drop for ImageInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1476,14 +1538,16 @@ impl ImageView {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(ImageViewInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1525,6 +1589,7 @@ impl Drop for ImageViewInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1728,14 +1793,15 @@ impl PhysicalDevice {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(PhysicalDeviceInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1802,14 +1868,16 @@ impl Pipeline {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(PipelineInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1851,6 +1919,7 @@ impl Drop for PipelineInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1885,14 +1954,16 @@ impl PipelineCache {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(PipelineCacheInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -1934,6 +2005,7 @@ impl Drop for PipelineCacheInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -1968,14 +2040,16 @@ impl PipelineLayout {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(PipelineLayoutInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2017,6 +2091,7 @@ impl Drop for PipelineLayoutInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2055,14 +2130,16 @@ impl PrivateDataSlot {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(PrivateDataSlotInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2104,6 +2181,7 @@ impl Drop for PrivateDataSlotInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2142,14 +2220,16 @@ impl QueryPool {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(QueryPoolInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2191,6 +2271,7 @@ impl Drop for QueryPoolInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2213,7 +2294,7 @@ struct QueueInner {
     raw: vk::Queue,
     parent: Device,
     #[cfg(feature = "runtime_implicit_validations")]
-    queue_flags: vk::QueueFlags,
+    queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -2227,16 +2308,17 @@ impl Queue {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(QueueInner {
                 raw,
                 parent: parent.clone(),
                 #[cfg(feature = "runtime_implicit_validations")]
-                queue_flags: vk::QueueFlags::empty(),
+                queue_flags: std::sync::OnceLock::new(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2245,16 +2327,14 @@ impl Queue {
     }
     ///Records the queue flags of the queue's family, for the `queuetype` checks.
     #[cfg(feature = "runtime_implicit_validations")]
-    pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
-        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-            inner.queue_flags = flags;
-        }
+    pub(crate) fn with_queue_flags(self, flags: vk::QueueFlags) -> Self {
+        let _ = self.inner.queue_flags.set(flags);
         self
     }
     ///The queue flags of the queue's family, for the `queuetype` checks.
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
-        self.inner.queue_flags
+        self.inner.queue_flags.get().copied().unwrap_or_default()
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2316,14 +2396,16 @@ impl RenderPass {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(RenderPassInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2365,6 +2447,7 @@ impl Drop for RenderPassInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2399,14 +2482,16 @@ impl Sampler {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(SamplerInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2448,6 +2533,7 @@ impl Drop for SamplerInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2482,14 +2568,16 @@ impl SamplerYcbcrConversion {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(SamplerYcbcrConversionInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2531,6 +2619,7 @@ impl Drop for SamplerYcbcrConversionInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2569,14 +2658,16 @@ impl Semaphore {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(SemaphoreInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2618,6 +2709,7 @@ impl Drop for SemaphoreInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2652,14 +2744,16 @@ impl ShaderModule {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(ShaderModuleInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2701,6 +2795,7 @@ impl Drop for ShaderModuleInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -2738,14 +2833,15 @@ impl SurfaceKHR {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(SurfaceKHRInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2827,14 +2923,16 @@ impl SwapchainKHR {
         destroy: bool,
     ) -> Self {
         #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
-        Self {
+        let this = Self {
             inner: Vrc::new(SwapchainKHRInner {
                 raw,
                 parent: parent.clone(),
                 keep,
                 destroy,
             }),
-        }
+        };
+        parent.live().add(raw, &this.retained());
+        this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
@@ -2879,6 +2977,7 @@ impl Drop for SwapchainKHRInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
         if !self.destroy {
             return;
         }

@@ -26,9 +26,14 @@ pub mod handles;
 #[rustfmt::skip]
 pub mod recorder;
 #[rustfmt::skip]
+mod retention;
+#[rustfmt::skip]
 pub mod structs;
 #[rustfmt::skip]
 mod support;
+#[rustfmt::skip]
+#[cfg(feature = "khr_swapchain")]
+mod swapchain;
 #[rustfmt::skip]
 #[cfg(feature = "runtime_implicit_validations")]
 mod validation;

@@ -3089,7 +3089,7 @@ impl<'a> core::ops::Deref for CommandPoolCreateInfo<'a> {
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkComputePipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkComputePipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkComputePipelineCreateInfo-stage-parameter`: user (not settable safely (a nested struct that carries pointers or handles))
+- `VUID-VkComputePipelineCreateInfo-stage-parameter`: static (set from the safe counterpart, which the constructor requires)
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkComputePipelineCreateInfo-flags-03364`: user (explicit rule; the wrappers do not check it)
@@ -3115,9 +3115,13 @@ impl<'a> ComputePipelineCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
     #[inline]
-    pub fn new(layout: &'a PipelineLayout) -> Self {
+    pub fn new(
+        stage: PipelineShaderStageCreateInfo<'a>,
+        layout: &'a PipelineLayout,
+    ) -> Self {
         #[allow(unused_mut)]
         let mut raw: vk::ComputePipelineCreateInfo<'a> = Default::default();
+        raw.stage = stage.raw;
         raw.layout = layout.raw();
         Self { raw, _marker: PhantomData }
     }
@@ -3125,6 +3129,12 @@ impl<'a> ComputePipelineCreateInfo<'a> {
     #[inline]
     pub fn flags(mut self, value: vk::PipelineCreateFlags) -> Self {
         self.raw.flags = value;
+        self
+    }
+    ///Sets `stage`.
+    #[inline]
+    pub fn stage(mut self, value: PipelineShaderStageCreateInfo<'a>) -> Self {
+        self.raw.stage = value.raw;
         self
     }
     ///Sets `layout`.
@@ -22172,6 +22182,26 @@ impl<'a> Win32SurfaceCreateInfoKHR<'a> {
         self.raw.flags = value;
         self
     }
+    /**Sets `hinstance`.
+
+# Safety
+
+`value` must name a live window-system object that outlives every Vulkan object created from this struct.*/
+    #[inline]
+    pub unsafe fn hinstance(mut self, value: vk::HINSTANCE) -> Self {
+        self.raw.hinstance = value;
+        self
+    }
+    /**Sets `hwnd`.
+
+# Safety
+
+`value` must name a live window-system object that outlives every Vulkan object created from this struct.*/
+    #[inline]
+    pub unsafe fn hwnd(mut self, value: vk::HWND) -> Self {
+        self.raw.hwnd = value;
+        self
+    }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
     #[inline]
@@ -22478,6 +22508,16 @@ impl<'a> XcbSurfaceCreateInfoKHR<'a> {
         self.raw.connection = value;
         self
     }
+    /**Sets `window`.
+
+# Safety
+
+`value` must name a live window-system object that outlives every Vulkan object created from this struct.*/
+    #[inline]
+    pub unsafe fn window(mut self, value: vk::xcb_window_t) -> Self {
+        self.raw.window = value;
+        self
+    }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
     #[inline]
@@ -22559,6 +22599,16 @@ impl<'a> XlibSurfaceCreateInfoKHR<'a> {
     #[inline]
     pub unsafe fn dpy(mut self, value: *mut vk::Display) -> Self {
         self.raw.dpy = value;
+        self
+    }
+    /**Sets `window`.
+
+# Safety
+
+`value` must name a live window-system object that outlives every Vulkan object created from this struct.*/
+    #[inline]
+    pub unsafe fn window(mut self, value: vk::Window) -> Self {
+        self.raw.window = value;
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only

@@ -158,7 +158,10 @@ impl<'c, 'm> Checker<'c, 'm> {
             .filter(|(_, shape)| {
                 matches!(
                     shape,
-                    Member::Value | Member::StructRef { .. } | Member::Slice { .. }
+                    Member::Value
+                        | Member::Nested
+                        | Member::StructRef { .. }
+                        | Member::Slice { .. }
                 )
             })
             .map(|(m, _)| m.type_name)
@@ -326,7 +329,7 @@ impl<'c, 'm> Checker<'c, 'm> {
             let f = field_ident(&m.name);
             let call = ident(&format!("check_{}", snake(&m.type_name)));
             let code = match shape {
-                Member::Value => quote!(crate::checks::#call(&v.#f, s)?;),
+                Member::Value | Member::Nested => quote!(crate::checks::#call(&v.#f, s)?;),
                 Member::StructRef { .. } => quote! {
                     if !v.#f.is_null() {
                         // SAFETY: the safe setter stores a reference that outlives `v`.

@@ -7,13 +7,14 @@
 use super::checks::Checker;
 use super::handles::parent_of;
 use super::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
+use super::shape::{struct_members, Member};
 use super::structs::safe_or_ash;
 use super::types::ash_type;
 use super::Context;
 use crate::model::LenEntry;
 use crate::registry::CommandDef;
-use proc_macro2::TokenStream;
-use quote::quote;
+use proc_macro2::{Ident, TokenStream};
+use quote::{quote, ToTokens};
 
 /// How one parameter is taken and passed.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -46,6 +47,9 @@ pub enum Param {
     Bytes,
     /// Bytes Vulkan writes, sized by a count parameter.
     BytesOut,
+    /// A `void*` whose layout another parameter describes (`pData` of an update
+    /// template): passed through as a raw pointer, which makes the method `unsafe`.
+    RawData,
     /// A C string.
     CStr {
         /// May be null.
@@ -91,6 +95,17 @@ pub fn handled_elsewhere(cx: &Context, name: &str) -> Option<&'static str> {
         "vkBeginCommandBuffer" | "vkEndCommandBuffer" => Some("recorder"),
         "vkGetInstanceProcAddr" | "vkGetDeviceProcAddr" => Some("loader"),
         "vkMapMemory" | "vkUnmapMemory" | "vkMapMemory2KHR" => Some("mapping"),
+        _ => None,
+    }
+}
+
+/// A handle in a command's create info that the created object must not outlive
+/// (member, handle type): the method takes it again as a wrapper, writes it into the
+/// info and the new object keeps it alive.
+fn kept_member(name: &str) -> Option<(&'static str, &'static str)> {
+    match name {
+        // VUID-vkDestroySurfaceKHR-surface-01266: swapchains go before their surface.
+        "vkCreateSwapchainKHR" => Some(("surface", "VkSurfaceKHR")),
         _ => None,
     }
 }
@@ -170,6 +185,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                     None if super::shape::is_c_scalar(&p.type_name) => Param::Slice,
                     None => return Err(format!("`{}`: array of {}", p.name, p.type_name)),
                 },
+                (None, None) if p.type_name == "void" => Param::RawData,
                 _ => return Err(format!("`{}`: pointer with length {:?}", p.name, pp.len)),
             }
         } else if p.pointers == 1 && !p.is_const {
@@ -373,6 +389,30 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     } else {
         None
     };
+    // The create info (or infos, one per created object) of a create command.
+    let info_param = cmd
+        .params
+        .iter()
+        .zip(&plan.params)
+        .find(|(_, s)| matches!(s, Param::StructRef { optional: false }))
+        .map(|(p, _)| {
+            (
+                ident(&param(&p.name)).into_token_stream(),
+                p.type_name.as_str(),
+            )
+        });
+    let infos_param = cmd
+        .params
+        .iter()
+        .zip(&plan.params)
+        .find(|(p, s)| matches!(s, Param::Slice) && cx.facts.is_safe(&p.type_name))
+        .map(|(p, _)| {
+            (
+                ident(&param(&p.name)).into_token_stream(),
+                p.type_name.as_str(),
+            )
+        });
+    let override_member = pool_override.as_ref().and_then(|(_, m)| m.as_deref());
     for (p, shape) in cmd.params.iter().zip(&plan.params) {
         let name = ident(&param(&p.name));
         match shape {
@@ -452,6 +492,19 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                     call_args.push(
                         quote!(#name.map_or(core::ptr::null(), |s| s as *const #ty as *const _),),
                     );
+                } else if let Some((member, kept_ty)) = kept_member(&plan.name) {
+                    let kept_name = ident(&param(member));
+                    let member = field_ident(member);
+                    let kept_w = type_ident(kept_ty);
+                    args.push(quote!(#kept_name: &#kept_w));
+                    args.push(quote!(#name: &#ty));
+                    pre.push(quote! {
+                        // Taken as a wrapper and written into the info, so the created
+                        // object can keep it alive.
+                        let mut #name = *#name;
+                        #name.as_raw_mut().#member = #kept_name.raw();
+                    });
+                    call_args.push(quote!(#name.as_raw(),));
                 } else if is_override {
                     let (_, member) = pool_override.clone().unwrap_or_default();
                     let member = field_ident(&member.unwrap_or_default());
@@ -469,6 +522,9 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 } else {
                     args.push(quote!(#name: &#ty));
                     call_args.push(quote!(#name as *const #ty as *const _,));
+                    if is_cmd {
+                        retain.extend(struct_retains(cx, p, &name, false));
+                    }
                 }
             }
             Param::Slice => {
@@ -480,10 +536,17 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 };
                 args.push(quote!(#name: &[#ty]));
                 call_args.push(quote!(#name.as_ptr().cast(),));
+                if is_cmd {
+                    retain.extend(struct_retains(cx, p, &name, true));
+                }
             }
             Param::Bytes => {
                 args.push(quote!(#name: &[u8]));
                 call_args.push(quote!(#name.as_ptr().cast(),));
+            }
+            Param::RawData => {
+                args.push(quote!(#name: *const core::ffi::c_void));
+                call_args.push(quote!(#name,));
             }
             Param::BytesOut => {
                 args.push(quote!(#name: &mut [u8]));
@@ -570,7 +633,29 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                                 queue
                             })
                         }
-                        _ => quote!(#w::from_raw(out, #parent_arg None, true)),
+                        _ => match kept_member(&plan.name) {
+                            Some((member, _)) => {
+                                let kept_name = ident(&param(member));
+                                quote!(#w::from_raw(out, #parent_arg Some(#kept_name.retained()), true))
+                            }
+                            None => {
+                                let keep = info_param
+                                    .as_ref()
+                                    .filter(|_| lvl == Level::Device)
+                                    .and_then(|(info, ty)| {
+                                        keep_expr(
+                                            cx,
+                                            ty,
+                                            info,
+                                            &created_parent,
+                                            override_member,
+                                            &device_path,
+                                        )
+                                    })
+                                    .unwrap_or(quote!(None));
+                                quote!(#w::from_raw(out, #parent_arg #keep, true))
+                            }
+                        },
                     };
                 } else {
                     let pp = model.parse_field(p);
@@ -605,7 +690,23 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                     pre.push(quote!(let mut out = vec![vk::#w::null(); #count];));
                     call_args.push(quote!(out.as_mut_ptr(),));
                     ret_ty = quote!(Vec<#w>);
-                    ret_expr = quote!(out.into_iter().map(|raw| #w::from_raw(raw, #parent_arg None, true)).collect());
+                    // One create info per created object (pipelines): each keeps what
+                    // its own info names.
+                    let per_info = infos_param
+                        .as_ref()
+                        .filter(|_| lvl == Level::Device)
+                        .and_then(|(infos, ty)| {
+                            keep_expr(cx, ty, &quote!(info), &created_parent, None, &device_path)
+                                .map(|k| (infos, k))
+                        });
+                    ret_expr = match per_info {
+                        Some((infos, keep)) => {
+                            quote!(out.into_iter().zip(#infos.iter()).map(|(raw, info)| #w::from_raw(raw, #parent_arg #keep, true)).collect())
+                        }
+                        None => {
+                            quote!(out.into_iter().map(|raw| #w::from_raw(raw, #parent_arg None, true)).collect())
+                        }
+                    };
                 }
             }
             Param::EnumCount => {
@@ -669,6 +770,21 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             }
             fence.track(kept);
         }),
+        "vkUpdateDescriptorSets" => post.push(quote! {
+            // SAFETY: the safe structs are transparent over ash's, and their setters
+            // store each array with its length.
+            unsafe {
+                self.live().write_sets(
+                    core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len()),
+                    core::slice::from_raw_parts(descriptor_copies.as_ptr().cast(), descriptor_copies.len()),
+                );
+            }
+        }),
+        "vkUpdateDescriptorSetWithTemplate" => post.push(quote! {
+            // SAFETY: the caller of this unsafe method vouches that `data` is laid out
+            // as the template's entries describe.
+            unsafe { self.live().write_template(descriptor_set.raw(), descriptor_update_template.entries(), data) };
+        }),
         "vkGetFenceStatus" => post.push(quote!(if r == vk::Result::SUCCESS { fence.completed(); })),
         "vkResetFences" => post.push(quote!(for f in fences_w { f.completed(); })),
         "vkWaitForFences" => post.push(quote!(if r == vk::Result::SUCCESS && (wait_all == vk::TRUE || fences_w.len() == 1) { for f in fences_w { f.completed(); } })),
@@ -676,6 +792,14 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     }
     if plan.name == "vkWaitForFences" || plan.name == "vkResetFences" {
         pre.insert(0, quote!(let fences_w: &[&Fence] = fences;));
+    }
+    if plan.name == "vkCreateDescriptorUpdateTemplate" {
+        ret_expr = quote!({
+            let template: DescriptorUpdateTemplate = #ret_expr;
+            let raw = create_info.as_raw();
+            // SAFETY: the safe setter stored the entries with their count.
+            template.with_entries(unsafe { crate::retention::raw_slice(raw.p_descriptor_update_entries, raw.descriptor_update_entry_count) })
+        });
     }
     if plan.name == "vkAllocateCommandBuffers" {
         ret_expr = quote!({
@@ -736,7 +860,11 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             }
         }
     } else if cmd.return_type == "VkResult" {
-        let ok = if multi_success {
+        let ok = if multi_success && ret_ty.to_string() == "()" {
+            // Nothing else to return: the success code alone (SUBOPTIMAL_KHR, say).
+            ret_ty = quote!(vk::Result);
+            quote!(Ok(r))
+        } else if multi_success {
             ret_ty = quote!((#ret_ty, vk::Result));
             quote!(Ok((#ret_expr, r)))
         } else {
@@ -762,6 +890,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             // a reference or slice that outlives the call, and every count from the
             // length of the slice it sizes.
             unsafe { #fp(#(#call_args)*) };
+            #(#post)*
             #(#retain)*
             #ret_expr
         }
@@ -812,13 +941,36 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         }
         None => (ret, body),
     };
-    let doc = format!("`{}`{}", plan.name, super::doc_rules(cx, &plan.name));
+    let raw_data: Vec<String> = cmd
+        .params
+        .iter()
+        .zip(&plan.params)
+        .filter(|(_, s)| matches!(s, Param::RawData))
+        .map(|(p, _)| format!("`{}`", param(&p.name)))
+        .collect();
+    let (unsafe_kw, safety) = if raw_data.is_empty() {
+        (quote!(), String::new())
+    } else {
+        (
+            quote!(unsafe),
+            format!(
+                "\n\n# Safety\n\n{} is passed to Vulkan as is: it must point to data laid out as the specification of `{}` describes, readable for the whole call.",
+                raw_data.join(", "),
+                plan.name
+            ),
+        )
+    };
+    let doc = format!(
+        "`{}`{safety}{}",
+        plan.name,
+        super::doc_rules(cx, &plan.name)
+    );
     let checks = checker.command_checks(plan);
     let method = if checks.is_empty() {
         quote! {
             #[doc = #doc]
             #[inline]
-            pub fn #f #lt(#self_ref, #(#args),*) -> #ret {
+            pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) -> #ret {
                 #body
             }
         }
@@ -845,7 +997,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             } else {
                 format!(": {}, and those of the structs it takes", owned.join(", "))
             }
-        );
+        ) + &safety.replace("\n\n# Safety\n\n", " ");
         let run = quote! {
             let r: Result<()> = (|| {
                 let s = &#scope;
@@ -907,7 +1059,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         quote! {
             #[doc = #doc]
             #[inline]
-            pub fn #f #lt(#self_ref, #(#args),*) -> #ret_checked {
+            pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) -> #ret_checked {
                 #[cfg(feature = "runtime_implicit_validations")]
                 {
                     #run
@@ -974,4 +1126,75 @@ fn scope_expr(cx: &Context, plan: &Plan, device_path: &TokenStream) -> TokenStre
         }),
         _ => quote!(#device_path.scope()),
     }
+}
+
+/// The objects a created wrapper keeps alive because its create info names them
+/// (a view's image, a framebuffer's attachments, a pipeline's layout and render
+/// pass): an expression of type `Option<Retained>` over the info in `var`, or `None`
+/// when the info names no other object. The parent and `skip` are kept already.
+fn keep_expr(
+    cx: &Context,
+    info_ty: &str,
+    var: &TokenStream,
+    parent: &str,
+    skip: Option<&str>,
+    device_path: &TokenStream,
+) -> Option<TokenStream> {
+    let mut parts = Vec::new();
+    for (m, shape) in struct_members(cx.model, &cx.facts, info_ty) {
+        if m.type_name == parent || Some(m.name.as_str()) == skip {
+            continue;
+        }
+        let f = field_ident(&m.name);
+        match shape {
+            Member::Handle { .. } => {
+                parts.push(quote!(kept.extend(live.get(#var.as_raw().#f));));
+            }
+            Member::HandleSlice { count } => {
+                let c = field_ident(&count);
+                parts.push(quote! {
+                    // SAFETY: the safe setter stored this array with its length.
+                    kept.extend(live.keep(unsafe { crate::retention::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }));
+                });
+            }
+            _ => {}
+        }
+    }
+    if parts.is_empty() {
+        return None;
+    }
+    Some(quote!({
+        let live = #device_path.live();
+        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+        #(#parts)*
+        (!kept.is_empty()).then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+    }))
+}
+
+/// What a recorded command keeps alive beyond its wrapper arguments: the objects
+/// named by handle members of a struct argument (a render pass begin's framebuffer,
+/// a barrier's image), looked up among the device's live objects.
+fn struct_retains(
+    cx: &Context,
+    p: &crate::registry::Field,
+    name: &Ident,
+    slice: bool,
+) -> Vec<TokenStream> {
+    if !cx.facts.is_safe(&p.type_name) {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for (m, shape) in struct_members(cx.model, &cx.facts, &p.type_name) {
+        if let Member::Handle { .. } = shape {
+            let f = field_ident(&m.name);
+            let get = |e: TokenStream| quote!(if let Some(o) = self.device().live().get(#e.as_raw().#f) { self.retain(o); });
+            out.push(if slice {
+                let body = get(quote!(e));
+                quote!(for e in #name { #body })
+            } else {
+                get(quote!(#name))
+            });
+        }
+    }
+    out
 }

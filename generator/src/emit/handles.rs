@@ -90,7 +90,9 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
     quote! {
         //! Handle wrappers. Each derefs to its raw `ash::vk` handle, so anything the
         //! wrappers lack can still be called through ash.
-        #![allow(clippy::new_without_default)]
+        #![allow(clippy::new_without_default, clippy::let_and_return)]
+        // `from_raw` binds the new wrapper before returning it because device objects
+        // are listed among the live objects in between; others return it unchanged.
         use crate::{Entry, Handle};
         use ash::vk;
         use tuff_runtime::{Retained, Vrc, Vutex};
@@ -258,6 +260,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             fns: ash::Device,
             ext: DeviceExtensions,
             command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, tuff_runtime::Vweak<dyn tuff_runtime::Retain>>>,
+            live: crate::retention::Live,
             #[cfg(feature = "runtime_implicit_validations")]
             exts: crate::checks::Exts,
             #[cfg(feature = "runtime_implicit_validations")]
@@ -280,6 +283,7 @@ fn emit_device(cx: &Context) -> TokenStream {
                 };
                 Device { inner: Vrc::new(DeviceInner {
                     raw, physical: physical.clone(), fns, ext, command_buffers: Vutex::new(Default::default()),
+                    live: Default::default(),
                     #[cfg(feature = "runtime_implicit_validations")]
                     exts,
                     #[cfg(feature = "runtime_implicit_validations")]
@@ -318,6 +322,12 @@ fn emit_device(cx: &Context) -> TokenStream {
             }
             pub(crate) fn forget_command_buffer(&self, raw: vk::CommandBuffer) {
                 self.inner.command_buffers.lock().remove(&raw);
+            }
+            /// The live objects of this device by raw handle, and what its descriptor
+            /// sets refer to.
+            #[inline]
+            pub(crate) fn live(&self) -> &crate::retention::Live {
+                &self.inner.live
             }
             /// The live command buffer with this raw handle.
             pub(crate) fn command_buffer(&self, raw: vk::CommandBuffer) -> Option<Retained> {
@@ -412,6 +422,22 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             self.parent #path.objects().remove(self.raw);
         }
     });
+    // Non-dispatchable objects of a device are listed in its live objects, so that a
+    // wrapper that Vulkan lets refer to them through a struct can keep them alive.
+    let live_path = parent
+        .as_deref()
+        .filter(|_| !handle.dispatchable)
+        .and_then(|p| path_to(cx, p, "VkDevice"));
+    let live_add = live_path
+        .as_ref()
+        .map(|path| quote!(parent #path.live().add(raw, &this.retained());));
+    let unregister = match (&unregister, &live_path) {
+        (_, Some(path)) => Some(quote! {
+            #unregister
+            self.parent #path.live().remove(self.raw);
+        }),
+        (u, None) => u.clone(),
+    };
     let drop_impl = destroy.as_ref().and_then(|d| {
         let cmd = &model.commands[d];
         let device_path = inner_path(cx, name, &cmd.params[0].type_name)?;
@@ -496,13 +522,14 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             /// (`FREE_DESCRIPTOR_SET`); otherwise they return with the pool.
             #[inline]
             pub fn frees_sets(&self) -> bool {
-                self.inner.flags.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
+                self.inner.flags.get().is_some_and(|f| f.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET))
             }
         }
     });
-    let flags_field =
-        (name == "VkDescriptorPool").then(|| quote!(flags: vk::DescriptorPoolCreateFlags,));
-    let flags_init = (name == "VkDescriptorPool").then(|| quote!(flags: Default::default(),));
+    let flags_field = (name == "VkDescriptorPool")
+        .then(|| quote!(flags: std::sync::OnceLock<vk::DescriptorPoolCreateFlags>,));
+    let flags_init =
+        (name == "VkDescriptorPool").then(|| quote!(flags: std::sync::OnceLock::new(),));
     let (extra_field, extra_init, extra_fns) = special_state(name);
     let derive_clone = if name == "VkCommandBuffer" {
         quote!()
@@ -511,6 +538,14 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     };
     let drop_impl = match (drop_impl, &unregister) {
         (Some(d), _) => Some(d),
+        (None, Some(unregister)) if live_path.is_some() => Some(quote! {
+            #cfg
+            impl Drop for #inner {
+                fn drop(&mut self) {
+                    #unregister
+                }
+            }
+        }),
         (None, Some(unregister)) => Some(quote! {
             #cfg
             #[cfg(feature = "runtime_implicit_validations")]
@@ -534,10 +569,8 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     );
     let pool_setter = (name == "VkDescriptorPool").then(|| {
         quote! {
-            pub(crate) fn with_flags(mut self, flags: vk::DescriptorPoolCreateFlags) -> Self {
-                if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-                    inner.flags = flags;
-                }
+            pub(crate) fn with_flags(self, flags: vk::DescriptorPoolCreateFlags) -> Self {
+                let _ = self.inner.flags.set(flags);
                 self
             }
         }
@@ -566,7 +599,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             #[allow(dead_code)]
             pub(crate) fn from_raw(raw: vk::#id, #parent_arg keep: Option<Retained>, destroy: bool) -> Self {
                 #register
-                Self {
+                let this = Self {
                     inner: Vrc::new(#inner {
                         raw,
                         #parent_init
@@ -576,7 +609,9 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
                         keep,
                         destroy,
                     }),
-                }
+                };
+                #live_add
+                this
             }
             #parent_fn
             #bound_fn
@@ -655,6 +690,22 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
             },
         ),
         "VkCommandPool" => queue_flags_state("the pool's family, for the `cmdpool` checks"),
+        "VkDescriptorUpdateTemplate" => (
+            quote!(entries: std::sync::OnceLock<Vec<vk::DescriptorUpdateTemplateEntry>>,),
+            quote!(entries: std::sync::OnceLock::new(),),
+            quote! {
+                /// Records the template's entries, which say where its data names the
+                /// objects the updated set then keeps alive.
+                pub(crate) fn with_entries(self, entries: &[vk::DescriptorUpdateTemplateEntry]) -> Self {
+                    let _ = self.inner.entries.set(entries.to_vec());
+                    self
+                }
+                /// The template's entries.
+                pub(crate) fn entries(&self) -> &[vk::DescriptorUpdateTemplateEntry] {
+                    self.inner.entries.get().map_or(&[], Vec::as_slice)
+                }
+            },
+        ),
         "VkQueue" => queue_flags_state("the queue's family, for the `queuetype` checks"),
         "VkFence" => (
             quote!(pending: Vutex<Vec<Retained>>,),
@@ -680,21 +731,19 @@ fn queue_flags_state(of: &str) -> (TokenStream, TokenStream, TokenStream) {
     let set_doc = format!("Records the queue flags of {of}.");
     let get_doc = format!("The queue flags of {of}.");
     (
-        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags,),
-        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: vk::QueueFlags::empty(),),
+        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: std::sync::OnceLock<vk::QueueFlags>,),
+        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: std::sync::OnceLock::new(),),
         quote! {
             #[doc = #set_doc]
             #[cfg(feature = "runtime_implicit_validations")]
-            pub(crate) fn with_queue_flags(mut self, flags: vk::QueueFlags) -> Self {
-                if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-                    inner.queue_flags = flags;
-                }
+            pub(crate) fn with_queue_flags(self, flags: vk::QueueFlags) -> Self {
+                let _ = self.inner.queue_flags.set(flags);
                 self
             }
             #[doc = #get_doc]
             #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
-                self.inner.queue_flags
+                self.inner.queue_flags.get().copied().unwrap_or_default()
             }
         },
     )

@@ -167,6 +167,14 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
             "src/validation.rs",
             include_str!("../../templates/validation.rs"),
         ),
+        (
+            "src/retention.rs",
+            include_str!("../../templates/retention.rs"),
+        ),
+        (
+            "src/swapchain.rs",
+            include_str!("../../templates/swapchain.rs"),
+        ),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),

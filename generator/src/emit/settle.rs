@@ -27,7 +27,7 @@ pub fn records(cx: &Context, checker: &Checker) -> Vec<Record> {
             (Category::Implicit, None) => Settlement::User(
                 "written by hand in the specification; not derived, so not checked".into(),
             ),
-            _ => explicit(&rule.text),
+            _ => explicit(&rule.vuid, &rule.text),
         };
         out.push(Record {
             vuid: rule.vuid.clone(),
@@ -37,12 +37,14 @@ pub fn records(cx: &Context, checker: &Checker) -> Vec<Record> {
     out
 }
 
-fn explicit(text: &str) -> Settlement {
+fn explicit(vuid: &str, text: &str) -> Settlement {
     let t = text.to_lowercase();
     if t.contains("all submitted commands that refer to") {
         Settlement::Static(
             "destroyed only when the last wrapper clone goes; recorded command buffers and pending submissions hold clones until their fence signals".into(),
         )
+    } else if vuid == "VUID-vkDestroySurfaceKHR-surface-01266" {
+        Settlement::Static("a swapchain wrapper keeps its surface alive".into())
     } else if t.contains("vkallocationcallbacks were provided when") {
         Settlement::Static("the wrappers never pass allocation callbacks".into())
     } else {
@@ -155,6 +157,9 @@ fn member_settlement(shape: &Member) -> Settlement {
         Member::Handle { .. } | Member::HandleSlice { .. } => {
             Settlement::Static("set from wrappers, which always hold valid handles".into())
         }
+        Member::Nested => Settlement::Static(
+            "set from the safe counterpart, which the constructor requires".into(),
+        ),
         Member::StructRef { .. }
         | Member::Slice { .. }
         | Member::Bytes { .. }
@@ -168,6 +173,9 @@ fn member_settlement(shape: &Member) -> Settlement {
         ),
         Member::Platform => {
             Settlement::User("a window-system pointer given through an unsafe setter".into())
+        }
+        Member::PlatformValue => {
+            Settlement::User("a window-system value given through an unsafe setter".into())
         }
         Member::Unsupported(why) => Settlement::User(format!("not settable safely ({why})")),
         _ => Settlement::User("not checked".into()),
@@ -197,6 +205,9 @@ fn param_settlement(p: &Param) -> Settlement {
         }
         Param::Count => Settlement::Static("computed from the slice it sizes".into()),
         Param::Value => Settlement::User("enum or flags value; ash types accept any raw value, not checked".into()),
+        Param::RawData => Settlement::User(
+            "a raw pointer the caller vouches for through an `unsafe` method".into(),
+        ),
     }
 }
 

@@ -29,6 +29,9 @@ pub enum Member {
         /// The member that holds the length.
         count: String,
     },
+    /// A struct held by value that has a safe counterpart: taken as that counterpart
+    /// in the constructor, since a zeroed one would break the counterpart's invariants.
+    Nested,
     /// A pointer to one struct, taken as a reference to its safe counterpart.
     StructRef {
         /// May be null.
@@ -65,6 +68,9 @@ pub enum Member {
     UserData,
     /// A pointer to a window-system object: set through an `unsafe` setter.
     Platform,
+    /// A window-system value (an X11 `Window`, an `xcb_window_t`): set through an
+    /// `unsafe` setter, since Vulkan cannot tell a live window from a number.
+    PlatformValue,
     /// Not exposed; the text says why.
     Unsupported(String),
 }
@@ -161,14 +167,15 @@ fn member_shape(
         }
         return match category {
             Some("handle") => Member::Handle { optional },
-            Some("struct") if facts.is_safe(&m.type_name) => {
-                Member::Unsupported("a nested struct that carries pointers or handles".into())
-            }
+            Some("struct") if facts.is_safe(&m.type_name) => Member::Nested,
             Some("union") if !facts.union_is_plain(model, &m.type_name) => {
                 Member::Unsupported("a union that carries pointers or handles".into())
             }
             _ if m.type_name == "VkBool32" || category.is_some() || is_c_scalar(&m.type_name) => {
                 Member::Value
+            }
+            None if m.type_name != "void" && model.types.contains_key(&m.type_name) => {
+                Member::PlatformValue
             }
             _ => Member::Unsupported(format!("type `{}`", m.type_name)),
         };

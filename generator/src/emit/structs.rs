@@ -129,6 +129,19 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
                     }
                 });
             }
+            Member::Nested => {
+                let target = safe_or_ash(cx, &m.type_name);
+                ctor_args.push(quote!(#setter: #target));
+                ctor_sets.push(quote!(raw.#f = #setter.raw;));
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub fn #setter(mut self, value: #target) -> Self {
+                        self.raw.#f = value.raw;
+                        self
+                    }
+                });
+            }
             Member::StructRef { optional } => {
                 let target = safe_or_ash(cx, &m.type_name);
                 let cast = quote!(value as *const #target as *const _);
@@ -235,6 +248,21 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
                     #[doc = "Sets the pointer handed back to the callback; Vulkan never reads through it."]
                     #[inline]
                     pub fn #setter(mut self, value: *mut core::ffi::c_void) -> Self {
+                        self.raw.#f = value;
+                        self
+                    }
+                });
+            }
+            Member::PlatformValue => {
+                let ty = ty.unwrap_or_else(|| quote!(()));
+                let doc = format!(
+                    "Sets `{}`.\n\n# Safety\n\n`value` must name a live window-system object that outlives every Vulkan object created from this struct.",
+                    m.name
+                );
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub unsafe fn #setter(mut self, value: #ty) -> Self {
                         self.raw.#f = value;
                         self
                     }
