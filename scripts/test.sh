@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/install-deps.sh
+. scripts/xvfb.sh
 [ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
 
 cargo fmt --all --check

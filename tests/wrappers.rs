@@ -1,17 +1,26 @@
 //! The generated wrappers on lavapipe, with the validation layer and its
-//! synchronization validation on: objects of every handle type lavapipe supports
-//! without a window or shaders are created, used and dropped in random orders
-//! (parents before children included), and resources are dropped while the
-//! submission that uses them is still in flight.
+//! synchronization validation on: objects of every handle type lavapipe supports are
+//! created, used and dropped in random orders (parents before children included),
+//! and resources are dropped while the submission that uses them is still in flight.
+//!
+//! Lavapipe (Mesa 22.3) does not support `samplerYcbcrConversion`, so
+//! `SamplerYcbcrConversion` is the one handle type of the emitted API not made here;
+//! surfaces and swapchains are made in a window of the X server named by `DISPLAY`
+//! (Xvfb on CI).
 
+#[path = "common/pipelines.rs"]
+mod pipelines;
 #[path = "common/tuff_setup.rs"]
 mod tuff_setup;
 #[path = "common/vulkan.rs"]
 mod vulkan;
+#[path = "common/x11_window.rs"]
+mod x11_window;
 
+use pipelines::{access_memory, host_buffer, pipelines, Pipelines, COLOR, FACTOR, INVOCATIONS};
 use std::any::Any;
 use tuff::vk;
-use tuff_setup::{setup, ColorTarget, Setup};
+use tuff_setup::{setup, setup_with, ColorTarget, Setup, Wsi};
 use vulkan::assert_silent;
 
 /// A small deterministic shuffle, so a failing order can be replayed.
@@ -66,13 +75,10 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
                 .range(vk::WHOLE_SIZE),
         )
         .expect("buffer view");
-    let ColorTarget {
-        image,
-        memory: image_memory,
-        view: image_view,
-        render_pass,
-        framebuffer,
-    } = s.color_target(16, vk::ImageUsageFlags::SAMPLED);
+    let target = s.color_target(16, vk::ImageUsageFlags::SAMPLED);
+    // Shader modules, both pipelines and a descriptor update template, used by a
+    // submission that is still in flight when the bag is dropped.
+    let work = pipelines(s, &target);
     let sampler = d
         .create_sampler(&tuff::SamplerCreateInfo::new())
         .expect("sampler");
@@ -163,6 +169,51 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
+    let mut cbs = cbs;
+    let mut rec = cbs[0]
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec = work.record(rec, &target, 16, None);
+    rec.end().expect("end");
+    let handles = tuff::HandleSlice::new(&[&cbs[0]]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
+    let ColorTarget {
+        image,
+        memory: image_memory,
+        view: image_view,
+        render_pass,
+        framebuffer,
+    } = target;
+    let Pipelines {
+        vert,
+        frag,
+        comp,
+        graphics_layout,
+        graphics,
+        compute_set_layout,
+        compute_layout,
+        compute,
+        template,
+        descriptor_pool,
+        set,
+        uniform,
+        output,
+    } = work;
+    bag.push(Box::new(vert));
+    bag.push(Box::new(frag));
+    bag.push(Box::new(comp));
+    bag.push(Box::new(graphics_layout));
+    bag.push(Box::new(graphics));
+    bag.push(Box::new(compute_set_layout));
+    bag.push(Box::new(compute_layout));
+    bag.push(Box::new(compute));
+    bag.push(Box::new(template));
+    bag.push(Box::new(descriptor_pool));
+    bag.push(Box::new(set));
+    bag.push(Box::new(uniform));
+    bag.push(Box::new(output));
     bag.push(Box::new(buffer));
     bag.push(Box::new(memory));
     bag.push(Box::new(view));
@@ -192,7 +243,7 @@ fn every_handle_type_in_random_drop_orders() {
     for seed in 0..6u64 {
         let s = setup(true);
         let mut bag = make_all(&s);
-        assert_eq!(bag.len(), 21);
+        assert_eq!(bag.len(), 34);
         shuffle(&mut bag, seed);
         // Dropping a parent (pool, device memory, render pass) before its children
         // only drops a reference; the last one out destroys.
@@ -271,7 +322,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         drop(pool);
         drop(buffer);
         drop(memory);
-        let (_, status) = d
+        let status = d
             .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
             .expect("wait");
         assert_eq!(status, vk::Result::SUCCESS);
@@ -309,7 +360,7 @@ fn a_submitted_buffer_is_written() {
     s.queue
         .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
         .expect("submit");
-    let (_, status) = d
+    let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
         .expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);
@@ -329,5 +380,334 @@ fn a_submitted_buffer_is_written() {
         bytes.iter().all(|b| *b == 0xA5),
         "the fill reached the buffer"
     );
+    assert_silent(&s.messages);
+}
+
+/// One frame into a swapchain: acquire, clear the image, present.
+fn present_one_frame(
+    s: &Setup,
+    swapchain: &tuff::SwapchainKHR,
+    pool: &tuff::CommandPool,
+) -> Vec<Box<dyn Any>> {
+    let d = &s.device;
+    let images = d
+        .get_swapchain_images_khr(swapchain)
+        .expect("swapchain images");
+    assert!(!images.is_empty());
+    let acquired = d
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+        .expect("semaphore");
+    let rendered = d
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+        .expect("semaphore");
+    let (index, r) = d
+        .acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None)
+        .expect("acquire");
+    assert!(
+        r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+        "{r:?}"
+    );
+    let image = &images[index as usize];
+    let mut cb = d
+        .allocate_command_buffers(
+            pool,
+            &tuff::CommandBufferAllocateInfo::new(pool).command_buffer_count(1),
+        )
+        .expect("command buffer")
+        .pop()
+        .expect("one");
+    let range = vk::ImageSubresourceRange {
+        aspect_mask: vk::ImageAspectFlags::COLOR,
+        base_mip_level: 0,
+        level_count: 1,
+        base_array_layer: 0,
+        layer_count: 1,
+    };
+    let barrier = |old, new, src_access, dst_access| {
+        tuff::ImageMemoryBarrier::new(image)
+            .old_layout(old)
+            .new_layout(new)
+            .src_access_mask(src_access)
+            .dst_access_mask(dst_access)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .subresource_range(range)
+    };
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[barrier(
+            vk::ImageLayout::UNDEFINED,
+            vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+            vk::AccessFlags::empty(),
+            vk::AccessFlags::TRANSFER_WRITE,
+        )],
+    );
+    rec.cmd_clear_color_image(
+        image,
+        vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+        &vk::ClearColorValue {
+            float32: [0.1, 0.2, 0.3, 1.0],
+        },
+        &[range],
+    );
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[barrier(
+            vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+            vk::ImageLayout::PRESENT_SRC_KHR,
+            vk::AccessFlags::TRANSFER_WRITE,
+            vk::AccessFlags::empty(),
+        )],
+    );
+    rec.end().expect("end");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let waits = tuff::HandleSlice::new(&[&acquired]);
+    let signals = tuff::HandleSlice::new(&[&rendered]);
+    let cbs = tuff::HandleSlice::new(&[&cb]);
+    let stages = [vk::PipelineStageFlags::TRANSFER];
+    s.queue
+        .queue_submit(
+            &[tuff::SubmitInfo::new()
+                .wait_semaphores(&waits)
+                .wait_dst_stage_mask(&stages)
+                .command_buffers(&cbs)
+                .signal_semaphores(&signals)],
+            &fence,
+        )
+        .expect("submit");
+    let swapchains = tuff::HandleSlice::new(&[swapchain]);
+    let indices = [index];
+    let r = s
+        .queue
+        .queue_present_khr(
+            &tuff::PresentInfoKHR::new()
+                .wait_semaphores(&signals)
+                .swapchains(&swapchains)
+                .image_indices(&indices),
+        )
+        .expect("present");
+    assert!(
+        r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+        "{r:?}"
+    );
+    // Presentation has no fence here: the queue going idle covers it.
+    s.queue.queue_wait_idle().expect("wait idle");
+    let mut out: Vec<Box<dyn Any>> = vec![
+        Box::new(acquired),
+        Box::new(rendered),
+        Box::new(cb),
+        Box::new(fence),
+    ];
+    out.extend(images.into_iter().map(|i| Box::new(i) as Box<dyn Any>));
+    out
+}
+
+/// A swapchain create info for `surface` at its current size.
+fn swapchain_info<'a>(
+    s: &Setup,
+    surface: &'a tuff::SurfaceKHR,
+) -> tuff::SwapchainCreateInfoKHR<'a> {
+    let caps = s
+        .physical
+        .get_physical_device_surface_capabilities_khr(surface)
+        .expect("surface capabilities");
+    let formats = s
+        .physical
+        .get_physical_device_surface_formats_khr(Some(surface))
+        .expect("surface formats");
+    let modes = s
+        .physical
+        .get_physical_device_surface_present_modes_khr(Some(surface))
+        .expect("present modes");
+    assert!(
+        modes.contains(&vk::PresentModeKHR::FIFO),
+        "FIFO is always supported"
+    );
+    let format = formats[0];
+    tuff::SwapchainCreateInfoKHR::new(surface)
+        .min_image_count(
+            caps.min_image_count
+                .max(2)
+                .min(if caps.max_image_count == 0 {
+                    u32::MAX
+                } else {
+                    caps.max_image_count
+                }),
+        )
+        .image_format(format.format)
+        .image_color_space(format.color_space)
+        .image_extent(caps.current_extent)
+        .image_array_layers(1)
+        .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_DST)
+        .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
+        .pre_transform(caps.current_transform)
+        .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
+        .present_mode(vk::PresentModeKHR::FIFO)
+        .clipped(vk::TRUE)
+}
+
+#[test]
+fn surfaces_and_swapchains_in_random_drop_orders() {
+    for seed in 0..4u64 {
+        let window = x11_window::X11Window::open(64, 48);
+        let s = setup_with(true, Wsi::Xlib);
+        // SAFETY: the display and window are live until `window` drops, after every
+        // object made from the surface (the bag below empties first).
+        let surface = unsafe {
+            s.instance.create_xlib_surface_khr(
+                &tuff::XlibSurfaceCreateInfoKHR::new()
+                    .dpy(window.display.cast())
+                    .window(window.window),
+            )
+        }
+        .expect("xlib surface");
+        let supported = s
+            .physical
+            .get_physical_device_surface_support_khr(s.family, &surface)
+            .expect("surface support");
+        assert_eq!(
+            supported,
+            vk::TRUE,
+            "the graphics queue family presents to X11"
+        );
+        let pool = s
+            .device
+            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+            .expect("pool");
+        let first = s
+            .device
+            .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+            .expect("swapchain");
+        assert!(first.presents_to(&surface));
+        let mut bag = present_one_frame(&s, &first, &pool);
+        // The recreate path after a resize: the new swapchain retires the old one, and
+        // both keep the surface alive.
+        window.resize(80, 40);
+        let second = first
+            .recreate(&s.device, &surface, &swapchain_info(&s, &surface))
+            .expect("recreate");
+        bag.extend(present_one_frame(&s, &second, &pool));
+        bag.push(Box::new(first));
+        bag.push(Box::new(second));
+        bag.push(Box::new(surface));
+        bag.push(Box::new(pool));
+        let Setup {
+            queue,
+            physical,
+            device,
+            messenger,
+            instance,
+            messages,
+            ..
+        } = s;
+        bag.push(Box::new(queue));
+        bag.push(Box::new(physical));
+        bag.push(Box::new(device));
+        bag.push(Box::new(instance));
+        shuffle(&mut bag, seed);
+        while let Some(item) = bag.pop() {
+            drop(item);
+        }
+        drop(messenger);
+        drop(window);
+        assert_silent(&messages);
+    }
+}
+
+#[test]
+fn recreate_refuses_another_surface() {
+    let window_a = x11_window::X11Window::open(32, 32);
+    let window_b = x11_window::X11Window::open(32, 32);
+    let s = setup_with(true, Wsi::Xlib);
+    let surface = |w: &x11_window::X11Window| {
+        // SAFETY: both windows outlive every object made from their surfaces.
+        unsafe {
+            s.instance.create_xlib_surface_khr(
+                &tuff::XlibSurfaceCreateInfoKHR::new()
+                    .dpy(w.display.cast())
+                    .window(w.window),
+            )
+        }
+        .expect("xlib surface")
+    };
+    let (a, b) = (surface(&window_a), surface(&window_b));
+    let swapchain = s
+        .device
+        .create_swapchain_khr(&a, &swapchain_info(&s, &a))
+        .expect("swapchain");
+    assert!(!swapchain.presents_to(&b));
+    match swapchain.recreate(&s.device, &b, &swapchain_info(&s, &b)) {
+        Err(tuff::Error::Validation { vuid, .. }) => {
+            assert_eq!(vuid, "VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933")
+        }
+        Err(e) => panic!("expected the oldSwapchain rule, got {e}"),
+        Ok(_) => panic!("a swapchain of one window was recreated for another"),
+    }
+    drop(swapchain);
+    drop((a, b));
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn pipelines_draw_and_dispatch() {
+    let s = setup(true);
+    let d = &s.device;
+    let target = s.color_target(8, vk::ImageUsageFlags::TRANSFER_SRC);
+    let work = pipelines(&s, &target);
+    let readback = host_buffer(&s, 16, vk::BufferUsageFlags::TRANSFER_DST);
+    let pool = d
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
+    let mut cb = d
+        .allocate_command_buffers(
+            &pool,
+            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
+        )
+        .expect("cbs")
+        .pop()
+        .expect("one");
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    work.record(rec, &target, 8, Some(&readback.0))
+        .end()
+        .expect("end");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let handles = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
+    let status = d
+        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(status, vk::Result::SUCCESS);
+    let pixel = access_memory(&s, &readback.1, 4, None);
+    let expected: Vec<u8> = COLOR.iter().map(|c| (c * 255.0).round() as u8).collect();
+    for (got, want) in pixel.iter().zip(&expected) {
+        assert!(
+            got.abs_diff(*want) <= 1,
+            "drawn pixel {pixel:?}, expected {expected:?}"
+        );
+    }
+    let out = access_memory(&s, &work.output.1, (INVOCATIONS * 4) as usize, None);
+    for (i, word) in out.chunks_exact(4).enumerate() {
+        let v = u32::from_le_bytes([word[0], word[1], word[2], word[3]]);
+        assert_eq!(v, i as u32 * FACTOR, "invocation {i} of the dispatch");
+    }
     assert_silent(&s.messages);
 }

@@ -9,6 +9,7 @@ use tuff::vk;
 /// one, so it hears everything the device's children report.
 pub struct Setup {
     pub queue: tuff::Queue,
+    pub physical: tuff::PhysicalDevice,
     pub family: u32,
     pub device: tuff::Device,
     pub memory_types: vk::PhysicalDeviceMemoryProperties,
@@ -18,9 +19,24 @@ pub struct Setup {
     _user_data: Box<Messages>,
 }
 
+/// Window-system integration a setup enables.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Wsi {
+    /// None: a headless instance and device.
+    None,
+    /// `VK_KHR_surface` and `VK_KHR_xlib_surface` on the instance, `VK_KHR_swapchain`
+    /// on the device.
+    Xlib,
+}
+
 /// Build the setup, with the validation layer (and its synchronization validation)
 /// when `validation`. Panics with a clear message when no device is found.
 pub fn setup(validation: bool) -> Setup {
+    setup_with(validation, Wsi::None)
+}
+
+/// [`setup`], with window-system extensions.
+pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
     if validation {
         // SAFETY: set before any thread of this test reads the environment.
         unsafe {
@@ -34,7 +50,14 @@ pub fn setup(validation: bool) -> Setup {
     let messages: Messages = Arc::new(Mutex::new(Vec::new()));
     let user_data = Box::new(messages.clone());
     let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
-    let exts = [tuff::CStrPtr::from(c"VK_EXT_debug_utils")];
+    let mut exts = Vec::new();
+    if validation {
+        exts.push(tuff::CStrPtr::from(c"VK_EXT_debug_utils"));
+    }
+    if wsi == Wsi::Xlib {
+        exts.push(tuff::CStrPtr::from(c"VK_KHR_surface"));
+        exts.push(tuff::CStrPtr::from(c"VK_KHR_xlib_surface"));
+    }
     let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
     let mut messenger_info = tuff::DebugUtilsMessengerCreateInfoEXT::new()
         .message_severity(
@@ -48,11 +71,12 @@ pub fn setup(validation: bool) -> Setup {
         )
         .pfn_user_callback(Some(on_message))
         .user_data(&*user_data as *const Messages as *mut _);
-    let mut info = tuff::InstanceCreateInfo::new().application_info(Some(&app));
+    let mut info = tuff::InstanceCreateInfo::new()
+        .application_info(Some(&app))
+        .enabled_extension_names(&exts);
     if validation {
         info = info
             .enabled_layer_names(&layers)
-            .enabled_extension_names(&exts)
             .push_next(&mut messenger_info);
     }
     let instance = entry
@@ -85,10 +109,15 @@ pub fn setup(validation: bool) -> Setup {
         .queue_priorities(&priorities)];
     // A typed pNext chain: only structs that extend VkDeviceCreateInfo are accepted.
     let mut features13 = tuff::PhysicalDeviceVulkan13Features::new().private_data(vk::TRUE);
+    let device_exts = match wsi {
+        Wsi::None => vec![],
+        Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],
+    };
     let device = physical
         .create_device(
             &tuff::DeviceCreateInfo::new()
                 .queue_create_infos(&queues)
+                .enabled_extension_names(&device_exts)
                 .push_next(&mut features13),
         )
         .expect("create device");
@@ -96,6 +125,7 @@ pub fn setup(validation: bool) -> Setup {
     let memory_types = physical.get_physical_device_memory_properties();
     Setup {
         queue,
+        physical,
         family,
         device,
         memory_types,

@@ -1,0 +1,389 @@
+//! Shader modules, a graphics and a compute pipeline, and a descriptor update
+//! template, made through the wrappers from the committed SPIR-V, and a recording
+//! that uses them all: a draw into a color target and a dispatch whose output the
+//! host can read back.
+#![allow(dead_code)]
+
+use crate::tuff_setup::{ColorTarget, Setup};
+use tuff::vk;
+
+/// SPIR-V words from the committed bytes (which need not be 4-byte aligned).
+pub fn spirv(bytes: &[u8]) -> Vec<u32> {
+    assert_eq!(bytes.len() % 4, 0, "SPIR-V is a whole number of words");
+    bytes
+        .chunks_exact(4)
+        .map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]))
+        .collect()
+}
+
+/// The number of invocations the compute shader runs (one work group of 64).
+pub const INVOCATIONS: u64 = 64;
+/// The factor the compute shader multiplies each index by, read from a uniform buffer.
+pub const FACTOR: u32 = 7;
+/// The color the fragment shader writes, from a push constant.
+pub const COLOR: [f32; 4] = [1.0, 0.5, 0.25, 1.0];
+
+/// Everything the pipelines need, owned, so a test can drop them in any order.
+pub struct Pipelines {
+    pub vert: tuff::ShaderModule,
+    pub frag: tuff::ShaderModule,
+    pub comp: tuff::ShaderModule,
+    pub graphics_layout: tuff::PipelineLayout,
+    pub graphics: tuff::Pipeline,
+    pub compute_set_layout: tuff::DescriptorSetLayout,
+    pub compute_layout: tuff::PipelineLayout,
+    pub compute: tuff::Pipeline,
+    pub template: tuff::DescriptorUpdateTemplate,
+    pub descriptor_pool: tuff::DescriptorPool,
+    pub set: tuff::DescriptorSet,
+    /// Holds the factor (host-visible).
+    pub uniform: (tuff::Buffer, tuff::DeviceMemory),
+    /// The compute shader's output (host-visible).
+    pub output: (tuff::Buffer, tuff::DeviceMemory),
+}
+
+/// A host-visible buffer bound to its own memory.
+pub fn host_buffer(
+    s: &Setup,
+    size: u64,
+    usage: vk::BufferUsageFlags,
+) -> (tuff::Buffer, tuff::DeviceMemory) {
+    let d = &s.device;
+    let buffer = d
+        .create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(usage))
+        .expect("buffer");
+    let reqs = d
+        .get_buffer_memory_requirements(&buffer)
+        .expect("memory requirements");
+    let memory = d
+        .allocate_memory(
+            &tuff::MemoryAllocateInfo::new()
+                .allocation_size(reqs.size)
+                .memory_type_index(s.memory_type(
+                    reqs.memory_type_bits,
+                    vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
+                )),
+        )
+        .expect("memory");
+    d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
+    (buffer, memory)
+}
+
+/// Copies host-coherent memory out (`write == None`) or writes `write` into it, through
+/// ash on the raw handles: the wrappers deref to them.
+pub fn access_memory(
+    s: &Setup,
+    memory: &tuff::DeviceMemory,
+    len: usize,
+    write: Option<&[u8]>,
+) -> Vec<u8> {
+    let ash_device = s.device.fns();
+    // SAFETY: the memory is host-visible and coherent, at least `len` bytes long, not
+    // mapped elsewhere, and no submission that uses it is pending (callers wait on its
+    // fence first); it is unmapped before returning.
+    unsafe {
+        let ptr = ash_device
+            .map_memory(**memory, 0, len as u64, vk::MemoryMapFlags::empty())
+            .expect("map") as *mut u8;
+        if let Some(bytes) = write {
+            std::ptr::copy_nonoverlapping(bytes.as_ptr(), ptr, bytes.len());
+        }
+        let out = std::slice::from_raw_parts(ptr, len).to_vec();
+        ash_device.unmap_memory(**memory);
+        out
+    }
+}
+
+/// Builds both pipelines for `target`'s render pass, and points the compute shader's
+/// descriptor set at its buffers through a descriptor update template.
+pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
+    let d = &s.device;
+    let module = |bytes: &[u8]| {
+        let words = spirv(bytes);
+        d.create_shader_module(&tuff::ShaderModuleCreateInfo::new().code(&words))
+            .expect("shader module")
+    };
+    let vert = module(include_bytes!("../../shaders/spv/test.vert.spv"));
+    let frag = module(include_bytes!("../../shaders/spv/test.frag.spv"));
+    let comp = module(include_bytes!("../../shaders/spv/test.comp.spv"));
+
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 16,
+    }];
+    let graphics_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+        .expect("graphics layout");
+    let stages = [
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::VERTEX)
+            .module(Some(&vert)),
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::FRAGMENT)
+            .module(Some(&frag)),
+    ];
+    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
+    let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
+        .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+    let viewport = tuff::PipelineViewportStateCreateInfo::new()
+        .viewport_count(1)
+        .scissor_count(1);
+    let raster = tuff::PipelineRasterizationStateCreateInfo::new()
+        .polygon_mode(vk::PolygonMode::FILL)
+        .cull_mode(vk::CullModeFlags::NONE)
+        .line_width(1.0);
+    let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
+        .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+    let blend_attachments = [vk::PipelineColorBlendAttachmentState {
+        color_write_mask: vk::ColorComponentFlags::RGBA,
+        ..Default::default()
+    }];
+    let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
+    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
+    let info = tuff::GraphicsPipelineCreateInfo::new()
+        .stages(&stages)
+        .vertex_input_state(Some(&vertex_input))
+        .input_assembly_state(Some(&assembly))
+        .viewport_state(Some(&viewport))
+        .rasterization_state(Some(&raster))
+        .multisample_state(Some(&multisample))
+        .color_blend_state(Some(&blend))
+        .dynamic_state(Some(&dynamic))
+        .layout(Some(&graphics_layout))
+        .render_pass(Some(&target.render_pass))
+        .subpass(0);
+    let (mut graphics, r) = d
+        .create_graphics_pipelines(None, &[info])
+        .expect("graphics pipeline");
+    assert_eq!(r, vk::Result::SUCCESS);
+    let graphics = graphics.pop().expect("one pipeline");
+
+    let bindings = [
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE),
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(1)
+            .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE),
+    ];
+    let compute_set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("compute set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&compute_set_layout]);
+    let compute_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+        .expect("compute layout");
+    let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(Some(&comp));
+    let (mut compute, r) = d
+        .create_compute_pipelines(
+            None,
+            &[tuff::ComputePipelineCreateInfo::new(stage, &compute_layout)],
+        )
+        .expect("compute pipeline");
+    assert_eq!(r, vk::Result::SUCCESS);
+    let compute = compute.pop().expect("one pipeline");
+
+    let sizes = [
+        vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::UNIFORM_BUFFER,
+            descriptor_count: 1,
+        },
+        vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::STORAGE_BUFFER,
+            descriptor_count: 1,
+        },
+    ];
+    let descriptor_pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("descriptor pool");
+    let set = d
+        .allocate_descriptor_sets(
+            &descriptor_pool,
+            &tuff::DescriptorSetAllocateInfo::new(&descriptor_pool).set_layouts(&set_layouts),
+        )
+        .expect("descriptor set")
+        .pop()
+        .expect("one set");
+
+    let uniform = host_buffer(s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
+    access_memory(s, &uniform.1, 4, Some(&FACTOR.to_le_bytes()));
+    let output = host_buffer(s, INVOCATIONS * 4, vk::BufferUsageFlags::STORAGE_BUFFER);
+
+    // The template reads two VkDescriptorBufferInfo, one per binding, from an array.
+    let stride = std::mem::size_of::<vk::DescriptorBufferInfo>();
+    let entries = [
+        vk::DescriptorUpdateTemplateEntry {
+            dst_binding: 0,
+            dst_array_element: 0,
+            descriptor_count: 1,
+            descriptor_type: vk::DescriptorType::UNIFORM_BUFFER,
+            offset: 0,
+            stride,
+        },
+        vk::DescriptorUpdateTemplateEntry {
+            dst_binding: 1,
+            dst_array_element: 0,
+            descriptor_count: 1,
+            descriptor_type: vk::DescriptorType::STORAGE_BUFFER,
+            offset: stride,
+            stride,
+        },
+    ];
+    let template = d
+        .create_descriptor_update_template(
+            &tuff::DescriptorUpdateTemplateCreateInfo::new(&compute_set_layout, &compute_layout)
+                .template_type(vk::DescriptorUpdateTemplateType::DESCRIPTOR_SET)
+                .descriptor_update_entries(&entries),
+        )
+        .expect("descriptor update template");
+    let data = [
+        vk::DescriptorBufferInfo {
+            buffer: *uniform.0,
+            offset: 0,
+            range: vk::WHOLE_SIZE,
+        },
+        vk::DescriptorBufferInfo {
+            buffer: *output.0,
+            offset: 0,
+            range: vk::WHOLE_SIZE,
+        },
+    ];
+    // SAFETY: `data` is laid out as the template's entries say (two buffer infos at
+    // offsets 0 and `stride`), names live buffers of the right usage, and outlives
+    // the call.
+    unsafe { d.update_descriptor_set_with_template(&set, &template, data.as_ptr().cast()) }
+        .expect("update with template");
+
+    Pipelines {
+        vert,
+        frag,
+        comp,
+        graphics_layout,
+        graphics,
+        compute_set_layout,
+        compute_layout,
+        compute,
+        template,
+        descriptor_pool,
+        set,
+        uniform,
+        output,
+    }
+}
+
+impl Pipelines {
+    /// Records a draw that fills `target` (of `size` pixels square) with [`COLOR`],
+    /// copies its first pixel into `readback` (when given), and a dispatch that writes
+    /// `i * FACTOR` into the output buffer.
+    pub fn record<'c>(
+        &self,
+        rec: tuff::Recorder<'c, tuff::Outside>,
+        target: &ColorTarget,
+        size: u32,
+        readback: Option<&tuff::Buffer>,
+    ) -> tuff::Recorder<'c, tuff::Outside> {
+        let clear = [vk::ClearValue::default()];
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: size,
+                height: size,
+            },
+        };
+        let mut rec = rec.cmd_begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                .render_area(area)
+                .clear_values(&clear),
+            vk::SubpassContents::INLINE,
+        );
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics);
+        rec.cmd_set_viewport(
+            0,
+            &[vk::Viewport {
+                x: 0.0,
+                y: 0.0,
+                width: size as f32,
+                height: size as f32,
+                min_depth: 0.0,
+                max_depth: 1.0,
+            }],
+        );
+        rec.cmd_set_scissor(0, &[area]);
+        let color: Vec<u8> = COLOR.iter().flat_map(|c| c.to_le_bytes()).collect();
+        rec.cmd_push_constants(
+            &self.graphics_layout,
+            vk::ShaderStageFlags::FRAGMENT,
+            0,
+            &color,
+        );
+        rec.cmd_draw(3, 1, 0, 0);
+        let mut rec = rec.cmd_end_render_pass();
+        if let Some(buffer) = readback {
+            let to_transfer = [tuff::ImageMemoryBarrier::new(&target.image)
+                .src_access_mask(vk::AccessFlags::COLOR_ATTACHMENT_WRITE)
+                .dst_access_mask(vk::AccessFlags::TRANSFER_READ)
+                .old_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+                .new_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
+                .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+                .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                })];
+            rec.cmd_pipeline_barrier(
+                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+                vk::PipelineStageFlags::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &[],
+                &to_transfer,
+            );
+            rec.cmd_copy_image_to_buffer(
+                &target.image,
+                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                buffer,
+                &[vk::BufferImageCopy {
+                    image_subresource: vk::ImageSubresourceLayers {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        mip_level: 0,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    },
+                    image_extent: vk::Extent3D {
+                        width: 1,
+                        height: 1,
+                        depth: 1,
+                    },
+                    ..Default::default()
+                }],
+            );
+        }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute);
+        rec.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &self.compute_layout,
+            0,
+            &[&self.set],
+            &[],
+        );
+        rec.cmd_dispatch(1, 1, 1);
+        rec
+    }
+}

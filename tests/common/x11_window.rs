@@ -1,0 +1,69 @@
+//! A plain X11 window for surface tests, on the display `DISPLAY` names (Xvfb on CI).
+//! libX11 is loaded at run time, so building the tests needs no X development files.
+#![allow(dead_code)]
+
+use x11_dl::xlib;
+
+/// An open display connection with one mapped window; both go on drop.
+pub struct X11Window {
+    xlib: xlib::Xlib,
+    /// The display connection.
+    pub display: *mut xlib::Display,
+    /// The window.
+    pub window: xlib::Window,
+}
+
+impl X11Window {
+    /// Opens the display and maps a `width` x `height` window. Panics with what to do
+    /// when there is no libX11 or no X server: a test that needs a window fails then.
+    pub fn open(width: u32, height: u32) -> Self {
+        let xlib = xlib::Xlib::open().expect("cannot load libX11 (apt-get install libx11-6)");
+        // SAFETY: XInitThreads is called before any other Xlib call of this connection;
+        // the display pointer is checked before use and the window is made on it.
+        unsafe {
+            // Once per process, before any other Xlib call: tests open windows from
+            // several threads.
+            static THREADS: std::sync::Once = std::sync::Once::new();
+            THREADS.call_once(|| {
+                (xlib.XInitThreads)();
+            });
+            let display = (xlib.XOpenDisplay)(std::ptr::null());
+            assert!(
+                !display.is_null(),
+                "cannot open the X display {:?}: start an X server (scripts/test.sh starts \
+                 Xvfb) and set DISPLAY",
+                std::env::var("DISPLAY").unwrap_or_default()
+            );
+            let screen = (xlib.XDefaultScreen)(display);
+            let root = (xlib.XRootWindow)(display, screen);
+            let window = (xlib.XCreateSimpleWindow)(display, root, 0, 0, width, height, 0, 0, 0);
+            (xlib.XMapWindow)(display, window);
+            (xlib.XSync)(display, xlib::False);
+            Self {
+                xlib,
+                display,
+                window,
+            }
+        }
+    }
+
+    /// Resizes the window and waits until the server has done it.
+    pub fn resize(&self, width: u32, height: u32) {
+        // SAFETY: the display and window are live until drop.
+        unsafe {
+            (self.xlib.XResizeWindow)(self.display, self.window, width, height);
+            (self.xlib.XSync)(self.display, xlib::False);
+        }
+    }
+}
+
+impl Drop for X11Window {
+    fn drop(&mut self) {
+        // SAFETY: the window was made on this display, and every Vulkan surface made
+        // from them is gone (the owner drops this after its surfaces).
+        unsafe {
+            (self.xlib.XDestroyWindow)(self.display, self.window);
+            (self.xlib.XCloseDisplay)(self.display);
+        }
+    }
+}
