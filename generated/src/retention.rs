@@ -55,10 +55,17 @@ impl Live {
             .insert((H::TYPE, raw.as_raw()), Vrc::downgrade(object));
     }
 
-    /// Unlists an object whose wrapper is going.
+    /// Unlists an object whose wrapper is going. An entry that another live wrapper of
+    /// the same handle took over (swapchain images are wrapped anew by every
+    /// `get_swapchain_images_khr`) stays.
     pub(crate) fn remove<H: vk::Handle>(&self, raw: H) {
         let key = (H::TYPE, raw.as_raw());
-        self.objects.lock().remove(&key);
+        {
+            let mut objects = self.objects.lock();
+            if objects.get(&key).is_some_and(|w| w.strong_count() == 0) {
+                objects.remove(&key);
+            }
+        }
         if H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
             // Dropped outside the lock: releasing the last reference to a view or
             // buffer runs its Drop, which unlists it.
