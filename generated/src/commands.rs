@@ -981,12 +981,20 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
                 contents,
             )
         };
-        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().render_pass)
-        {
-            self.retain(o);
-        }
-        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().framebuffer)
-        {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(render_pass_begin) {
+                if let Some(o) = live.get(e.as_raw().render_pass) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().framebuffer) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ();
@@ -1087,12 +1095,20 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
             )
         };
-        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().render_pass)
-        {
-            self.retain(o);
-        }
-        if let Some(o) = self.device().live().get(render_pass_begin.as_raw().framebuffer)
-        {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(render_pass_begin) {
+                if let Some(o) = live.get(e.as_raw().render_pass) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().framebuffer) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ();
@@ -1165,6 +1181,45 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
                 rendering_info as *const RenderingInfo<'a> as *const _,
             )
         };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(rendering_info) {
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_color_attachments,
+                        e.as_raw().color_attachment_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.image_view) {
+                        kept.push(o);
+                    }
+                    if let Some(o) = live.get(x.resolve_image_view) {
+                        kept.push(o);
+                    }
+                }
+                if let Some(x) = unsafe { e.as_raw().p_depth_attachment.as_ref() } {
+                    if let Some(o) = live.get(x.image_view) {
+                        kept.push(o);
+                    }
+                    if let Some(o) = live.get(x.resolve_image_view) {
+                        kept.push(o);
+                    }
+                }
+                if let Some(x) = unsafe { e.as_raw().p_stencil_attachment.as_ref() } {
+                    if let Some(o) = live.get(x.image_view) {
+                        kept.push(o);
+                    }
+                    if let Some(o) = live.get(x.resolve_image_view) {
+                        kept.push(o);
+                    }
+                }
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
         ();
         self.into_state()
     }
@@ -1982,10 +2037,20 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
                 blit_image_info as *const BlitImageInfo2<'a> as *const _,
             )
         };
-        if let Some(o) = self.device().live().get(blit_image_info.as_raw().src_image) {
-            self.retain(o);
-        }
-        if let Some(o) = self.device().live().get(blit_image_info.as_raw().dst_image) {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(blit_image_info) {
+                if let Some(o) = live.get(e.as_raw().src_image) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().dst_image) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ()
@@ -2526,10 +2591,20 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
                 copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
             )
         };
-        if let Some(o) = self.device().live().get(copy_buffer_info.as_raw().src_buffer) {
-            self.retain(o);
-        }
-        if let Some(o) = self.device().live().get(copy_buffer_info.as_raw().dst_buffer) {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_buffer_info) {
+                if let Some(o) = live.get(e.as_raw().src_buffer) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().dst_buffer) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ()
@@ -2776,18 +2851,20 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
                     as *const _,
             )
         };
-        if let Some(o) = self
-            .device()
-            .live()
-            .get(copy_buffer_to_image_info.as_raw().src_buffer)
-        {
-            self.retain(o);
-        }
-        if let Some(o) = self
-            .device()
-            .live()
-            .get(copy_buffer_to_image_info.as_raw().dst_image)
-        {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_buffer_to_image_info) {
+                if let Some(o) = live.get(e.as_raw().src_buffer) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().dst_image) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ()
@@ -3065,10 +3142,20 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
                 copy_image_info as *const CopyImageInfo2<'a> as *const _,
             )
         };
-        if let Some(o) = self.device().live().get(copy_image_info.as_raw().src_image) {
-            self.retain(o);
-        }
-        if let Some(o) = self.device().live().get(copy_image_info.as_raw().dst_image) {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_image_info) {
+                if let Some(o) = live.get(e.as_raw().src_image) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().dst_image) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ()
@@ -3312,18 +3399,20 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
                     as *const _,
             )
         };
-        if let Some(o) = self
-            .device()
-            .live()
-            .get(copy_image_to_buffer_info.as_raw().src_image)
-        {
-            self.retain(o);
-        }
-        if let Some(o) = self
-            .device()
-            .live()
-            .get(copy_image_to_buffer_info.as_raw().dst_buffer)
-        {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_image_to_buffer_info) {
+                if let Some(o) = live.get(e.as_raw().src_image) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().dst_buffer) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ()
@@ -6556,15 +6645,31 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
                 image_memory_barriers.as_ptr().cast(),
             )
         };
-        for e in buffer_memory_barriers {
-            if let Some(o) = self.device().live().get(e.as_raw().buffer) {
-                self.retain(o);
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in buffer_memory_barriers.iter() {
+                if let Some(o) = live.get(e.as_raw().buffer) {
+                    kept.push(o);
+                }
             }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
-        for e in image_memory_barriers {
-            if let Some(o) = self.device().live().get(e.as_raw().image) {
-                self.retain(o);
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in image_memory_barriers.iter() {
+                if let Some(o) = live.get(e.as_raw().image) {
+                    kept.push(o);
+                }
             }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
         ()
     }
@@ -6640,6 +6745,36 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
                 dependency_info as *const DependencyInfo<'a> as *const _,
             )
         };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(dependency_info) {
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_buffer_memory_barriers,
+                        e.as_raw().buffer_memory_barrier_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.buffer) {
+                        kept.push(o);
+                    }
+                }
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_image_memory_barriers,
+                        e.as_raw().image_memory_barrier_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.image) {
+                        kept.push(o);
+                    }
+                }
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -7272,12 +7407,20 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
                 resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
             )
         };
-        if let Some(o) = self.device().live().get(resolve_image_info.as_raw().src_image)
-        {
-            self.retain(o);
-        }
-        if let Some(o) = self.device().live().get(resolve_image_info.as_raw().dst_image)
-        {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(resolve_image_info) {
+                if let Some(o) = live.get(e.as_raw().src_image) {
+                    kept.push(o);
+                }
+                if let Some(o) = live.get(e.as_raw().dst_image) {
+                    kept.push(o);
+                }
+            }
+            kept
+        };
+        for o in kept {
             self.retain(o);
         }
         ()
@@ -8064,6 +8207,36 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
             )
         };
         self.retain_with(event.address(), || event.retained());
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(dependency_info) {
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_buffer_memory_barriers,
+                        e.as_raw().buffer_memory_barrier_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.buffer) {
+                        kept.push(o);
+                    }
+                }
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_image_memory_barriers,
+                        e.as_raw().image_memory_barrier_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.image) {
+                        kept.push(o);
+                    }
+                }
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
         ()
     }
 }
@@ -9368,15 +9541,31 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
                 image_memory_barriers.as_ptr().cast(),
             )
         };
-        for e in buffer_memory_barriers {
-            if let Some(o) = self.device().live().get(e.as_raw().buffer) {
-                self.retain(o);
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in buffer_memory_barriers.iter() {
+                if let Some(o) = live.get(e.as_raw().buffer) {
+                    kept.push(o);
+                }
             }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
-        for e in image_memory_barriers {
-            if let Some(o) = self.device().live().get(e.as_raw().image) {
-                self.retain(o);
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in image_memory_barriers.iter() {
+                if let Some(o) = live.get(e.as_raw().image) {
+                    kept.push(o);
+                }
             }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
         ()
     }
@@ -9486,6 +9675,36 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
                 dependency_infos.as_ptr().cast(),
             )
         };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in dependency_infos.iter() {
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_buffer_memory_barriers,
+                        e.as_raw().buffer_memory_barrier_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.buffer) {
+                        kept.push(o);
+                    }
+                }
+                for x in unsafe {
+                    crate::retention::raw_slice(
+                        e.as_raw().p_image_memory_barriers,
+                        e.as_raw().image_memory_barrier_count,
+                    )
+                } {
+                    if let Some(o) = live.get(x.image) {
+                        kept.push(o);
+                    }
+                }
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
         ()
     }
 }

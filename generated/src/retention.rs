@@ -28,6 +28,20 @@ pub(crate) unsafe fn raw_slice<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
     }
 }
 
+/// Element `i` of a raw array, or a zeroed one (null handles) when the array is null.
+///
+/// # Safety
+///
+/// A non-null `ptr` points to more than `i` elements.
+unsafe fn read<T: Copy + Default>(ptr: *const T, i: usize) -> T {
+    if ptr.is_null() {
+        T::default()
+    } else {
+        // SAFETY: the caller vouches for element `i`.
+        unsafe { *ptr.add(i) }
+    }
+}
+
 /// An element of a descriptor set: binding, array element, and which of the
 /// descriptor's handles (an image descriptor has a view and a sampler).
 type Slot = (u32, u32, u8);
@@ -50,9 +64,16 @@ impl Default for Live {
 impl Live {
     /// Lists a new object under its raw handle.
     pub(crate) fn add<H: vk::Handle>(&self, raw: H, object: &Retained) {
+        let raw = raw.as_raw();
         self.objects
             .lock()
-            .insert((H::TYPE, raw.as_raw()), Vrc::downgrade(object));
+            .insert((H::TYPE, raw), Vrc::downgrade(object));
+        if H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
+            // A new set starts empty, even if its handle was a set's that a pool reset
+            // freed while that set's wrapper lived on; released outside the lock.
+            let stale = self.sets.lock().remove(&raw);
+            drop(stale);
+        }
     }
 
     /// Unlists an object whose wrapper is going. An entry that another live wrapper of
@@ -60,13 +81,16 @@ impl Live {
     /// `get_swapchain_images_khr`) stays.
     pub(crate) fn remove<H: vk::Handle>(&self, raw: H) {
         let key = (H::TYPE, raw.as_raw());
-        {
+        let unlisted = {
             let mut objects = self.objects.lock();
-            if objects.get(&key).is_some_and(|w| w.strong_count() == 0) {
+            let gone = objects.get(&key).is_some_and(|w| w.strong_count() == 0);
+            if gone {
                 objects.remove(&key);
             }
-        }
-        if H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
+            gone
+        };
+        // A set whose handle a newer wrapper took over keeps that wrapper's contents.
+        if unlisted && H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
             // Dropped outside the lock: releasing the last reference to a view or
             // buffer runs its Drop, which unlists it.
             let written = self.sets.lock().remove(&key.1);
@@ -139,8 +163,10 @@ impl Live {
     ///
     /// # Safety
     ///
-    /// Every write's arrays hold `descriptorCount` elements of the kind its type uses,
-    /// as the safe `WriteDescriptorSet` setters guarantee.
+    /// The array each write's type selects holds `descriptorCount` elements or is
+    /// null. The safe setters store each array with its length but do not tie the
+    /// type to the array: a mismatch breaks VUID-VkWriteDescriptorSet-descriptorType-00324
+    /// to -00330, which are the caller's, and the driver then reads the same memory.
     pub(crate) unsafe fn write_sets(
         &self,
         writes: &[vk::WriteDescriptorSet<'_>],
@@ -153,9 +179,9 @@ impl Live {
                 // elements of the array the type selects, and only that one is read.
                 let objects = self.descriptor(
                     w.descriptor_type,
-                    || unsafe { *w.p_image_info.add(i) },
-                    || unsafe { *w.p_buffer_info.add(i) },
-                    || unsafe { *w.p_texel_buffer_view.add(i) },
+                    || unsafe { read(w.p_image_info, i) },
+                    || unsafe { read(w.p_buffer_info, i) },
+                    || unsafe { read(w.p_texel_buffer_view, i) },
                 );
                 for (k, o) in objects.into_iter().enumerate() {
                     slots.push(((w.dst_binding, w.dst_array_element + i as u32, k as u8), o));

@@ -771,8 +771,10 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             fence.track(kept);
         }),
         "vkUpdateDescriptorSets" => post.push(quote! {
-            // SAFETY: the safe structs are transparent over ash's, and their setters
-            // store each array with its length.
+            // SAFETY: the safe structs are transparent over ash's and their setters
+            // store each array with its length; that the type matches the array set
+            // is the caller's rule (VUID-VkWriteDescriptorSet-descriptorType-00324 and
+            // after), which the driver relies on too.
             unsafe {
                 self.live().write_sets(
                     core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len()),
@@ -1183,18 +1185,70 @@ fn struct_retains(
     if !cx.facts.is_safe(&p.type_name) {
         return Vec::new();
     }
-    let mut out = Vec::new();
+    // Handle members of the struct, and of the structs in its arrays one level down
+    // (a rendering info's attachments, a dependency info's barriers).
+    let mut per_elem = Vec::new();
     for (m, shape) in struct_members(cx.model, &cx.facts, &p.type_name) {
-        if let Member::Handle { .. } = shape {
-            let f = field_ident(&m.name);
-            let get = |e: TokenStream| quote!(if let Some(o) = self.device().live().get(#e.as_raw().#f) { self.retain(o); });
-            out.push(if slice {
-                let body = get(quote!(e));
-                quote!(for e in #name { #body })
-            } else {
-                get(quote!(#name))
-            });
+        let f = field_ident(&m.name);
+        match shape {
+            Member::Handle { .. } => per_elem.push(quote! {
+                if let Some(o) = live.get(e.as_raw().#f) { kept.push(o); }
+            }),
+            Member::Slice { count, safe: true } => {
+                let inner: Vec<TokenStream> = struct_members(cx.model, &cx.facts, &m.type_name)
+                    .into_iter()
+                    .filter(|(_, s)| matches!(s, Member::Handle { .. }))
+                    .map(|(im, _)| {
+                        let g = field_ident(&im.name);
+                        quote!(if let Some(o) = live.get(x.#g) { kept.push(o); })
+                    })
+                    .collect();
+                if !inner.is_empty() {
+                    let c = field_ident(&count);
+                    per_elem.push(quote! {
+                        // SAFETY: the safe setter stored this array with its length.
+                        for x in unsafe { crate::retention::raw_slice(e.as_raw().#f, e.as_raw().#c) } {
+                            #(#inner)*
+                        }
+                    });
+                }
+            }
+            Member::StructRef { .. } if cx.facts.is_safe(&m.type_name) => {
+                let inner: Vec<TokenStream> = struct_members(cx.model, &cx.facts, &m.type_name)
+                    .into_iter()
+                    .filter(|(_, s)| matches!(s, Member::Handle { .. }))
+                    .map(|(im, _)| {
+                        let g = field_ident(&im.name);
+                        quote!(if let Some(o) = live.get(x.#g) { kept.push(o); })
+                    })
+                    .collect();
+                if !inner.is_empty() {
+                    per_elem.push(quote! {
+                        // SAFETY: the safe setter stored a reference that outlives `e`.
+                        if let Some(x) = unsafe { e.as_raw().#f.as_ref() } {
+                            #(#inner)*
+                        }
+                    });
+                }
+            }
+            _ => {}
         }
     }
-    out
+    if per_elem.is_empty() {
+        return Vec::new();
+    }
+    let elems = if slice {
+        quote!(#name.iter())
+    } else {
+        quote!(core::iter::once(#name))
+    };
+    vec![quote! {
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in #elems { #(#per_elem)* }
+            kept
+        };
+        for o in kept { self.retain(o); }
+    }]
 }
