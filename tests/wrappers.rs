@@ -35,32 +35,13 @@ fn shuffle<T>(items: &mut [T], mut seed: u64) {
 }
 
 fn buffer_with_memory(s: &Setup, size: u64) -> (tuff::Buffer, tuff::DeviceMemory) {
-    let buffer = s
-        .device
-        .create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(
-            vk::BufferUsageFlags::TRANSFER_DST
-                | vk::BufferUsageFlags::UNIFORM_BUFFER
-                | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
-        ))
-        .expect("buffer");
-    let reqs = s
-        .device
-        .get_buffer_memory_requirements(&buffer)
-        .expect("memory requirements");
-    let memory = s
-        .device
-        .allocate_memory(
-            &tuff::MemoryAllocateInfo::new()
-                .allocation_size(reqs.size)
-                .memory_type_index(
-                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::HOST_VISIBLE),
-                ),
-        )
-        .expect("memory");
-    s.device
-        .bind_buffer_memory(&buffer, &memory, 0)
-        .expect("bind");
-    (buffer, memory)
+    host_buffer(
+        s,
+        size,
+        vk::BufferUsageFlags::TRANSFER_DST
+            | vk::BufferUsageFlags::UNIFORM_BUFFER
+            | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
+    )
 }
 
 /// Every handle type this test can make, in one bag, in creation order.
@@ -365,17 +346,7 @@ fn a_submitted_buffer_is_written() {
         .expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);
     // Read back through ash on the raw handles: Deref keeps the layer transparent.
-    let ash_device = d.fns();
-    // SAFETY: the memory is host-visible, coherent on lavapipe, and the fence has
-    // signalled, so the fill is complete; the mapping is unmapped before the end.
-    let bytes = unsafe {
-        let ptr = ash_device
-            .map_memory(*memory, 0, 256, vk::MemoryMapFlags::empty())
-            .expect("map");
-        let v = std::slice::from_raw_parts(ptr as *const u8, 256).to_vec();
-        ash_device.unmap_memory(*memory);
-        v
-    };
+    let bytes = access_memory(&s, &memory, 256, None);
     assert!(
         bytes.iter().all(|b| *b == 0xA5),
         "the fill reached the buffer"
@@ -515,6 +486,19 @@ fn present_one_frame(
     out
 }
 
+/// An Xlib surface for `window`.
+fn xlib_surface(s: &Setup, window: &x11_window::X11Window) -> tuff::SurfaceKHR {
+    // SAFETY: callers drop `window` after every object made from the surface.
+    unsafe {
+        s.instance.create_xlib_surface_khr(
+            &tuff::XlibSurfaceCreateInfoKHR::new()
+                .dpy(window.display.cast())
+                .window(window.window),
+        )
+    }
+    .expect("xlib surface")
+}
+
 /// A swapchain create info for `surface` at its current size.
 fn swapchain_info<'a>(
     s: &Setup,
@@ -564,16 +548,9 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
     for seed in 0..4u64 {
         let window = x11_window::X11Window::open(64, 48);
         let s = setup_with(true, Wsi::Xlib);
-        // SAFETY: the display and window are live until `window` drops, after every
-        // object made from the surface (the bag below empties first).
-        let surface = unsafe {
-            s.instance.create_xlib_surface_khr(
-                &tuff::XlibSurfaceCreateInfoKHR::new()
-                    .dpy(window.display.cast())
-                    .window(window.window),
-            )
-        }
-        .expect("xlib surface");
+        // `window` drops after every object made from the surface: the bag below
+        // empties first.
+        let surface = xlib_surface(&s, &window);
         let supported = s
             .physical
             .get_physical_device_surface_support_khr(s.family, &surface)
@@ -632,18 +609,8 @@ fn recreate_refuses_another_surface() {
     let window_a = x11_window::X11Window::open(32, 32);
     let window_b = x11_window::X11Window::open(32, 32);
     let s = setup_with(true, Wsi::Xlib);
-    let surface = |w: &x11_window::X11Window| {
-        // SAFETY: both windows outlive every object made from their surfaces.
-        unsafe {
-            s.instance.create_xlib_surface_khr(
-                &tuff::XlibSurfaceCreateInfoKHR::new()
-                    .dpy(w.display.cast())
-                    .window(w.window),
-            )
-        }
-        .expect("xlib surface")
-    };
-    let (a, b) = (surface(&window_a), surface(&window_b));
+    // Both windows outlive every object made from their surfaces.
+    let (a, b) = (xlib_surface(&s, &window_a), xlib_surface(&s, &window_b));
     let swapchain = s
         .device
         .create_swapchain_khr(&a, &swapchain_info(&s, &a))

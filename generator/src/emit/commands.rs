@@ -1173,6 +1173,19 @@ fn keep_expr(
     }))
 }
 
+/// Lookups of the handle members of a raw struct `x` of type `ty`, each pushing the
+/// live object onto `kept`.
+fn handle_gets(cx: &Context, ty: &str) -> Vec<TokenStream> {
+    struct_members(cx.model, &cx.facts, ty)
+        .into_iter()
+        .filter(|(_, s)| matches!(s, Member::Handle { .. }))
+        .map(|(m, _)| {
+            let g = field_ident(&m.name);
+            quote!(if let Some(o) = live.get(x.#g) { kept.push(o); })
+        })
+        .collect()
+}
+
 /// What a recorded command keeps alive beyond its wrapper arguments: the objects
 /// named by handle members of a struct argument (a render pass begin's framebuffer,
 /// a barrier's image), looked up among the device's live objects.
@@ -1195,14 +1208,7 @@ fn struct_retains(
                 if let Some(o) = live.get(e.as_raw().#f) { kept.push(o); }
             }),
             Member::Slice { count, safe: true } => {
-                let inner: Vec<TokenStream> = struct_members(cx.model, &cx.facts, &m.type_name)
-                    .into_iter()
-                    .filter(|(_, s)| matches!(s, Member::Handle { .. }))
-                    .map(|(im, _)| {
-                        let g = field_ident(&im.name);
-                        quote!(if let Some(o) = live.get(x.#g) { kept.push(o); })
-                    })
-                    .collect();
+                let inner = handle_gets(cx, &m.type_name);
                 if !inner.is_empty() {
                     let c = field_ident(&count);
                     per_elem.push(quote! {
@@ -1214,14 +1220,7 @@ fn struct_retains(
                 }
             }
             Member::StructRef { .. } if cx.facts.is_safe(&m.type_name) => {
-                let inner: Vec<TokenStream> = struct_members(cx.model, &cx.facts, &m.type_name)
-                    .into_iter()
-                    .filter(|(_, s)| matches!(s, Member::Handle { .. }))
-                    .map(|(im, _)| {
-                        let g = field_ident(&im.name);
-                        quote!(if let Some(o) = live.get(x.#g) { kept.push(o); })
-                    })
-                    .collect();
+                let inner = handle_gets(cx, &m.type_name);
                 if !inner.is_empty() {
                     per_elem.push(quote! {
                         // SAFETY: the safe setter stored a reference that outlives `e`.
