@@ -678,3 +678,36 @@ fn pipelines_draw_and_dispatch() {
     }
     assert_silent(&s.messages);
 }
+
+#[test]
+fn mapped_memory_is_checked_and_unmapped_on_drop() {
+    let s = setup(true);
+    let (_buffer, memory) = host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_DST);
+    {
+        let mut mapped = memory.map().expect("map");
+        assert!(mapped.size() >= 64);
+        mapped.write(8, &[1u32, 2, 3]).expect("write");
+        assert_eq!(mapped.read::<u32>(8, 3).expect("read"), [1, 2, 3]);
+        // A second mapping while one lives breaks VUID-vkMapMemory-memory-00678.
+        match memory.clone().map() {
+            Err(tuff::Error::Validation { vuid, .. }) => {
+                assert_eq!(vuid, "VUID-vkMapMemory-memory-00678")
+            }
+            other => panic!("expected a refusal, got {:?}", other.map(|m| m.size())),
+        }
+        let size = mapped.size();
+        assert!(matches!(
+            mapped.write(size - 4, &[0u64]),
+            Err(tuff::Error::Map(tuff::runtime::MapError::OutOfRange { .. }))
+        ));
+        assert!(matches!(
+            mapped.read::<u8>(size, 1),
+            Err(tuff::Error::Map(_))
+        ));
+    }
+    // The guard unmapped the memory, so it maps again and kept what was written.
+    let again = memory.map().expect("map again");
+    assert_eq!(again.read::<u32>(8, 3).expect("read"), [1, 2, 3]);
+    drop(again);
+    assert_silent(&s.messages);
+}

@@ -396,7 +396,16 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(DeviceMemory::from_raw(out, self, None, true))
+        Ok({
+            let memory = DeviceMemory::from_raw(out, self, None, true);
+            self.live()
+                .allocated(
+                    out,
+                    allocate_info.allocation_size,
+                    allocate_info.memory_type_index,
+                );
+            memory
+        })
     }
 }
 impl Device {

@@ -24,6 +24,8 @@ mod commands;
 #[rustfmt::skip]
 pub mod handles;
 #[rustfmt::skip]
+mod mapping;
+#[rustfmt::skip]
 pub mod recorder;
 #[rustfmt::skip]
 mod retention;
@@ -40,6 +42,7 @@ mod validation;
 
 pub use ash::vk;
 pub use handles::*;
+pub use mapping::MappedMemory;
 pub use recorder::{InRenderPass, InRendering, Inside, Outside, Recorder, State};
 pub use structs::*;
 pub use support::*;

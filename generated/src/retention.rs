@@ -50,6 +50,8 @@ type Slot = (u32, u32, u8);
 pub(crate) struct Live {
     objects: Vutex<HashMap<(vk::ObjectType, u64), Vweak<dyn tuff_runtime::Retain>>>,
     sets: Vutex<HashMap<u64, HashMap<Slot, Retained>>>,
+    /// Each device memory's size, type and whether it is mapped now.
+    memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
 }
 
 impl Default for Live {
@@ -57,6 +59,7 @@ impl Default for Live {
         Self {
             objects: Vutex::new(HashMap::new()),
             sets: Vutex::new(HashMap::new()),
+            memories: Vutex::new(HashMap::new()),
         }
     }
 }
@@ -89,6 +92,9 @@ impl Live {
             }
             gone
         };
+        if unlisted && H::TYPE == vk::ObjectType::DEVICE_MEMORY {
+            self.memories.lock().remove(&key.1);
+        }
         // A set whose handle a newer wrapper took over keeps that wrapper's contents.
         if unlisted && H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
             // Dropped outside the lock: releasing the last reference to a view or
@@ -96,6 +102,28 @@ impl Live {
             let written = self.sets.lock().remove(&key.1);
             drop(written);
         }
+    }
+
+    /// Records a new device memory's size and type, which mapping checks against.
+    pub(crate) fn allocated(&self, raw: vk::DeviceMemory, size: u64, memory_type_index: u32) {
+        self.memories.lock().insert(
+            raw.as_raw(),
+            crate::mapping::MemoryRecord {
+                size,
+                memory_type_index,
+                mapped: false,
+            },
+        );
+    }
+
+    /// Runs `f` on the record of a device memory, if it was allocated through the
+    /// wrappers.
+    pub(crate) fn memory<R>(
+        &self,
+        raw: vk::DeviceMemory,
+        f: impl FnOnce(&mut crate::mapping::MemoryRecord) -> R,
+    ) -> Option<R> {
+        self.memories.lock().get_mut(&raw.as_raw()).map(f)
     }
 
     /// A strong reference to the live object with this raw handle, if it has a wrapper.

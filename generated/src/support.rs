@@ -26,6 +26,9 @@ pub enum Error {
     /// the extension.
     #[error("extension {0} is not enabled on this instance or device")]
     ExtensionNotEnabled(&'static str),
+    /// A mapped-memory access did not fit in the mapping.
+    #[error("mapped memory: {0}")]
+    Map(tuff_runtime::MapError),
     /// The Vulkan loader could not be found or opened.
     #[error("cannot load the Vulkan loader: {0}")]
     Load(String),

@@ -620,6 +620,12 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                             let pool = pool.with_queue_flags(crate::validation::family_flags(self, create_info.queue_family_index));
                             pool
                         }),
+                        // Mapping needs the allocation's size and memory type.
+                        "VkDeviceMemory" => quote!({
+                            let memory = #w::from_raw(out, #parent_arg None, true);
+                            self.live().allocated(out, allocate_info.allocation_size, allocate_info.memory_type_index);
+                            memory
+                        }),
                         "VkQueue" => {
                             let family = if plan.name == "vkGetDeviceQueue2" {
                                 quote!(queue_info.queue_family_index)

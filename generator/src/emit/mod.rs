@@ -175,6 +175,7 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
             "src/swapchain.rs",
             include_str!("../../templates/swapchain.rs"),
         ),
+        ("src/mapping.rs", include_str!("../../templates/mapping.rs")),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),
@@ -206,6 +207,7 @@ publish = false
 [dependencies]
 ash = "0.38"
 tuff-runtime = { path = "../runtime" }
+bytemuck = "1"
 smallvec = "1"
 thiserror = "2"
 
