@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The main job: regenerate generated/ and its validation coverage report from the
-# pinned registry (vk.xml and validusage.json at the repository root).
+# pinned registry (vk.xml and validusage.json at the repository root), then render
+# the three scenes headless on the Vulkan device (lavapipe on a machine without a
+# GPU), print their frame rates, and measure what tessellation accuracy costs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/install-deps.sh
@@ -8,3 +10,12 @@ cd "$(dirname "$0")/.."
 
 cargo run --release -q -p tuff-gen
 echo "main-job: coverage report in generated/VALIDATION.md, generated/validation.json and generated/validation.svg"
+
+cargo build --release -q -p tuff-examples --bins
+mkdir -p out
+# 60 frames each at 512x512; the PNG is the last frame.
+for scene in triangle teapots bezier; do
+    "target/release/$scene" --frames 60 --width 512 --height 512 --out "out/$scene.png"
+done
+target/release/bezier_levels --size 512 --frames 30 --svg out/bezier-levels.svg
+echo "main-job: scenes in $(pwd)/out/triangle.png, $(pwd)/out/teapots.png and $(pwd)/out/bezier.png"

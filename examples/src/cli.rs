@@ -1,0 +1,101 @@
+//! The command line every scene shares, and the run that follows it: headless into
+//! a PNG, or into a window.
+
+use crate::gpu::{Gpu, Requirements};
+use crate::render::Scene;
+use anyhow::{bail, Result};
+use std::path::PathBuf;
+
+/// Options every scene takes.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Common {
+    /// Where the PNG goes (headless); `<scene>.png` in the current folder by default.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Render into a window through a swapchain instead of into a PNG.
+    #[arg(long)]
+    pub window: bool,
+    /// Image width in pixels (the window's initial width).
+    #[arg(long, default_value_t = 512)]
+    pub width: u32,
+    /// Image height in pixels (the window's initial height).
+    #[arg(long, default_value_t = 512)]
+    pub height: u32,
+    /// Frames to render; the PNG is the last one. In a window, 0 runs until closed.
+    #[arg(long, default_value_t = 1)]
+    pub frames: u32,
+    /// Turn on VK_LAYER_KHRONOS_validation with synchronization validation; any
+    /// warning or error it reports fails the run.
+    #[arg(long)]
+    pub validate: bool,
+    /// In a window: resize it this many times in a row (a frame or more between
+    /// resizes), then close it.
+    #[arg(long, default_value_t = 0)]
+    pub resizes: u32,
+}
+
+/// Runs a scene as `common` says and reports what the validation layer said.
+/// Headless, it writes the PNG and prints the frame rate.
+pub fn run<S: Scene>(
+    common: &Common,
+    mut req: Requirements,
+    make: impl Fn(&crate::gpu::Gpu, &tuff::RenderPass) -> Result<S>,
+) -> Result<()> {
+    if common.validate {
+        // Read by the layer when the instance is created; no other thread runs yet.
+        std::env::set_var(
+            "VK_LAYER_ENABLES",
+            "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT",
+        );
+    }
+    req.window = common.window;
+    let gpu = Gpu::new(req, common.validate)?;
+    let outcome = if common.window {
+        crate::window::run(&gpu, common, make)
+    } else {
+        crate::headless::render(&gpu, common.width, common.height, common.frames, make).and_then(
+            |r| {
+                let out = common
+                    .out
+                    .clone()
+                    .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
+                crate::headless::write_png(&out, r.width, r.height, &r.rgba)?;
+                println!(
+                    "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
+                    req.scene,
+                    out.display(),
+                    r.width,
+                    r.height,
+                    r.frames,
+                    r.elapsed.as_secs_f64(),
+                    r.fps(),
+                    gpu.name
+                );
+                Ok(())
+            },
+        )
+    };
+    let messages = gpu.finish();
+    outcome?;
+    if !messages.is_empty() {
+        for m in &messages {
+            eprintln!("{m}");
+        }
+        bail!(
+            "the validation layer reported {} message(s) (above)",
+            messages.len()
+        );
+    }
+    Ok(())
+}
+
+/// Runs `main`, printing an error and its causes on failure.
+pub fn exit(main: impl FnOnce() -> Result<()>) -> std::process::ExitCode {
+    match main() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,157 @@
+//! Rendering into offscreen images, one per frame in flight, and reading the last
+//! frame back.
+
+use crate::gpu::Gpu;
+use crate::render::{self, Framebuffers, Readback, Scene, Slots, View, FRAMES_IN_FLIGHT};
+use anyhow::{bail, Result};
+use std::time::{Duration, Instant};
+use tuff::vk;
+
+/// The offscreen color format: the bytes are RGBA as a PNG wants them.
+pub const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
+
+/// The last frame's pixels and how long the frames took.
+pub struct Rendered {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Tightly packed RGBA8 rows, top row first.
+    pub rgba: Vec<u8>,
+    /// Frames rendered.
+    pub frames: u32,
+    /// From the first frame's recording to the last frame's completion.
+    pub elapsed: Duration,
+}
+
+impl Rendered {
+    /// Frames per second over the run.
+    pub fn fps(&self) -> f64 {
+        self.frames as f64 / self.elapsed.as_secs_f64().max(1e-9)
+    }
+}
+
+/// Renders `frames` frames (at least one) of the scene `make` builds, at
+/// `width` x `height`, and reads the last one back. Frame `i` shows scene time
+/// `i / 60` s, so the same arguments give the same image.
+pub fn render<S: Scene>(
+    gpu: &Gpu,
+    width: u32,
+    height: u32,
+    frames: u32,
+    make: impl FnOnce(&Gpu, &tuff::RenderPass) -> Result<S>,
+) -> Result<Rendered> {
+    if width == 0 || height == 0 {
+        bail!("cannot render a {width}x{height} image: both sides must be at least 1");
+    }
+    let frames = frames.max(1);
+    let extent = vk::Extent2D { width, height };
+    let render_pass = render::render_pass(
+        gpu,
+        COLOR_FORMAT,
+        S::DEPTH,
+        vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+    )?;
+    let mut scene = make(gpu, &render_pass)?;
+    let mut images = Vec::new();
+    let mut memories = Vec::new();
+    for _ in 0..FRAMES_IN_FLIGHT {
+        let (image, memory, _view) = gpu.image(
+            extent,
+            COLOR_FORMAT,
+            vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC,
+            vk::ImageAspectFlags::COLOR,
+        )?;
+        images.push(image);
+        memories.push(memory);
+    }
+    let targets = Framebuffers::new(gpu, &render_pass, &images, COLOR_FORMAT, extent, S::DEPTH)?;
+    let bytes = u64::from(width) * u64::from(height) * 4;
+    let (readback, readback_memory) = gpu.buffer(
+        bytes,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        vk::MemoryPropertyFlags::HOST_VISIBLE,
+    )?;
+    let mut slots = Slots::new(gpu)?;
+    let start = Instant::now();
+    for frame in 0..frames {
+        let slot = frame as usize % FRAMES_IN_FLIGHT;
+        slots.wait(gpu, slot)?;
+        slots.reset(gpu, slot)?;
+        let view = View {
+            extent,
+            time: frame as f32 / 60.0,
+            slot,
+        };
+        scene.update(&view)?;
+        let last = frame + 1 == frames;
+        let s = &mut slots.slots[slot];
+        render::record_frame(
+            &mut s.commands,
+            &render_pass,
+            &targets.framebuffers[slot],
+            &scene,
+            &view,
+            last.then_some(Readback {
+                image: &images[slot],
+                buffer: &readback,
+            }),
+        )?;
+        let commands = tuff::HandleSlice::new(&[&s.commands]);
+        gpu.queue.queue_submit(
+            &[tuff::SubmitInfo::new().command_buffers(&commands)],
+            &s.done,
+        )?;
+    }
+    slots.wait_all(gpu)?;
+    let elapsed = start.elapsed();
+    let rgba = readback_memory.map()?.read(0, bytes as usize)?;
+    gpu.queue.queue_wait_idle()?;
+    Ok(Rendered {
+        width,
+        height,
+        rgba,
+        frames,
+        elapsed,
+    })
+}
+
+/// Writes `rgba` as an 8-bit RGBA PNG.
+pub fn write_png(path: &std::path::Path, width: u32, height: u32, rgba: &[u8]) -> Result<()> {
+    use anyhow::Context as _;
+    let file =
+        std::fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?;
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), width, height);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder
+        .write_header()
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    writer
+        .write_image_data(rgba)
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    writer
+        .finish()
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}
+
+/// Reads an 8-bit RGBA PNG: (width, height, pixels).
+pub fn read_png(path: &std::path::Path) -> Result<(u32, u32, Vec<u8>)> {
+    use anyhow::Context as _;
+    let file =
+        std::fs::File::open(path).with_context(|| format!("cannot open {}", path.display()))?;
+    let decoder = png::Decoder::new(std::io::BufReader::new(file));
+    let mut reader = decoder
+        .read_info()
+        .with_context(|| format!("{} is not a PNG", path.display()))?;
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader
+        .next_frame(&mut buf)
+        .with_context(|| format!("cannot decode {}", path.display()))?;
+    if info.color_type != png::ColorType::Rgba || info.bit_depth != png::BitDepth::Eight {
+        bail!("{} is not an 8-bit RGBA PNG", path.display());
+    }
+    buf.truncate(info.buffer_size());
+    Ok((info.width, info.height, buf))
+}

@@ -1,0 +1,41 @@
+//! Three scenes rendered through tuff (`triangle`, `teapots`, `bezier`, each a binary
+//! in `src/bin`), the raw-ash teapots they are measured against (`teapots_ash`), and
+//! what they share: device setup, render pass and frames in flight, headless and
+//! windowed presentation, the camera, and the Utah teapot's geometry.
+//!
+//! Each binary renders headless into `<scene>.png` by default, or into a window with
+//! `--window`; `--validate` turns the Khronos validation layer on and fails the run on
+//! any message it reports.
+//!
+//! ```no_run
+//! use tuff_examples::gpu::{Gpu, Requirements};
+//! let gpu = Gpu::new(Requirements { scene: "mine", ..Default::default() }, true)?;
+//! assert!(gpu.finish().is_empty());
+//! # Ok::<(), anyhow::Error>(())
+//! ```
+
+pub mod accuracy;
+pub mod camera;
+pub mod cli;
+pub mod gpu;
+pub mod headless;
+pub mod pipeline;
+pub mod render;
+pub mod scenes;
+pub mod teapot;
+mod teapot_data;
+pub mod window;
+
+/// The committed SPIR-V of a shader in `shaders/src` (compiled by
+/// `scripts/shaders.sh`).
+#[macro_export]
+macro_rules! spirv {
+    ($name:literal) => {
+        include_bytes!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../shaders/spv/",
+            $name,
+            ".spv"
+        ))
+    };
+}

@@ -1,0 +1,6 @@
+//! The scenes, as libraries so that tests can render them; `src/bin` holds their
+//! command lines.
+
+pub mod bezier;
+pub mod teapots;
+pub mod triangle;

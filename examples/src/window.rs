@@ -1,0 +1,468 @@
+//! Rendering into a winit window through a swapchain, recreated (through
+//! `SwapchainKHR::recreate`, which retires the old one) on resize and whenever
+//! acquire or present says the swapchain is out of date or suboptimal.
+
+use crate::cli::Common;
+use crate::gpu::Gpu;
+use crate::render::{self, Framebuffers, Scene, Slots, View, FRAMES_IN_FLIGHT};
+use anyhow::{anyhow, bail, Context as _, Result};
+use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawDisplayHandle, RawWindowHandle};
+use std::time::Instant;
+use tuff::vk;
+use winit::application::ApplicationHandler;
+use winit::dpi::PhysicalSize;
+use winit::event::WindowEvent;
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::window::{Window, WindowId};
+
+/// The sizes `--resizes` cycles through: tiny, extreme aspect ratios, and ordinary.
+const RESIZES: [(u32, u32); 10] = [
+    (320, 240),
+    (1, 1),
+    (640, 32),
+    (24, 480),
+    (2, 300),
+    (300, 2),
+    (512, 512),
+    (97, 61),
+    (800, 600),
+    (33, 33),
+];
+
+/// Frames drawn between one resize request and the next.
+const FRAMES_PER_RESIZE: u32 = 2;
+
+/// Opens a window, renders the scene `make` builds until the window closes (or
+/// `--frames` frames are drawn, or `--resizes` resizes are done), and prints what
+/// happened.
+pub fn run<S: Scene>(
+    gpu: &Gpu,
+    common: &Common,
+    make: impl Fn(&Gpu, &tuff::RenderPass) -> Result<S>,
+) -> Result<()> {
+    let event_loop = EventLoop::new().context(
+        "cannot open a window: no X server (set DISPLAY, or run headless without --window)",
+    )?;
+    event_loop.set_control_flow(ControlFlow::Poll);
+    let mut app = App {
+        gpu,
+        common,
+        make,
+        live: None,
+        error: None,
+    };
+    event_loop.run_app(&mut app)?;
+    if let Some(e) = app.error {
+        return Err(e);
+    }
+    Ok(())
+}
+
+/// The window's state once it exists. Field order is drop order: everything made
+/// from the surface goes before it, and the window goes last.
+struct Live<S> {
+    scene: S,
+    framebuffers: Option<Framebuffers>,
+    /// One per swapchain image: signalled when the frame drawn into it is done.
+    rendered: Vec<tuff::Semaphore>,
+    images: Vec<tuff::Image>,
+    swapchain: Option<tuff::SwapchainKHR>,
+    slots: Slots,
+    render_pass: tuff::RenderPass,
+    format: vk::SurfaceFormatKHR,
+    surface: tuff::SurfaceKHR,
+    window: Window,
+    /// The swapchain no longer matches the window.
+    stale: bool,
+    frame: u64,
+    start: Instant,
+    recreations: u32,
+    resizes_requested: u32,
+    frames_since_request: u32,
+    paused_frames: u64,
+}
+
+struct App<'g, S, F> {
+    gpu: &'g Gpu,
+    common: &'g Common,
+    make: F,
+    live: Option<Live<S>>,
+    error: Option<anyhow::Error>,
+}
+
+impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
+    fn open(&self, event_loop: &ActiveEventLoop) -> Result<Live<S>> {
+        let gpu = self.gpu;
+        let window = event_loop.create_window(
+            Window::default_attributes()
+                .with_title("tuff")
+                .with_inner_size(PhysicalSize::new(
+                    self.common.width.max(1),
+                    self.common.height.max(1),
+                )),
+        )?;
+        let RawWindowHandle::Xlib(handle) = window.window_handle()?.as_raw() else {
+            bail!("the window is not an X11 (Xlib) window, the one kind this build supports");
+        };
+        let RawDisplayHandle::Xlib(display) = window.display_handle()?.as_raw() else {
+            bail!("the display is not an X11 (Xlib) display");
+        };
+        let display = display
+            .display
+            .ok_or_else(|| anyhow!("winit gave no Xlib display"))?;
+        // SAFETY: the display and window are winit's, alive while `window` is; `Live`
+        // drops the surface (and all made from it) before the window.
+        let surface = unsafe {
+            gpu.instance.create_xlib_surface_khr(
+                &tuff::XlibSurfaceCreateInfoKHR::new()
+                    .dpy(display.as_ptr().cast())
+                    .window(handle.window),
+            )
+        }?;
+        if gpu
+            .physical
+            .get_physical_device_surface_support_khr(gpu.family, &surface)?
+            == vk::FALSE
+        {
+            bail!("\"{}\" cannot present to this window", gpu.name);
+        }
+        let formats = gpu
+            .physical
+            .get_physical_device_surface_formats_khr(Some(&surface))?;
+        // Unorm, as headless, so a window shows the same colors as the PNG.
+        let format = formats
+            .iter()
+            .copied()
+            .find(|f| f.format == vk::Format::B8G8R8A8_UNORM)
+            .or_else(|| formats.first().copied())
+            .ok_or_else(|| anyhow!("the surface offers no formats"))?;
+        let render_pass = render::render_pass(
+            gpu,
+            format.format,
+            S::DEPTH,
+            vk::ImageLayout::PRESENT_SRC_KHR,
+        )?;
+        let scene = (self.make)(gpu, &render_pass)?;
+        Ok(Live {
+            scene,
+            framebuffers: None,
+            rendered: Vec::new(),
+            images: Vec::new(),
+            swapchain: None,
+            slots: Slots::new(gpu)?,
+            render_pass,
+            format,
+            surface,
+            window,
+            stale: true,
+            frame: 0,
+            start: Instant::now(),
+            recreations: 0,
+            resizes_requested: 0,
+            frames_since_request: 0,
+            paused_frames: 0,
+        })
+    }
+}
+
+/// The swapchain size for a window of `width` x `height` pixels, or `None` while it
+/// has no area (minimised), when rendering pauses rather than failing: a swapchain
+/// cannot have a zero extent.
+pub fn swapchain_extent(
+    caps: &vk::SurfaceCapabilitiesKHR,
+    width: u32,
+    height: u32,
+) -> Option<vk::Extent2D> {
+    if width == 0 || height == 0 {
+        return None;
+    }
+    // u32::MAX means the surface takes the swapchain's size, within the limits.
+    let extent = if caps.current_extent.width == u32::MAX {
+        vk::Extent2D {
+            width: width.clamp(caps.min_image_extent.width, caps.max_image_extent.width),
+            height: height.clamp(caps.min_image_extent.height, caps.max_image_extent.height),
+        }
+    } else {
+        caps.current_extent
+    };
+    (extent.width > 0 && extent.height > 0).then_some(extent)
+}
+
+impl<S: Scene> Live<S> {
+    /// Makes the swapchain match the window: `None` while the window has no area
+    /// (minimised), when rendering pauses.
+    fn refresh(&mut self, gpu: &Gpu) -> Result<Option<vk::Extent2D>> {
+        let caps = gpu
+            .physical
+            .get_physical_device_surface_capabilities_khr(&self.surface)?;
+        let size = self.window.inner_size();
+        let Some(extent) = swapchain_extent(&caps, size.width, size.height) else {
+            return Ok(None);
+        };
+        if !self.stale
+            && self
+                .framebuffers
+                .as_ref()
+                .is_some_and(|f| f.extent == extent)
+        {
+            return Ok(Some(extent));
+        }
+        // Every frame that used the old images is done before they go.
+        gpu.queue.queue_wait_idle()?;
+        let count = caps.min_image_count.max(2);
+        let count = if caps.max_image_count == 0 {
+            count
+        } else {
+            count.min(caps.max_image_count)
+        };
+        let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)
+            .min_image_count(count)
+            .image_format(self.format.format)
+            .image_color_space(self.format.color_space)
+            .image_extent(extent)
+            .image_array_layers(1)
+            .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT)
+            .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
+            .pre_transform(caps.current_transform)
+            .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
+            .present_mode(vk::PresentModeKHR::FIFO)
+            .clipped(vk::TRUE);
+        let swapchain = match &self.swapchain {
+            Some(old) => {
+                self.recreations += 1;
+                old.recreate(&gpu.device, &self.surface, &info)?
+            }
+            None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
+        };
+        self.framebuffers = None;
+        self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;
+        self.swapchain = Some(swapchain);
+        self.rendered = self
+            .images
+            .iter()
+            .map(|_| {
+                gpu.device
+                    .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+            })
+            .collect::<tuff::Result<_>>()?;
+        self.framebuffers = Some(Framebuffers::new(
+            gpu,
+            &self.render_pass,
+            &self.images,
+            self.format.format,
+            extent,
+            S::DEPTH,
+        )?);
+        self.stale = false;
+        Ok(Some(extent))
+    }
+
+    /// Draws and presents one frame, or nothing while the window has no area.
+    fn draw(&mut self, gpu: &Gpu) -> Result<bool> {
+        let Some(extent) = self.refresh(gpu)? else {
+            self.paused_frames += 1;
+            return Ok(false);
+        };
+        let slot = self.frame as usize % FRAMES_IN_FLIGHT;
+        self.slots.wait(gpu, slot)?;
+        let swapchain = self.swapchain.as_ref().context("no swapchain")?;
+        let index = match gpu.device.acquire_next_image_khr(
+            swapchain,
+            u64::MAX,
+            Some(&self.slots.slots[slot].acquired),
+            None,
+        ) {
+            Ok((index, r)) => {
+                self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
+                index
+            }
+            Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
+                self.stale = true;
+                return Ok(false);
+            }
+            Err(e) => return Err(e.into()),
+        };
+        self.slots.reset(gpu, slot)?;
+        let view = View {
+            extent,
+            time: self.start.elapsed().as_secs_f32(),
+            slot,
+        };
+        self.scene.update(&view)?;
+        let framebuffers = self.framebuffers.as_ref().context("no framebuffers")?;
+        let s = &mut self.slots.slots[slot];
+        render::record_frame(
+            &mut s.commands,
+            &self.render_pass,
+            &framebuffers.framebuffers[index as usize],
+            &self.scene,
+            &view,
+            None,
+        )?;
+        let waits = tuff::HandleSlice::new(&[&s.acquired]);
+        let stages = [vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT];
+        let commands = tuff::HandleSlice::new(&[&s.commands]);
+        let signals = tuff::HandleSlice::new(&[&self.rendered[index as usize]]);
+        gpu.queue.queue_submit(
+            &[tuff::SubmitInfo::new()
+                .wait_semaphores(&waits)
+                .wait_dst_stage_mask(&stages)
+                .command_buffers(&commands)
+                .signal_semaphores(&signals)],
+            &s.done,
+        )?;
+        let swapchains = tuff::HandleSlice::new(&[swapchain]);
+        let indices = [index];
+        match gpu.queue.queue_present_khr(
+            &tuff::PresentInfoKHR::new()
+                .wait_semaphores(&signals)
+                .swapchains(&swapchains)
+                .image_indices(&indices),
+        ) {
+            Ok(r) => self.stale |= r == vk::Result::SUBOPTIMAL_KHR,
+            Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => self.stale = true,
+            Err(e) => return Err(e.into()),
+        }
+        self.frame += 1;
+        Ok(true)
+    }
+}
+
+impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler for App<'_, S, F> {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.live.is_some() {
+            return;
+        }
+        match self.open(event_loop) {
+            Ok(live) => self.live = Some(live),
+            Err(e) => {
+                self.error = Some(e);
+                event_loop.exit();
+            }
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        let Some(live) = self.live.as_mut() else {
+            return;
+        };
+        match event {
+            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::Resized(_) => live.stale = true,
+            WindowEvent::RedrawRequested => {
+                let drawn = match live.draw(self.gpu) {
+                    Ok(drawn) => drawn,
+                    Err(e) => {
+                        self.error = Some(e);
+                        event_loop.exit();
+                        return;
+                    }
+                };
+                let common = self.common;
+                if drawn {
+                    live.frames_since_request += 1;
+                }
+                // Scripted resizes, for tests: wait a few frames between them.
+                if common.resizes > 0 {
+                    if live.frames_since_request >= FRAMES_PER_RESIZE {
+                        if live.resizes_requested == common.resizes {
+                            event_loop.exit();
+                            return;
+                        }
+                        let (w, h) = RESIZES[live.resizes_requested as usize % RESIZES.len()];
+                        // The window manager (if any) may refuse; the swapchain
+                        // follows whatever size the window ends up with.
+                        let _ = live.window.request_inner_size(PhysicalSize::new(w, h));
+                        live.resizes_requested += 1;
+                        live.frames_since_request = 0;
+                    }
+                } else if common.frames > 0 && live.frame >= u64::from(common.frames) {
+                    event_loop.exit();
+                }
+            }
+            _ => {}
+        }
+    }
+
+    fn about_to_wait(&mut self, _event_loop: &ActiveEventLoop) {
+        if let Some(live) = &self.live {
+            live.window.request_redraw();
+        }
+    }
+
+    fn exiting(&mut self, _event_loop: &ActiveEventLoop) {
+        let Some(live) = self.live.take() else {
+            return;
+        };
+        // Nothing may go while the GPU or the presentation engine still uses it.
+        if let Err(e) = self.gpu.queue.queue_wait_idle() {
+            self.error.get_or_insert(e.into());
+        }
+        let seconds = live.start.elapsed().as_secs_f64();
+        println!(
+            "window: {} frames in {:.2} s ({:.1} frames/s), {} resizes, {} swapchain recreations, {} frames paused",
+            live.frame,
+            seconds,
+            live.frame as f64 / seconds.max(1e-9),
+            live.resizes_requested,
+            live.recreations,
+            live.paused_frames
+        );
+        drop(live);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn caps(current: (u32, u32)) -> vk::SurfaceCapabilitiesKHR {
+        vk::SurfaceCapabilitiesKHR {
+            current_extent: vk::Extent2D {
+                width: current.0,
+                height: current.1,
+            },
+            min_image_extent: vk::Extent2D {
+                width: 1,
+                height: 1,
+            },
+            max_image_extent: vk::Extent2D {
+                width: 16384,
+                height: 16384,
+            },
+            ..Default::default()
+        }
+    }
+
+    #[test]
+    fn a_minimised_window_pauses_and_tiny_ones_render() {
+        // X11 and most platforms report the window's size as the current extent.
+        assert_eq!(swapchain_extent(&caps((0, 0)), 0, 0), None);
+        assert_eq!(swapchain_extent(&caps((0, 600)), 0, 600), None);
+        assert_eq!(
+            swapchain_extent(&caps((1, 1)), 1, 1),
+            Some(vk::Extent2D {
+                width: 1,
+                height: 1
+            })
+        );
+        assert_eq!(
+            swapchain_extent(&caps((4096, 1)), 4096, 1),
+            Some(vk::Extent2D {
+                width: 4096,
+                height: 1
+            })
+        );
+        // Where the surface follows the swapchain, the window's size is clamped into
+        // the surface's limits.
+        let free = caps((u32::MAX, u32::MAX));
+        assert_eq!(swapchain_extent(&free, 0, 0), None);
+        assert_eq!(
+            swapchain_extent(&free, 99_999, 20),
+            Some(vk::Extent2D {
+                width: 16384,
+                height: 20
+            })
+        );
+    }
+}
