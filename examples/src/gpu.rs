@@ -299,19 +299,18 @@ impl Gpu {
         data: &[T],
     ) -> Result<(tuff::Buffer, tuff::DeviceMemory)> {
         let size = std::mem::size_of_val(data).max(4) as u64;
-        let (buffer, memory) = self.buffer(size, usage, vk::MemoryPropertyFlags::HOST_VISIBLE)?;
+        let (buffer, memory) = self.buffer(size, usage, HOST)?;
         memory.map()?.write(0, data)?;
         Ok((buffer, memory))
     }
 
-    /// A 2D image with its own memory and a view of it.
+    /// A 2D image with its own memory.
     pub fn image(
         &self,
         extent: vk::Extent2D,
         format: vk::Format,
         usage: vk::ImageUsageFlags,
-        aspect: vk::ImageAspectFlags,
-    ) -> Result<(tuff::Image, tuff::DeviceMemory, tuff::ImageView)> {
+    ) -> Result<(tuff::Image, tuff::DeviceMemory)> {
         let d = &self.device;
         let image = d.create_image(
             &tuff::ImageCreateInfo::new()
@@ -332,8 +331,7 @@ impl Gpu {
                 ),
         )?;
         d.bind_image_memory(&image, &memory, 0)?;
-        let view = self.view(&image, format, aspect)?;
-        Ok((image, memory, view))
+        Ok((image, memory))
     }
 
     /// A 2D view of the whole of `image`.
@@ -368,6 +366,13 @@ impl Gpu {
             .create_shader_module(&tuff::ShaderModuleCreateInfo::new().code(&words))?)
     }
 }
+
+/// Memory the host writes and reads without flushes: buffers the CPU fills each
+/// frame and the readback.
+pub const HOST: vk::MemoryPropertyFlags = vk::MemoryPropertyFlags::from_raw(
+    vk::MemoryPropertyFlags::HOST_VISIBLE.as_raw()
+        | vk::MemoryPropertyFlags::HOST_COHERENT.as_raw(),
+);
 
 /// The whole of a one-level, one-layer image.
 pub fn whole(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {

@@ -56,23 +56,19 @@ pub fn render<S: Scene>(
     let mut images = Vec::new();
     let mut memories = Vec::new();
     for _ in 0..FRAMES_IN_FLIGHT {
-        let (image, memory, _view) = gpu.image(
+        let (image, memory) = gpu.image(
             extent,
             COLOR_FORMAT,
             vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC,
-            vk::ImageAspectFlags::COLOR,
         )?;
         images.push(image);
         memories.push(memory);
     }
     let targets = Framebuffers::new(gpu, &render_pass, &images, COLOR_FORMAT, extent, S::DEPTH)?;
     let bytes = u64::from(width) * u64::from(height) * 4;
-    let (readback, readback_memory) = gpu.buffer(
-        bytes,
-        vk::BufferUsageFlags::TRANSFER_DST,
-        vk::MemoryPropertyFlags::HOST_VISIBLE,
-    )?;
-    let mut slots = Slots::new(gpu)?;
+    let (readback, readback_memory) =
+        gpu.buffer(bytes, vk::BufferUsageFlags::TRANSFER_DST, crate::gpu::HOST)?;
+    let mut slots = Slots::new(gpu, false)?;
     let start = Instant::now();
     for frame in 0..frames {
         let slot = frame as usize % FRAMES_IN_FLIGHT;
@@ -106,7 +102,6 @@ pub fn render<S: Scene>(
     slots.wait_all(gpu)?;
     let elapsed = start.elapsed();
     let rgba = readback_memory.map()?.read(0, bytes as usize)?;
-    gpu.queue.queue_wait_idle()?;
     Ok(Rendered {
         width,
         height,

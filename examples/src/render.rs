@@ -162,12 +162,13 @@ impl Framebuffers {
         depth: bool,
     ) -> Result<Framebuffers> {
         let depth = if depth {
-            Some(gpu.image(
+            let (image, memory) = gpu.image(
                 extent,
                 DEPTH_FORMAT,
                 vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
-                vk::ImageAspectFlags::DEPTH,
-            )?)
+            )?;
+            let view = gpu.view(&image, DEPTH_FORMAT, vk::ImageAspectFlags::DEPTH)?;
+            Some((image, memory, view))
         } else {
             None
         };
@@ -207,7 +208,7 @@ pub struct Slot {
     /// Signalled when the slot's last submission completed (created signalled).
     pub done: tuff::Fence,
     /// Signalled by the acquire of the image this slot draws into (windowed only).
-    pub acquired: tuff::Semaphore,
+    pub acquired: Option<tuff::Semaphore>,
 }
 
 /// The frames in flight.
@@ -218,8 +219,9 @@ pub struct Slots {
 }
 
 impl Slots {
-    /// `FRAMES_IN_FLIGHT` slots on the gpu's queue family.
-    pub fn new(gpu: &Gpu) -> Result<Slots> {
+    /// `FRAMES_IN_FLIGHT` slots on the gpu's queue family, with acquire semaphores
+    /// when `acquire` (for a swapchain).
+    pub fn new(gpu: &Gpu, acquire: bool) -> Result<Slots> {
         let d = &gpu.device;
         let pool = d.create_command_pool(
             &tuff::CommandPoolCreateInfo::new()
@@ -240,7 +242,11 @@ impl Slots {
                     done: d.create_fence(
                         &tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED),
                     )?,
-                    acquired: d.create_semaphore(&tuff::SemaphoreCreateInfo::new())?,
+                    acquired: if acquire {
+                        Some(d.create_semaphore(&tuff::SemaphoreCreateInfo::new())?)
+                    } else {
+                        None
+                    },
                 })
             })
             .collect::<Result<Vec<_>>>()?;
@@ -351,6 +357,22 @@ pub fn record_frame<S: Scene>(
                 image_extent: view.extent.into(),
                 ..Default::default()
             }],
+        );
+        // A fence wait does not make device writes visible to the host; this does.
+        let to_host = [tuff::BufferMemoryBarrier::new(readback.buffer)
+            .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+            .dst_access_mask(vk::AccessFlags::HOST_READ)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .offset(0)
+            .size(vk::WHOLE_SIZE)];
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[],
+            &to_host,
+            &[],
         );
     }
     rec.end()?;

@@ -149,7 +149,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             rendered: Vec::new(),
             images: Vec::new(),
             swapchain: None,
-            slots: Slots::new(gpu)?,
+            slots: Slots::new(gpu, true)?,
             render_pass,
             format,
             surface,
@@ -269,7 +269,7 @@ impl<S: Scene> Live<S> {
         let index = match gpu.device.acquire_next_image_khr(
             swapchain,
             u64::MAX,
-            Some(&self.slots.slots[slot].acquired),
+            self.slots.slots[slot].acquired.as_ref(),
             None,
         ) {
             Ok((index, r)) => {
@@ -299,7 +299,8 @@ impl<S: Scene> Live<S> {
             &view,
             None,
         )?;
-        let waits = tuff::HandleSlice::new(&[&s.acquired]);
+        let acquired = s.acquired.as_ref().context("no acquire semaphore")?;
+        let waits = tuff::HandleSlice::new(&[acquired]);
         let stages = [vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT];
         let commands = tuff::HandleSlice::new(&[&s.commands]);
         let signals = tuff::HandleSlice::new(&[&self.rendered[index as usize]]);

@@ -140,7 +140,7 @@ impl Layout {
             .collect();
         // Far enough back to fit the grid's diagonal, looking down at 35 degrees.
         let reach = half * std::f32::consts::SQRT_2 + 4.0;
-        let distance = 0.8 * reach / (FOV * 0.5).tan() + 6.0;
+        let distance = reach / (FOV * 0.5).tan() + 6.0;
         let down = 35f32.to_radians();
         let target = Vec3::new(0.0, 0.0, 1.2);
         let eye = target + distance * Vec3::new(0.0, -down.cos(), down.sin());
@@ -292,13 +292,7 @@ impl Teapots {
         )?;
         let size = std::mem::size_of::<CameraBlock>() as u64;
         let uniforms = (0..FRAMES_IN_FLIGHT)
-            .map(|_| {
-                gpu.buffer(
-                    size,
-                    vk::BufferUsageFlags::UNIFORM_BUFFER,
-                    vk::MemoryPropertyFlags::HOST_VISIBLE,
-                )
-            })
+            .map(|_| gpu.buffer(size, vk::BufferUsageFlags::UNIFORM_BUFFER, crate::gpu::HOST))
             .collect::<Result<Vec<_>>>()?;
         for (set, (buffer, _)) in sets.iter().zip(&uniforms) {
             let info = [tuff::DescriptorBufferInfo::new()

@@ -1,0 +1,333 @@
+//! The scenes, run as their binaries on lavapipe with the Khronos validation layer
+//! and its synchronization validation on (`--validate`: any message it reports fails
+//! the run): golden images, windows resized 20 times in a row, depth precision far
+//! away, and the teapot's degenerate patches at every tessellation level.
+//!
+//! Golden images live in `examples/golden/`; `TUFF_BLESS=1` rewrites them from the
+//! current renders (look at them before committing).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use tuff_examples::headless::{read_png, write_png};
+
+/// Size of the golden renders.
+const SIZE: u32 = 256;
+/// Two pixels match when no channel differs by more than this.
+const CHANNEL_TOLERANCE: u8 = 8;
+/// At most this fraction of pixels may differ beyond the tolerance.
+const MAX_DIFFERING: f64 = 0.01;
+
+/// Runs a scene binary with `args`, failing with its output if it fails.
+fn run(binary: &str, args: &[&str]) -> String {
+    let output = Command::new(binary)
+        .args(args)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {binary}: {e}"));
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(output.status.success(), "{binary} {args:?} failed:\n{text}");
+    text
+}
+
+/// Renders a scene headless with validation into `dir` and returns the image.
+fn render(binary: &str, name: &str, dir: &Path, extra: &[&str]) -> (u32, u32, Vec<u8>) {
+    let out = dir.join(format!("{name}.png"));
+    let size = SIZE.to_string();
+    let mut args = vec![
+        "--validate",
+        "--frames",
+        "3",
+        "--width",
+        &size,
+        "--height",
+        &size,
+        "--out",
+        out.to_str().expect("utf-8 temp path"),
+    ];
+    args.extend_from_slice(extra);
+    run(binary, &args);
+    read_png(&out).expect("the scene wrote a PNG")
+}
+
+fn golden_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("golden")
+        .join(format!("{name}.png"))
+}
+
+/// Pixels whose largest channel difference exceeds the tolerance.
+fn differing(a: &[u8], b: &[u8]) -> usize {
+    a.chunks_exact(4)
+        .zip(b.chunks_exact(4))
+        .filter(|(p, q)| {
+            p.iter()
+                .zip(*q)
+                .any(|(x, y)| x.abs_diff(*y) > CHANNEL_TOLERANCE)
+        })
+        .count()
+}
+
+/// Compares a render with its golden image (or writes it with TUFF_BLESS=1).
+fn assert_golden(name: &str, image: &(u32, u32, Vec<u8>)) {
+    let path = golden_path(name);
+    if std::env::var_os("TUFF_BLESS").is_some() {
+        write_png(&path, image.0, image.1, &image.2).expect("write golden image");
+        return;
+    }
+    let golden = read_png(&path).unwrap_or_else(|e| {
+        panic!("{e:#}: run the test with TUFF_BLESS=1 to create it, and look at it")
+    });
+    assert_eq!((golden.0, golden.1), (image.0, image.1), "{name}: size");
+    let n = differing(&golden.2, &image.2);
+    let allowed = (MAX_DIFFERING * f64::from(image.0 * image.1)) as usize;
+    assert!(
+        n <= allowed,
+        "{name}: {n} pixels differ from {} by more than {CHANNEL_TOLERANCE} (at most {allowed} may)",
+        path.display()
+    );
+}
+
+/// Renders twice, checks the two renders are identical, and compares with the golden.
+fn golden(binary: &str, name: &str, extra: &[&str]) -> (u32, u32, Vec<u8>) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let first = render(binary, name, dir.path(), extra);
+    let second = render(binary, &format!("{name}-again"), dir.path(), extra);
+    assert!(
+        first == second,
+        "{name}: two runs rendered different images"
+    );
+    assert_golden(name, &first);
+    first
+}
+
+#[test]
+fn triangle_matches_its_golden_image() {
+    golden(env!("CARGO_BIN_EXE_triangle"), "triangle", &[]);
+}
+
+#[test]
+fn teapots_match_their_golden_image_in_tuff_and_in_raw_ash() {
+    let args = ["--count", "100", "--seed", "1"];
+    let tuff = golden(env!("CARGO_BIN_EXE_teapots"), "teapots", &args);
+    let dir = tempfile::tempdir().expect("temp dir");
+    let ash = render(
+        env!("CARGO_BIN_EXE_teapots_ash"),
+        "teapots_ash",
+        dir.path(),
+        &args,
+    );
+    // The same frames through raw ash match the same golden image...
+    assert_golden("teapots", &ash);
+    // ...and tuff's render pixel for pixel.
+    assert_eq!(differing(&tuff.2, &ash.2), 0, "tuff and raw ash differ");
+}
+
+#[test]
+fn bezier_matches_its_golden_image() {
+    golden(env!("CARGO_BIN_EXE_bezier"), "bezier", &["--level", "16"]);
+}
+
+#[test]
+fn bezier_wireframe_asks_for_and_gets_non_solid_fill() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lit = |extra: &[&str]| {
+        let mut args = vec!["--level", "1"];
+        args.extend_from_slice(extra);
+        let (_, _, rgba) = render(env!("CARGO_BIN_EXE_bezier"), "b", dir.path(), &args);
+        rgba.chunks_exact(4).filter(|p| p[0] > 40).count()
+    };
+    let (filled, lines) = (lit(&[]), lit(&["--wireframe"]));
+    // Lines leave most of the teapot's area showing the background.
+    assert!(lines > 100, "no lines drawn");
+    assert!(
+        lines * 2 < filled,
+        "{lines} pixels lit in wireframe, {filled} filled: filled, not lines"
+    );
+}
+
+#[test]
+fn teapot_counts_from_one_to_ten_thousand_render_and_zero_is_refused() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let binary = env!("CARGO_BIN_EXE_teapots");
+    for count in ["1", "10000"] {
+        let out = dir.path().join(format!("{count}.png"));
+        run(
+            binary,
+            &[
+                "--validate",
+                "--count",
+                count,
+                "--width",
+                "64",
+                "--height",
+                "64",
+                "--out",
+                out.to_str().expect("utf-8"),
+            ],
+        );
+        let (_, _, rgba) = read_png(&out).expect("png");
+        assert!(
+            rgba.chunks_exact(4).any(|p| p[0].max(p[1]).max(p[2]) > 60),
+            "{count} teapots: nothing drawn"
+        );
+    }
+    let output = Command::new(binary)
+        .args([
+            "--count",
+            "0",
+            "--out",
+            dir.path().join("0.png").to_str().expect("utf-8"),
+        ])
+        .output()
+        .expect("run teapots");
+    assert!(!output.status.success());
+    let err = String::from_utf8_lossy(&output.stderr);
+    assert!(err.contains("1 to 10000"), "unclear error: {err}");
+}
+
+#[test]
+fn far_nearly_coplanar_surfaces_resolve_in_depth_order() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (_, _, rgba) = render(
+        env!("CARGO_BIN_EXE_teapots"),
+        "probe",
+        dir.path(),
+        &["--depth-probe"],
+    );
+    // Green in front, red 0.05 % behind covering the same pixels: any red is
+    // z-fighting.
+    let red = rgba
+        .chunks_exact(4)
+        .filter(|p| p[0] > 40 && p[0] > 2 * p[1])
+        .count();
+    let green = rgba
+        .chunks_exact(4)
+        .filter(|p| p[1] > 40 && p[1] > 2 * p[0])
+        .count();
+    assert!(
+        green > 5_000,
+        "the probe's teapot is missing ({green} pixels)"
+    );
+    assert_eq!(red, 0, "{red} pixels of the farther teapot show through");
+}
+
+/// The disk of pixels within `radius` (model units, in the plane z = `z`) of the
+/// teapot's axis, as the bezier scene's camera for `view` sees it.
+fn axis_disk(
+    view: tuff_examples::scenes::bezier::Viewpoint,
+    z: f32,
+    radius: f32,
+    size: u32,
+) -> ([f32; 2], f32) {
+    use glam::{Mat4, Vec4};
+    let extent = tuff::vk::Extent2D {
+        width: size,
+        height: size,
+    };
+    let p = tuff_examples::scenes::bezier::params(view, 1, 0.0, extent);
+    let mvp = Mat4::from_cols_array_2d(&p.model_view_projection);
+    let pixel = |x: f32| {
+        let c = mvp * Vec4::new(x, 0.0, z, 1.0);
+        let ndc = [c.x / c.w, c.y / c.w];
+        [
+            (ndc[0] + 1.0) * 0.5 * size as f32,
+            (ndc[1] + 1.0) * 0.5 * size as f32,
+        ]
+    };
+    let (centre, edge) = (pixel(0.0), pixel(radius));
+    let r = ((edge[0] - centre[0]).powi(2) + (edge[1] - centre[1]).powi(2)).sqrt();
+    (centre, r)
+}
+
+#[test]
+fn degenerate_patches_have_no_dark_speckles_at_any_level() {
+    use tuff_examples::scenes::bezier::Viewpoint;
+    let dir = tempfile::tempdir().expect("temp dir");
+    let binary = env!("CARGO_BIN_EXE_bezier");
+    let size = 160u32;
+    // The lid's apex (z = 3.15) seen from above, and the bottom's centre (z = 0) seen
+    // from below: where a row of control points collapses to one point.
+    for (view, name, z, radius) in [
+        (Viewpoint::Top, "top", 3.15f32, 0.4f32),
+        (Viewpoint::Bottom, "bottom", 0.0, 1.0),
+    ] {
+        let (centre, r) = axis_disk(view, z, radius, size);
+        assert!(r > 8.0, "{name}: the disk is only {r} pixels");
+        for level in 1..=64u32 {
+            let out = dir.path().join(format!("{name}{level}.png"));
+            let (level_arg, size_arg) = (level.to_string(), size.to_string());
+            run(
+                binary,
+                &[
+                    "--view",
+                    name,
+                    "--level",
+                    &level_arg,
+                    "--width",
+                    &size_arg,
+                    "--height",
+                    &size_arg,
+                    "--out",
+                    out.to_str().expect("utf-8"),
+                ],
+            );
+            let (w, _, rgba) = read_png(&out).expect("png");
+            let mut checked = 0;
+            for (i, p) in rgba.chunks_exact(4).enumerate() {
+                let (x, y) = ((i as u32 % w) as f32 + 0.5, (i as u32 / w) as f32 + 0.5);
+                if (x - centre[0]).powi(2) + (y - centre[1]).powi(2) > r * r {
+                    continue;
+                }
+                checked += 1;
+                // Lit or in shadow, the surface is at least the ambient term (about
+                // 40 in red); a NaN normal or a hole shows black or the background.
+                assert!(
+                    p[0].max(p[1]).max(p[2]) >= 25,
+                    "{name}, level {level}: dark pixel {p:?} at ({x}, {y})"
+                );
+            }
+            assert!(checked > 100, "{name}: only {checked} pixels checked");
+        }
+    }
+}
+
+#[test]
+fn every_scene_survives_twenty_window_resizes() {
+    assert!(
+        std::env::var_os("DISPLAY").is_some(),
+        "no X server: the test command starts Xvfb (scripts/xvfb.sh) when DISPLAY is unset"
+    );
+    for (binary, extra) in [
+        (env!("CARGO_BIN_EXE_triangle"), &[][..]),
+        (env!("CARGO_BIN_EXE_teapots"), &["--count", "16"][..]),
+        (env!("CARGO_BIN_EXE_bezier"), &["--level", "8"][..]),
+    ] {
+        let mut args = vec![
+            "--validate",
+            "--window",
+            "--resizes",
+            "20",
+            "--width",
+            "200",
+            "--height",
+            "150",
+        ];
+        args.extend_from_slice(extra);
+        let text = run(binary, &args);
+        let line = text
+            .lines()
+            .find(|l| l.starts_with("window:"))
+            .unwrap_or_else(|| panic!("{binary}: no summary in\n{text}"));
+        assert!(line.contains(" 20 resizes"), "{binary}: {line}");
+        // Each resize changes the size, so each needs at least one new swapchain.
+        let recreations: u32 = line
+            .split(", ")
+            .find_map(|part| part.strip_suffix(" swapchain recreations"))
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("{binary}: {line}"));
+        assert!(recreations >= 20, "{binary}: {line}");
+    }
+}
