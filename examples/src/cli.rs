@@ -59,7 +59,7 @@ pub fn run<S: Scene>(
                     .out
                     .clone()
                     .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
-                crate::headless::write_png(&out, r.width, r.height, &r.rgba)?;
+                crate::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
                 println!(
                     "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
                     req.scene,

@@ -19,6 +19,7 @@ pub mod camera;
 pub mod cli;
 pub mod gpu;
 pub mod headless;
+pub mod image_file;
 pub mod pipeline;
 pub mod render;
 pub mod scenes;

@@ -8,7 +8,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use tuff_examples::headless::{read_png, write_png};
+use tuff_examples::image_file::{read_png, write_png};
 
 /// Size of the golden renders.
 const SIZE: u32 = 256;

@@ -2,7 +2,8 @@
 
 use clap::Parser;
 use tuff_examples::cli;
-use tuff_examples::scenes::teapots::{self, Layout, Teapots};
+use tuff_examples::scenes::teapot_grid::Layout;
+use tuff_examples::scenes::teapots::{self, Teapots};
 
 /// Renders a grid of spinning teapots through tuff.
 #[derive(Parser)]

@@ -11,9 +11,12 @@ use std::io::Cursor;
 use std::path::PathBuf;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
-use tuff_examples::headless::{write_png, COLOR_FORMAT};
+use tuff_examples::headless::COLOR_FORMAT;
+use tuff_examples::image_file::write_png;
 use tuff_examples::render::{DEPTH_CLEAR, DEPTH_FORMAT, FRAMES_IN_FLIGHT};
-use tuff_examples::scenes::teapots::{mesh_data, vertex_input, CameraBlock, Layout, TeapotBlock};
+use tuff_examples::scenes::teapot_grid::{
+    mesh_data, vertex_input, CameraBlock, Layout, TeapotBlock,
+};
 use tuff_examples::{cli, spirv};
 
 /// Renders a grid of spinning teapots through raw ash, headless.

@@ -2,5 +2,6 @@
 //! command lines.
 
 pub mod bezier;
+pub mod teapot_grid;
 pub mod teapots;
 pub mod triangle;
