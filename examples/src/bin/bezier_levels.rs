@@ -54,8 +54,10 @@ fn measure(args: &Args) -> Result<()> {
         args.size, args.size, args.frames
     );
     print!("{}", accuracy::markdown_table(&rows));
+    // The name up to its details in parentheses, so the title fits the plot.
+    let short = device.split(" (").next().unwrap_or(&device);
     let title = format!(
-        "Bezier teapot: level vs frame time ({0}x{0}, {device}) and max error",
+        "Bezier teapot: frame time ({0}x{0}, {short}) and max error",
         args.size
     );
     std::fs::write(&args.svg, accuracy::svg_plot(&rows, &title))

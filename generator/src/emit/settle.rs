@@ -45,11 +45,35 @@ fn explicit(vuid: &str, text: &str) -> Settlement {
         )
     } else if vuid == "VUID-vkDestroySurfaceKHR-surface-01266" {
         Settlement::Static("a swapchain wrapper keeps its surface alive".into())
+    } else if let Some(settlement) = mapping(vuid) {
+        settlement
     } else if t.contains("vkallocationcallbacks were provided when") {
         Settlement::Static("the wrappers never pass allocation callbacks".into())
     } else {
         Settlement::User("explicit rule; the wrappers do not check it".into())
     }
+}
+
+/// The rules of vkMapMemory and vkUnmapMemory that `DeviceMemory::map` (the mapping
+/// template) settles: it maps whole memories only, refuses a second mapping and
+/// memory that is not host-visible, and its guard alone unmaps.
+fn mapping(vuid: &str) -> Option<Settlement> {
+    let whole = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
+    Some(match vuid {
+        "VUID-vkMapMemory-memory-00678" => Settlement::Dynamic(
+            "`DeviceMemory::map` refuses memory that a live `MappedMemory` maps".into(),
+        ),
+        "VUID-vkMapMemory-memory-00682" => Settlement::Dynamic(
+            "`DeviceMemory::map` refuses memory whose type is not HOST_VISIBLE".into(),
+        ),
+        "VUID-vkMapMemory-offset-00679"
+        | "VUID-vkMapMemory-size-00680"
+        | "VUID-vkMapMemory-size-00681" => Settlement::Static(whole.into()),
+        "VUID-vkUnmapMemory-memory-00689" => Settlement::Static(
+            "only a `MappedMemory` guard unmaps, once, the memory it mapped".into(),
+        ),
+        _ => return None,
+    })
 }
 
 fn implicit(
@@ -76,7 +100,7 @@ fn implicit(
                     "called only by ash's loader code, with the wrapper's live handle and NUL-terminated names".into(),
                 ),
                 ("mapping", K::Parameter | K::Parent | K::ZeroBitmask) => Settlement::Static(
-                    "called only by the runtime's mapping code, with memory it allocated from the same device, flags 0 and its own output pointer".into(),
+                    "called only by `DeviceMemory::map` and its guard, with the wrapper's own memory and device, flags 0 and their own output pointer".into(),
                 ),
                 _ => Settlement::User(format!("called by the wrappers' {why} code; not checked")),
             };
