@@ -21,9 +21,10 @@ pub struct Common {
     /// Image height in pixels (the window's initial height).
     #[arg(long, default_value_t = 512)]
     pub height: u32,
-    /// Frames to render; the PNG is the last one. In a window, 0 runs until closed.
-    #[arg(long, default_value_t = 1)]
-    pub frames: u32,
+    /// Frames to render; the PNG is the last one. Headless the default is 1; in a
+    /// window the default (and 0) runs until the window is closed.
+    #[arg(long)]
+    pub frames: Option<u32>,
     /// Turn on VK_LAYER_KHRONOS_validation with synchronization validation; any
     /// warning or error it reports fails the run.
     #[arg(long)]
@@ -43,44 +44,51 @@ pub fn run<S: Scene>(
 ) -> Result<()> {
     if common.validate {
         // Read by the layer when the instance is created; no other thread runs yet.
-        std::env::set_var(
-            "VK_LAYER_ENABLES",
-            "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT",
-        );
+        // What the user enabled stays enabled.
+        let sync = "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT";
+        let enables = match std::env::var("VK_LAYER_ENABLES") {
+            Ok(v) if v.split(',').any(|e| e == sync) => v,
+            Ok(v) if !v.is_empty() => format!("{v},{sync}"),
+            _ => sync.to_owned(),
+        };
+        std::env::set_var("VK_LAYER_ENABLES", enables);
     }
     req.window = common.window;
+    let frames = common.frames.unwrap_or(1);
+    if frames == 0 && !common.window {
+        bail!("--frames must be at least 1 without --window");
+    }
     let gpu = Gpu::new(req, common.validate)?;
     let outcome = if common.window {
         crate::window::run(&gpu, common, make)
     } else {
-        crate::headless::render(&gpu, common.width, common.height, common.frames, make).and_then(
-            |r| {
-                let out = common
-                    .out
-                    .clone()
-                    .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
-                crate::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
-                println!(
-                    "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
-                    req.scene,
-                    out.display(),
-                    r.width,
-                    r.height,
-                    r.frames,
-                    r.elapsed.as_secs_f64(),
-                    r.fps(),
-                    gpu.name
-                );
-                Ok(())
-            },
-        )
+        crate::headless::render(&gpu, common.width, common.height, frames, make).and_then(|r| {
+            let out = common
+                .out
+                .clone()
+                .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
+            crate::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
+            println!(
+                "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
+                req.scene,
+                out.display(),
+                r.width,
+                r.height,
+                r.frames,
+                r.elapsed.as_secs_f64(),
+                r.fps(),
+                gpu.name
+            );
+            Ok(())
+        })
     };
     let messages = gpu.finish();
+    // Printed even when the run failed: they often say why.
+    for m in &messages {
+        eprintln!("{m}");
+    }
     outcome?;
     if !messages.is_empty() {
-        for m in &messages {
-            eprintln!("{m}");
-        }
         bail!(
             "the validation layer reported {} message(s) (above)",
             messages.len()

@@ -147,26 +147,38 @@ impl Gpu {
             None
         };
         let physicals = instance.enumerate_physical_devices()?;
-        // A discrete GPU first, then integrated, then anything (lavapipe is a CPU).
+        let name_of = |p: &tuff::PhysicalDevice| {
+            p.get_physical_device_properties()
+                .device_name_as_c_str()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_else(|_| "<unnamed>".into())
+        };
+        // A discrete GPU first, then integrated, then anything (lavapipe is a CPU);
+        // TUFF_DEVICE picks by name instead (the scene tests pin lavapipe with it).
         let rank = |p: &tuff::PhysicalDevice| match p.get_physical_device_properties().device_type {
             vk::PhysicalDeviceType::DISCRETE_GPU => 0,
             vk::PhysicalDeviceType::INTEGRATED_GPU => 1,
             _ => 2,
         };
-        let physical = physicals
-            .iter()
-            .min_by_key(|p| rank(p))
-            .ok_or_else(|| {
+        let physical = match std::env::var("TUFF_DEVICE") {
+            Ok(wanted) if !wanted.is_empty() => physicals
+                .iter()
+                .find(|p| name_of(p).contains(&wanted))
+                .ok_or_else(|| {
+                    let names: Vec<String> = physicals.iter().map(name_of).collect();
+                    anyhow!(
+                        "no Vulkan device's name contains TUFF_DEVICE={wanted:?} (devices: {})",
+                        names.join(", ")
+                    )
+                })?,
+            _ => physicals.iter().min_by_key(|p| rank(p)).ok_or_else(|| {
                 anyhow!(
                     "no Vulkan device found (for lavapipe: apt-get install mesa-vulkan-drivers)"
                 )
-            })?
-            .clone();
-        let props = physical.get_physical_device_properties();
-        let name = props
-            .device_name_as_c_str()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_else(|_| "<unnamed>".into());
+            })?,
+        }
+        .clone();
+        let name = name_of(&physical);
         let supported = physical.get_physical_device_features();
         let mut features = vk::PhysicalDeviceFeatures::default();
         for (wanted, have, slot, feature) in [

@@ -45,6 +45,17 @@ pub fn render<S: Scene>(
         bail!("cannot render a {width}x{height} image: both sides must be at least 1");
     }
     let frames = frames.max(1);
+    let limits = gpu.physical.get_physical_device_properties().limits;
+    let largest = limits
+        .max_image_dimension2_d
+        .min(limits.max_framebuffer_width)
+        .min(limits.max_framebuffer_height);
+    if width > largest || height > largest {
+        bail!(
+            "cannot render a {width}x{height} image: \"{}\" allows at most {largest} pixels a side",
+            gpu.name
+        );
+    }
     let extent = vk::Extent2D { width, height };
     let render_pass = render::render_pass(
         gpu,
@@ -73,7 +84,6 @@ pub fn render<S: Scene>(
     for frame in 0..frames {
         let slot = frame as usize % FRAMES_IN_FLIGHT;
         slots.wait(gpu, slot)?;
-        slots.reset(gpu, slot)?;
         let view = View {
             extent,
             time: frame as f32 / 60.0,
@@ -94,6 +104,9 @@ pub fn render<S: Scene>(
             }),
         )?;
         let commands = tuff::HandleSlice::new(&[&s.commands]);
+        // Reset only now that the submission follows: a reset fence nothing will
+        // signal would hang the next wait.
+        gpu.device.reset_fences(&[&s.done])?;
         gpu.queue.queue_submit(
             &[tuff::SubmitInfo::new().command_buffers(&commands)],
             &s.done,

@@ -261,13 +261,6 @@ impl Slots {
         waited(r)
     }
 
-    /// Resets slot `i`'s fence for its next submission; call once that submission is
-    /// certain to be made.
-    pub fn reset(&self, gpu: &Gpu, i: usize) -> Result<()> {
-        gpu.device.reset_fences(&[&self.slots[i].done])?;
-        Ok(())
-    }
-
     /// Waits for every slot's last submission.
     pub fn wait_all(&self, gpu: &Gpu) -> Result<()> {
         let fences: Vec<&tuff::Fence> = self.slots.iter().map(|s| &s.done).collect();

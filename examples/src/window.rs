@@ -80,6 +80,10 @@ struct Live<S> {
     resizes_requested: u32,
     frames_since_request: u32,
     paused_frames: u64,
+    /// The window has no area: wait for events instead of polling.
+    paused: bool,
+    /// Each swapchain's extent, in order (repeats of the last one left out).
+    extents: Vec<vk::Extent2D>,
 }
 
 struct App<'g, S, F> {
@@ -161,8 +165,24 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             resizes_requested: 0,
             frames_since_request: 0,
             paused_frames: 0,
+            paused: false,
+            extents: Vec::new(),
         })
     }
+}
+
+/// A composite alpha mode the surface supports, opaque where it can be.
+fn composite_alpha(supported: vk::CompositeAlphaFlagsKHR) -> vk::CompositeAlphaFlagsKHR {
+    [
+        vk::CompositeAlphaFlagsKHR::OPAQUE,
+        vk::CompositeAlphaFlagsKHR::INHERIT,
+        vk::CompositeAlphaFlagsKHR::PRE_MULTIPLIED,
+        vk::CompositeAlphaFlagsKHR::POST_MULTIPLIED,
+    ]
+    .into_iter()
+    .find(|mode| supported.contains(*mode))
+    // The specification requires at least one bit to be set.
+    .unwrap_or(vk::CompositeAlphaFlagsKHR::OPAQUE)
 }
 
 /// The swapchain size for a window of `width` x `height` pixels, or `None` while it
@@ -207,8 +227,9 @@ impl<S: Scene> Live<S> {
         {
             return Ok(Some(extent));
         }
-        // Every frame that used the old images is done before they go.
-        gpu.queue.queue_wait_idle()?;
+        // Every frame that used the old images, and every present waiting on their
+        // semaphores, is done before they go.
+        gpu.device.device_wait_idle()?;
         let count = caps.min_image_count.max(2);
         let count = if caps.max_image_count == 0 {
             count
@@ -224,13 +245,14 @@ impl<S: Scene> Live<S> {
             .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT)
             .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
             .pre_transform(caps.current_transform)
-            .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
+            .composite_alpha(composite_alpha(caps.supported_composite_alpha))
             .present_mode(vk::PresentModeKHR::FIFO)
             .clipped(vk::TRUE);
         let swapchain = match &self.swapchain {
             Some(old) => {
+                let new = old.recreate(&gpu.device, &self.surface, &info)?;
                 self.recreations += 1;
-                old.recreate(&gpu.device, &self.surface, &info)?
+                new
             }
             None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
         };
@@ -254,6 +276,9 @@ impl<S: Scene> Live<S> {
             S::DEPTH,
         )?);
         self.stale = false;
+        if self.extents.last() != Some(&extent) {
+            self.extents.push(extent);
+        }
         Ok(Some(extent))
     }
 
@@ -261,6 +286,7 @@ impl<S: Scene> Live<S> {
     fn draw(&mut self, gpu: &Gpu) -> Result<bool> {
         let Some(extent) = self.refresh(gpu)? else {
             self.paused_frames += 1;
+            self.paused = true;
             return Ok(false);
         };
         let slot = self.frame as usize % FRAMES_IN_FLIGHT;
@@ -282,7 +308,6 @@ impl<S: Scene> Live<S> {
             }
             Err(e) => return Err(e.into()),
         };
-        self.slots.reset(gpu, slot)?;
         let view = View {
             extent,
             time: self.start.elapsed().as_secs_f32(),
@@ -304,6 +329,9 @@ impl<S: Scene> Live<S> {
         let stages = [vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT];
         let commands = tuff::HandleSlice::new(&[&s.commands]);
         let signals = tuff::HandleSlice::new(&[&self.rendered[index as usize]]);
+        // Reset only now that the submission follows: a reset fence nothing will
+        // signal would hang the next wait.
+        gpu.device.reset_fences(&[&s.done])?;
         gpu.queue.queue_submit(
             &[tuff::SubmitInfo::new()
                 .wait_semaphores(&waits)
@@ -349,7 +377,10 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
         };
         match event {
             WindowEvent::CloseRequested => event_loop.exit(),
-            WindowEvent::Resized(_) => live.stale = true,
+            WindowEvent::Resized(_) => {
+                live.stale = true;
+                live.paused = false;
+            }
             WindowEvent::RedrawRequested => {
                 let drawn = match live.draw(self.gpu) {
                     Ok(drawn) => drawn,
@@ -377,7 +408,10 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
                         live.resizes_requested += 1;
                         live.frames_since_request = 0;
                     }
-                } else if common.frames > 0 && live.frame >= u64::from(common.frames) {
+                } else if common
+                    .frames
+                    .is_some_and(|f| f > 0 && live.frame >= u64::from(f))
+                {
                     event_loop.exit();
                 }
             }
@@ -385,9 +419,15 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
         }
     }
 
-    fn about_to_wait(&mut self, _event_loop: &ActiveEventLoop) {
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
         if let Some(live) = &self.live {
-            live.window.request_redraw();
+            // While minimised nothing is drawn; sleep until an event (a resize) comes.
+            if live.paused {
+                event_loop.set_control_flow(ControlFlow::Wait);
+            } else {
+                event_loop.set_control_flow(ControlFlow::Poll);
+                live.window.request_redraw();
+            }
         }
     }
 
@@ -396,7 +436,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
             return;
         };
         // Nothing may go while the GPU or the presentation engine still uses it.
-        if let Err(e) = self.gpu.queue.queue_wait_idle() {
+        if let Err(e) = self.gpu.device.device_wait_idle() {
             self.error.get_or_insert(e.into());
         }
         let seconds = live.start.elapsed().as_secs_f64();
@@ -409,6 +449,12 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
             live.recreations,
             live.paused_frames
         );
+        let extents: Vec<String> = live
+            .extents
+            .iter()
+            .map(|e| format!("{}x{}", e.width, e.height))
+            .collect();
+        println!("swapchain extents: {}", extents.join(" "));
         drop(live);
     }
 }

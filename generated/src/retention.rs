@@ -112,6 +112,7 @@ impl Live {
                 size,
                 memory_type_index,
                 mapped: false,
+                host: None,
             },
         );
     }

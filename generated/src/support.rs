@@ -26,7 +26,8 @@ pub enum Error {
     /// the extension.
     #[error("extension {0} is not enabled on this instance or device")]
     ExtensionNotEnabled(&'static str),
-    /// A mapped-memory access did not fit in the mapping.
+    /// A mapped-memory access did not fit in the mapping, or its flush or
+    /// invalidate range could not be formed.
     #[error("mapped memory: {0}")]
     Map(tuff_runtime::MapError),
     /// The Vulkan loader could not be found or opened.

@@ -11,7 +11,9 @@
 //! write and invalidated before a read, over ranges rounded to `nonCoherentAtomSize`.
 //!
 //! What stays with the caller: host access must not race with GPU access to the same
-//! bytes (wait on the fence of a submission that reads or writes them first).
+//! bytes (wait on the fence of a submission that reads or writes them first), and
+//! memory from a multi-instance heap is not mapped (`VUID-vkMapMemory-memory-00683`).
+//! A [`MappedMemory`] holds a raw pointer, so it stays on the thread that mapped it.
 
 use crate::{DeviceMemory, Error, Handle, Result};
 use ash::vk;
@@ -26,6 +28,9 @@ pub(crate) struct MemoryRecord {
     pub(crate) memory_type_index: u32,
     /// Whether a [`MappedMemory`] of it lives.
     pub(crate) mapped: bool,
+    /// Its type's property flags and the device's `nonCoherentAtomSize`, read at the
+    /// first map.
+    pub(crate) host: Option<(vk::MemoryPropertyFlags, u64)>,
 }
 
 /// A device memory mapped for host access; unmapped when dropped.
@@ -66,10 +71,10 @@ impl DeviceMemory {
                 None
             } else {
                 r.mapped = true;
-                Some((r.size, r.memory_type_index))
+                Some((r.size, r.memory_type_index, r.host))
             }
         });
-        let (size, type_index) = match state {
+        let (size, type_index, host) = match state {
             Some(Some(record)) => record,
             Some(None) => {
                 return Err(Error::Validation {
@@ -80,27 +85,36 @@ impl DeviceMemory {
             // Every wrapper comes from `allocate_memory`, which records it.
             None => return Err(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED)),
         };
-        let unmark = || {
-            device.live().memory(self.raw(), |r| r.mapped = false);
+        let mut mark = Mark {
+            memory: self,
+            armed: true,
         };
-        let physical = device.parent();
-        let types = physical.get_physical_device_memory_properties();
-        let flags = types
-            .memory_types
-            .get(type_index as usize)
-            .map(|t| t.property_flags)
-            .unwrap_or_default();
+        let (flags, atom) = match host {
+            Some(host) => host,
+            None => {
+                let physical = device.parent();
+                let flags = physical
+                    .get_physical_device_memory_properties()
+                    .memory_types
+                    .get(type_index as usize)
+                    .map(|t| t.property_flags)
+                    .unwrap_or_default();
+                let atom = physical
+                    .get_physical_device_properties()
+                    .limits
+                    .non_coherent_atom_size;
+                device
+                    .live()
+                    .memory(self.raw(), |r| r.host = Some((flags, atom)));
+                (flags, atom)
+            }
+        };
         if !flags.contains(vk::MemoryPropertyFlags::HOST_VISIBLE) {
-            unmark();
             return Err(Error::Validation {
                 vuid: "VUID-vkMapMemory-memory-00682",
                 message: format!("memory type {type_index} is not HOST_VISIBLE"),
             });
         }
-        let atom = physical
-            .get_physical_device_properties()
-            .limits
-            .non_coherent_atom_size;
         let mut ptr = core::ptr::null_mut();
         // SAFETY: the memory is a live allocation of this device, host-visible, not
         // mapped now (the record says so and is marked mapped until the guard goes),
@@ -115,15 +129,17 @@ impl DeviceMemory {
                 &mut ptr,
             )
         };
-        let Some(ptr) = NonNull::new(ptr.cast::<u8>()).filter(|_| r == vk::Result::SUCCESS)
-        else {
-            unmark();
-            return Err(Error::Vk(if r == vk::Result::SUCCESS {
-                vk::Result::ERROR_MEMORY_MAP_FAILED
-            } else {
-                r
-            }));
+        if r != vk::Result::SUCCESS {
+            return Err(Error::Vk(r));
+        }
+        let Some(ptr) = NonNull::new(ptr.cast::<u8>()) else {
+            // SAFETY: the call above mapped the memory; a null pointer is useless, so
+            // it is unmapped again before the mark goes.
+            unsafe { (device.fns().fp_v1_0().unmap_memory)(device.raw(), self.raw()) };
+            return Err(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED));
         };
+        // From here the guard's Drop unmaps and clears the mark.
+        mark.armed = false;
         Ok(MappedMemory {
             memory: self,
             ptr,
@@ -131,6 +147,22 @@ impl DeviceMemory {
             coherent: flags.contains(vk::MemoryPropertyFlags::HOST_COHERENT),
             atom,
         })
+    }
+}
+
+/// Clears a memory's mapped mark when dropped while armed, so that an early return
+/// (or a panic) between marking and handing out the guard leaves it mappable.
+struct Mark<'a> {
+    memory: &'a DeviceMemory,
+    armed: bool,
+}
+
+impl Drop for Mark<'_> {
+    fn drop(&mut self) {
+        if self.armed {
+            let device = self.memory.parent();
+            device.live().memory(self.memory.raw(), |r| r.mapped = false);
+        }
     }
 }
 
@@ -211,7 +243,7 @@ impl MappedMemory<'_> {
             .checked_mul(core::mem::size_of::<T>() as u64)
             .ok_or(Error::Map(tuff_runtime::MapError::Overflow {
                 offset,
-                size: u64::MAX,
+                size: count as u64,
             }))?;
         check_range(self.size, offset, len).map_err(Error::Map)?;
         if let Some(range) = self.range(offset, len)? {

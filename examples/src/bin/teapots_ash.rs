@@ -173,24 +173,49 @@ fn render_on_device(instance: &ash::Instance, args: &Args, layout: &Layout) -> R
         let physicals = instance
             .enumerate_physical_devices()
             .context("vkEnumeratePhysicalDevices")?;
-        // A discrete GPU first, then integrated, then anything (lavapipe is a CPU).
-        let physical = physicals
-            .iter()
-            .copied()
-            .min_by_key(
-                |&p| match instance.get_physical_device_properties(p).device_type {
-                    vk::PhysicalDeviceType::DISCRETE_GPU => 0,
-                    vk::PhysicalDeviceType::INTEGRATED_GPU => 1,
-                    _ => 2,
-                },
-            )
-            .context(
-                "no Vulkan device found (for lavapipe: apt-get install mesa-vulkan-drivers)",
-            )?;
-        let name = instance
-            .get_physical_device_properties(physical)
-            .device_name_as_c_str()
-            .map_or_else(|_| "<unnamed>".into(), |n| n.to_string_lossy().into_owned());
+        let name_of = |p| {
+            instance
+                .get_physical_device_properties(p)
+                .device_name_as_c_str()
+                .map_or_else(|_| "<unnamed>".into(), |n| n.to_string_lossy().into_owned())
+        };
+        // A discrete GPU first, then integrated, then anything (lavapipe is a CPU);
+        // TUFF_DEVICE picks by name instead, as in the tuff scenes.
+        let physical = match std::env::var("TUFF_DEVICE") {
+            Ok(wanted) if !wanted.is_empty() => physicals
+                .iter()
+                .copied()
+                .find(|&p| name_of(p).contains(&wanted))
+                .with_context(|| {
+                    format!("no Vulkan device's name contains TUFF_DEVICE={wanted:?}")
+                })?,
+            _ => physicals
+                .iter()
+                .copied()
+                .min_by_key(
+                    |&p| match instance.get_physical_device_properties(p).device_type {
+                        vk::PhysicalDeviceType::DISCRETE_GPU => 0,
+                        vk::PhysicalDeviceType::INTEGRATED_GPU => 1,
+                        _ => 2,
+                    },
+                )
+                .context(
+                    "no Vulkan device found (for lavapipe: apt-get install mesa-vulkan-drivers)",
+                )?,
+        };
+        let name: String = name_of(physical);
+        let limits = instance.get_physical_device_properties(physical).limits;
+        let largest = limits
+            .max_image_dimension2_d
+            .min(limits.max_framebuffer_width)
+            .min(limits.max_framebuffer_height);
+        if args.width > largest || args.height > largest {
+            bail!(
+                "cannot render a {}x{} image: \"{name}\" allows at most {largest} pixels a side",
+                args.width,
+                args.height
+            );
+        }
         let family = instance
             .get_physical_device_queue_family_properties(physical)
             .iter()
