@@ -387,7 +387,7 @@ pub const HOST: vk::MemoryPropertyFlags = vk::MemoryPropertyFlags::from_raw(
 );
 
 /// The whole of a one-level, one-layer image.
-pub fn whole(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {
+fn whole(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {
     vk::ImageSubresourceRange {
         aspect_mask: aspect,
         base_mip_level: 0,

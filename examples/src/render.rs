@@ -1,7 +1,7 @@
 //! What every scene shares: the render pass, the attachments of a set of color
 //! images, the frames in flight, and the recording of one frame.
 
-use crate::gpu::{whole, Gpu};
+use crate::gpu::Gpu;
 use anyhow::Result;
 use tuff::vk;
 
@@ -370,9 +370,4 @@ pub fn record_frame<S: Scene>(
     }
     rec.end()?;
     Ok(())
-}
-
-/// The range of a whole color image.
-pub fn color_range() -> vk::ImageSubresourceRange {
-    whole(vk::ImageAspectFlags::COLOR)
 }
