@@ -74,6 +74,8 @@ struct Live<S> {
     window: Window,
     /// The swapchain no longer matches the window.
     stale: bool,
+    /// The window may have changed size: compare before the next frame.
+    resized: bool,
     frame: u64,
     start: Instant,
     recreations: u32,
@@ -159,6 +161,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             surface,
             window,
             stale: true,
+            resized: false,
             frame: 0,
             start: Instant::now(),
             recreations: 0,
@@ -212,20 +215,25 @@ impl<S: Scene> Live<S> {
     /// Makes the swapchain match the window: `None` while the window has no area
     /// (minimised), when rendering pauses.
     fn refresh(&mut self, gpu: &Gpu) -> Result<Option<vk::Extent2D>> {
+        // Until a resize event or an acquire or present result says otherwise, the
+        // swapchain still fits: no surface query on the per-frame path.
+        if let (false, false, Some(framebuffers)) = (self.stale, self.resized, &self.framebuffers) {
+            return Ok(Some(framebuffers.extent));
+        }
+        self.resized = false;
         let caps = gpu
             .physical
             .get_physical_device_surface_capabilities_khr(&self.surface)?;
         let size = self.window.inner_size();
         let Some(extent) = swapchain_extent(&caps, size.width, size.height) else {
+            // Looked at again every frame until the window has an area.
+            self.resized = true;
             return Ok(None);
         };
-        if !self.stale
-            && self
-                .framebuffers
-                .as_ref()
-                .is_some_and(|f| f.extent == extent)
-        {
-            return Ok(Some(extent));
+        if let (false, Some(framebuffers)) = (self.stale, &self.framebuffers) {
+            if framebuffers.extent == extent {
+                return Ok(Some(extent));
+            }
         }
         // Every frame that used the old images, and every present waiting on their
         // semaphores, is done before they go.
@@ -378,7 +386,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
         match event {
             WindowEvent::CloseRequested => event_loop.exit(),
             WindowEvent::Resized(_) => {
-                live.stale = true;
+                live.resized = true;
                 live.paused = false;
             }
             WindowEvent::RedrawRequested => {
@@ -405,6 +413,9 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
                         // The window manager (if any) may refuse; the swapchain
                         // follows whatever size the window ends up with.
                         let _ = live.window.request_inner_size(PhysicalSize::new(w, h));
+                        // Look at the surface again next frame rather than wait for
+                        // the resize event.
+                        live.resized = true;
                         live.resizes_requested += 1;
                         live.frames_since_request = 0;
                     }
