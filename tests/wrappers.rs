@@ -711,3 +711,294 @@ fn mapped_memory_is_checked_and_unmapped_on_drop() {
     drop(again);
     assert_silent(&s.messages);
 }
+
+/// Records `fill` into a one-time command buffer, submits it and waits; `fill` may
+/// return resources, which are dropped before the wait to check that the submission
+/// keeps them alive.
+fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>) -> K) {
+    let d = &s.device;
+    let pool = d
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
+    let mut cb = d
+        .allocate_command_buffers(
+            &pool,
+            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
+        )
+        .expect("cbs")
+        .pop()
+        .expect("one");
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let kept = fill(&mut rec);
+    rec.end().expect("end");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let handles = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
+    drop(kept);
+    let status = d
+        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(status, vk::Result::SUCCESS);
+}
+
+#[test]
+fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
+    let s = setup(true);
+    let d = &s.device;
+    let gpu = d.gpu_allocator().expect("gpu allocator");
+    let naive = d.naive_allocator();
+    let allocators: [(&str, &dyn tuff::runtime::Allocator); 2] = [("gpu", &gpu), ("naive", &naive)];
+    for (name, allocator) in allocators {
+        let info = |usage| tuff::BufferCreateInfo::new().size(256).usage(usage);
+        let source = d
+            .create_buffer_in(
+                &info(vk::BufferUsageFlags::TRANSFER_SRC),
+                allocator,
+                tuff::MemoryLocation::Upload,
+            )
+            .expect("source");
+        let target = d
+            .create_buffer_in(
+                &info(vk::BufferUsageFlags::TRANSFER_DST),
+                allocator,
+                tuff::MemoryLocation::Readback,
+            )
+            .expect("target");
+        assert!(source.memory().size() >= 256, "{name}");
+        let words: Vec<u32> = (0..64).map(|i| i * 3 + 1).collect();
+        source.memory().write(0, &words).expect("write");
+        source.memory().write_value(252, &7u32).expect("write one");
+        assert!(matches!(
+            source.memory().write(source.memory().size(), &[1u8]),
+            Err(tuff::Error::Map(_))
+        ));
+        // The copy's source goes, memory and all, while the copy may still run: the
+        // submission keeps it (the layer would report memory freed in use).
+        submit_and_wait(&s, |rec| {
+            rec.cmd_copy_buffer(
+                &source,
+                &target,
+                &[vk::BufferCopy {
+                    src_offset: 0,
+                    dst_offset: 0,
+                    size: 256,
+                }],
+            );
+            source
+        });
+        let mut expected = words.clone();
+        expected[63] = 7;
+        assert_eq!(
+            target.memory().read::<u32>(0, 64).expect("read"),
+            expected,
+            "{name}"
+        );
+    }
+    // An image in device-local memory, and the refusals.
+    let image = d
+        .create_image_in(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::D32_SFLOAT)
+                .extent(vk::Extent3D {
+                    width: 64,
+                    height: 64,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT),
+            &gpu,
+            tuff::MemoryLocation::DeviceLocal,
+        )
+        .expect("image");
+    assert!(image.memory().size() >= 64 * 64 * 4);
+    let refusal = |info: tuff::BufferCreateInfo<'_>| match d.create_buffer_in(
+        &info.size(64),
+        &gpu,
+        tuff::MemoryLocation::Upload,
+    ) {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid,
+        Err(other) => panic!("expected a refusal, got {other}"),
+        Ok(_) => panic!("expected a refusal, got a buffer"),
+    };
+    assert_eq!(
+        refusal(
+            tuff::BufferCreateInfo::new()
+                .flags(vk::BufferCreateFlags::SPARSE_BINDING)
+                .usage(vk::BufferUsageFlags::TRANSFER_DST)
+        ),
+        "VUID-vkBindBufferMemory-buffer-01030"
+    );
+    assert_eq!(
+        refusal(tuff::BufferCreateInfo::new().usage(
+            vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS
+        )),
+        "VUID-vkBindBufferMemory-bufferDeviceAddress-03339"
+    );
+    drop(image);
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn an_allocator_of_another_device_is_refused() {
+    let s = setup(true);
+    let priorities = [1.0f32];
+    let queues = [tuff::DeviceQueueCreateInfo::new()
+        .queue_family_index(s.family)
+        .queue_priorities(&priorities)];
+    let other = s
+        .physical
+        .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
+        .expect("second device");
+    let foreign = other.naive_allocator();
+    let info = tuff::BufferCreateInfo::new()
+        .size(64)
+        .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
+    match s
+        .device
+        .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
+    {
+        Err(tuff::Error::Validation { vuid, .. }) => {
+            assert_eq!(vuid, "VUID-vkBindBufferMemory-memory-parent")
+        }
+        Err(other) => panic!("expected a refusal, got {other}"),
+        Ok(_) => panic!("memory of another device was bound"),
+    }
+    drop((foreign, other));
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn missing_layers_extensions_and_features_are_named() {
+    let s = setup(true);
+    let entry = tuff::Entry::load().expect("loader");
+    let create = |layers: &[tuff::CStrPtr<'_>], exts: &[tuff::CStrPtr<'_>]| {
+        entry
+            .create_instance(
+                &tuff::InstanceCreateInfo::new()
+                    .enabled_layer_names(layers)
+                    .enabled_extension_names(exts),
+            )
+            .err()
+            .expect("the instance was created")
+    };
+    let not_present = |e: tuff::Error| match e {
+        tuff::Error::NotPresent { what, names, .. } => (what, names),
+        other => panic!("expected NotPresent, got {other}"),
+    };
+    assert_eq!(
+        not_present(create(&[c"VK_LAYER_TUFF_absent".into()], &[])),
+        ("instance layer", vec!["VK_LAYER_TUFF_absent".to_owned()])
+    );
+    // The validation layer's own extensions count as present when it is enabled.
+    let e = create(
+        &[c"VK_LAYER_KHRONOS_validation".into()],
+        &[
+            c"VK_EXT_validation_features".into(),
+            c"VK_TUFF_absent".into(),
+        ],
+    );
+    assert_eq!(
+        e.to_string(),
+        "instance extension not present: VK_TUFF_absent (ERROR_EXTENSION_NOT_PRESENT)"
+    );
+    // The first core feature this device lacks (lavapipe lacks several), asked for
+    // on a device without the layer, which would rightly complain.
+    let have = s.physical.get_physical_device_features();
+    let probe = tuff::vk::PhysicalDeviceFeatures {
+        sparse_binding: have.sparse_binding ^ vk::TRUE,
+        ..Default::default()
+    };
+    assert_eq!(
+        have.sparse_binding,
+        vk::FALSE,
+        "the test asks for sparseBinding, which this device must lack"
+    );
+    let priorities = [1.0f32];
+    let queues = [tuff::DeviceQueueCreateInfo::new()
+        .queue_family_index(s.family)
+        .queue_priorities(&priorities)];
+    let bare = entry
+        .create_instance(&tuff::InstanceCreateInfo::new())
+        .expect("instance without layers");
+    let physical = bare
+        .enumerate_physical_devices()
+        .expect("devices")
+        .into_iter()
+        .find(|p| {
+            p.get_physical_device_properties().device_name
+                == s.physical.get_physical_device_properties().device_name
+        })
+        .expect("the same device on the second instance");
+    let e = physical
+        .create_device(
+            &tuff::DeviceCreateInfo::new()
+                .queue_create_infos(&queues)
+                .enabled_features(Some(&probe)),
+        )
+        .err()
+        .expect("a device with a missing feature");
+    assert_eq!(
+        not_present(e),
+        ("device feature", vec!["sparseBinding".to_owned()])
+    );
+    let e = physical
+        .create_device(
+            &tuff::DeviceCreateInfo::new()
+                .queue_create_infos(&queues)
+                .enabled_extension_names(&[c"VK_TUFF_absent".into()]),
+        )
+        .err()
+        .expect("a device with a missing extension");
+    assert_eq!(
+        not_present(e),
+        ("device extension", vec!["VK_TUFF_absent".to_owned()])
+    );
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn the_message_log_hears_the_layer_and_outlives_nothing() {
+    let s = setup(true);
+    // A buffer of size 0 breaks VUID-VkBufferCreateInfo-size-00912; the unchecked
+    // entry point lets it reach the layer.
+    let info = tuff::BufferCreateInfo::new()
+        .size(0)
+        .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
+    // SAFETY: deliberately not: the rule is broken for the layer to report, and the
+    // buffer is never used (lavapipe tolerates the empty buffer).
+    let bad = unsafe { s.device.create_buffer_unchecked(&info) };
+    drop(bad);
+    let heard = s.messages.take();
+    assert!(
+        heard
+            .iter()
+            .any(|m| m.contains("VUID-VkBufferCreateInfo-size-00912")),
+        "the log missed the layer's message: {heard:?}"
+    );
+    assert!(s.messages.is_empty(), "take leaves the log empty");
+    // A messenger that outlives its log drops what it hears instead of writing
+    // through a dangling pointer.
+    let log = tuff::MessageLog::new();
+    let messenger = s
+        .instance
+        .create_debug_utils_messenger_ext(&log.messenger_info())
+        .expect("messenger");
+    drop(log);
+    // SAFETY: as above, a deliberate break for the layer to report.
+    drop(unsafe { s.device.create_buffer_unchecked(&info) });
+    drop(messenger);
+    assert!(
+        s.messages.take().iter().any(|m| m.contains("00912")),
+        "the setup's own log still hears the layer"
+    );
+    assert_silent(&s.messages);
+}

@@ -10525,7 +10525,7 @@ The caller upholds the rules that [`Self::create_device`] checks at run time (th
             )
         };
         if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
+            return Err(crate::presence::device_error(self, create_info, r));
         }
         Ok(
             crate::handles::Device::from_created(
@@ -10997,7 +10997,7 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time (
             )
         };
         if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
+            return Err(crate::presence::instance_error(self, create_info, r));
         }
         Ok(
             crate::handles::Instance::from_created(

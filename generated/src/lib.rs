@@ -14,6 +14,8 @@
 
 /// Which registry, core versions and extensions this crate was generated from.
 pub mod api_info;
+#[rustfmt::skip]
+mod allocation;
 // The generator formats its output with prettyplease; rustfmt leaves it as written,
 // so the freshness test compares exactly what the generator writes.
 #[rustfmt::skip]
@@ -24,7 +26,12 @@ mod commands;
 #[rustfmt::skip]
 pub mod handles;
 #[rustfmt::skip]
+#[cfg(feature = "ext_debug_utils")]
+mod debug_log;
+#[rustfmt::skip]
 mod mapping;
+#[rustfmt::skip]
+mod presence;
 #[rustfmt::skip]
 pub mod recorder;
 #[rustfmt::skip]
@@ -40,7 +47,10 @@ mod swapchain;
 #[cfg(feature = "runtime_implicit_validations")]
 mod validation;
 
+pub use allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};
 pub use ash::vk;
+#[cfg(feature = "ext_debug_utils")]
+pub use debug_log::MessageLog;
 pub use handles::*;
 pub use mapping::MappedMemory;
 pub use recorder::{InRenderPass, InRendering, Inside, Outside, Recorder, State};

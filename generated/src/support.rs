@@ -33,6 +33,23 @@ pub enum Error {
     /// The Vulkan loader could not be found or opened.
     #[error("cannot load the Vulkan loader: {0}")]
     Load(String),
+    /// An allocator could not give memory; the text is its
+    /// [`tuff_runtime::AllocError`]'s.
+    #[error("allocation failed: {0}")]
+    Alloc(String),
+    /// An instance or device could not be created because layers, extensions or
+    /// features it asked for are not there; `names` says which.
+    #[error("{what} not present: {} ({result:?})", names.join(", "))]
+    NotPresent {
+        /// What the creation returned: `ERROR_LAYER_NOT_PRESENT`,
+        /// `ERROR_EXTENSION_NOT_PRESENT` or `ERROR_FEATURE_NOT_PRESENT`.
+        result: vk::Result,
+        /// "instance layer", "instance extension", "device extension" or
+        /// "device feature".
+        what: &'static str,
+        /// The missing names, as the registry spells them.
+        names: Vec<String>,
+    },
 }
 
 /// The result of a fallible wrapper call.
@@ -191,6 +208,14 @@ impl crate::structs::InstanceCreateInfo<'_> {
                 self.pp_enabled_extension_names,
             )
         }
+    }
+}
+
+impl crate::structs::InstanceCreateInfo<'_> {
+    /// The layers this info enables.
+    pub(crate) fn enabled_layers(&self) -> Vec<&CStr> {
+        // SAFETY: the safe setter only stores slices of `CStrPtr`, valid C strings.
+        unsafe { names(self.enabled_layer_count, self.pp_enabled_layer_names) }
     }
 }
 

@@ -1,8 +1,6 @@
 //! An instance, device and queue made entirely through the generated wrappers.
 #![allow(dead_code)]
 
-use crate::vulkan::{on_message, Messages};
-use std::sync::{Arc, Mutex};
 use tuff::vk;
 
 /// What a wrapper test needs. Field order is drop order: the messenger goes last but
@@ -15,8 +13,7 @@ pub struct Setup {
     pub memory_types: vk::PhysicalDeviceMemoryProperties,
     pub messenger: Option<tuff::DebugUtilsMessengerEXT>,
     pub instance: tuff::Instance,
-    pub messages: Messages,
-    _user_data: Box<Messages>,
+    pub messages: tuff::MessageLog,
 }
 
 /// Window-system integration a setup enables.
@@ -47,8 +44,7 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
         };
     }
     let entry = tuff::Entry::load().expect("the Vulkan loader is not installed");
-    let messages: Messages = Arc::new(Mutex::new(Vec::new()));
-    let user_data = Box::new(messages.clone());
+    let messages = tuff::MessageLog::new();
     let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
     let mut exts = Vec::new();
     if validation {
@@ -59,18 +55,7 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
         exts.push(tuff::CStrPtr::from(c"VK_KHR_xlib_surface"));
     }
     let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
-    let mut messenger_info = tuff::DebugUtilsMessengerCreateInfoEXT::new()
-        .message_severity(
-            vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
-                | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
-        )
-        .message_type(
-            vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE
-                | vk::DebugUtilsMessageTypeFlagsEXT::GENERAL,
-        )
-        .pfn_user_callback(Some(on_message))
-        .user_data(&*user_data as *const Messages as *mut _);
+    let mut messenger_info = messages.messenger_info();
     let mut info = tuff::InstanceCreateInfo::new()
         .application_info(Some(&app))
         .enabled_extension_names(&exts);
@@ -132,7 +117,6 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
         messenger,
         instance,
         messages,
-        _user_data: user_data,
     }
 }
 

@@ -222,9 +222,28 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
     (owner, messages)
 }
 
+/// What collected the validation layer's messages: the raw-ash tests' list or a
+/// tuff [`tuff::MessageLog`].
+pub trait Reported {
+    /// Every message so far.
+    fn reported(&self) -> Vec<String>;
+}
+
+impl Reported for Messages {
+    fn reported(&self) -> Vec<String> {
+        self.lock().expect("messages lock").clone()
+    }
+}
+
+impl Reported for tuff::MessageLog {
+    fn reported(&self) -> Vec<String> {
+        self.take()
+    }
+}
+
 /// Fail with every message the validation layer emitted.
-pub fn assert_silent(messages: &Messages) {
-    let m = messages.lock().expect("messages lock");
+pub fn assert_silent(messages: &impl Reported) {
+    let m = messages.reported();
     assert!(
         m.is_empty(),
         "the validation layer reported {} message(s):\n{}",

@@ -24,8 +24,36 @@ pub(super) fn emit(model: &Model, config: &Config, out: &mut Emission) {
         s.push_str(&format!("    {ext:?},\n"));
     }
     s.push_str("];\n");
+    device_features(model, &mut s);
     out.files.push(OutputFile {
         path: "src/api_info.rs".into(),
         contents: s,
     });
+}
+
+/// The members of `VkPhysicalDeviceFeatures` in declaration order: the wrappers read
+/// the struct as that many `VkBool32`s to name what a device lacks when its creation
+/// returns `VK_ERROR_FEATURE_NOT_PRESENT`.
+fn device_features(model: &Model, s: &mut String) {
+    let names: Vec<&str> = model
+        .types
+        .get("VkPhysicalDeviceFeatures")
+        .map(|t| {
+            t.members
+                .iter()
+                .filter(|m| {
+                    m.type_name == "VkBool32" && m.pointers == 0 && m.static_array.is_none()
+                })
+                .map(|m| m.name.as_str())
+                .collect()
+        })
+        .unwrap_or_default();
+    s.push_str(
+        "\n/// The members of `VkPhysicalDeviceFeatures`, in order: each is a `VkBool32`.\n",
+    );
+    s.push_str("pub const DEVICE_FEATURES: &[&str] = &[\n");
+    for name in names {
+        s.push_str(&format!("    {name:?},\n"));
+    }
+    s.push_str("];\n");
 }

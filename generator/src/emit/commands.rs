@@ -868,6 +868,14 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             }
         }
     } else if cmd.return_type == "VkResult" {
+        // A creation that lacks a layer, extension or feature names what it lacks.
+        let error = match plan.name.as_str() {
+            "vkCreateInstance" => {
+                quote!(crate::presence::instance_error(self, create_info, r))
+            }
+            "vkCreateDevice" => quote!(crate::presence::device_error(self, create_info, r)),
+            _ => quote!(Error::Vk(r)),
+        };
         let ok = if multi_success && ret_ty.to_string() == "()" {
             // Nothing else to return: the success code alone (SUBOPTIMAL_KHR, say).
             ret_ty = quote!(vk::Result);
@@ -885,7 +893,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             // length of the slice it sizes.
             let r = unsafe { #fp(#(#call_args)*) };
             if r.as_raw() < 0 {
-                return Err(Error::Vk(r));
+                return Err(#error);
             }
             #(#post)*
             #(#retain)*

@@ -176,6 +176,18 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
             include_str!("../../templates/swapchain.rs"),
         ),
         ("src/mapping.rs", include_str!("../../templates/mapping.rs")),
+        (
+            "src/allocation.rs",
+            include_str!("../../templates/allocation.rs"),
+        ),
+        (
+            "src/debug_log.rs",
+            include_str!("../../templates/debug_log.rs"),
+        ),
+        (
+            "src/presence.rs",
+            include_str!("../../templates/presence.rs"),
+        ),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),

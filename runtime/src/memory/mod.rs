@@ -333,6 +333,18 @@ impl Allocation {
         self.parts.size
     }
 
+    /// The device whose memory this is, so that a binder can refuse memory of
+    /// another device (`VUID-vkBindBufferMemory-memory-parent`).
+    ///
+    /// ```no_run
+    /// # fn demo(a: &tuff_runtime::Allocation, device: &ash::Device) {
+    /// assert_eq!(a.device(), device.handle());
+    /// # }
+    /// ```
+    pub fn device(&self) -> vk::Device {
+        self.owner.device().handle()
+    }
+
     /// Index of the memory type.
     ///
     /// ```no_run
