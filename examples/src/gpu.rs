@@ -2,12 +2,7 @@
 //! features and extensions the scene uses.
 
 use anyhow::{anyhow, bail, Context as _, Result};
-use std::ffi::{c_void, CStr};
-use std::sync::{Arc, Mutex};
 use tuff::vk;
-
-/// Messages the validation layer emitted.
-type Messages = Arc<Mutex<Vec<String>>>;
 
 /// What a scene needs of the device.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -23,8 +18,11 @@ pub struct Requirements {
 }
 
 /// The device a scene renders with. Field order is drop order: the messenger goes
-/// after the device, so it hears what the device's objects report as they go.
+/// after the device, so it hears what the device's objects report as they go, and the
+/// log goes last.
 pub struct Gpu {
+    /// Where the scenes' buffers and images get their memory.
+    pub allocator: tuff::GpuAllocator,
     /// The graphics queue.
     pub queue: tuff::Queue,
     /// The queue's family.
@@ -35,48 +33,10 @@ pub struct Gpu {
     pub physical: tuff::PhysicalDevice,
     /// The physical device's name, for messages.
     pub name: String,
-    memory_types: vk::PhysicalDeviceMemoryProperties,
     messenger: Option<tuff::DebugUtilsMessengerEXT>,
     /// The instance.
     pub instance: tuff::Instance,
-    messages: Messages,
-    _user_data: Box<Messages>,
-}
-
-/// Hears the validation layer. Registered with a `Box<Messages>` as user data.
-///
-/// # Safety
-///
-/// `user` is the `Messages` box of a live [`Gpu`] and `data` the layer's valid
-/// callback data.
-unsafe extern "system" fn on_message(
-    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-    _types: vk::DebugUtilsMessageTypeFlagsEXT,
-    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
-    user: *mut c_void,
-) -> vk::Bool32 {
-    // SAFETY: the layer passes valid callback data, and `user` is the Gpu's boxed
-    // Messages, which outlives the messenger.
-    unsafe {
-        let text = if data.is_null() || (*data).p_message.is_null() {
-            "<no message>".to_owned()
-        } else {
-            CStr::from_ptr((*data).p_message)
-                .to_string_lossy()
-                .into_owned()
-        };
-        let messages = &*(user as *const Messages);
-        if let Ok(mut m) = messages.lock() {
-            m.push(format!("{severity:?}: {text}"));
-        }
-    }
-    vk::FALSE
-}
-
-/// Whether `list` names `name`.
-fn has_extension(list: &[vk::ExtensionProperties], name: &CStr) -> bool {
-    list.iter()
-        .any(|e| e.extension_name_as_c_str().is_ok_and(|n| n == name))
+    log: tuff::MessageLog,
 }
 
 impl Gpu {
@@ -85,67 +45,43 @@ impl Gpu {
     /// kept for [`Gpu::finish`].
     ///
     /// Fails with a message naming what is missing: the loader, the layer, a device,
-    /// a feature or an extension.
+    /// a feature or an extension (tuff names the missing layer, extension or feature).
     pub fn new(req: Requirements, validation: bool) -> Result<Gpu> {
         let entry = tuff::Entry::load().context("cannot load the Vulkan loader (libvulkan1)")?;
-        let messages: Messages = Arc::new(Mutex::new(Vec::new()));
-        let user_data = Box::new(messages.clone());
-        let available = entry
-            .enumerate_instance_extension_properties(None)
-            .context("cannot list the instance extensions")?;
-        let mut exts = Vec::new();
+        let log = tuff::MessageLog::new();
+        let mut exts: Vec<tuff::CStrPtr> = Vec::new();
         if validation {
-            exts.push(c"VK_EXT_debug_utils");
+            exts.push(c"VK_EXT_debug_utils".into());
         }
         if req.window {
-            exts.push(c"VK_KHR_surface");
-            exts.push(c"VK_KHR_xlib_surface");
+            exts.extend([
+                tuff::CStrPtr::from(c"VK_KHR_surface"),
+                c"VK_KHR_xlib_surface".into(),
+            ]);
         }
-        for e in &exts {
-            if !has_extension(&available, e) {
-                bail!(
-                    "the Vulkan instance lacks the extension {}, which the {} scene needs",
-                    e.to_string_lossy(),
-                    req.scene
-                );
-            }
-        }
-        let ext_ptrs: Vec<tuff::CStrPtr> = exts.iter().map(|e| (*e).into()).collect();
         let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
         let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
-        let mut messenger_info = tuff::DebugUtilsMessengerCreateInfoEXT::new()
-            .message_severity(
-                vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
-                    | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
-            )
-            .message_type(
-                vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE
-                    | vk::DebugUtilsMessageTypeFlagsEXT::GENERAL,
-            )
-            .pfn_user_callback(Some(on_message))
-            .user_data(&*user_data as *const Messages as *mut _);
+        let mut chained = log.messenger_info();
         let mut info = tuff::InstanceCreateInfo::new()
             .application_info(Some(&app))
-            .enabled_extension_names(&ext_ptrs);
+            .enabled_extension_names(&exts);
         if validation {
-            info = info
-                .enabled_layer_names(&layers)
-                .push_next(&mut messenger_info);
+            info = info.enabled_layer_names(&layers).push_next(&mut chained);
         }
         let instance = entry.create_instance(&info).with_context(|| {
-            if validation {
-                "cannot create a Vulkan instance with VK_LAYER_KHRONOS_validation \
-                 (apt-get install vulkan-validationlayers)"
+            let hint = if validation {
+                " (the layer: apt-get install vulkan-validationlayers)"
             } else {
-                "cannot create a Vulkan instance"
-            }
+                ""
+            };
+            format!(
+                "cannot create a Vulkan instance for the {} scene{hint}",
+                req.scene
+            )
         })?;
-        let messenger = if validation {
-            Some(instance.create_debug_utils_messenger_ext(&messenger_info)?)
-        } else {
-            None
-        };
+        let messenger = validation
+            .then(|| instance.create_debug_utils_messenger_ext(&log.messenger_info()))
+            .transpose()?;
         let physicals = instance.enumerate_physical_devices()?;
         let name_of = |p: &tuff::PhysicalDevice| {
             p.get_physical_device_properties()
@@ -179,75 +115,48 @@ impl Gpu {
         }
         .clone();
         let name = name_of(&physical);
-        let supported = physical.get_physical_device_features();
-        let mut features = vk::PhysicalDeviceFeatures::default();
-        for (wanted, have, slot, feature) in [
-            (
-                req.tessellation_shader,
-                supported.tessellation_shader,
-                &mut features.tessellation_shader,
-                "tessellationShader",
-            ),
-            (
-                req.fill_mode_non_solid,
-                supported.fill_mode_non_solid,
-                &mut features.fill_mode_non_solid,
-                "fillModeNonSolid",
-            ),
-        ] {
-            if wanted {
-                if have == vk::FALSE {
-                    bail!(
-                        "the device \"{name}\" lacks the feature {feature}, which the {} scene needs",
-                        req.scene
-                    );
-                }
-                *slot = vk::TRUE;
-            }
-        }
-        let mut device_exts = Vec::new();
-        if req.window {
-            let available = physical.enumerate_device_extension_properties(None)?;
-            if !has_extension(&available, c"VK_KHR_swapchain") {
-                bail!(
-                    "the device \"{name}\" lacks the extension VK_KHR_swapchain, which the {} \
-                     scene needs to render into a window",
-                    req.scene
-                );
-            }
-            device_exts.push(tuff::CStrPtr::from(c"VK_KHR_swapchain"));
-        }
+        let features = vk::PhysicalDeviceFeatures {
+            tessellation_shader: req.tessellation_shader.into(),
+            fill_mode_non_solid: req.fill_mode_non_solid.into(),
+            ..Default::default()
+        };
+        let device_exts: &[tuff::CStrPtr] = if req.window {
+            &[tuff::CStrPtr::from(c"VK_KHR_swapchain")]
+        } else {
+            &[]
+        };
         let family = physical
             .get_physical_device_queue_family_properties()?
             .iter()
             .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
             .ok_or_else(|| anyhow!("the device \"{name}\" has no graphics queue"))?
             as u32;
-        let priorities = [1.0f32];
         let queues = [tuff::DeviceQueueCreateInfo::new()
             .queue_family_index(family)
-            .queue_priorities(&priorities)];
+            .queue_priorities(&[1.0])];
         let device = physical
             .create_device(
                 &tuff::DeviceCreateInfo::new()
                     .queue_create_infos(&queues)
-                    .enabled_extension_names(&device_exts)
+                    .enabled_extension_names(device_exts)
                     .enabled_features(Some(&features)),
             )
-            .with_context(|| format!("cannot create a device on \"{name}\""))?;
-        let queue = device.get_device_queue(family, 0);
-        let memory_types = physical.get_physical_device_memory_properties();
+            .with_context(|| {
+                format!(
+                    "cannot create a device on \"{name}\" for the {} scene",
+                    req.scene
+                )
+            })?;
         Ok(Gpu {
-            queue,
+            allocator: device.gpu_allocator()?,
+            queue: device.get_device_queue(family, 0),
             family,
             device,
             physical,
             name,
-            memory_types,
             messenger,
             instance,
-            messages,
-            _user_data: user_data,
+            log,
         })
     }
 
@@ -256,94 +165,65 @@ impl Gpu {
     /// made from this device first.
     pub fn finish(self) -> Vec<String> {
         let Gpu {
+            allocator,
             queue,
             device,
             physical,
             messenger,
             instance,
-            messages,
-            _user_data,
+            log,
             ..
         } = self;
-        drop((queue, device, physical));
-        drop(messenger);
-        drop(instance);
-        let out = messages.lock().map(|m| m.clone()).unwrap_or_default();
-        drop(_user_data);
-        out
+        drop((allocator, queue, device, physical, messenger, instance));
+        log.take()
     }
 
-    /// A memory type allowed by `bits` with `flags`.
-    pub fn memory_type(&self, bits: u32, flags: vk::MemoryPropertyFlags) -> Result<u32> {
-        (0..self.memory_types.memory_type_count)
-            .find(|i| {
-                bits & (1 << i) != 0
-                    && self.memory_types.memory_types[*i as usize]
-                        .property_flags
-                        .contains(flags)
-            })
-            .ok_or_else(|| anyhow!("\"{}\" has no memory type with {flags:?}", self.name))
-    }
-
-    /// A buffer bound to memory of its own with `flags`.
+    /// A buffer with memory at `location`.
     pub fn buffer(
         &self,
         size: u64,
         usage: vk::BufferUsageFlags,
-        flags: vk::MemoryPropertyFlags,
-    ) -> Result<(tuff::Buffer, tuff::DeviceMemory)> {
-        let d = &self.device;
-        let buffer = d.create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(usage))?;
-        let reqs = d.get_buffer_memory_requirements(&buffer)?;
-        let memory = d.allocate_memory(
-            &tuff::MemoryAllocateInfo::new()
-                .allocation_size(reqs.size)
-                .memory_type_index(self.memory_type(reqs.memory_type_bits, flags)?),
-        )?;
-        d.bind_buffer_memory(&buffer, &memory, 0)?;
-        Ok((buffer, memory))
+        location: tuff::MemoryLocation,
+    ) -> Result<tuff::Bound<tuff::Buffer>> {
+        let info = tuff::BufferCreateInfo::new().size(size).usage(usage);
+        Ok(self
+            .device
+            .create_buffer_in(&info, &self.allocator, location)?)
     }
 
-    /// A host-visible buffer holding `data`.
+    /// A buffer holding `data`, which the device reads.
     pub fn buffer_with<T: bytemuck::NoUninit>(
         &self,
         usage: vk::BufferUsageFlags,
         data: &[T],
-    ) -> Result<(tuff::Buffer, tuff::DeviceMemory)> {
+    ) -> Result<tuff::Bound<tuff::Buffer>> {
         let size = std::mem::size_of_val(data).max(4) as u64;
-        let (buffer, memory) = self.buffer(size, usage, HOST)?;
-        memory.map()?.write(0, data)?;
-        Ok((buffer, memory))
+        let buffer = self.buffer(size, usage, tuff::MemoryLocation::Upload)?;
+        buffer.memory().write(0, data)?;
+        Ok(buffer)
     }
 
-    /// A 2D image with its own memory.
+    /// A 2D image in device-local memory, which the image keeps.
     pub fn image(
         &self,
         extent: vk::Extent2D,
         format: vk::Format,
         usage: vk::ImageUsageFlags,
-    ) -> Result<(tuff::Image, tuff::DeviceMemory)> {
-        let d = &self.device;
-        let image = d.create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(format)
-                .extent(extent.into())
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(usage),
-        )?;
-        let reqs = d.get_image_memory_requirements(&image)?;
-        let memory = d.allocate_memory(
-            &tuff::MemoryAllocateInfo::new()
-                .allocation_size(reqs.size)
-                .memory_type_index(
-                    self.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty())?,
-                ),
-        )?;
-        d.bind_image_memory(&image, &memory, 0)?;
-        Ok((image, memory))
+    ) -> Result<tuff::Image> {
+        let info = tuff::ImageCreateInfo::new()
+            .image_type(vk::ImageType::TYPE_2D)
+            .format(format)
+            .extent(extent.into())
+            .mip_levels(1)
+            .array_layers(1)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .usage(usage);
+        let local = tuff::MemoryLocation::DeviceLocal;
+        Ok(self
+            .device
+            .create_image_in(&info, &self.allocator, local)?
+            .into_parts()
+            .0)
     }
 
     /// A 2D view of the whole of `image`.
@@ -369,22 +249,11 @@ impl Gpu {
                 spirv.len()
             );
         }
-        let words: Vec<u32> = spirv
-            .chunks_exact(4)
-            .map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]))
-            .collect();
-        Ok(self
-            .device
-            .create_shader_module(&tuff::ShaderModuleCreateInfo::new().code(&words))?)
+        let words: Vec<u32> = bytemuck::pod_collect_to_vec(spirv);
+        let info = tuff::ShaderModuleCreateInfo::new().code(&words);
+        Ok(self.device.create_shader_module(&info)?)
     }
 }
-
-/// Memory the host writes and reads without flushes: buffers the CPU fills each
-/// frame and the readback.
-pub const HOST: vk::MemoryPropertyFlags = vk::MemoryPropertyFlags::from_raw(
-    vk::MemoryPropertyFlags::HOST_VISIBLE.as_raw()
-        | vk::MemoryPropertyFlags::HOST_COHERENT.as_raw(),
-);
 
 /// The whole of a one-level, one-layer image.
 fn whole(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {

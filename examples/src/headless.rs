@@ -64,21 +64,17 @@ pub fn render<S: Scene>(
         vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
     )?;
     let mut scene = make(gpu, &render_pass)?;
-    let mut images = Vec::new();
-    let mut memories = Vec::new();
-    for _ in 0..FRAMES_IN_FLIGHT {
-        let (image, memory) = gpu.image(
-            extent,
-            COLOR_FORMAT,
-            vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC,
-        )?;
-        images.push(image);
-        memories.push(memory);
-    }
+    let usage = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
+    let images = (0..FRAMES_IN_FLIGHT)
+        .map(|_| gpu.image(extent, COLOR_FORMAT, usage))
+        .collect::<Result<Vec<_>>>()?;
     let targets = Framebuffers::new(gpu, &render_pass, &images, COLOR_FORMAT, extent, S::DEPTH)?;
     let bytes = u64::from(width) * u64::from(height) * 4;
-    let (readback, readback_memory) =
-        gpu.buffer(bytes, vk::BufferUsageFlags::TRANSFER_DST, crate::gpu::HOST)?;
+    let readback = gpu.buffer(
+        bytes,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        tuff::MemoryLocation::Readback,
+    )?;
     let mut slots = Slots::new(gpu, false)?;
     let start = Instant::now();
     for frame in 0..frames {
@@ -114,7 +110,7 @@ pub fn render<S: Scene>(
     }
     slots.wait_all(gpu)?;
     let elapsed = start.elapsed();
-    let rgba = readback_memory.map()?.read(0, bytes as usize)?;
+    let rgba = readback.memory().read(0, bytes as usize)?;
     Ok(Rendered {
         width,
         height,

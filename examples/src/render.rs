@@ -147,7 +147,8 @@ pub struct Framebuffers {
     pub framebuffers: Vec<tuff::Framebuffer>,
     /// Their size.
     pub extent: vk::Extent2D,
-    _depth: Option<(tuff::Image, tuff::DeviceMemory, tuff::ImageView)>,
+    // The views keep their images, which keep their memory.
+    _depth: Option<tuff::ImageView>,
     _views: Vec<tuff::ImageView>,
 }
 
@@ -162,13 +163,9 @@ impl Framebuffers {
         depth: bool,
     ) -> Result<Framebuffers> {
         let depth = if depth {
-            let (image, memory) = gpu.image(
-                extent,
-                DEPTH_FORMAT,
-                vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
-            )?;
-            let view = gpu.view(&image, DEPTH_FORMAT, vk::ImageAspectFlags::DEPTH)?;
-            Some((image, memory, view))
+            let usage = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+            let image = gpu.image(extent, DEPTH_FORMAT, usage)?;
+            Some(gpu.view(&image, DEPTH_FORMAT, vk::ImageAspectFlags::DEPTH)?)
         } else {
             None
         };
@@ -180,7 +177,7 @@ impl Framebuffers {
             .iter()
             .map(|view| {
                 let mut attachments = vec![view];
-                attachments.extend(depth.as_ref().map(|d| &d.2));
+                attachments.extend(depth.as_ref());
                 let attachments = tuff::HandleSlice::new(&attachments);
                 gpu.device.create_framebuffer(
                     &tuff::FramebufferCreateInfo::new(render_pass)

@@ -614,8 +614,8 @@ fn render(
     let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
     // SAFETY: every create info and what it points at lives across its call; each
     // object goes into `o` as soon as it is made, to be destroyed once the device is
-    // idle; a slot's uniform memory is written only after its fence says the slot's
-    // last submission completed, and the readback only after every fence.
+    // idle; a slot's mapped uniform memory is written only after its fence says the
+    // slot's last submission completed, and the readback only after every fence.
     unsafe {
         o.render_pass = render_pass(device)?;
         let bindings = [vk::DescriptorSetLayoutBinding::default()
@@ -703,7 +703,12 @@ fn render(
                 .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
                 .buffer_info(&info);
             device.update_descriptor_sets(&[write], &[]);
-            uniforms.push(memory);
+            // Mapped for the whole run, as tuff's allocator keeps it; freeing the
+            // memory unmaps it.
+            let ptr = device
+                .map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty())
+                .context("vkMapMemory")?;
+            uniforms.push(ptr.cast::<CameraBlock>());
         }
 
         let (flat, index_data) = mesh_data();
@@ -807,11 +812,9 @@ fn render(
                 .context("vkWaitForFences")?;
             device.reset_fences(&[fence]).context("vkResetFences")?;
             let time = frame as f32 / 60.0;
-            write(
-                device,
-                uniforms[slot],
-                bytemuck::bytes_of(&layout.camera(extent)),
-            )?;
+            // The mapping is aligned to minMemoryMapAlignment (at least 64 bytes) and
+            // coherent, so a plain store needs no flush.
+            uniforms[slot].write(layout.camera(extent));
 
             device
                 .begin_command_buffer(

@@ -93,8 +93,8 @@ pub struct Bezier {
     pipeline: tuff::Pipeline,
     layout: tuff::PipelineLayout,
     set: tuff::DescriptorSet,
-    indices: (tuff::Buffer, tuff::DeviceMemory),
-    _points: (tuff::Buffer, tuff::DeviceMemory),
+    indices: tuff::Bound<tuff::Buffer>,
+    _points: tuff::Bound<tuff::Buffer>,
     _set_layout: tuff::DescriptorSetLayout,
     _pool: tuff::DescriptorPool,
 }
@@ -182,7 +182,7 @@ impl Bezier {
         let index_data: Vec<u32> = PATCHES.iter().flatten().map(|&i| u32::from(i)).collect();
         let indices = gpu.buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data)?;
         let info = [tuff::DescriptorBufferInfo::new()
-            .buffer(Some(&points.0))
+            .buffer(Some(&points))
             .range(vk::WHOLE_SIZE)];
         d.update_descriptor_sets(
             &[tuff::WriteDescriptorSet::new(&set)
@@ -223,7 +223,7 @@ impl Scene for Bezier {
             &[&self.set],
             &[],
         );
-        rec.cmd_bind_index_buffer(&self.indices.0, 0, vk::IndexType::UINT32);
+        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32);
         rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params));
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and

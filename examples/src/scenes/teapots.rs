@@ -8,6 +8,7 @@ use crate::render::{Scene, View, FRAMES_IN_FLIGHT};
 use crate::scenes::teapot_grid::{mesh_data, vertex_input, CameraBlock, Layout, TeapotBlock};
 use anyhow::Result;
 use tuff::vk;
+use tuff::MemoryLocation::Upload;
 
 /// What the teapots ask of the device: nothing beyond core Vulkan.
 pub const REQUIREMENTS: Requirements = Requirements {
@@ -23,9 +24,9 @@ pub struct Teapots {
     pipeline: tuff::Pipeline,
     pipeline_layout: tuff::PipelineLayout,
     sets: Vec<tuff::DescriptorSet>,
-    uniforms: Vec<(tuff::Buffer, tuff::DeviceMemory)>,
-    vertices: (tuff::Buffer, tuff::DeviceMemory),
-    indices: (tuff::Buffer, tuff::DeviceMemory),
+    uniforms: Vec<tuff::Bound<tuff::Buffer>>,
+    vertices: tuff::Bound<tuff::Buffer>,
+    indices: tuff::Bound<tuff::Buffer>,
     index_count: u32,
     _set_layout: tuff::DescriptorSetLayout,
     _pool: tuff::DescriptorPool,
@@ -86,9 +87,9 @@ impl Teapots {
         )?;
         let size = std::mem::size_of::<CameraBlock>() as u64;
         let uniforms = (0..FRAMES_IN_FLIGHT)
-            .map(|_| gpu.buffer(size, vk::BufferUsageFlags::UNIFORM_BUFFER, crate::gpu::HOST))
+            .map(|_| gpu.buffer(size, vk::BufferUsageFlags::UNIFORM_BUFFER, Upload))
             .collect::<Result<Vec<_>>>()?;
-        for (set, (buffer, _)) in sets.iter().zip(&uniforms) {
+        for (set, buffer) in sets.iter().zip(&uniforms) {
             let info = [tuff::DescriptorBufferInfo::new()
                 .buffer(Some(buffer))
                 .range(size)];
@@ -124,7 +125,7 @@ impl Scene for Teapots {
 
     fn update(&mut self, view: &View) -> Result<()> {
         let block = self.layout_data.camera(view.extent);
-        self.uniforms[view.slot].1.map()?.write(0, &[block])?;
+        self.uniforms[view.slot].memory().write_value(0, &block)?;
         Ok(())
     }
 
@@ -137,8 +138,8 @@ impl Scene for Teapots {
             &[&self.sets[view.slot]],
             &[],
         );
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices.0], &[0]);
-        rec.cmd_bind_index_buffer(&self.indices.0, 0, vk::IndexType::UINT32);
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]);
+        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32);
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);
             rec.cmd_push_constants(

@@ -41,7 +41,7 @@ const VERTICES: [Vertex; 3] = [
 pub struct Triangle {
     pipeline: tuff::Pipeline,
     _layout: tuff::PipelineLayout,
-    vertices: (tuff::Buffer, tuff::DeviceMemory),
+    vertices: tuff::Bound<tuff::Buffer>,
 }
 
 impl Triangle {
@@ -102,7 +102,7 @@ impl Scene for Triangle {
 
     fn draw(&self, rec: &mut tuff::Recorder<'_, tuff::InRenderPass>, _view: &View) {
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline);
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices.0], &[0]);
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]);
         rec.cmd_draw(3, 1, 0, 0);
     }
 }
