@@ -315,36 +315,8 @@ fn resources_dropped_while_their_submission_is_in_flight() {
 #[test]
 fn a_submitted_buffer_is_written() {
     let s = setup(true);
-    let d = &s.device;
     let (buffer, memory) = buffer_with_memory(&s, 256);
-    let pool = d
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
-    let mut cb = d
-        .allocate_command_buffers(
-            &pool,
-            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
-        )
-        .expect("cbs")
-        .pop()
-        .expect("one");
-    let mut rec = cb
-        .begin(&tuff::CommandBufferBeginInfo::new())
-        .expect("begin");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5);
-    rec.end().expect("end");
-    assert!(cb.is_executable());
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
-    let handles = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-        .expect("submit");
-    let status = d
-        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-        .expect("wait");
-    assert_eq!(status, vk::Result::SUCCESS);
+    submit_and_wait(&s, |rec| rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5));
     // Read back through ash on the raw handles: Deref keeps the layer transparent.
     let bytes = access_memory(&s, &memory, 256, None);
     assert!(
@@ -733,6 +705,7 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
         .expect("begin");
     let kept = fill(&mut rec);
     rec.end().expect("end");
+    assert!(cb.is_executable());
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");

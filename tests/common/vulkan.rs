@@ -5,22 +5,21 @@
 #![allow(dead_code)]
 
 use ash::vk;
-use std::ffi::{c_void, CStr};
-use std::sync::{Arc, Mutex};
+use std::ffi::CStr;
+use std::sync::Arc;
 use tuff_runtime::{DeviceOwner, Vrc};
 
 const VALIDATION: &CStr = c"VK_LAYER_KHRONOS_validation";
 
-/// Messages the validation layer emitted.
-pub type Messages = Arc<Mutex<Vec<String>>>;
+/// Where the validation layer's messages go: tuff's log, whose callback the raw-ash
+/// instance uses too.
+pub type Messages = Arc<tuff::MessageLog>;
 
 /// The instance, and the debug messenger when validation is on.
 pub struct TestInstance {
     pub entry: ash::Entry,
     pub instance: ash::Instance,
     debug: Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
-    // Boxed so the pointer handed to the callback stays put.
-    _user_data: Box<Messages>,
 }
 
 impl Drop for TestInstance {
@@ -73,30 +72,6 @@ impl DeviceOwner for TestDevice {
     }
 }
 
-pub unsafe extern "system" fn on_message(
-    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-    _types: vk::DebugUtilsMessageTypeFlagsEXT,
-    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
-    user: *mut c_void,
-) -> vk::Bool32 {
-    // SAFETY: the layer passes valid callback data, and `user` is the boxed Messages
-    // of the TestInstance, alive as long as the messenger.
-    unsafe {
-        let text = if data.is_null() || (*data).p_message.is_null() {
-            "<no message>".to_owned()
-        } else {
-            CStr::from_ptr((*data).p_message)
-                .to_string_lossy()
-                .into_owned()
-        };
-        let messages = &*(user as *const Messages);
-        if let Ok(mut m) = messages.lock() {
-            m.push(format!("{severity:?}: {text}"));
-        }
-    }
-    vk::FALSE
-}
-
 /// Create an instance (with the validation layer when `validation`) and a device with
 /// one queue family that supports graphics. Panics with a clear message when the
 /// loader, the layer or a device is missing.
@@ -104,8 +79,7 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
     // SAFETY: loading the system Vulkan loader.
     let entry = unsafe { ash::Entry::load() }
         .expect("the Vulkan loader (libvulkan.so.1) is not installed: apt-get install libvulkan1");
-    let messages: Messages = Arc::new(Mutex::new(Vec::new()));
-    let user_data = Box::new(messages.clone());
+    let messages: Messages = Arc::new(tuff::MessageLog::new());
 
     let mut layers = Vec::new();
     let mut extensions = Vec::new();
@@ -122,18 +96,7 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
         layers.push(VALIDATION.as_ptr());
         extensions.push(ash::ext::debug_utils::NAME.as_ptr());
     }
-    let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
-        .message_severity(
-            vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
-                | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
-        )
-        .message_type(
-            vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
-                | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
-        )
-        .pfn_user_callback(Some(on_message))
-        .user_data(&*user_data as *const Messages as *mut c_void);
+    let mut messenger_info = *messages.messenger_info().as_raw();
     let app = vk::ApplicationInfo::default()
         .application_name(c"tuff-tests")
         .api_version(vk::API_VERSION_1_3);
@@ -149,7 +112,7 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
     let instance = unsafe { entry.create_instance(&info, None) }.expect("vkCreateInstance");
     let debug = validation.then(|| {
         let utils = ash::ext::debug_utils::Instance::new(&entry, &instance);
-        // SAFETY: valid create info, the callback and user data outlive the messenger.
+        // SAFETY: valid create info; the log's callback is safe to outlive the log.
         let messenger = unsafe { utils.create_debug_utils_messenger(&messenger_info, None) }
             .expect("vkCreateDebugUtilsMessengerEXT");
         (utils, messenger)
@@ -158,7 +121,6 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
         entry,
         instance,
         debug,
-        _user_data: user_data,
     });
 
     // SAFETY: plain queries on a live instance.
@@ -222,28 +184,9 @@ pub fn device(validation: bool) -> (Vrc<TestDevice>, Messages) {
     (owner, messages)
 }
 
-/// What collected the validation layer's messages: the raw-ash tests' list or a
-/// tuff [`tuff::MessageLog`].
-pub trait Reported {
-    /// Every message so far.
-    fn reported(&self) -> Vec<String>;
-}
-
-impl Reported for Messages {
-    fn reported(&self) -> Vec<String> {
-        self.lock().expect("messages lock").clone()
-    }
-}
-
-impl Reported for tuff::MessageLog {
-    fn reported(&self) -> Vec<String> {
-        self.take()
-    }
-}
-
 /// Fail with every message the validation layer emitted.
-pub fn assert_silent(messages: &impl Reported) {
-    let m = messages.reported();
+pub fn assert_silent(messages: &tuff::MessageLog) {
+    let m = messages.take();
     assert!(
         m.is_empty(),
         "the validation layer reported {} message(s):\n{}",
