@@ -414,27 +414,24 @@ fn refuse(bad: bool, vuid: &'static str, message: &str) -> Result<()> {
 
 /// Refuses create infos whose chain asks for external, imported or dedicated memory:
 /// such resources may require a dedicated allocation, which the allocators do not make.
-fn refuse_chain(mut next: *const core::ffi::c_void, vuid: &'static str) -> Result<()> {
-    while !next.is_null() {
-        // SAFETY: the safe create infos only chain structs pushed through
-        // `push_next`, live references that begin with sType and pNext.
-        let base = unsafe { &*next.cast::<vk::BaseInStructure<'_>>() };
-        let refused = [
-            vk::StructureType::EXTERNAL_MEMORY_BUFFER_CREATE_INFO,
-            vk::StructureType::EXTERNAL_MEMORY_IMAGE_CREATE_INFO,
-            vk::StructureType::EXTERNAL_MEMORY_IMAGE_CREATE_INFO_NV,
-            vk::StructureType::DEDICATED_ALLOCATION_BUFFER_CREATE_INFO_NV,
-            vk::StructureType::DEDICATED_ALLOCATION_IMAGE_CREATE_INFO_NV,
-        ];
+fn refuse_chain(next: *const core::ffi::c_void, vuid: &'static str) -> Result<()> {
+    let refused = [
+        vk::StructureType::EXTERNAL_MEMORY_BUFFER_CREATE_INFO,
+        vk::StructureType::EXTERNAL_MEMORY_IMAGE_CREATE_INFO,
+        vk::StructureType::EXTERNAL_MEMORY_IMAGE_CREATE_INFO_NV,
+        vk::StructureType::DEDICATED_ALLOCATION_BUFFER_CREATE_INFO_NV,
+        vk::StructureType::DEDICATED_ALLOCATION_IMAGE_CREATE_INFO_NV,
+    ];
+    // SAFETY: the safe create infos only chain structs pushed through `push_next`.
+    for node in unsafe { crate::support::chain_nodes(next) } {
         refuse(
-            refused.contains(&base.s_type),
+            refused.contains(&node.s_type),
             vuid,
             &format!(
                 "a resource made with {:?} in its chain may need a dedicated allocation",
-                base.s_type
+                node.s_type
             ),
         )?;
-        next = base.p_next.cast();
     }
     Ok(())
 }

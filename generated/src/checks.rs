@@ -2888,9 +2888,8 @@ pub(crate) fn chain(
     unique: Option<&'static str>,
 ) -> Result<()> {
     let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
-    let mut p = next;
-    while !p.is_null() {
-        let base = unsafe { &*(p as *const vk::BaseInStructure<'_>) };
+    for base in unsafe { crate::support::chain_nodes(next) } {
+        let p = base as *const vk::BaseInStructure<'_>;
         let ty = base.s_type.as_raw();
         if let Some(vuid) = unique {
             if seen.contains(&ty) && !DUPLICATES_ALLOWED.contains(&ty) {
@@ -3109,7 +3108,6 @@ pub(crate) fn chain(
             }
             _ => {}
         }
-        p = base.p_next.cast();
     }
     Ok(())
 }

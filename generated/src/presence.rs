@@ -116,19 +116,12 @@ fn wanted_features(info: &DeviceCreateInfo<'_>) -> Option<vk::PhysicalDeviceFeat
         // SAFETY: the safe setter stores a reference that outlives `info`.
         return Some(unsafe { *info.p_enabled_features });
     }
-    let mut next = info.p_next;
-    while !next.is_null() {
-        // SAFETY: the safe create info only chains structs pushed through
-        // `push_next`, live references that begin with sType and pNext.
-        let base = unsafe { &*next.cast::<vk::BaseInStructure<'_>>() };
-        if base.s_type == vk::StructureType::PHYSICAL_DEVICE_FEATURES_2 {
-            // SAFETY: the sType says what the struct is.
-            let features = unsafe { &*next.cast::<vk::PhysicalDeviceFeatures2<'_>>() };
-            return Some(features.features);
-        }
-        next = base.p_next.cast();
-    }
-    None
+    // SAFETY: the safe create info only chains structs pushed through `push_next`.
+    let node = unsafe { crate::support::chain_nodes(info.p_next) }
+        .find(|n| n.s_type == vk::StructureType::PHYSICAL_DEVICE_FEATURES_2)?;
+    // SAFETY: the sType says the node is a VkPhysicalDeviceFeatures2.
+    let features = unsafe { &*(node as *const vk::BaseInStructure<'_>).cast::<vk::PhysicalDeviceFeatures2<'_>>() };
+    Some(features.features)
 }
 
 /// The features as the `VkBool32`s they are, when ash's struct has exactly the

@@ -243,6 +243,24 @@ impl crate::structs::DeviceCreateInfo<'_> {
     }
 }
 
+/// The nodes of a `pNext` chain, from the first one `next` points to.
+///
+/// # Safety
+///
+/// `next` is null or points to a chain of live structs that each begin with `sType`
+/// and `pNext`, as every chain `push_next` builds on the safe structs does.
+pub(crate) unsafe fn chain_nodes<'a>(
+    next: *const core::ffi::c_void,
+) -> impl Iterator<Item = &'a vk::BaseInStructure<'a>> {
+    let mut p = next.cast::<vk::BaseInStructure<'a>>();
+    core::iter::from_fn(move || {
+        // SAFETY: the caller vouches for every node of the chain.
+        let node = unsafe { p.as_ref() }?;
+        p = node.p_next;
+        Some(node)
+    })
+}
+
 /// Typed `pNext` chains.
 pub mod chain {
     /// Implemented by every struct that may extend the `pNext` chain of `Head`.

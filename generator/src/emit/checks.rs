@@ -771,11 +771,10 @@ impl<'c, 'm> Checker<'c, 'm> {
             /// rule), and each node's own checks.
             pub(crate) fn chain(next: *const core::ffi::c_void, s: &Scope<'_>, unique: Option<&'static str>) -> Result<()> {
                 let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
-                let mut p = next;
-                while !p.is_null() {
-                    // SAFETY: chains are built by `push_next` from safe structs, each a
-                    // live struct that begins with `sType` and `pNext`.
-                    let base = unsafe { &*(p as *const vk::BaseInStructure<'_>) };
+                // SAFETY: chains are built by `push_next` from safe structs, each a
+                // live struct that begins with `sType` and `pNext`.
+                for base in unsafe { crate::support::chain_nodes(next) } {
+                    let p = base as *const vk::BaseInStructure<'_>;
                     let ty = base.s_type.as_raw();
                     if let Some(vuid) = unique {
                         if seen.contains(&ty) && !DUPLICATES_ALLOWED.contains(&ty) {
@@ -787,7 +786,6 @@ impl<'c, 'm> Checker<'c, 'm> {
                         #(#arms)*
                         _ => {}
                     }
-                    p = base.p_next.cast();
                 }
                 Ok(())
             }
