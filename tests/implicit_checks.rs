@@ -143,21 +143,8 @@ fn counts_and_chains_are_checked() {
 #[test]
 fn a_primary_only_command_in_a_secondary_buffer_fails_at_end() {
     let s = setup(true);
-    let d = &s.device;
     let target = s.color_target(16, vk::ImageUsageFlags::COLOR_ATTACHMENT);
-    let pool = d
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
-    let mut cb = d
-        .allocate_command_buffers(
-            &pool,
-            &tuff::CommandBufferAllocateInfo::new(&pool)
-                .level(vk::CommandBufferLevel::SECONDARY)
-                .command_buffer_count(1),
-        )
-        .expect("cbs")
-        .pop()
-        .expect("one");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
     let inheritance = tuff::CommandBufferInheritanceInfo::new();
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))

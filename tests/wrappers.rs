@@ -275,16 +275,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         .expect("fence");
     for round in 0..20u32 {
         let (buffer, memory) = buffer_with_memory(&s, 1 << 20);
-        let pool = d
-            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-            .expect("pool");
-        let mut cbs = d
-            .allocate_command_buffers(
-                &pool,
-                &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
-            )
-            .expect("cbs");
-        let mut cb = cbs.pop().expect("one command buffer");
+        let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
@@ -607,17 +598,7 @@ fn pipelines_draw_and_dispatch() {
     let target = s.color_target(8, vk::ImageUsageFlags::TRANSFER_SRC);
     let work = pipelines(&s, &target);
     let readback = host_buffer(&s, 16, vk::BufferUsageFlags::TRANSFER_DST);
-    let pool = d
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
-    let mut cb = d
-        .allocate_command_buffers(
-            &pool,
-            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
-        )
-        .expect("cbs")
-        .pop()
-        .expect("one");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
@@ -689,17 +670,7 @@ fn mapped_memory_is_checked_and_unmapped_on_drop() {
 /// keeps them alive.
 fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>) -> K) {
     let d = &s.device;
-    let pool = d
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
-    let mut cb = d
-        .allocate_command_buffers(
-            &pool,
-            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
-        )
-        .expect("cbs")
-        .pop()
-        .expect("one");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");

@@ -134,6 +134,34 @@ impl Setup {
     }
 }
 
+impl Setup {
+    /// A command pool on the setup's queue family and one command buffer of `level`
+    /// from it.
+    pub fn command_buffer(
+        &self,
+        level: vk::CommandBufferLevel,
+    ) -> (tuff::CommandPool, tuff::CommandBuffer) {
+        let pool = self
+            .device
+            .create_command_pool(
+                &tuff::CommandPoolCreateInfo::new().queue_family_index(self.family),
+            )
+            .expect("pool");
+        let cb = self
+            .device
+            .allocate_command_buffers(
+                &pool,
+                &tuff::CommandBufferAllocateInfo::new(&pool)
+                    .level(level)
+                    .command_buffer_count(1),
+            )
+            .expect("command buffers")
+            .pop()
+            .expect("one command buffer");
+        (pool, cb)
+    }
+}
+
 /// A square RGBA8 image with its memory and view, and a one-subpass render pass and
 /// framebuffer that clear and store it.
 pub struct ColorTarget {
