@@ -946,3 +946,89 @@ fn the_message_log_hears_the_layer_and_outlives_nothing() {
     );
     assert_silent(&s.messages);
 }
+
+#[test]
+fn frames_in_flight_take_turns_and_keep_their_semaphores() {
+    let s = setup(true);
+    let d = &s.device;
+    let gpu = d.gpu_allocator().expect("gpu allocator");
+    let mut frames = d.frames_in_flight(s.family, 3).expect("frames in flight");
+    assert_eq!(frames.len(), 3);
+    let targets: Vec<_> = (0..3)
+        .map(|_| {
+            let info = tuff::BufferCreateInfo::new()
+                .size(64)
+                .usage(vk::BufferUsageFlags::TRANSFER_DST);
+            d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback)
+                .expect("target")
+        })
+        .collect();
+    let first = |t: &tuff::Bound<tuff::Buffer>| t.memory().read::<u32>(0, 1).expect("read")[0];
+    let record = |frame: &mut tuff::Frame<'_>, n: u32| {
+        let target = &targets[frame.index];
+        let mut rec = frame.record().expect("record");
+        rec.cmd_fill_buffer(target, 0, vk::WHOLE_SIZE, n);
+        let to_host = [tuff::BufferMemoryBarrier::new(target)
+            .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+            .dst_access_mask(vk::AccessFlags::HOST_READ)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .size(vk::WHOLE_SIZE)];
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[],
+            &to_host,
+            &[],
+        );
+        rec.end().expect("end");
+    };
+    let mut order = Vec::new();
+    let mut previous: Option<tuff::Semaphore> = None;
+    for n in 0..7u32 {
+        let mut frame = frames.next().expect("next frame");
+        order.push(frame.index);
+        // The frame's last submission is complete, so what it wrote is there.
+        if n >= 3 {
+            assert_eq!(first(&targets[frame.index]), n - 3, "frame {n}");
+        }
+        record(&mut frame, n);
+        // A chain of semaphores, each dropped once the next submission waits on it,
+        // while that submission may still run: the frame's fence keeps it (the layer
+        // would report a semaphore destroyed in use).
+        let signal = d
+            .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+            .expect("semaphore");
+        let waits: Vec<_> = previous
+            .iter()
+            .map(|p| (p, vk::PipelineStageFlags::TRANSFER))
+            .collect();
+        frame.submit(&s.queue, &waits, &[&signal]).expect("submit");
+        previous = Some(signal);
+    }
+    assert_eq!(order, [0, 1, 2, 0, 1, 2, 0]);
+    // A frame submitted without a new recording is refused, and the ring stays on it.
+    let frame = frames.next().expect("next frame");
+    assert_eq!(frame.index, 1);
+    let refused = frame.submit(&s.queue, &[], &[]);
+    assert!(
+        matches!(refused, Err(tuff::Error::Validation { vuid, .. })
+            if vuid == "VUID-vkQueueSubmit-pCommandBuffers-00070"),
+        "{refused:?}"
+    );
+    let mut frame = frames.next().expect("the same frame again");
+    assert_eq!(frame.index, 1);
+    record(&mut frame, 7);
+    let waits = [(
+        previous.as_ref().expect("a semaphore"),
+        vk::PipelineStageFlags::TRANSFER,
+    )];
+    frame.submit(&s.queue, &waits, &[]).expect("submit");
+    drop(previous);
+    frames.wait_all().expect("wait for all frames");
+    let last: Vec<u32> = targets.iter().map(first).collect();
+    assert_eq!(last, [6, 7, 5]);
+    assert_eq!(frames.next().expect("next frame").index, 2);
+    assert_silent(&s.messages);
+}

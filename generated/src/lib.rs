@@ -24,6 +24,8 @@ mod checks;
 #[rustfmt::skip]
 mod commands;
 #[rustfmt::skip]
+mod frames;
+#[rustfmt::skip]
 pub mod handles;
 #[rustfmt::skip]
 #[cfg(feature = "ext_debug_utils")]
@@ -51,6 +53,7 @@ pub use allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllo
 pub use ash::vk;
 #[cfg(feature = "ext_debug_utils")]
 pub use debug_log::MessageLog;
+pub use frames::{Frame, FramesInFlight};
 pub use handles::*;
 pub use mapping::MappedMemory;
 pub use recorder::{InRenderPass, InRendering, Inside, Outside, Recorder, State};

@@ -188,6 +188,7 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
             "src/presence.rs",
             include_str!("../../templates/presence.rs"),
         ),
+        ("src/frames.rs", include_str!("../../templates/frames.rs")),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),
