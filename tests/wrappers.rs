@@ -1032,3 +1032,77 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     assert_eq!(frames.next().expect("next frame").index, 2);
     assert_silent(&s.messages);
 }
+
+#[test]
+fn shader_modules_come_from_spirv_bytes_in_either_byte_order() {
+    let s = setup(true);
+    let bytes = include_bytes!("../shaders/spv/test.vert.spv");
+    s.device
+        .create_shader_module_from_spirv(bytes)
+        .expect("little-endian module");
+    let swapped: Vec<u8> = bytes
+        .chunks_exact(4)
+        .flat_map(|w| [w[3], w[2], w[1], w[0]])
+        .collect();
+    assert_eq!(
+        tuff::spirv_words(&swapped).expect("big-endian words"),
+        tuff::spirv_words(bytes).expect("little-endian words")
+    );
+    s.device
+        .create_shader_module_from_spirv(&swapped)
+        .expect("big-endian module");
+    let refused = |bytes: &[u8]| match s.device.create_shader_module_from_spirv(bytes) {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid,
+        other => panic!("not refused: {:?}", other.map(|_| ())),
+    };
+    assert_eq!(refused(&[]), "VUID-VkShaderModuleCreateInfo-codeSize-01085");
+    assert_eq!(
+        refused(&bytes[..bytes.len() - 1]),
+        "VUID-VkShaderModuleCreateInfo-codeSize-01086"
+    );
+    assert_eq!(
+        refused(b"#version 450\nvoid main() {}\n"),
+        "VUID-VkShaderModuleCreateInfo-pCode-01087"
+    );
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn physical_devices_name_themselves_and_find_queue_families() {
+    let s = setup(true);
+    let raw = s.physical.get_physical_device_properties();
+    let expected = raw
+        .device_name_as_c_str()
+        .expect("a NUL-terminated name")
+        .to_str()
+        .expect("UTF-8");
+    assert_eq!(s.physical.name(), expected);
+    assert!(!expected.is_empty());
+    let families = s
+        .physical
+        .get_physical_device_queue_family_properties()
+        .expect("families");
+    for flags in [
+        vk::QueueFlags::GRAPHICS,
+        vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
+        vk::QueueFlags::SPARSE_BINDING,
+        vk::QueueFlags::PROTECTED,
+    ] {
+        let scanned = families
+            .iter()
+            .position(|f| f.queue_flags.contains(flags))
+            .map(|i| i as u32);
+        assert_eq!(
+            s.physical.queue_family_index(flags).expect("query"),
+            scanned,
+            "{flags:?}"
+        );
+    }
+    assert_eq!(
+        s.physical
+            .queue_family_index(vk::QueueFlags::GRAPHICS)
+            .expect("query"),
+        Some(s.family)
+    );
+    assert_silent(&s.messages);
+}

@@ -33,6 +33,8 @@ mod debug_log;
 #[rustfmt::skip]
 mod mapping;
 #[rustfmt::skip]
+mod physical;
+#[rustfmt::skip]
 mod presence;
 #[rustfmt::skip]
 pub mod recorder;
@@ -40,6 +42,8 @@ pub mod recorder;
 mod retention;
 #[rustfmt::skip]
 pub mod structs;
+#[rustfmt::skip]
+mod spirv;
 #[rustfmt::skip]
 mod support;
 #[rustfmt::skip]
@@ -57,6 +61,7 @@ pub use frames::{Frame, FramesInFlight};
 pub use handles::*;
 pub use mapping::MappedMemory;
 pub use recorder::{InRenderPass, InRendering, Inside, Outside, Recorder, State};
+pub use spirv::spirv_words;
 pub use structs::*;
 pub use support::*;
 pub use tuff_runtime as runtime;

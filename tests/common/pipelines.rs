@@ -7,15 +7,6 @@
 use crate::tuff_setup::{ColorTarget, Setup};
 use tuff::vk;
 
-/// SPIR-V words from the committed bytes (which need not be 4-byte aligned).
-pub fn spirv(bytes: &[u8]) -> Vec<u32> {
-    assert_eq!(bytes.len() % 4, 0, "SPIR-V is a whole number of words");
-    bytes
-        .chunks_exact(4)
-        .map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]))
-        .collect()
-}
-
 /// The number of invocations the compute shader runs (one work group of 64).
 pub const INVOCATIONS: u64 = 64;
 /// The factor the compute shader multiplies each index by, read from a uniform buffer.
@@ -99,8 +90,7 @@ pub fn access_memory(
 pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
     let d = &s.device;
     let module = |bytes: &[u8]| {
-        let words = spirv(bytes);
-        d.create_shader_module(&tuff::ShaderModuleCreateInfo::new().code(&words))
+        d.create_shader_module_from_spirv(bytes)
             .expect("shader module")
     };
     let vert = module(include_bytes!("../../shaders/spv/test.vert.spv"));

@@ -189,6 +189,11 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
             include_str!("../../templates/presence.rs"),
         ),
         ("src/frames.rs", include_str!("../../templates/frames.rs")),
+        ("src/spirv.rs", include_str!("../../templates/spirv.rs")),
+        (
+            "src/physical.rs",
+            include_str!("../../templates/physical.rs"),
+        ),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),
