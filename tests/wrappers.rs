@@ -744,6 +744,17 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
             "{name}"
         );
     }
+    // A buffer made and filled in one call; empty data still makes a valid buffer.
+    let usage = vk::BufferUsageFlags::INDEX_BUFFER;
+    let filled = d
+        .create_buffer_with(usage, &[5u16, 6, 7], &gpu)
+        .expect("filled buffer");
+    assert_eq!(filled.memory().read::<u16>(0, 3).expect("read"), [5, 6, 7]);
+    let empty: [u32; 0] = [];
+    let empty = d
+        .create_buffer_with(usage, &empty, &naive)
+        .expect("empty buffer");
+    assert!(empty.memory().size() >= 1);
     // An image in device-local memory, and the refusals.
     let image = d
         .create_image_in(

@@ -171,12 +171,26 @@ pub struct CStrPtr<'a> {
     _marker: PhantomData<&'a CStr>,
 }
 
-impl<'a> From<&'a CStr> for CStrPtr<'a> {
-    fn from(s: &'a CStr) -> Self {
+impl<'a> CStrPtr<'a> {
+    /// The pointer to `s`; a `const fn`, so lists of names can be constants.
+    ///
+    /// ```
+    /// const LAYERS: [tuff::CStrPtr<'static>; 1] =
+    ///     [tuff::CStrPtr::new(c"VK_LAYER_KHRONOS_validation")];
+    /// let info = tuff::InstanceCreateInfo::new().enabled_layer_names(&LAYERS);
+    /// # let _ = info;
+    /// ```
+    pub const fn new(s: &'a CStr) -> Self {
         CStrPtr {
             ptr: s.as_ptr(),
             _marker: PhantomData,
         }
+    }
+}
+
+impl<'a> From<&'a CStr> for CStrPtr<'a> {
+    fn from(s: &'a CStr) -> Self {
+        CStrPtr::new(s)
     }
 }
 

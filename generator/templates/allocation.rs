@@ -100,6 +100,32 @@ impl Device {
         NaiveAllocator::new(self.memory_owner())
     }
 
+    /// A buffer of `usage` holding `data`: made with [`Device::create_buffer_in`] in
+    /// host-visible memory ([`MemoryLocation::Upload`]) from `allocator`, then
+    /// written. Empty `data` gives a one-byte buffer, as a buffer cannot be empty
+    /// (`VUID-VkBufferCreateInfo-size-00912`).
+    ///
+    /// ```no_run
+    /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+    /// let allocator = device.gpu_allocator()?;
+    /// let usage = tuff::vk::BufferUsageFlags::INDEX_BUFFER;
+    /// let indices = device.create_buffer_with(usage, &[0u32, 1, 2], &allocator)?;
+    /// assert_eq!(indices.memory().read::<u32>(0, 3)?, [0, 1, 2]);
+    /// # Ok(()) }
+    /// ```
+    pub fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
+        &self,
+        usage: vk::BufferUsageFlags,
+        data: &[T],
+        allocator: &A,
+    ) -> Result<Bound<Buffer>> {
+        let size = (core::mem::size_of_val(data) as u64).max(1);
+        let info = BufferCreateInfo::new().size(size).usage(usage);
+        let buffer = self.create_buffer_in(&info, allocator, MemoryLocation::Upload)?;
+        buffer.memory().write(0, data)?;
+        Ok(buffer)
+    }
+
     /// Creates a buffer and binds memory from `allocator` at `location` to it.
     ///
     /// Fails with the rule's VUID when the buffer needs memory no allocator of the
