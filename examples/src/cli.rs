@@ -96,14 +96,3 @@ pub fn run<S: Scene>(
     }
     Ok(())
 }
-
-/// Runs `main`, printing an error and its causes on failure.
-pub fn exit(main: impl FnOnce() -> Result<()>) -> std::process::ExitCode {
-    match main() {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e:#}");
-            std::process::ExitCode::FAILURE
-        }
-    }
-}

@@ -1,7 +1,7 @@
 //! Instance, device and queue for a scene, made through tuff, asking for exactly the
 //! features and extensions the scene uses.
 
-use anyhow::{anyhow, bail, Context as _, Result};
+use anyhow::{anyhow, Context as _, Result};
 use tuff::vk;
 
 /// What a scene needs of the device.
@@ -33,7 +33,7 @@ pub struct Gpu {
     pub physical: tuff::PhysicalDevice,
     /// The physical device's name, for messages.
     pub name: String,
-    messenger: Option<tuff::DebugUtilsMessengerEXT>,
+    _messenger: Option<tuff::DebugUtilsMessengerEXT>,
     /// The instance.
     pub instance: tuff::Instance,
     log: tuff::MessageLog,
@@ -49,15 +49,12 @@ impl Gpu {
     pub fn new(req: Requirements, validation: bool) -> Result<Gpu> {
         let entry = tuff::Entry::load().context("cannot load the Vulkan loader (libvulkan1)")?;
         let log = tuff::MessageLog::new();
-        let mut exts: Vec<tuff::CStrPtr> = Vec::new();
+        let mut exts = Vec::new();
         if validation {
-            exts.push(c"VK_EXT_debug_utils".into());
+            exts.push(tuff::CStrPtr::new(c"VK_EXT_debug_utils"));
         }
         if req.window {
-            exts.extend([
-                tuff::CStrPtr::from(c"VK_KHR_surface"),
-                c"VK_KHR_xlib_surface".into(),
-            ]);
+            exts.extend(crate::window::INSTANCE_EXTENSIONS);
         }
         let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
         let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
@@ -83,12 +80,6 @@ impl Gpu {
             .then(|| instance.create_debug_utils_messenger_ext(&log.messenger_info()))
             .transpose()?;
         let physicals = instance.enumerate_physical_devices()?;
-        let name_of = |p: &tuff::PhysicalDevice| {
-            p.get_physical_device_properties()
-                .device_name_as_c_str()
-                .map(|n| n.to_string_lossy().into_owned())
-                .unwrap_or_else(|_| "<unnamed>".into())
-        };
         // A discrete GPU first, then integrated, then anything (lavapipe is a CPU);
         // TUFF_DEVICE picks by name instead (the scene tests pin lavapipe with it).
         let rank = |p: &tuff::PhysicalDevice| match p.get_physical_device_properties().device_type {
@@ -99,9 +90,9 @@ impl Gpu {
         let physical = match std::env::var("TUFF_DEVICE") {
             Ok(wanted) if !wanted.is_empty() => physicals
                 .iter()
-                .find(|p| name_of(p).contains(&wanted))
+                .find(|p| p.name().contains(&wanted))
                 .ok_or_else(|| {
-                    let names: Vec<String> = physicals.iter().map(name_of).collect();
+                    let names: Vec<String> = physicals.iter().map(|p| p.name()).collect();
                     anyhow!(
                         "no Vulkan device's name contains TUFF_DEVICE={wanted:?} (devices: {})",
                         names.join(", ")
@@ -114,23 +105,20 @@ impl Gpu {
             })?,
         }
         .clone();
-        let name = name_of(&physical);
+        let name = physical.name();
         let features = vk::PhysicalDeviceFeatures {
             tessellation_shader: req.tessellation_shader.into(),
             fill_mode_non_solid: req.fill_mode_non_solid.into(),
             ..Default::default()
         };
-        let device_exts: &[tuff::CStrPtr] = if req.window {
-            &[tuff::CStrPtr::from(c"VK_KHR_swapchain")]
+        let device_exts: &[_] = if req.window {
+            &crate::window::DEVICE_EXTENSIONS
         } else {
             &[]
         };
         let family = physical
-            .get_physical_device_queue_family_properties()?
-            .iter()
-            .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
-            .ok_or_else(|| anyhow!("the device \"{name}\" has no graphics queue"))?
-            as u32;
+            .queue_family_index(vk::QueueFlags::GRAPHICS)?
+            .ok_or_else(|| anyhow!("the device \"{name}\" has no graphics queue"))?;
         let queues = [tuff::DeviceQueueCreateInfo::new()
             .queue_family_index(family)
             .queue_priorities(&[1.0])];
@@ -154,7 +142,7 @@ impl Gpu {
             device,
             physical,
             name,
-            messenger,
+            _messenger: messenger,
             instance,
             log,
         })
@@ -163,18 +151,9 @@ impl Gpu {
     /// Drops the device and instance and returns what the validation layer reported
     /// over the whole run, including while objects were destroyed. Drop every object
     /// made from this device first.
-    pub fn finish(self) -> Vec<String> {
-        let Gpu {
-            allocator,
-            queue,
-            device,
-            physical,
-            messenger,
-            instance,
-            log,
-            ..
-        } = self;
-        drop((allocator, queue, device, physical, messenger, instance));
+    pub fn finish(mut self) -> Vec<String> {
+        let log = std::mem::take(&mut self.log);
+        drop(self);
         log.take()
     }
 
@@ -189,18 +168,6 @@ impl Gpu {
         Ok(self
             .device
             .create_buffer_in(&info, &self.allocator, location)?)
-    }
-
-    /// A buffer holding `data`, which the device reads.
-    pub fn buffer_with<T: bytemuck::NoUninit>(
-        &self,
-        usage: vk::BufferUsageFlags,
-        data: &[T],
-    ) -> Result<tuff::Bound<tuff::Buffer>> {
-        let size = std::mem::size_of_val(data).max(4) as u64;
-        let buffer = self.buffer(size, usage, tuff::MemoryLocation::Upload)?;
-        buffer.memory().write(0, data)?;
-        Ok(buffer)
     }
 
     /// A 2D image in device-local memory, which the image keeps.
@@ -239,19 +206,6 @@ impl Gpu {
                 .format(format)
                 .subresource_range(whole(aspect)),
         )?)
-    }
-
-    /// A shader module from committed SPIR-V bytes.
-    pub fn shader(&self, spirv: &[u8]) -> Result<tuff::ShaderModule> {
-        if spirv.len() % 4 != 0 {
-            bail!(
-                "SPIR-V of {} bytes is not a whole number of words",
-                spirv.len()
-            );
-        }
-        let words: Vec<u32> = bytemuck::pod_collect_to_vec(spirv);
-        let info = tuff::ShaderModuleCreateInfo::new().code(&words);
-        Ok(self.device.create_shader_module(&info)?)
     }
 }
 

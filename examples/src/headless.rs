@@ -2,7 +2,7 @@
 //! frame back.
 
 use crate::gpu::Gpu;
-use crate::render::{self, Framebuffers, Readback, Scene, Slots, View, FRAMES_IN_FLIGHT};
+use crate::render::{self, Framebuffers, Scene, View, FRAMES_IN_FLIGHT};
 use anyhow::{bail, Result};
 use std::time::{Duration, Instant};
 use tuff::vk;
@@ -75,40 +75,23 @@ pub fn render<S: Scene>(
         vk::BufferUsageFlags::TRANSFER_DST,
         tuff::MemoryLocation::Readback,
     )?;
-    let mut slots = Slots::new(gpu, false)?;
+    let mut ring = gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?;
     let start = Instant::now();
-    for frame in 0..frames {
-        let slot = frame as usize % FRAMES_IN_FLIGHT;
-        slots.wait(gpu, slot)?;
+    for n in 0..frames {
+        let mut frame = ring.next()?;
+        let (slot, last) = (frame.index, n + 1 == frames);
         let view = View {
             extent,
-            time: frame as f32 / 60.0,
+            time: n as f32 / 60.0,
             slot,
         };
         scene.update(&view)?;
-        let last = frame + 1 == frames;
-        let s = &mut slots.slots[slot];
-        render::record_frame(
-            &mut s.commands,
-            &render_pass,
-            &targets.framebuffers[slot],
-            &scene,
-            &view,
-            last.then_some(Readback {
-                image: &images[slot],
-                buffer: &readback,
-            }),
-        )?;
-        let commands = tuff::HandleSlice::new(&[&s.commands]);
-        // Reset only now that the submission follows: a reset fence nothing will
-        // signal would hang the next wait.
-        gpu.device.reset_fences(&[&s.done])?;
-        gpu.queue.queue_submit(
-            &[tuff::SubmitInfo::new().command_buffers(&commands)],
-            &s.done,
-        )?;
+        let copy = last.then_some((&images[slot], &*readback));
+        let framebuffer = &targets.framebuffers[slot];
+        render::record_frame(&mut frame, &render_pass, framebuffer, &scene, &view, copy)?;
+        frame.submit(&gpu.queue, &[], &[])?;
     }
-    slots.wait_all(gpu)?;
+    ring.wait_all()?;
     let elapsed = start.elapsed();
     let rgba = readback.memory().read(0, bytes as usize)?;
     Ok(Rendered {

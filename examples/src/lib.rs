@@ -40,3 +40,14 @@ macro_rules! spirv {
         ))
     };
 }
+
+/// Runs `main`, printing an error and its causes on failure.
+pub fn exit(main: impl FnOnce() -> anyhow::Result<()>) -> std::process::ExitCode {
+    match main() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}

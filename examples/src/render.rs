@@ -1,5 +1,5 @@
 //! What every scene shares: the render pass, the attachments of a set of color
-//! images, the frames in flight, and the recording of one frame.
+//! images, and the recording of one frame.
 
 use crate::gpu::Gpu;
 use anyhow::Result;
@@ -19,7 +19,7 @@ pub struct View {
     pub extent: vk::Extent2D,
     /// Seconds of scene time: frame index / 60 headless, so images are reproducible.
     pub time: f32,
-    /// Which frame-in-flight slot records it, `0..FRAMES_IN_FLIGHT`.
+    /// Which frame in flight records it, `0..FRAMES_IN_FLIGHT`.
     pub slot: usize,
 }
 
@@ -91,27 +91,18 @@ pub fn render_pass(
     let subpasses = [subpass];
     let fragment_tests =
         vk::PipelineStageFlags::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags::LATE_FRAGMENT_TESTS;
-    let (after_stage, after_access) = if final_layout == vk::ImageLayout::TRANSFER_SRC_OPTIMAL {
-        (
-            vk::PipelineStageFlags::TRANSFER,
-            vk::AccessFlags::TRANSFER_READ,
-        )
-    } else {
-        (
-            vk::PipelineStageFlags::BOTTOM_OF_PIPE,
-            vk::AccessFlags::empty(),
-        )
-    };
+    // The same dependencies serve both final layouts: a presentation is ordered by
+    // the semaphores around it, so the transfer stages only add a harmless wait.
     let dependencies = [
-        // The previous frame's color writes (and reads of the copy or the presentation
-        // engine, which the acquire semaphore waits for at this stage) and depth writes
-        // come before this frame's clears.
+        // The previous frame's color and depth writes and its copy (or the
+        // presentation engine's read, which the acquire semaphore waits for at the
+        // color output stage) come before this frame's clears.
         vk::SubpassDependency {
             src_subpass: vk::SUBPASS_EXTERNAL,
             dst_subpass: 0,
             src_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT
                 | fragment_tests
-                | after_stage,
+                | vk::PipelineStageFlags::TRANSFER,
             dst_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT | fragment_tests,
             src_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE
                 | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
@@ -121,14 +112,14 @@ pub fn render_pass(
                 | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
             dependency_flags: vk::DependencyFlags::empty(),
         },
-        // This frame's color writes come before the copy or the presentation.
+        // This frame's color writes come before the copy.
         vk::SubpassDependency {
             src_subpass: 0,
             dst_subpass: vk::SUBPASS_EXTERNAL,
             src_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
-            dst_stage_mask: after_stage,
+            dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
             src_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
-            dst_access_mask: after_access,
+            dst_access_mask: vk::AccessFlags::TRANSFER_READ,
             dependency_flags: vk::DependencyFlags::empty(),
         },
     ];
@@ -141,15 +132,13 @@ pub fn render_pass(
 }
 
 /// Framebuffers over a set of color images (offscreen targets or swapchain images)
-/// sharing one depth buffer.
+/// sharing one depth buffer. Each framebuffer keeps its views, which keep their
+/// images, which keep their memory.
 pub struct Framebuffers {
     /// One per color image, in its order.
     pub framebuffers: Vec<tuff::Framebuffer>,
     /// Their size.
     pub extent: vk::Extent2D,
-    // The views keep their images, which keep their memory.
-    _depth: Option<tuff::ImageView>,
-    _views: Vec<tuff::ImageView>,
 }
 
 impl Framebuffers {
@@ -169,153 +158,61 @@ impl Framebuffers {
         } else {
             None
         };
-        let views = images
+        let framebuffers = images
             .iter()
-            .map(|i| gpu.view(i, format, vk::ImageAspectFlags::COLOR))
-            .collect::<Result<Vec<_>>>()?;
-        let framebuffers = views
-            .iter()
-            .map(|view| {
-                let mut attachments = vec![view];
-                attachments.extend(depth.as_ref());
+            .map(|image| {
+                let view = gpu.view(image, format, vk::ImageAspectFlags::COLOR)?;
+                let attachments: Vec<_> = [Some(&view), depth.as_ref()]
+                    .into_iter()
+                    .flatten()
+                    .collect();
                 let attachments = tuff::HandleSlice::new(&attachments);
-                gpu.device.create_framebuffer(
+                Ok(gpu.device.create_framebuffer(
                     &tuff::FramebufferCreateInfo::new(render_pass)
                         .attachments(&attachments)
                         .width(extent.width)
                         .height(extent.height)
                         .layers(1),
-                )
+                )?)
             })
-            .collect::<tuff::Result<Vec<_>>>()?;
+            .collect::<Result<Vec<_>>>()?;
         Ok(Framebuffers {
             framebuffers,
             extent,
-            _depth: depth,
-            _views: views,
         })
     }
 }
 
-/// One frame-in-flight slot: its command buffer, the fence of its last submission,
-/// and the semaphore an acquire signals.
-pub struct Slot {
-    /// Recorded anew each frame.
-    pub commands: tuff::CommandBuffer,
-    /// Signalled when the slot's last submission completed (created signalled).
-    pub done: tuff::Fence,
-    /// Signalled by the acquire of the image this slot draws into (windowed only).
-    pub acquired: Option<tuff::Semaphore>,
-}
-
-/// The frames in flight.
-pub struct Slots {
-    /// `FRAMES_IN_FLIGHT` slots.
-    pub slots: Vec<Slot>,
-    _pool: tuff::CommandPool,
-}
-
-impl Slots {
-    /// `FRAMES_IN_FLIGHT` slots on the gpu's queue family, with acquire semaphores
-    /// when `acquire` (for a swapchain).
-    pub fn new(gpu: &Gpu, acquire: bool) -> Result<Slots> {
-        let d = &gpu.device;
-        let pool = d.create_command_pool(
-            &tuff::CommandPoolCreateInfo::new()
-                .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
-                .queue_family_index(gpu.family),
-        )?;
-        let buffers = d.allocate_command_buffers(
-            &pool,
-            &tuff::CommandBufferAllocateInfo::new(&pool)
-                .level(vk::CommandBufferLevel::PRIMARY)
-                .command_buffer_count(FRAMES_IN_FLIGHT as u32),
-        )?;
-        let slots = buffers
-            .into_iter()
-            .map(|commands| {
-                Ok(Slot {
-                    commands,
-                    done: d.create_fence(
-                        &tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED),
-                    )?,
-                    acquired: if acquire {
-                        Some(d.create_semaphore(&tuff::SemaphoreCreateInfo::new())?)
-                    } else {
-                        None
-                    },
-                })
-            })
-            .collect::<Result<Vec<_>>>()?;
-        Ok(Slots { slots, _pool: pool })
-    }
-
-    /// Waits until slot `i`'s last submission completed.
-    pub fn wait(&self, gpu: &Gpu, i: usize) -> Result<()> {
-        let r = gpu
-            .device
-            .wait_for_fences(&[&self.slots[i].done], vk::TRUE, u64::MAX)?;
-        waited(r)
-    }
-
-    /// Waits for every slot's last submission.
-    pub fn wait_all(&self, gpu: &Gpu) -> Result<()> {
-        let fences: Vec<&tuff::Fence> = self.slots.iter().map(|s| &s.done).collect();
-        let r = gpu.device.wait_for_fences(&fences, vk::TRUE, u64::MAX)?;
-        waited(r)
-    }
-}
-
-/// A wait without timeout ends in SUCCESS; anything else is an error.
-fn waited(r: vk::Result) -> Result<()> {
-    if r != vk::Result::SUCCESS {
-        anyhow::bail!("waiting for a frame's fence returned {r:?}");
-    }
-    Ok(())
-}
-
-/// A copy of a color image into a buffer, recorded after the render pass.
-pub struct Readback<'a> {
-    /// The image, in TRANSFER_SRC_OPTIMAL after the render pass.
-    pub image: &'a tuff::Image,
-    /// Receives the tightly packed pixels.
-    pub buffer: &'a tuff::Buffer,
-}
-
-/// Records a frame of `scene` into `commands`: the render pass on `framebuffer`,
-/// the scene's draws and, when asked, the copy of the image into a buffer.
+/// Records a frame of `scene` into `frame`: the render pass on `framebuffer`, the
+/// scene's draws and, when asked, the copy of an image (in TRANSFER_SRC_OPTIMAL
+/// after the render pass) into a buffer, tightly packed, for the host to read.
 pub fn record_frame<S: Scene>(
-    commands: &mut tuff::CommandBuffer,
+    frame: &mut tuff::Frame<'_>,
     render_pass: &tuff::RenderPass,
     framebuffer: &tuff::Framebuffer,
     scene: &S,
     view: &View,
-    readback: Option<Readback<'_>>,
+    readback: Option<(&tuff::Image, &tuff::Buffer)>,
 ) -> Result<()> {
-    let mut clear = vec![vk::ClearValue {
-        color: vk::ClearColorValue {
-            float32: scene.clear_color(),
+    let clear = [
+        vk::ClearValue {
+            color: vk::ClearColorValue {
+                float32: scene.clear_color(),
+            },
         },
-    }];
-    if S::DEPTH {
-        clear.push(vk::ClearValue {
+        vk::ClearValue {
             depth_stencil: vk::ClearDepthStencilValue {
                 depth: DEPTH_CLEAR,
                 stencil: 0,
             },
-        });
-    }
-    let area = vk::Rect2D {
-        offset: vk::Offset2D::default(),
-        extent: view.extent,
-    };
-    let rec = commands.begin(
-        &tuff::CommandBufferBeginInfo::new().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
-    )?;
-    let mut rec = rec.cmd_begin_render_pass(
+        },
+    ];
+    let area: vk::Rect2D = view.extent.into();
+    let mut rec = frame.record()?.cmd_begin_render_pass(
         &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
-            .clear_values(&clear),
+            // Without a depth attachment, only the color is cleared.
+            .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
         vk::SubpassContents::INLINE,
     );
     rec.cmd_set_viewport(
@@ -332,11 +229,11 @@ pub fn record_frame<S: Scene>(
     rec.cmd_set_scissor(0, &[area]);
     scene.draw(&mut rec, view);
     let mut rec = rec.cmd_end_render_pass();
-    if let Some(readback) = readback {
+    if let Some((image, buffer)) = readback {
         rec.cmd_copy_image_to_buffer(
-            readback.image,
+            image,
             vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-            readback.buffer,
+            buffer,
             &[vk::BufferImageCopy {
                 image_subresource: vk::ImageSubresourceLayers {
                     aspect_mask: vk::ImageAspectFlags::COLOR,
@@ -349,7 +246,7 @@ pub fn record_frame<S: Scene>(
             }],
         );
         // A fence wait does not make device writes visible to the host; this does.
-        let to_host = [tuff::BufferMemoryBarrier::new(readback.buffer)
+        let to_host = [tuff::BufferMemoryBarrier::new(buffer)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(vk::AccessFlags::HOST_READ)
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)

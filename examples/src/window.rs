@@ -4,7 +4,7 @@
 
 use crate::cli::Common;
 use crate::gpu::Gpu;
-use crate::render::{self, Framebuffers, Scene, Slots, View, FRAMES_IN_FLIGHT};
+use crate::render::{self, Framebuffers, Scene, View, FRAMES_IN_FLIGHT};
 use anyhow::{anyhow, bail, Context as _, Result};
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawDisplayHandle, RawWindowHandle};
 use std::time::Instant;
@@ -28,6 +28,15 @@ const RESIZES: [(u32, u32); 10] = [
     (800, 600),
     (33, 33),
 ];
+
+/// The instance extensions a window on X11 needs.
+pub const INSTANCE_EXTENSIONS: [tuff::CStrPtr<'static>; 2] = [
+    tuff::CStrPtr::new(c"VK_KHR_surface"),
+    tuff::CStrPtr::new(c"VK_KHR_xlib_surface"),
+];
+/// The device extensions presenting to a window needs.
+pub const DEVICE_EXTENSIONS: [tuff::CStrPtr<'static>; 1] =
+    [tuff::CStrPtr::new(c"VK_KHR_swapchain")];
 
 /// Frames drawn between one resize request and the next.
 const FRAMES_PER_RESIZE: u32 = 2;
@@ -67,7 +76,9 @@ struct Live<S> {
     rendered: Vec<tuff::Semaphore>,
     images: Vec<tuff::Image>,
     swapchain: Option<tuff::SwapchainKHR>,
-    slots: Slots,
+    frames: tuff::FramesInFlight,
+    /// One per frame in flight: signalled by the acquire of the image it draws into.
+    acquired: Vec<tuff::Semaphore>,
     render_pass: tuff::RenderPass,
     format: vk::SurfaceFormatKHR,
     surface: tuff::SurfaceKHR,
@@ -155,7 +166,13 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             rendered: Vec::new(),
             images: Vec::new(),
             swapchain: None,
-            slots: Slots::new(gpu, true)?,
+            frames: gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?,
+            acquired: (0..FRAMES_IN_FLIGHT)
+                .map(|_| {
+                    gpu.device
+                        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+                })
+                .collect::<tuff::Result<_>>()?,
             render_pass,
             format,
             surface,
@@ -297,59 +314,46 @@ impl<S: Scene> Live<S> {
             self.paused = true;
             return Ok(false);
         };
-        let slot = self.frame as usize % FRAMES_IN_FLIGHT;
-        self.slots.wait(gpu, slot)?;
+        let mut frame = self.frames.next()?;
+        let acquired = &self.acquired[frame.index];
         let swapchain = self.swapchain.as_ref().context("no swapchain")?;
-        let index = match gpu.device.acquire_next_image_khr(
-            swapchain,
-            u64::MAX,
-            self.slots.slots[slot].acquired.as_ref(),
-            None,
-        ) {
-            Ok((index, r)) => {
-                self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
-                index
-            }
-            Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
-                self.stale = true;
-                return Ok(false);
-            }
-            Err(e) => return Err(e.into()),
-        };
+        let index =
+            match gpu
+                .device
+                .acquire_next_image_khr(swapchain, u64::MAX, Some(acquired), None)
+            {
+                Ok((index, r)) => {
+                    self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
+                    index as usize
+                }
+                Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
+                    self.stale = true;
+                    return Ok(false);
+                }
+                Err(e) => return Err(e.into()),
+            };
         let view = View {
             extent,
             time: self.start.elapsed().as_secs_f32(),
-            slot,
+            slot: frame.index,
         };
         self.scene.update(&view)?;
         let framebuffers = self.framebuffers.as_ref().context("no framebuffers")?;
-        let s = &mut self.slots.slots[slot];
+        let framebuffer = &framebuffers.framebuffers[index];
         render::record_frame(
-            &mut s.commands,
+            &mut frame,
             &self.render_pass,
-            &framebuffers.framebuffers[index as usize],
+            framebuffer,
             &self.scene,
             &view,
             None,
         )?;
-        let acquired = s.acquired.as_ref().context("no acquire semaphore")?;
-        let waits = tuff::HandleSlice::new(&[acquired]);
-        let stages = [vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT];
-        let commands = tuff::HandleSlice::new(&[&s.commands]);
-        let signals = tuff::HandleSlice::new(&[&self.rendered[index as usize]]);
-        // Reset only now that the submission follows: a reset fence nothing will
-        // signal would hang the next wait.
-        gpu.device.reset_fences(&[&s.done])?;
-        gpu.queue.queue_submit(
-            &[tuff::SubmitInfo::new()
-                .wait_semaphores(&waits)
-                .wait_dst_stage_mask(&stages)
-                .command_buffers(&commands)
-                .signal_semaphores(&signals)],
-            &s.done,
-        )?;
+        let stage = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        let rendered = &self.rendered[index];
+        frame.submit(&gpu.queue, &[(acquired, stage)], &[rendered])?;
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
-        let indices = [index];
+        let indices = [index as u32];
+        let signals = tuff::HandleSlice::new(&[rendered]);
         match gpu.queue.queue_present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)

@@ -28,7 +28,7 @@ fn main() -> std::process::ExitCode {
         wireframe: args.wireframe,
         view: args.view,
     };
-    cli::exit(|| {
+    tuff_examples::exit(|| {
         cli::run(
             &args.common,
             bezier::requirements(&options),

@@ -27,7 +27,7 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    tuff_examples::cli::exit(|| measure(&args))
+    tuff_examples::exit(|| measure(&args))
 }
 
 fn measure(args: &Args) -> Result<()> {

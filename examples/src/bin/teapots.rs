@@ -24,7 +24,7 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    cli::exit(|| {
+    tuff_examples::exit(|| {
         let layout = if args.depth_probe {
             Layout::depth_probe()
         } else {

@@ -17,7 +17,7 @@ use tuff_examples::render::{DEPTH_CLEAR, DEPTH_FORMAT, FRAMES_IN_FLIGHT};
 use tuff_examples::scenes::teapot_grid::{
     mesh_data, vertex_input, CameraBlock, Layout, TeapotBlock,
 };
-use tuff_examples::{cli, spirv};
+use tuff_examples::spirv;
 
 /// Renders a grid of spinning teapots through raw ash, headless.
 #[derive(Parser)]
@@ -75,7 +75,7 @@ unsafe extern "system" fn on_message(
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    cli::exit(|| run(&args))
+    tuff_examples::exit(|| run(&args))
 }
 
 /// Renders as `args` say and fails on any message of the validation layer.

@@ -13,7 +13,7 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    cli::exit(|| {
+    tuff_examples::exit(|| {
         cli::run(
             &args.common,
             triangle::REQUIREMENTS,

@@ -87,16 +87,14 @@ pub fn params(viewpoint: Viewpoint, level: u32, time: f32, extent: vk::Extent2D)
     }
 }
 
-/// The tessellated teapot's pipeline and buffers.
+/// The tessellated teapot's pipeline and buffers. The set keeps the control points
+/// written into it and its pool; the pipeline layout keeps the set layout.
 pub struct Bezier {
     options: Options,
     pipeline: tuff::Pipeline,
     layout: tuff::PipelineLayout,
     set: tuff::DescriptorSet,
     indices: tuff::Bound<tuff::Buffer>,
-    _points: tuff::Bound<tuff::Buffer>,
-    _set_layout: tuff::DescriptorSetLayout,
-    _pool: tuff::DescriptorPool,
 }
 
 /// The stages that read the push constants.
@@ -116,10 +114,18 @@ impl Bezier {
             );
         }
         let d = &gpu.device;
-        let vert = gpu.shader(crate::spirv!("bezier.vert"))?;
-        let tesc = gpu.shader(crate::spirv!("bezier.tesc"))?;
-        let tese = gpu.shader(crate::spirv!("bezier.tese"))?;
-        let frag = gpu.shader(crate::spirv!("bezier.frag"))?;
+        let vert = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("bezier.vert"))?;
+        let tesc = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("bezier.tesc"))?;
+        let tese = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("bezier.tese"))?;
+        let frag = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("bezier.frag"))?;
         let bindings = [tuff::DescriptorSetLayoutBinding::new()
             .binding(0)
             .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
@@ -178,9 +184,17 @@ impl Bezier {
             .iter()
             .map(|p| [p[0], p[1], p[2], 1.0])
             .collect();
-        let points = gpu.buffer_with(vk::BufferUsageFlags::STORAGE_BUFFER, &points)?;
+        let points = gpu.device.create_buffer_with(
+            vk::BufferUsageFlags::STORAGE_BUFFER,
+            &points,
+            &gpu.allocator,
+        )?;
         let index_data: Vec<u32> = PATCHES.iter().flatten().map(|&i| u32::from(i)).collect();
-        let indices = gpu.buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data)?;
+        let indices = gpu.device.create_buffer_with(
+            vk::BufferUsageFlags::INDEX_BUFFER,
+            &index_data,
+            &gpu.allocator,
+        )?;
         let info = [tuff::DescriptorBufferInfo::new()
             .buffer(Some(&points))
             .range(vk::WHOLE_SIZE)];
@@ -196,9 +210,6 @@ impl Bezier {
             layout,
             set,
             indices,
-            _points: points,
-            _set_layout: set_layout,
-            _pool: pool,
         })
     }
 }

@@ -18,7 +18,8 @@ pub const REQUIREMENTS: Requirements = Requirements {
     window: false,
 };
 
-/// The teapots' pipeline, mesh, and per-frame uniform buffers.
+/// The teapots' pipeline, mesh, and per-frame uniform buffers. The pipeline layout
+/// keeps the set layout, and the sets their pool.
 pub struct Teapots {
     layout_data: Layout,
     pipeline: tuff::Pipeline,
@@ -28,16 +29,18 @@ pub struct Teapots {
     vertices: tuff::Bound<tuff::Buffer>,
     indices: tuff::Bound<tuff::Buffer>,
     index_count: u32,
-    _set_layout: tuff::DescriptorSetLayout,
-    _pool: tuff::DescriptorPool,
 }
 
 impl Teapots {
     /// Builds the scene for `render_pass`.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass, layout: Layout) -> Result<Teapots> {
-        let d = &gpu.device;
-        let vert = gpu.shader(crate::spirv!("teapot.vert"))?;
-        let frag = gpu.shader(crate::spirv!("teapot.frag"))?;
+        let (d, a) = (&gpu.device, &gpu.allocator);
+        let vert = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("teapot.vert"))?;
+        let frag = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("teapot.frag"))?;
         let bindings = [tuff::DescriptorSetLayoutBinding::new()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
@@ -78,9 +81,7 @@ impl Teapots {
                     descriptor_count: FRAMES_IN_FLIGHT as u32,
                 }]),
         )?;
-        let layouts: Vec<&tuff::DescriptorSetLayout> =
-            (0..FRAMES_IN_FLIGHT).map(|_| &set_layout).collect();
-        let layouts = tuff::HandleSlice::new(&layouts);
+        let layouts = tuff::HandleSlice::new(&[&set_layout; FRAMES_IN_FLIGHT]);
         let sets = d.allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
@@ -101,8 +102,8 @@ impl Teapots {
             )?;
         }
         let (flat, index_data) = mesh_data();
-        let vertices = gpu.buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &flat)?;
-        let indices = gpu.buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data)?;
+        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &flat, a)?;
+        let indices = d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a)?;
         Ok(Teapots {
             layout_data: layout,
             pipeline,
@@ -112,8 +113,6 @@ impl Teapots {
             vertices,
             indices,
             index_count: index_data.len() as u32,
-            _set_layout: set_layout,
-            _pool: pool,
         })
     }
 }

@@ -37,18 +37,21 @@ const VERTICES: [Vertex; 3] = [
     },
 ];
 
-/// The triangle's pipeline and vertex buffer.
+/// The triangle's pipeline (which keeps its layout) and vertex buffer.
 pub struct Triangle {
     pipeline: tuff::Pipeline,
-    _layout: tuff::PipelineLayout,
     vertices: tuff::Bound<tuff::Buffer>,
 }
 
 impl Triangle {
     /// Builds the pipeline for `render_pass` and uploads the vertices.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass) -> Result<Triangle> {
-        let vert = gpu.shader(crate::spirv!("triangle.vert"))?;
-        let frag = gpu.shader(crate::spirv!("triangle.frag"))?;
+        let vert = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("triangle.vert"))?;
+        let frag = gpu
+            .device
+            .create_shader_module_from_spirv(crate::spirv!("triangle.frag"))?;
         let layout = pipeline::layout(gpu, &[], vk::ShaderStageFlags::empty(), 0)?;
         let pipeline = pipeline::graphics(
             gpu,
@@ -84,12 +87,12 @@ impl Triangle {
                 depth: false,
             },
         )?;
-        let vertices = gpu.buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES)?;
-        Ok(Triangle {
-            pipeline,
-            _layout: layout,
-            vertices,
-        })
+        let vertices = gpu.device.create_buffer_with(
+            vk::BufferUsageFlags::VERTEX_BUFFER,
+            &VERTICES,
+            &gpu.allocator,
+        )?;
+        Ok(Triangle { pipeline, vertices })
     }
 }
 
