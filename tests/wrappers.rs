@@ -998,7 +998,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let mut order = Vec::new();
     let mut previous: Option<tuff::Semaphore> = None;
     for n in 0..7u32 {
-        let mut frame = frames.next().expect("next frame");
+        let mut frame = frames.next_frame().expect("next frame");
         order.push(frame.index);
         // The frame's last submission is complete, so what it wrote is there.
         if n >= 3 {
@@ -1020,7 +1020,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     }
     assert_eq!(order, [0, 1, 2, 0, 1, 2, 0]);
     // A frame submitted without a new recording is refused, and the ring stays on it.
-    let frame = frames.next().expect("next frame");
+    let frame = frames.next_frame().expect("next frame");
     assert_eq!(frame.index, 1);
     let refused = frame.submit(&s.queue, &[], &[]);
     assert!(
@@ -1028,7 +1028,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
             if vuid == "VUID-vkQueueSubmit-pCommandBuffers-00070"),
         "{refused:?}"
     );
-    let mut frame = frames.next().expect("the same frame again");
+    let mut frame = frames.next_frame().expect("the same frame again");
     assert_eq!(frame.index, 1);
     record(&mut frame, 7);
     let waits = [(
@@ -1040,7 +1040,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     frames.wait_all().expect("wait for all frames");
     let last: Vec<u32> = targets.iter().map(first).collect();
     assert_eq!(last, [6, 7, 5]);
-    assert_eq!(frames.next().expect("next frame").index, 2);
+    assert_eq!(frames.next_frame().expect("next frame").index, 2);
     assert_silent(&s.messages);
 }
 

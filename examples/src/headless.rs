@@ -78,7 +78,7 @@ pub fn render<S: Scene>(
     let mut ring = gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?;
     let start = Instant::now();
     for n in 0..frames {
-        let mut frame = ring.next()?;
+        let mut frame = ring.next_frame()?;
         let (slot, last) = (frame.index, n + 1 == frames);
         let view = View {
             extent,

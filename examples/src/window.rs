@@ -314,7 +314,7 @@ impl<S: Scene> Live<S> {
             self.paused = true;
             return Ok(false);
         };
-        let mut frame = self.frames.next()?;
+        let mut frame = self.frames.next_frame()?;
         let acquired = &self.acquired[frame.index];
         let swapchain = self.swapchain.as_ref().context("no swapchain")?;
         let index =

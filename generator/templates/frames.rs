@@ -16,7 +16,7 @@
 //! # fn f(device: &tuff::Device, queue: &tuff::Queue, family: u32) -> tuff::Result<()> {
 //! let mut frames = device.frames_in_flight(family, 2)?;
 //! for _ in 0..100 {
-//!     let mut frame = frames.next()?;
+//!     let mut frame = frames.next_frame()?;
 //!     // frame.index picks this frame's uniform buffer, descriptor set, ...
 //!     let rec = frame.record()?;
 //!     // ... record the frame's commands ...
@@ -42,7 +42,7 @@ pub struct FramesInFlight {
     /// Each frame's command buffer (which keeps the pool) and the fence of its last
     /// submission, created signalled so the first wait returns at once.
     frames: Vec<(CommandBuffer, Fence)>,
-    /// The frame [`FramesInFlight::next`] hands out.
+    /// The frame [`FramesInFlight::next_frame`] hands out.
     next: usize,
 }
 
@@ -96,7 +96,7 @@ impl FramesInFlight {
     /// Waits until the last submission of the next frame's command buffer completed,
     /// and hands the frame out. The ring moves on only when the frame is submitted,
     /// so a frame dropped unsubmitted comes back next time.
-    pub fn next(&mut self) -> Result<Frame<'_>> {
+    pub fn next_frame(&mut self) -> Result<Frame<'_>> {
         let index = self.next;
         let count = self.frames.len();
         let (commands, fence) = &mut self.frames[index];
@@ -191,7 +191,7 @@ impl Frame<'_> {
             info = info.signal_semaphores(&signal_semaphores);
         }
         let device = self.commands.device();
-        // The fence was seen signalled by `next`, so the reset cannot orphan a wait.
+        // The fence was seen signalled by `next_frame`, so the reset cannot orphan a wait.
         device.reset_fences(&[self.fence])?;
         if let Err(e) = queue.queue_submit(&[info], self.fence) {
             // An empty batch signals the fence once the queue's earlier work is done,
