@@ -25,6 +25,7 @@ fn vuid<T>(r: tuff::Result<T>) -> &'static str {
 
 #[test]
 fn enum_and_flags_values_are_checked() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     let bad_mode = tuff::BufferCreateInfo::new()
@@ -72,6 +73,7 @@ fn enum_and_flags_values_are_checked() {
 
 #[test]
 fn objects_of_another_device_are_refused() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     let priorities = [1.0f32];
@@ -117,6 +119,7 @@ fn objects_of_another_device_are_refused() {
 
 #[test]
 fn counts_and_chains_are_checked() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     assert_eq!(
@@ -142,6 +145,7 @@ fn counts_and_chains_are_checked() {
 
 #[test]
 fn a_primary_only_command_in_a_secondary_buffer_fails_at_end() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let target = s.color_target(16, vk::ImageUsageFlags::COLOR_ATTACHMENT);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);

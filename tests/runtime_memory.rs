@@ -146,6 +146,7 @@ fn churn(dev: &Vrc<TestDevice>, allocator: &dyn Allocator, seed: u64) {
 
 #[test]
 fn naive_allocator_churn_is_clean() {
+    let _serial = vulkan::serial();
     let (dev, messages) = device(true);
     let allocator = NaiveAllocator::new(dev.clone());
     churn(&dev, &allocator, 1);
@@ -156,6 +157,7 @@ fn naive_allocator_churn_is_clean() {
 
 #[test]
 fn gpu_allocator_churn_is_clean() {
+    let _serial = vulkan::serial();
     let (dev, messages) = device(true);
     let allocator = GpuAllocator::new(dev.clone()).expect("gpu-allocator");
     churn(&dev, &allocator, 2);
@@ -166,6 +168,7 @@ fn gpu_allocator_churn_is_clean() {
 
 #[test]
 fn allocations_keep_the_device_alive_in_any_drop_order() {
+    let _serial = vulkan::serial();
     let (dev, messages) = device(true);
     let weak_check = Vrc::downgrade(&dev);
     let allocator = GpuAllocator::new(dev.clone()).expect("gpu-allocator");
@@ -340,6 +343,7 @@ fn bump_round_trip(dev: &Vrc<TestDevice>, properties: vk::MemoryPropertyFlags) {
 
 #[test]
 fn a_custom_allocator_plugs_in_through_the_same_trait() {
+    let _serial = vulkan::serial();
     let (dev, messages) = device(true);
     let host = vk::MemoryPropertyFlags::HOST_VISIBLE;
     let coherent = (0..dev.memory.memory_type_count)
@@ -370,6 +374,7 @@ fn a_custom_allocator_plugs_in_through_the_same_trait() {
 
 #[test]
 fn explicit_flushes_of_coherent_memory_are_valid() {
+    let _serial = vulkan::serial();
     let (dev, messages) = device(true);
     let allocator = NaiveAllocator::new(dev.clone());
     let mut r = create(&dev, &allocator, 1000, MemoryLocation::Upload);
@@ -387,6 +392,7 @@ fn explicit_flushes_of_coherent_memory_are_valid() {
 
 #[test]
 fn the_harness_hears_the_validation_layer() {
+    let _serial = vulkan::serial();
     // A buffer leaked on purpose must be reported when the device is destroyed;
     // otherwise the silence the other tests assert would prove nothing.
     let (dev, messages) = device(true);
@@ -442,6 +448,7 @@ where
 
 #[test]
 fn typed_access_for_alignments_1_4_16_64() {
+    let _serial = vulkan::serial();
     let (dev, messages) = device(true);
     for allocator in [
         Box::new(NaiveAllocator::new(dev.clone())) as Box<dyn Allocator>,
@@ -471,6 +478,7 @@ fn typed_access_for_alignments_1_4_16_64() {
 
 #[test]
 fn flushes_of_mapped_device_local_memory_are_valid() {
+    let _serial = vulkan::serial();
     // Device-local memory is host-visible on lavapipe and integrated GPUs, and then
     // mapped: its flush ranges must be as valid as those of upload memory.
     let (dev, messages) = device(true);

@@ -221,6 +221,7 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
 
 #[test]
 fn every_handle_type_in_random_drop_orders() {
+    let _serial = vulkan::serial();
     for seed in 0..6u64 {
         let s = setup(true);
         let mut bag = make_all(&s);
@@ -237,6 +238,7 @@ fn every_handle_type_in_random_drop_orders() {
 
 #[test]
 fn parents_dropped_before_children_stay_alive() {
+    let _serial = vulkan::serial();
     let Setup {
         device,
         queue,
@@ -268,6 +270,7 @@ fn parents_dropped_before_children_stay_alive() {
 
 #[test]
 fn resources_dropped_while_their_submission_is_in_flight() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     let fence = d
@@ -305,6 +308,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
 
 #[test]
 fn a_submitted_buffer_is_written() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let (buffer, memory) = buffer_with_memory(&s, 256);
     submit_and_wait(&s, |rec| rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5));
@@ -508,6 +512,7 @@ fn swapchain_info<'a>(
 
 #[test]
 fn surfaces_and_swapchains_in_random_drop_orders() {
+    let _serial = vulkan::serial();
     for seed in 0..4u64 {
         let window = x11_window::X11Window::open(64, 48);
         let s = setup_with(true, Wsi::Xlib);
@@ -569,6 +574,7 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
 
 #[test]
 fn recreate_refuses_another_surface() {
+    let _serial = vulkan::serial();
     let window_a = x11_window::X11Window::open(32, 32);
     let window_b = x11_window::X11Window::open(32, 32);
     let s = setup_with(true, Wsi::Xlib);
@@ -593,6 +599,7 @@ fn recreate_refuses_another_surface() {
 
 #[test]
 fn pipelines_draw_and_dispatch() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     let target = s.color_target(8, vk::ImageUsageFlags::TRANSFER_SRC);
@@ -634,6 +641,7 @@ fn pipelines_draw_and_dispatch() {
 
 #[test]
 fn mapped_memory_is_checked_and_unmapped_on_drop() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let (_buffer, memory) = host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_DST);
     {
@@ -693,6 +701,7 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
 
 #[test]
 fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     let gpu = d.gpu_allocator().expect("gpu allocator");
@@ -804,6 +813,7 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
 
 #[test]
 fn an_allocator_of_another_device_is_refused() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let priorities = [1.0f32];
     let queues = [tuff::DeviceQueueCreateInfo::new()
@@ -833,6 +843,7 @@ fn an_allocator_of_another_device_is_refused() {
 
 #[test]
 fn missing_layers_extensions_and_features_are_named() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let entry = tuff::Entry::load().expect("loader");
     let create = |layers: &[tuff::CStrPtr<'_>], exts: &[tuff::CStrPtr<'_>]| {
@@ -922,6 +933,7 @@ fn missing_layers_extensions_and_features_are_named() {
 
 #[test]
 fn the_message_log_hears_the_layer_and_outlives_nothing() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     // A buffer of size 0 breaks VUID-VkBufferCreateInfo-size-00912; the unchecked
     // entry point lets it reach the layer.
@@ -960,6 +972,7 @@ fn the_message_log_hears_the_layer_and_outlives_nothing() {
 
 #[test]
 fn frames_in_flight_take_turns_and_keep_their_semaphores() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
     let gpu = d.gpu_allocator().expect("gpu allocator");
@@ -1046,6 +1059,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
 
 #[test]
 fn shader_modules_come_from_spirv_bytes_in_either_byte_order() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let bytes = include_bytes!("../shaders/spv/test.vert.spv");
     s.device
@@ -1080,6 +1094,7 @@ fn shader_modules_come_from_spirv_bytes_in_either_byte_order() {
 
 #[test]
 fn physical_devices_name_themselves_and_find_queue_families() {
+    let _serial = vulkan::serial();
     let s = setup(true);
     let raw = s.physical.get_physical_device_properties();
     let expected = raw

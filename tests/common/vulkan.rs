@@ -6,8 +6,64 @@
 
 use ash::vk;
 use std::ffi::CStr;
-use std::sync::Arc;
+use std::sync::{Arc, Condvar, Mutex, MutexGuard};
+use std::thread::ThreadId;
 use tuff_runtime::{DeviceOwner, Vrc};
+
+/// The thread whose test uses Vulkan now, and how many guards it holds.
+static HOLDER: Mutex<Option<(ThreadId, usize)>> = Mutex::new(None);
+/// Signalled when the holder lets go.
+static RELEASED: Condvar = Condvar::new();
+
+/// Keeps other tests of this binary away from Vulkan while it lives.
+///
+/// The validation layer (1.3.239, the one CI installs) keeps its instances and devices
+/// in one process-wide table that it reads on every call and changes, without a lock,
+/// in `vkCreate/DestroyInstance` and `vkCreate/DestroyDevice`
+/// (KhronosGroup/Vulkan-ValidationLayers#4391). The test harness runs tests on
+/// parallel threads, and one test's device teardown during another's
+/// `vkBindBufferMemory` crashed inside the layer. So every test that uses Vulkan takes
+/// this guard first, and holds it until all its objects are gone; a thread may take it
+/// more than once.
+#[must_use = "the guard serialises only while it lives"]
+pub struct Serial(());
+
+fn holder() -> MutexGuard<'static, Option<(ThreadId, usize)>> {
+    // A test that panicked inside this tiny critical section left nothing half done.
+    HOLDER.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Waits until no other thread uses Vulkan, then holds it for this thread.
+pub fn serial() -> Serial {
+    let me = std::thread::current().id();
+    let mut holder = holder();
+    loop {
+        match &mut *holder {
+            None => {
+                *holder = Some((me, 1));
+                return Serial(());
+            }
+            Some((id, count)) if *id == me => {
+                *count += 1;
+                return Serial(());
+            }
+            Some(_) => holder = RELEASED.wait(holder).unwrap_or_else(|e| e.into_inner()),
+        }
+    }
+}
+
+impl Drop for Serial {
+    fn drop(&mut self) {
+        let mut holder = holder();
+        if let Some((_, count)) = &mut *holder {
+            *count -= 1;
+            if *count == 0 {
+                *holder = None;
+                RELEASED.notify_all();
+            }
+        }
+    }
+}
 
 const VALIDATION: &CStr = c"VK_LAYER_KHRONOS_validation";
 
