@@ -35,6 +35,7 @@ use crate::structs::{
 };
 use crate::{Error, HandleSlice, Result};
 use ash::vk;
+use smallvec::SmallVec;
 
 /// `count` primary command buffers from one pool, each with a fence; see the
 /// [module docs](self) for an example.
@@ -176,8 +177,10 @@ impl Frame<'_> {
                     .into(),
             });
         }
-        let wait_semaphores: Vec<&Semaphore> = waits.iter().map(|(s, _)| *s).collect();
-        let stages: Vec<vk::PipelineStageFlags> = waits.iter().map(|(_, st)| *st).collect();
+        // Once per frame: a few semaphores stay on the stack, as in `HandleSlice`.
+        let wait_semaphores: SmallVec<[&Semaphore; 4]> = waits.iter().map(|(s, _)| *s).collect();
+        let stages: SmallVec<[vk::PipelineStageFlags; 4]> =
+            waits.iter().map(|(_, st)| *st).collect();
         let wait_semaphores = HandleSlice::new(&wait_semaphores);
         let signal_semaphores = HandleSlice::new(signals);
         let commands = HandleSlice::new(&[&*self.commands]);
