@@ -17,6 +17,18 @@ pub struct Requirements {
     pub window: bool,
 }
 
+impl Requirements {
+    /// What a scene named `scene` asks when it needs nothing beyond core Vulkan.
+    pub const fn core(scene: &'static str) -> Requirements {
+        Requirements {
+            scene,
+            tessellation_shader: false,
+            fill_mode_non_solid: false,
+            window: false,
+        }
+    }
+}
+
 /// The device a scene renders with. Field order is drop order: the messenger goes
 /// after the device, so it hears what the device's objects report as they go, and the
 /// log goes last.

@@ -260,7 +260,7 @@ fn far_nearly_coplanar_surfaces_resolve_in_depth_order() {
 /// The disk of pixels within `radius` (model units, in the plane z = `z`) of the
 /// teapot's axis, as the bezier scene's camera for `view` sees it.
 fn axis_disk(
-    view: tuff_examples::scenes::bezier::Viewpoint,
+    view: tuff_examples::scenes::bezier_view::Viewpoint,
     z: f32,
     radius: f32,
     size: u32,
@@ -270,7 +270,7 @@ fn axis_disk(
         width: size,
         height: size,
     };
-    let p = tuff_examples::scenes::bezier::params(view, 1, 0.0, extent);
+    let p = tuff_examples::scenes::bezier_view::params(view, 1, 0.0, extent);
     let mvp = Mat4::from_cols_array_2d(&p.model_view_projection);
     let pixel = |x: f32| {
         let c = mvp * Vec4::new(x, 0.0, z, 1.0);
@@ -287,7 +287,7 @@ fn axis_disk(
 
 #[test]
 fn degenerate_patches_have_no_dark_speckles_at_any_level() {
-    use tuff_examples::scenes::bezier::Viewpoint;
+    use tuff_examples::scenes::bezier_view::Viewpoint;
     let dir = tempfile::tempdir().expect("temp dir");
     let binary = env!("CARGO_BIN_EXE_bezier");
     let size = 160u32;

@@ -3,7 +3,8 @@
 
 use clap::Parser;
 use tuff_examples::cli;
-use tuff_examples::scenes::bezier::{self, Bezier, Options, Viewpoint};
+use tuff_examples::scenes::bezier::Bezier;
+use tuff_examples::scenes::bezier_view::{self, Options, Viewpoint};
 
 /// Renders the tessellated Bezier teapot through tuff.
 #[derive(Parser)]
@@ -31,7 +32,7 @@ fn main() -> std::process::ExitCode {
     tuff_examples::exit(|| {
         cli::run(
             &args.common,
-            bezier::requirements(&options),
+            bezier_view::requirements(&options),
             |gpu, render_pass| Bezier::new(gpu, render_pass, options),
         )
     })

@@ -9,7 +9,8 @@ use std::path::PathBuf;
 use tuff_examples::accuracy::{self, Row, LEVELS};
 use tuff_examples::gpu::Gpu;
 use tuff_examples::headless;
-use tuff_examples::scenes::bezier::{self, Bezier, Options, Viewpoint};
+use tuff_examples::scenes::bezier::Bezier;
+use tuff_examples::scenes::bezier_view::{self, Options, Viewpoint};
 
 /// Measures frame time and geometric error per tessellation level.
 #[derive(Parser)]
@@ -36,7 +37,7 @@ fn measure(args: &Args) -> Result<()> {
         wireframe: false,
         view: Viewpoint::Orbit,
     };
-    let gpu = Gpu::new(bezier::requirements(&options(1)), false)?;
+    let gpu = Gpu::new(bezier_view::requirements(&options(1)), false)?;
     let mut rows = Vec::new();
     for level in LEVELS {
         let make = |gpu: &Gpu, pass: &tuff::RenderPass| Bezier::new(gpu, pass, options(level));

@@ -2,6 +2,8 @@
 //! command lines.
 
 pub mod bezier;
+pub mod bezier_view;
 pub mod teapot_grid;
 pub mod teapots;
 pub mod triangle;
+pub mod triangle_vertices;

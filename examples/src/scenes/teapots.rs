@@ -11,12 +11,7 @@ use tuff::vk;
 use tuff::MemoryLocation::Upload;
 
 /// What the teapots ask of the device: nothing beyond core Vulkan.
-pub const REQUIREMENTS: Requirements = Requirements {
-    scene: "teapots",
-    tessellation_shader: false,
-    fill_mode_non_solid: false,
-    window: false,
-};
+pub const REQUIREMENTS: Requirements = Requirements::core("teapots");
 
 /// The teapots' pipeline, mesh, and per-frame uniform buffers. The pipeline layout
 /// keeps the set layout, and the sets their pool.
@@ -35,12 +30,8 @@ impl Teapots {
     /// Builds the scene for `render_pass`.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass, layout: Layout) -> Result<Teapots> {
         let (d, a) = (&gpu.device, &gpu.allocator);
-        let vert = gpu
-            .device
-            .create_shader_module_from_spirv(crate::spirv!("teapot.vert"))?;
-        let frag = gpu
-            .device
-            .create_shader_module_from_spirv(crate::spirv!("teapot.frag"))?;
+        let vert = d.create_shader_module_from_spirv(crate::spirv!("teapot.vert"))?;
+        let frag = d.create_shader_module_from_spirv(crate::spirv!("teapot.frag"))?;
         let bindings = [tuff::DescriptorSetLayoutBinding::new()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)

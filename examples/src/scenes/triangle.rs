@@ -3,39 +3,12 @@
 use crate::gpu::{Gpu, Requirements};
 use crate::pipeline::{self, PipelineDesc};
 use crate::render::{Scene, View};
+use crate::scenes::triangle_vertices::{Vertex, VERTICES};
 use anyhow::Result;
 use tuff::vk;
 
 /// What the triangle asks of the device: nothing beyond core Vulkan.
-pub const REQUIREMENTS: Requirements = Requirements {
-    scene: "triangle",
-    tessellation_shader: false,
-    fill_mode_non_solid: false,
-    window: false,
-};
-
-/// A vertex: position in clip space and color.
-#[repr(C)]
-#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
-struct Vertex {
-    position: [f32; 2],
-    color: [f32; 3],
-}
-
-const VERTICES: [Vertex; 3] = [
-    Vertex {
-        position: [0.0, -0.7],
-        color: [1.0, 0.2, 0.2],
-    },
-    Vertex {
-        position: [0.7, 0.6],
-        color: [0.2, 1.0, 0.2],
-    },
-    Vertex {
-        position: [-0.7, 0.6],
-        color: [0.2, 0.3, 1.0],
-    },
-];
+pub const REQUIREMENTS: Requirements = Requirements::core("triangle");
 
 /// The triangle's pipeline (which keeps its layout) and vertex buffer.
 pub struct Triangle {
@@ -46,12 +19,9 @@ pub struct Triangle {
 impl Triangle {
     /// Builds the pipeline for `render_pass` and uploads the vertices.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass) -> Result<Triangle> {
-        let vert = gpu
-            .device
-            .create_shader_module_from_spirv(crate::spirv!("triangle.vert"))?;
-        let frag = gpu
-            .device
-            .create_shader_module_from_spirv(crate::spirv!("triangle.frag"))?;
+        let (d, a) = (&gpu.device, &gpu.allocator);
+        let vert = d.create_shader_module_from_spirv(crate::spirv!("triangle.vert"))?;
+        let frag = d.create_shader_module_from_spirv(crate::spirv!("triangle.frag"))?;
         let layout = pipeline::layout(gpu, &[], vk::ShaderStageFlags::empty(), 0)?;
         let pipeline = pipeline::graphics(
             gpu,
@@ -87,11 +57,7 @@ impl Triangle {
                 depth: false,
             },
         )?;
-        let vertices = gpu.device.create_buffer_with(
-            vk::BufferUsageFlags::VERTEX_BUFFER,
-            &VERTICES,
-            &gpu.allocator,
-        )?;
+        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES, a)?;
         Ok(Triangle { pipeline, vertices })
     }
 }
