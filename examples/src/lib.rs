@@ -1,7 +1,8 @@
 //! Three scenes rendered through tuff (`triangle`, `teapots`, `bezier`, each a binary
-//! in `src/bin`), the raw-ash teapots they are measured against (`teapots_ash`), and
-//! what they share: device setup, render pass and frames in flight, headless and
-//! windowed presentation, the camera, and the Utah teapot's geometry.
+//! in `src/bin`), each again in raw ash to be measured against (`triangle_ash`,
+//! `teapots_ash`, `bezier_ash`, on [`raw_ash`]), and what they share: device setup,
+//! render pass and frames in flight, headless and windowed presentation, the camera,
+//! and the Utah teapot's geometry.
 //!
 //! Each binary renders headless into `<scene>.png` by default, or into a window with
 //! `--window`; `--validate` turns the Khronos validation layer on and fails the run on
@@ -21,6 +22,7 @@ pub mod gpu;
 pub mod headless;
 pub mod image_file;
 pub mod pipeline;
+pub mod raw_ash;
 pub mod render;
 pub mod scenes;
 pub mod teapot;

@@ -141,37 +141,44 @@ fn golden(binary: &str, name: &str, extra: &[&str]) -> (u32, u32, Vec<u8>) {
     first
 }
 
+/// Renders the raw-ash port of a scene with the same arguments and checks it against
+/// the tuff scene's golden image (compared, never written: the reference is tuff's)
+/// and against tuff's render, byte for byte: the same frames.
+fn assert_ash_port_matches(
+    binary: &str,
+    golden_name: &str,
+    tuff: &(u32, u32, Vec<u8>),
+    args: &[&str],
+) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let ash = render(binary, "ash", dir.path(), args);
+    if !blessing() {
+        assert_golden(golden_name, &ash);
+    }
+    assert!(
+        tuff.2 == ash.2,
+        "{golden_name}: tuff and raw ash rendered different images"
+    );
+}
+
 #[test]
-fn triangle_matches_its_golden_image() {
-    golden(env!("CARGO_BIN_EXE_triangle"), "triangle", &[]);
+fn triangle_matches_its_golden_image_in_tuff_and_in_raw_ash() {
+    let tuff = golden(env!("CARGO_BIN_EXE_triangle"), "triangle", &[]);
+    assert_ash_port_matches(env!("CARGO_BIN_EXE_triangle_ash"), "triangle", &tuff, &[]);
 }
 
 #[test]
 fn teapots_match_their_golden_image_in_tuff_and_in_raw_ash() {
     let args = ["--count", "100", "--seed", "1"];
     let tuff = golden(env!("CARGO_BIN_EXE_teapots"), "teapots", &args);
-    let dir = tempfile::tempdir().expect("temp dir");
-    let ash = render(
-        env!("CARGO_BIN_EXE_teapots_ash"),
-        "teapots_ash",
-        dir.path(),
-        &args,
-    );
-    // The same frames through raw ash match the same golden image (compared, never
-    // written: the reference is tuff's)...
-    if !blessing() {
-        assert_golden("teapots", &ash);
-    }
-    // ...and tuff's render byte for byte.
-    assert!(
-        tuff.2 == ash.2,
-        "tuff and raw ash rendered different images"
-    );
+    assert_ash_port_matches(env!("CARGO_BIN_EXE_teapots_ash"), "teapots", &tuff, &args);
 }
 
 #[test]
-fn bezier_matches_its_golden_image() {
-    golden(env!("CARGO_BIN_EXE_bezier"), "bezier", &["--level", "16"]);
+fn bezier_matches_its_golden_image_in_tuff_and_in_raw_ash() {
+    let args = ["--level", "16"];
+    let tuff = golden(env!("CARGO_BIN_EXE_bezier"), "bezier", &args);
+    assert_ash_port_matches(env!("CARGO_BIN_EXE_bezier_ash"), "bezier", &tuff, &args);
 }
 
 #[test]
