@@ -355,22 +355,26 @@ impl Objects {
         }
     }
 
-    /// Memory for `reqs` of the first type with `flags`.
+    /// Memory for `reqs` of the first type with the first of `wanted` (most preferred
+    /// first) that some allowed type has.
     fn allocate(
         &mut self,
         device: &ash::Device,
         reqs: vk::MemoryRequirements,
-        flags: vk::MemoryPropertyFlags,
+        wanted: &[vk::MemoryPropertyFlags],
     ) -> Result<vk::DeviceMemory> {
         let types = &self.types;
-        let index = (0..types.memory_type_count)
-            .find(|&i| {
-                reqs.memory_type_bits & (1 << i) != 0
-                    && types.memory_types[i as usize]
-                        .property_flags
-                        .contains(flags)
+        let index = wanted
+            .iter()
+            .find_map(|&flags| {
+                (0..types.memory_type_count).find(|&i| {
+                    reqs.memory_type_bits & (1 << i) != 0
+                        && types.memory_types[i as usize]
+                            .property_flags
+                            .contains(flags)
+                })
             })
-            .with_context(|| format!("no memory type with {flags:?}"))?;
+            .with_context(|| format!("no memory type with any of {wanted:?}"))?;
         let info = vk::MemoryAllocateInfo::default()
             .allocation_size(reqs.size)
             .memory_type_index(index);
@@ -380,13 +384,18 @@ impl Objects {
         Ok(memory)
     }
 
-    /// A buffer of `size` bytes bound to host-visible, host-coherent memory of its own.
+    /// A buffer of `size` bytes bound to host-visible, host-coherent memory of its own,
+    /// `preferred` too where the device has such memory: device-local for what the
+    /// device reads, host-cached for what the host reads back (as tuff's allocator
+    /// places its Upload and Readback buffers).
     pub fn buffer(
         &mut self,
         device: &ash::Device,
         size: u64,
         usage: vk::BufferUsageFlags,
+        preferred: vk::MemoryPropertyFlags,
     ) -> Result<(vk::Buffer, vk::DeviceMemory)> {
+        let host = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
         let info = vk::BufferCreateInfo::default().size(size).usage(usage);
         // SAFETY: valid create info; the memory is of a type the buffer allows, at least
         // its size, and bound once at offset 0.
@@ -398,7 +407,7 @@ impl Objects {
             let memory = self.allocate(
                 device,
                 device.get_buffer_memory_requirements(buffer),
-                vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
+                &[host | preferred, host],
             )?;
             device
                 .bind_buffer_memory(buffer, memory, 0)
@@ -415,7 +424,9 @@ impl Objects {
         data: &[T],
     ) -> Result<vk::Buffer> {
         let bytes: &[u8] = bytemuck::cast_slice(data);
-        let (buffer, memory) = self.buffer(device, bytes.len().max(1) as u64, usage)?;
+        let size = bytes.len().max(1) as u64;
+        let local = vk::MemoryPropertyFlags::DEVICE_LOCAL;
+        let (buffer, memory) = self.buffer(device, size, usage, local)?;
         // SAFETY: the memory is host-visible, host-coherent (no flush needed), not
         // mapped, at least `bytes.len()` long, and no submission uses it yet.
         unsafe {
@@ -453,7 +464,7 @@ impl Objects {
             let memory = self.allocate(
                 device,
                 device.get_image_memory_requirements(image),
-                vk::MemoryPropertyFlags::empty(),
+                &[vk::MemoryPropertyFlags::DEVICE_LOCAL],
             )?;
             device
                 .bind_image_memory(image, memory, 0)
@@ -753,8 +764,9 @@ fn render<S: Scene>(
             );
         }
         let bytes = u64::from(extent.width) * u64::from(extent.height) * 4;
+        let cached = vk::MemoryPropertyFlags::HOST_CACHED;
         let (readback, readback_memory) =
-            o.buffer(device, bytes, vk::BufferUsageFlags::TRANSFER_DST)?;
+            o.buffer(device, bytes, vk::BufferUsageFlags::TRANSFER_DST, cached)?;
 
         o.command_pool = device
             .create_command_pool(

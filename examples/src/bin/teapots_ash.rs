@@ -120,7 +120,8 @@ impl Teapots {
             let mut uniforms = Vec::new();
             for &set in &sets {
                 let usage = vk::BufferUsageFlags::UNIFORM_BUFFER;
-                let (buffer, memory) = o.buffer(device, camera_size, usage)?;
+                let local = vk::MemoryPropertyFlags::DEVICE_LOCAL;
+                let (buffer, memory) = o.buffer(device, camera_size, usage, local)?;
                 let info = [vk::DescriptorBufferInfo {
                     buffer,
                     offset: 0,
