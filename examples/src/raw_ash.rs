@@ -289,13 +289,11 @@ fn render_on_device<S: Scene>(
 pub struct Objects {
     types: vk::PhysicalDeviceMemoryProperties,
     render_pass: vk::RenderPass,
-    /// Descriptor set layouts.
+    /// Descriptor set layouts, which the scenes make themselves.
     pub set_layouts: Vec<vk::DescriptorSetLayout>,
-    /// Pipeline layouts.
-    pub pipeline_layouts: Vec<vk::PipelineLayout>,
+    pipeline_layouts: Vec<vk::PipelineLayout>,
     shaders: Vec<vk::ShaderModule>,
-    /// Pipelines.
-    pub pipelines: Vec<vk::Pipeline>,
+    pipelines: Vec<vk::Pipeline>,
     /// Descriptor pools, which free their sets.
     pub descriptor_pools: Vec<vk::DescriptorPool>,
     buffers: Vec<vk::Buffer>,
