@@ -48,7 +48,7 @@ impl Device {
         }
         unsafe { self.acquire_next_image2_khr_unchecked(acquire_info) }
     }
-    /**`vkAcquireNextImage2KHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkAcquireNextImage2KHR` without its dynamic checks.
 
 # Safety
 
@@ -148,7 +148,7 @@ impl Device {
             self.acquire_next_image_khr_unchecked(swapchain, timeout, semaphore, fence)
         }
     }
-    /**`vkAcquireNextImageKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkAcquireNextImageKHR` without its dynamic checks.
 
 # Safety
 
@@ -219,7 +219,7 @@ impl Device {
         }
         unsafe { self.allocate_command_buffers_unchecked(command_pool, allocate_info) }
     }
-    /**`vkAllocateCommandBuffers` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkAllocateCommandBuffers` without its dynamic checks.
 
 # Safety
 
@@ -254,7 +254,6 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
                 .into_iter()
                 .map(|raw| CommandBuffer::from_raw(raw, command_pool, None, true))
                 .collect();
-            #[cfg(feature = "runtime_implicit_validations")]
             let cbs: Vec<CommandBuffer> = cbs
                 .into_iter()
                 .map(|cb| cb.with_level(allocate_info.level))
@@ -303,7 +302,7 @@ impl Device {
             self.allocate_descriptor_sets_unchecked(descriptor_pool, allocate_info)
         }
     }
-    /**`vkAllocateDescriptorSets` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkAllocateDescriptorSets` without its dynamic checks.
 
 # Safety
 
@@ -371,7 +370,7 @@ impl Device {
         }
         unsafe { self.allocate_memory_unchecked(allocate_info) }
     }
-    /**`vkAllocateMemory` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkAllocateMemory` without its dynamic checks.
 
 # Safety
 
@@ -471,7 +470,7 @@ impl Device {
         }
         unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
     }
-    /**`vkBindBufferMemory` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkBindBufferMemory` without its dynamic checks.
 
 # Safety
 
@@ -536,7 +535,7 @@ impl Device {
         }
         unsafe { self.bind_buffer_memory2_unchecked(bind_infos) }
     }
-    /**`vkBindBufferMemory2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkBindBufferMemory2` without its dynamic checks.
 
 # Safety
 
@@ -627,7 +626,7 @@ impl Device {
         }
         unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
     }
-    /**`vkBindImageMemory` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkBindImageMemory` without its dynamic checks.
 
 # Safety
 
@@ -689,7 +688,7 @@ impl Device {
         }
         unsafe { self.bind_image_memory2_unchecked(bind_infos) }
     }
-    /**`vkBindImageMemory2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkBindImageMemory2` without its dynamic checks.
 
 # Safety
 
@@ -754,7 +753,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_begin_debug_utils_label_ext_unchecked(label_info) }
     }
-    /**`vkCmdBeginDebugUtilsLabelEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBeginDebugUtilsLabelEXT` without its dynamic checks.
 
 # Safety
 
@@ -871,7 +870,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_begin_query_unchecked(query_pool, query, flags) }
     }
-    /**`vkCmdBeginQuery` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBeginQuery` without its dynamic checks.
 
 # Safety
 
@@ -968,7 +967,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
     }
-    /**`vkCmdBeginRenderPass` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBeginRenderPass` without its dynamic checks.
 
 # Safety
 
@@ -994,12 +993,9 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(render_pass_begin) {
-                if let Some(o) = live.get(e.as_raw().render_pass) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().framebuffer) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -1082,7 +1078,7 @@ impl<'c> Recorder<'c, Outside> {
             self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
         }
     }
-    /**`vkCmdBeginRenderPass2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBeginRenderPass2` without its dynamic checks.
 
 # Safety
 
@@ -1108,12 +1104,9 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(render_pass_begin) {
-                if let Some(o) = live.get(e.as_raw().render_pass) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().framebuffer) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -1170,7 +1163,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
     }
-    /**`vkCmdBeginRendering` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBeginRendering` without its dynamic checks.
 
 # Safety
 
@@ -1194,35 +1187,7 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(rendering_info) {
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_color_attachments,
-                        e.as_raw().color_attachment_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.image_view) {
-                        kept.push(o);
-                    }
-                    if let Some(o) = live.get(x.resolve_image_view) {
-                        kept.push(o);
-                    }
-                }
-                if let Some(x) = unsafe { e.as_raw().p_depth_attachment.as_ref() } {
-                    if let Some(o) = live.get(x.image_view) {
-                        kept.push(o);
-                    }
-                    if let Some(o) = live.get(x.resolve_image_view) {
-                        kept.push(o);
-                    }
-                }
-                if let Some(x) = unsafe { e.as_raw().p_stencil_attachment.as_ref() } {
-                    if let Some(o) = live.get(x.image_view) {
-                        kept.push(o);
-                    }
-                    if let Some(o) = live.get(x.resolve_image_view) {
-                        kept.push(o);
-                    }
-                }
+                unsafe { crate::reach::rendering_info(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -1335,7 +1300,7 @@ impl<'c, S: State> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdBindDescriptorSets` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBindDescriptorSets` without its dynamic checks.
 
 # Safety
 
@@ -1440,7 +1405,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
     }
-    /**`vkCmdBindIndexBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBindIndexBuffer` without its dynamic checks.
 
 # Safety
 
@@ -1540,7 +1505,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
     }
-    /**`vkCmdBindPipeline` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBindPipeline` without its dynamic checks.
 
 # Safety
 
@@ -1635,7 +1600,7 @@ impl<'c, S: State> Recorder<'c, S> {
             self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
         }
     }
-    /**`vkCmdBindVertexBuffers` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBindVertexBuffers` without its dynamic checks.
 
 # Safety
 
@@ -1756,7 +1721,7 @@ impl<'c, S: State> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdBindVertexBuffers2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBindVertexBuffers2` without its dynamic checks.
 
 # Safety
 
@@ -1948,7 +1913,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdBlitImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBlitImage` without its dynamic checks.
 
 # Safety
 
@@ -2026,7 +1991,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
     }
-    /**`vkCmdBlitImage2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdBlitImage2` without its dynamic checks.
 
 # Safety
 
@@ -2050,12 +2015,7 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(blit_image_info) {
-                if let Some(o) = live.get(e.as_raw().src_image) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().dst_image) {
-                    kept.push(o);
-                }
+                unsafe { crate::reach::blit_image_info2(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -2139,7 +2099,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
     }
-    /**`vkCmdClearAttachments` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdClearAttachments` without its dynamic checks.
 
 # Safety
 
@@ -2257,7 +2217,7 @@ impl<'c> Recorder<'c, Outside> {
             self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
         }
     }
-    /**`vkCmdClearColorImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdClearColorImage` without its dynamic checks.
 
 # Safety
 
@@ -2387,7 +2347,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdClearDepthStencilImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdClearDepthStencilImage` without its dynamic checks.
 
 # Safety
 
@@ -2504,7 +2464,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
     }
-    /**`vkCmdCopyBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyBuffer` without its dynamic checks.
 
 # Safety
 
@@ -2580,7 +2540,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
     }
-    /**`vkCmdCopyBuffer2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyBuffer2` without its dynamic checks.
 
 # Safety
 
@@ -2604,12 +2564,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_buffer_info) {
-                if let Some(o) = live.get(e.as_raw().src_buffer) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().dst_buffer) {
-                    kept.push(o);
-                }
+                unsafe { crate::reach::copy_buffer_info2(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -2755,7 +2710,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdCopyBufferToImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyBufferToImage` without its dynamic checks.
 
 # Safety
 
@@ -2839,7 +2794,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
     }
-    /**`vkCmdCopyBufferToImage2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyBufferToImage2` without its dynamic checks.
 
 # Safety
 
@@ -2864,12 +2819,9 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_buffer_to_image_info) {
-                if let Some(o) = live.get(e.as_raw().src_buffer) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().dst_image) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::copy_buffer_to_image_info2(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -3054,7 +3006,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdCopyImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyImage` without its dynamic checks.
 
 # Safety
 
@@ -3131,7 +3083,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
     }
-    /**`vkCmdCopyImage2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyImage2` without its dynamic checks.
 
 # Safety
 
@@ -3155,12 +3107,7 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_image_info) {
-                if let Some(o) = live.get(e.as_raw().src_image) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().dst_image) {
-                    kept.push(o);
-                }
+                unsafe { crate::reach::copy_image_info2(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -3304,7 +3251,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdCopyImageToBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyImageToBuffer` without its dynamic checks.
 
 # Safety
 
@@ -3387,7 +3334,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
     }
-    /**`vkCmdCopyImageToBuffer2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
 
 # Safety
 
@@ -3412,12 +3359,9 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_image_to_buffer_info) {
-                if let Some(o) = live.get(e.as_raw().src_image) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().dst_buffer) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::copy_image_to_buffer_info2(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -3526,7 +3470,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdCopyQueryPoolResults` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdCopyQueryPoolResults` without its dynamic checks.
 
 # Safety
 
@@ -3668,7 +3612,7 @@ impl<'c> Recorder<'c, Outside> {
             self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
         }
     }
-    /**`vkCmdDispatch` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDispatch` without its dynamic checks.
 
 # Safety
 
@@ -3809,7 +3753,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdDispatchBase` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDispatchBase` without its dynamic checks.
 
 # Safety
 
@@ -3954,7 +3898,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
     }
-    /**`vkCmdDispatchIndirect` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDispatchIndirect` without its dynamic checks.
 
 # Safety
 
@@ -4218,7 +4162,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdDraw` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDraw` without its dynamic checks.
 
 # Safety
 
@@ -4493,7 +4437,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdDrawIndexed` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDrawIndexed` without its dynamic checks.
 
 # Safety
 
@@ -4780,7 +4724,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
         }
     }
-    /**`vkCmdDrawIndexedIndirect` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDrawIndexedIndirect` without its dynamic checks.
 
 # Safety
 
@@ -5090,7 +5034,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdDrawIndexedIndirectCount` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDrawIndexedIndirectCount` without its dynamic checks.
 
 # Safety
 
@@ -5377,7 +5321,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
     }
-    /**`vkCmdDrawIndirect` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDrawIndirect` without its dynamic checks.
 
 # Safety
 
@@ -5679,7 +5623,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdDrawIndirectCount` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdDrawIndirectCount` without its dynamic checks.
 
 # Safety
 
@@ -5751,7 +5695,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
     }
-    /**`vkCmdEndDebugUtilsLabelEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdEndDebugUtilsLabelEXT` without its dynamic checks.
 
 # Safety
 
@@ -5824,7 +5768,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_end_query_unchecked(query_pool, query) }
     }
-    /**`vkCmdEndQuery` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdEndQuery` without its dynamic checks.
 
 # Safety
 
@@ -5897,7 +5841,7 @@ impl<'c> Recorder<'c, InRenderPass> {
         }
         unsafe { self.cmd_end_render_pass_unchecked() }
     }
-    /**`vkCmdEndRenderPass` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdEndRenderPass` without its dynamic checks.
 
 # Safety
 
@@ -5965,7 +5909,7 @@ impl<'c> Recorder<'c, InRenderPass> {
         }
         unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
     }
-    /**`vkCmdEndRenderPass2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdEndRenderPass2` without its dynamic checks.
 
 # Safety
 
@@ -6031,7 +5975,7 @@ impl<'c> Recorder<'c, InRendering> {
         }
         unsafe { self.cmd_end_rendering_unchecked() }
     }
-    /**`vkCmdEndRendering` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdEndRendering` without its dynamic checks.
 
 # Safety
 
@@ -6162,7 +6106,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
     }
-    /**`vkCmdExecuteCommands` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdExecuteCommands` without its dynamic checks.
 
 # Safety
 
@@ -6172,6 +6116,9 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
         &mut self,
         command_buffers: &[&CommandBuffer],
     ) -> () {
+        for h in command_buffers {
+            self.command_buffer().uses().executes(h.uses());
+        }
         for h in command_buffers {
             self.retain(h.retained());
         }
@@ -6258,7 +6205,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
     }
-    /**`vkCmdFillBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdFillBuffer` without its dynamic checks.
 
 # Safety
 
@@ -6321,7 +6268,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
     }
-    /**`vkCmdInsertDebugUtilsLabelEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdInsertDebugUtilsLabelEXT` without its dynamic checks.
 
 # Safety
 
@@ -6404,7 +6351,7 @@ impl<'c> Recorder<'c, InRenderPass> {
         }
         unsafe { self.cmd_next_subpass_unchecked(contents) }
     }
-    /**`vkCmdNextSubpass` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdNextSubpass` without its dynamic checks.
 
 # Safety
 
@@ -6477,7 +6424,7 @@ impl<'c> Recorder<'c, InRenderPass> {
         }
         unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
     }
-    /**`vkCmdNextSubpass2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdNextSubpass2` without its dynamic checks.
 
 # Safety
 
@@ -6621,7 +6568,7 @@ impl<'c, S: State> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdPipelineBarrier` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdPipelineBarrier` without its dynamic checks.
 
 # Safety
 
@@ -6658,9 +6605,9 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in buffer_memory_barriers.iter() {
-                if let Some(o) = live.get(e.as_raw().buffer) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -6671,9 +6618,9 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in image_memory_barriers.iter() {
-                if let Some(o) = live.get(e.as_raw().image) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -6734,7 +6681,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_pipeline_barrier2_unchecked(dependency_info) }
     }
-    /**`vkCmdPipelineBarrier2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdPipelineBarrier2` without its dynamic checks.
 
 # Safety
 
@@ -6758,26 +6705,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(dependency_info) {
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_buffer_memory_barriers,
-                        e.as_raw().buffer_memory_barrier_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.buffer) {
-                        kept.push(o);
-                    }
-                }
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_image_memory_barriers,
-                        e.as_raw().image_memory_barrier_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.image) {
-                        kept.push(o);
-                    }
-                }
+                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -6871,7 +6799,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
     }
-    /**`vkCmdPushConstants` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdPushConstants` without its dynamic checks.
 
 # Safety
 
@@ -6976,7 +6904,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
     }
-    /**`vkCmdResetEvent` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdResetEvent` without its dynamic checks.
 
 # Safety
 
@@ -7072,7 +7000,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
     }
-    /**`vkCmdResetEvent2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdResetEvent2` without its dynamic checks.
 
 # Safety
 
@@ -7153,7 +7081,7 @@ impl<'c> Recorder<'c, Outside> {
             self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
         }
     }
-    /**`vkCmdResetQueryPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdResetQueryPool` without its dynamic checks.
 
 # Safety
 
@@ -7317,7 +7245,7 @@ impl<'c> Recorder<'c, Outside> {
             )
         }
     }
-    /**`vkCmdResolveImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdResolveImage` without its dynamic checks.
 
 # Safety
 
@@ -7396,7 +7324,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
     }
-    /**`vkCmdResolveImage2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdResolveImage2` without its dynamic checks.
 
 # Safety
 
@@ -7420,12 +7348,9 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(resolve_image_info) {
-                if let Some(o) = live.get(e.as_raw().src_image) {
-                    kept.push(o);
-                }
-                if let Some(o) = live.get(e.as_raw().dst_image) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -7471,7 +7396,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_blend_constants_unchecked(blend_constants) }
     }
-    /**`vkCmdSetBlendConstants` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetBlendConstants` without its dynamic checks.
 
 # Safety
 
@@ -7534,7 +7459,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
     }
-    /**`vkCmdSetCullMode` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetCullMode` without its dynamic checks.
 
 # Safety
 
@@ -7598,7 +7523,7 @@ impl<'c, S: State> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdSetDepthBias` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthBias` without its dynamic checks.
 
 # Safety
 
@@ -7662,7 +7587,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
     }
-    /**`vkCmdSetDepthBiasEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
 
 # Safety
 
@@ -7728,7 +7653,7 @@ impl<'c, S: State> Recorder<'c, S> {
             self.cmd_set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds)
         }
     }
-    /**`vkCmdSetDepthBounds` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthBounds` without its dynamic checks.
 
 # Safety
 
@@ -7791,7 +7716,7 @@ impl<'c, S: State> Recorder<'c, S> {
             self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
         }
     }
-    /**`vkCmdSetDepthBoundsTestEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthBoundsTestEnable` without its dynamic checks.
 
 # Safety
 
@@ -7854,7 +7779,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
     }
-    /**`vkCmdSetDepthCompareOp` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthCompareOp` without its dynamic checks.
 
 # Safety
 
@@ -7911,7 +7836,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
     }
-    /**`vkCmdSetDepthTestEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthTestEnable` without its dynamic checks.
 
 # Safety
 
@@ -7968,7 +7893,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
     }
-    /**`vkCmdSetDepthWriteEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
 
 # Safety
 
@@ -8028,7 +7953,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_device_mask_unchecked(device_mask) }
     }
-    /**`vkCmdSetDeviceMask` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetDeviceMask` without its dynamic checks.
 
 # Safety
 
@@ -8113,7 +8038,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
     }
-    /**`vkCmdSetEvent` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetEvent` without its dynamic checks.
 
 # Safety
 
@@ -8193,7 +8118,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
     }
-    /**`vkCmdSetEvent2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetEvent2` without its dynamic checks.
 
 # Safety
 
@@ -8220,26 +8145,7 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(dependency_info) {
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_buffer_memory_barriers,
-                        e.as_raw().buffer_memory_barrier_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.buffer) {
-                        kept.push(o);
-                    }
-                }
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_image_memory_barriers,
-                        e.as_raw().image_memory_barrier_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.image) {
-                        kept.push(o);
-                    }
-                }
+                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -8292,7 +8198,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_front_face_unchecked(front_face) }
     }
-    /**`vkCmdSetFrontFace` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetFrontFace` without its dynamic checks.
 
 # Safety
 
@@ -8345,7 +8251,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_line_width_unchecked(line_width) }
     }
-    /**`vkCmdSetLineWidth` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetLineWidth` without its dynamic checks.
 
 # Safety
 
@@ -8400,7 +8306,7 @@ impl<'c, S: State> Recorder<'c, S> {
             self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
         }
     }
-    /**`vkCmdSetPrimitiveRestartEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetPrimitiveRestartEnable` without its dynamic checks.
 
 # Safety
 
@@ -8466,7 +8372,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
     }
-    /**`vkCmdSetPrimitiveTopology` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
 
 # Safety
 
@@ -8528,7 +8434,7 @@ impl<'c, S: State> Recorder<'c, S> {
             self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
         }
     }
-    /**`vkCmdSetRasterizerDiscardEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetRasterizerDiscardEnable` without its dynamic checks.
 
 # Safety
 
@@ -8608,7 +8514,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
     }
-    /**`vkCmdSetScissor` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetScissor` without its dynamic checks.
 
 # Safety
 
@@ -8687,7 +8593,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
     }
-    /**`vkCmdSetScissorWithCount` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetScissorWithCount` without its dynamic checks.
 
 # Safety
 
@@ -8766,7 +8672,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
     }
-    /**`vkCmdSetStencilCompareMask` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetStencilCompareMask` without its dynamic checks.
 
 # Safety
 
@@ -8878,7 +8784,7 @@ impl<'c, S: State> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdSetStencilOp` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetStencilOp` without its dynamic checks.
 
 # Safety
 
@@ -8964,7 +8870,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_stencil_reference_unchecked(face_mask, reference) }
     }
-    /**`vkCmdSetStencilReference` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetStencilReference` without its dynamic checks.
 
 # Safety
 
@@ -9025,7 +8931,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
     }
-    /**`vkCmdSetStencilTestEnable` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetStencilTestEnable` without its dynamic checks.
 
 # Safety
 
@@ -9100,7 +9006,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_stencil_write_mask_unchecked(face_mask, write_mask) }
     }
-    /**`vkCmdSetStencilWriteMask` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetStencilWriteMask` without its dynamic checks.
 
 # Safety
 
@@ -9175,7 +9081,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
     }
-    /**`vkCmdSetViewport` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetViewport` without its dynamic checks.
 
 # Safety
 
@@ -9251,7 +9157,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
     }
-    /**`vkCmdSetViewportWithCount` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdSetViewportWithCount` without its dynamic checks.
 
 # Safety
 
@@ -9348,7 +9254,7 @@ impl<'c> Recorder<'c, Outside> {
         }
         unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
     }
-    /**`vkCmdUpdateBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdUpdateBuffer` without its dynamic checks.
 
 # Safety
 
@@ -9509,7 +9415,7 @@ impl<'c, S: State> Recorder<'c, S> {
             )
         }
     }
-    /**`vkCmdWaitEvents` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdWaitEvents` without its dynamic checks.
 
 # Safety
 
@@ -9554,9 +9460,9 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in buffer_memory_barriers.iter() {
-                if let Some(o) = live.get(e.as_raw().buffer) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -9567,9 +9473,9 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in image_memory_barriers.iter() {
-                if let Some(o) = live.get(e.as_raw().image) {
-                    kept.push(o);
-                }
+                unsafe {
+                    crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
+                };
             }
             kept
         };
@@ -9654,7 +9560,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
     }
-    /**`vkCmdWaitEvents2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdWaitEvents2` without its dynamic checks.
 
 # Safety
 
@@ -9688,26 +9594,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in dependency_infos.iter() {
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_buffer_memory_barriers,
-                        e.as_raw().buffer_memory_barrier_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.buffer) {
-                        kept.push(o);
-                    }
-                }
-                for x in unsafe {
-                    crate::retention::raw_slice(
-                        e.as_raw().p_image_memory_barriers,
-                        e.as_raw().image_memory_barrier_count,
-                    )
-                } {
-                    if let Some(o) = live.get(x.image) {
-                        kept.push(o);
-                    }
-                }
+                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
             }
             kept
         };
@@ -9794,7 +9681,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_write_timestamp_unchecked(pipeline_stage, query_pool, query) }
     }
-    /**`vkCmdWriteTimestamp` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdWriteTimestamp` without its dynamic checks.
 
 # Safety
 
@@ -9901,7 +9788,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.cmd_write_timestamp2_unchecked(stage, query_pool, query) }
     }
-    /**`vkCmdWriteTimestamp2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCmdWriteTimestamp2` without its dynamic checks.
 
 # Safety
 
@@ -9952,7 +9839,7 @@ impl Device {
         }
         unsafe { self.create_buffer_unchecked(create_info) }
     }
-    /**`vkCreateBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateBuffer` without its dynamic checks.
 
 # Safety
 
@@ -10006,7 +9893,7 @@ impl Device {
         }
         unsafe { self.create_buffer_view_unchecked(create_info) }
     }
-    /**`vkCreateBufferView` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateBufferView` without its dynamic checks.
 
 # Safety
 
@@ -10074,7 +9961,7 @@ impl Device {
         }
         unsafe { self.create_command_pool_unchecked(create_info) }
     }
-    /**`vkCreateCommandPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateCommandPool` without its dynamic checks.
 
 # Safety
 
@@ -10100,7 +9987,8 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
             return Err(Error::Vk(r));
         }
         Ok({
-            let pool = CommandPool::from_raw(out, self, None, true);
+            let pool = CommandPool::from_raw(out, self, None, true)
+                .with_create_flags(create_info.flags);
             #[cfg(feature = "runtime_implicit_validations")]
             let pool = pool
                 .with_queue_flags(
@@ -10163,7 +10051,7 @@ impl Device {
         }
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
     }
-    /**`vkCreateComputePipelines` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateComputePipelines` without its dynamic checks.
 
 # Safety
 
@@ -10245,7 +10133,7 @@ impl Instance {
         }
         unsafe { self.create_debug_utils_messenger_ext_unchecked(create_info) }
     }
-    /**`vkCreateDebugUtilsMessengerEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateDebugUtilsMessengerEXT` without its dynamic checks.
 
 # Safety
 
@@ -10302,7 +10190,7 @@ impl Device {
         }
         unsafe { self.create_descriptor_pool_unchecked(create_info) }
     }
-    /**`vkCreateDescriptorPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateDescriptorPool` without its dynamic checks.
 
 # Safety
 
@@ -10356,7 +10244,7 @@ impl Device {
         }
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
     }
-    /**`vkCreateDescriptorSetLayout` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateDescriptorSetLayout` without its dynamic checks.
 
 # Safety
 
@@ -10413,7 +10301,7 @@ impl Device {
         }
         unsafe { self.create_descriptor_update_template_unchecked(create_info) }
     }
-    /**`vkCreateDescriptorUpdateTemplate` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateDescriptorUpdateTemplate` without its dynamic checks.
 
 # Safety
 
@@ -10501,7 +10389,7 @@ impl PhysicalDevice {
         }
         unsafe { self.create_device_unchecked(create_info) }
     }
-    /**`vkCreateDevice` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateDevice` without its dynamic checks.
 
 # Safety
 
@@ -10560,7 +10448,7 @@ impl Device {
         }
         unsafe { self.create_event_unchecked(create_info) }
     }
-    /**`vkCreateEvent` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateEvent` without its dynamic checks.
 
 # Safety
 
@@ -10611,7 +10499,7 @@ impl Device {
         }
         unsafe { self.create_fence_unchecked(create_info) }
     }
-    /**`vkCreateFence` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateFence` without its dynamic checks.
 
 # Safety
 
@@ -10666,7 +10554,7 @@ impl Device {
         }
         unsafe { self.create_framebuffer_unchecked(create_info) }
     }
-    /**`vkCreateFramebuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateFramebuffer` without its dynamic checks.
 
 # Safety
 
@@ -10769,7 +10657,7 @@ impl Device {
         }
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
     }
-    /**`vkCreateGraphicsPipelines` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateGraphicsPipelines` without its dynamic checks.
 
 # Safety
 
@@ -10847,7 +10735,7 @@ impl Device {
         }
         unsafe { self.create_image_unchecked(create_info) }
     }
-    /**`vkCreateImage` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateImage` without its dynamic checks.
 
 # Safety
 
@@ -10901,7 +10789,7 @@ impl Device {
         }
         unsafe { self.create_image_view_unchecked(create_info) }
     }
-    /**`vkCreateImageView` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateImageView` without its dynamic checks.
 
 # Safety
 
@@ -10975,7 +10863,7 @@ impl Entry {
         }
         unsafe { self.create_instance_unchecked(create_info) }
     }
-    /**`vkCreateInstance` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateInstance` without its dynamic checks.
 
 # Safety
 
@@ -11036,7 +10924,7 @@ impl Instance {
         }
         unsafe { self.create_metal_surface_ext_unchecked(create_info) }
     }
-    /**`vkCreateMetalSurfaceEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateMetalSurfaceEXT` without its dynamic checks.
 
 # Safety
 
@@ -11093,7 +10981,7 @@ impl Device {
         }
         unsafe { self.create_pipeline_cache_unchecked(create_info) }
     }
-    /**`vkCreatePipelineCache` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreatePipelineCache` without its dynamic checks.
 
 # Safety
 
@@ -11147,7 +11035,7 @@ impl Device {
         }
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
     }
-    /**`vkCreatePipelineLayout` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreatePipelineLayout` without its dynamic checks.
 
 # Safety
 
@@ -11223,7 +11111,7 @@ impl Device {
         }
         unsafe { self.create_private_data_slot_unchecked(create_info) }
     }
-    /**`vkCreatePrivateDataSlot` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreatePrivateDataSlot` without its dynamic checks.
 
 # Safety
 
@@ -11277,7 +11165,7 @@ impl Device {
         }
         unsafe { self.create_query_pool_unchecked(create_info) }
     }
-    /**`vkCreateQueryPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateQueryPool` without its dynamic checks.
 
 # Safety
 
@@ -11331,7 +11219,7 @@ impl Device {
         }
         unsafe { self.create_render_pass_unchecked(create_info) }
     }
-    /**`vkCreateRenderPass` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateRenderPass` without its dynamic checks.
 
 # Safety
 
@@ -11385,7 +11273,7 @@ impl Device {
         }
         unsafe { self.create_render_pass2_unchecked(create_info) }
     }
-    /**`vkCreateRenderPass2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateRenderPass2` without its dynamic checks.
 
 # Safety
 
@@ -11440,7 +11328,7 @@ impl Device {
         }
         unsafe { self.create_sampler_unchecked(create_info) }
     }
-    /**`vkCreateSampler` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateSampler` without its dynamic checks.
 
 # Safety
 
@@ -11498,7 +11386,7 @@ impl Device {
         }
         unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
     }
-    /**`vkCreateSamplerYcbcrConversion` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateSamplerYcbcrConversion` without its dynamic checks.
 
 # Safety
 
@@ -11552,7 +11440,7 @@ impl Device {
         }
         unsafe { self.create_semaphore_unchecked(create_info) }
     }
-    /**`vkCreateSemaphore` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateSemaphore` without its dynamic checks.
 
 # Safety
 
@@ -11608,7 +11496,7 @@ impl Device {
         }
         unsafe { self.create_shader_module_unchecked(create_info) }
     }
-    /**`vkCreateShaderModule` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateShaderModule` without its dynamic checks.
 
 # Safety
 
@@ -11664,7 +11552,7 @@ impl Device {
         }
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
     }
-    /**`vkCreateSwapchainKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateSwapchainKHR` without its dynamic checks.
 
 # Safety
 
@@ -11725,7 +11613,7 @@ impl Instance {
         }
         unsafe { self.create_wayland_surface_khr_unchecked(create_info) }
     }
-    /**`vkCreateWaylandSurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateWaylandSurfaceKHR` without its dynamic checks.
 
 # Safety
 
@@ -11783,7 +11671,7 @@ impl Instance {
         }
         unsafe { self.create_win32_surface_khr_unchecked(create_info) }
     }
-    /**`vkCreateWin32SurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateWin32SurfaceKHR` without its dynamic checks.
 
 # Safety
 
@@ -11841,7 +11729,7 @@ impl Instance {
         }
         unsafe { self.create_xcb_surface_khr_unchecked(create_info) }
     }
-    /**`vkCreateXcbSurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateXcbSurfaceKHR` without its dynamic checks.
 
 # Safety
 
@@ -11899,7 +11787,7 @@ impl Instance {
         }
         unsafe { self.create_xlib_surface_khr_unchecked(create_info) }
     }
-    /**`vkCreateXlibSurfaceKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkCreateXlibSurfaceKHR` without its dynamic checks.
 
 # Safety
 
@@ -11942,6 +11830,7 @@ impl Device {
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        self.live().ledger().retire_all();
         Ok(())
     }
 }
@@ -12312,7 +12201,7 @@ impl Device {
         }
         unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
     }
-    /**`vkFlushMappedMemoryRanges` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkFlushMappedMemoryRanges` without its dynamic checks.
 
 # Safety
 
@@ -12399,7 +12288,7 @@ impl Device {
         }
         Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
     }
-    /**`vkGetBufferMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetBufferMemoryRequirements` without its dynamic checks.
 
 # Safety
 
@@ -12447,7 +12336,7 @@ impl Device {
             self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
         })
     }
-    /**`vkGetBufferMemoryRequirements2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetBufferMemoryRequirements2` without its dynamic checks.
 
 # Safety
 
@@ -12526,7 +12415,7 @@ impl Device {
             self.get_descriptor_set_layout_support_unchecked(create_info, support)
         })
     }
-    /**`vkGetDescriptorSetLayoutSupport` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDescriptorSetLayoutSupport` without its dynamic checks.
 
 # Safety
 
@@ -12582,7 +12471,7 @@ impl Device {
             )
         })
     }
-    /**`vkGetDeviceBufferMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDeviceBufferMemoryRequirements` without its dynamic checks.
 
 # Safety
 
@@ -12708,7 +12597,7 @@ impl Device {
         }
         unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
     }
-    /**`vkGetDeviceGroupSurfacePresentModesKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDeviceGroupSurfacePresentModesKHR` without its dynamic checks.
 
 # Safety
 
@@ -12770,7 +12659,7 @@ impl Device {
             )
         })
     }
-    /**`vkGetDeviceImageMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDeviceImageMemoryRequirements` without its dynamic checks.
 
 # Safety
 
@@ -12820,7 +12709,7 @@ impl Device {
         }
         unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
     }
-    /**`vkGetDeviceImageSparseMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDeviceImageSparseMemoryRequirements` without its dynamic checks.
 
 # Safety
 
@@ -12899,7 +12788,7 @@ impl Device {
         }
         Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
     }
-    /**`vkGetDeviceMemoryCommitment` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDeviceMemoryCommitment` without its dynamic checks.
 
 # Safety
 
@@ -13000,7 +12889,7 @@ impl Device {
         }
         Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
     }
-    /**`vkGetDeviceQueue2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetDeviceQueue2` without its dynamic checks.
 
 # Safety
 
@@ -13062,7 +12951,7 @@ impl Device {
         }
         unsafe { self.get_event_status_unchecked(event) }
     }
-    /**`vkGetEventStatus` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetEventStatus` without its dynamic checks.
 
 # Safety
 
@@ -13110,7 +12999,7 @@ impl Device {
         }
         unsafe { self.get_fence_status_unchecked(fence) }
     }
-    /**`vkGetFenceStatus` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetFenceStatus` without its dynamic checks.
 
 # Safety
 
@@ -13167,7 +13056,7 @@ impl Device {
         }
         Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
     }
-    /**`vkGetImageMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetImageMemoryRequirements` without its dynamic checks.
 
 # Safety
 
@@ -13216,7 +13105,7 @@ impl Device {
             self.get_image_memory_requirements2_unchecked(info, memory_requirements)
         })
     }
-    /**`vkGetImageMemoryRequirements2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetImageMemoryRequirements2` without its dynamic checks.
 
 # Safety
 
@@ -13274,7 +13163,7 @@ impl Device {
         }
         unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
     }
-    /**`vkGetImageSparseMemoryRequirements` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetImageSparseMemoryRequirements` without its dynamic checks.
 
 # Safety
 
@@ -13417,7 +13306,7 @@ impl Device {
         }
         Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
     }
-    /**`vkGetImageSubresourceLayout` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetImageSubresourceLayout` without its dynamic checks.
 
 # Safety
 
@@ -13477,7 +13366,7 @@ impl PhysicalDevice {
             )
         })
     }
-    /**`vkGetPhysicalDeviceExternalBufferProperties` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceExternalBufferProperties` without its dynamic checks.
 
 # Safety
 
@@ -13537,7 +13426,7 @@ impl PhysicalDevice {
             )
         })
     }
-    /**`vkGetPhysicalDeviceExternalFenceProperties` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceExternalFenceProperties` without its dynamic checks.
 
 # Safety
 
@@ -13597,7 +13486,7 @@ impl PhysicalDevice {
             )
         })
     }
-    /**`vkGetPhysicalDeviceExternalSemaphoreProperties` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceExternalSemaphoreProperties` without its dynamic checks.
 
 # Safety
 
@@ -13698,7 +13587,7 @@ impl PhysicalDevice {
         }
         Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
     }
-    /**`vkGetPhysicalDeviceFormatProperties` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
 
 # Safety
 
@@ -13755,7 +13644,7 @@ impl PhysicalDevice {
             )
         })
     }
-    /**`vkGetPhysicalDeviceFormatProperties2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceFormatProperties2` without its dynamic checks.
 
 # Safety
 
@@ -13855,7 +13744,7 @@ impl PhysicalDevice {
             )
         }
     }
-    /**`vkGetPhysicalDeviceImageFormatProperties` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceImageFormatProperties` without its dynamic checks.
 
 # Safety
 
@@ -13930,7 +13819,7 @@ impl PhysicalDevice {
             )
         }
     }
-    /**`vkGetPhysicalDeviceImageFormatProperties2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceImageFormatProperties2` without its dynamic checks.
 
 # Safety
 
@@ -14010,7 +13899,7 @@ impl PhysicalDevice {
             self.get_physical_device_memory_properties2_unchecked(memory_properties)
         })
     }
-    /**`vkGetPhysicalDeviceMemoryProperties2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceMemoryProperties2` without its dynamic checks.
 
 # Safety
 
@@ -14071,7 +13960,7 @@ impl PhysicalDevice {
         }
         unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
     }
-    /**`vkGetPhysicalDevicePresentRectanglesKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDevicePresentRectanglesKHR` without its dynamic checks.
 
 # Safety
 
@@ -14169,7 +14058,7 @@ impl PhysicalDevice {
         }
         Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
     }
-    /**`vkGetPhysicalDeviceProperties2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceProperties2` without its dynamic checks.
 
 # Safety
 
@@ -14362,7 +14251,7 @@ impl PhysicalDevice {
             )
         }
     }
-    /**`vkGetPhysicalDeviceSparseImageFormatProperties` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties` without its dynamic checks.
 
 # Safety
 
@@ -14454,7 +14343,7 @@ impl PhysicalDevice {
             )
         }
     }
-    /**`vkGetPhysicalDeviceSparseImageFormatProperties2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties2` without its dynamic checks.
 
 # Safety
 
@@ -14540,7 +14429,7 @@ impl PhysicalDevice {
         }
         unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
     }
-    /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR` without its dynamic checks.
 
 # Safety
 
@@ -14613,7 +14502,7 @@ impl PhysicalDevice {
         }
         unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
     }
-    /**`vkGetPhysicalDeviceSurfaceFormatsKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceSurfaceFormatsKHR` without its dynamic checks.
 
 # Safety
 
@@ -14711,7 +14600,7 @@ impl PhysicalDevice {
         }
         unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
     }
-    /**`vkGetPhysicalDeviceSurfacePresentModesKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceSurfacePresentModesKHR` without its dynamic checks.
 
 # Safety
 
@@ -14807,7 +14696,7 @@ impl PhysicalDevice {
             )
         }
     }
-    /**`vkGetPhysicalDeviceSurfaceSupportKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPhysicalDeviceSurfaceSupportKHR` without its dynamic checks.
 
 # Safety
 
@@ -14961,7 +14850,7 @@ impl Device {
         }
         unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
     }
-    /**`vkGetPipelineCacheData` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPipelineCacheData` without its dynamic checks.
 
 # Safety
 
@@ -15061,7 +14950,7 @@ impl Device {
             )
         })
     }
-    /**`vkGetPrivateData` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetPrivateData` without its dynamic checks.
 
 # Safety
 
@@ -15164,7 +15053,7 @@ impl Device {
             )
         }
     }
-    /**`vkGetQueryPoolResults` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetQueryPoolResults` without its dynamic checks.
 
 # Safety
 
@@ -15233,7 +15122,7 @@ impl Device {
         }
         Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
     }
-    /**`vkGetRenderAreaGranularity` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetRenderAreaGranularity` without its dynamic checks.
 
 # Safety
 
@@ -15284,7 +15173,7 @@ impl Device {
         }
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
     }
-    /**`vkGetSemaphoreCounterValue` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetSemaphoreCounterValue` without its dynamic checks.
 
 # Safety
 
@@ -15342,7 +15231,7 @@ impl Device {
         }
         unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
     }
-    /**`vkGetSwapchainImagesKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkGetSwapchainImagesKHR` without its dynamic checks.
 
 # Safety
 
@@ -15437,7 +15326,7 @@ impl Device {
         }
         unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
     }
-    /**`vkInvalidateMappedMemoryRanges` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkInvalidateMappedMemoryRanges` without its dynamic checks.
 
 # Safety
 
@@ -15518,7 +15407,7 @@ impl Device {
         }
         unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
     }
-    /**`vkMergePipelineCaches` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkMergePipelineCaches` without its dynamic checks.
 
 # Safety
 
@@ -15586,8 +15475,8 @@ impl Queue {
 
 # Valid usage
 
-- `VUID-vkQueueBindSparse-fence-01113`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueBindSparse-fence-01114`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueBindSparse-fence-01113`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueBindSparse-fence-01114`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueBindSparse-pSignalSemaphores-01115`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueBindSparse-pWaitSemaphores-01116`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueBindSparse-pWaitSemaphores-01117`: user (explicit rule; the wrappers do not check it)
@@ -15601,7 +15490,7 @@ impl Queue {
     pub fn queue_bind_sparse<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
-        fence: Option<&Fence>,
+        fence: &Fence,
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
@@ -15619,16 +15508,14 @@ impl Queue {
                         ),
                     );
                 }
-                if let Some(h) = fence {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkQueueBindSparse-commonparent",
-                                "`fence` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
+                if !s.owned_by_device(fence.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkQueueBindSparse-commonparent",
+                            "`fence` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
                 }
                 for x in bind_info.iter() {
                     crate::checks::check_bind_sparse_info(x, s)?;
@@ -15637,18 +15524,19 @@ impl Queue {
             })();
             r?;
         }
+        crate::submission::check_fence(fence, &crate::submission::BIND_SPARSE)?;
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
     }
-    /**`vkQueueBindSparse` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkQueueBindSparse` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_bind_sparse_unchecked<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
-        fence: Option<&Fence>,
+        fence: &Fence,
     ) -> Result<()> {
         let r = unsafe {
             (self
@@ -15659,12 +15547,21 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
                 self.raw(),
                 bind_info.len() as u32,
                 bind_info.as_ptr().cast(),
-                fence.map_or(vk::Fence::null(), |h| h.raw()),
+                fence.raw(),
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        let device = self.parent();
+        let mut kept = Vec::new();
+        for s in bind_info {
+            unsafe {
+                crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept)
+            };
+        }
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = smallvec::SmallVec::new();
+        crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
         Ok(())
     }
 }
@@ -15752,7 +15649,7 @@ impl Queue {
         }
         unsafe { self.queue_present_khr_unchecked(present_info) }
     }
-    /**`vkQueuePresentKHR` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkQueuePresentKHR` without its dynamic checks.
 
 # Safety
 
@@ -15768,6 +15665,16 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
             .khr_swapchain
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let device = self.parent();
+        let mut kept = Vec::new();
+        unsafe {
+            crate::reach::present_info_khr(
+                present_info.as_raw(),
+                device.live(),
+                &mut kept,
+            )
+        };
+        self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept));
         let r = unsafe {
             (ext_table
                 .queue_present_khr)(
@@ -15786,16 +15693,16 @@ impl Queue {
 
 # Valid usage
 
-- `VUID-vkQueueSubmit-fence-00063`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-fence-00064`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-fence-00063`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit-fence-00064`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueSubmit-pCommandBuffers-00065`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pWaitDstStageMask-00066`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pSignalSemaphores-00067`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pWaitSemaphores-00068`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pCommandBuffers-00070`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pCommandBuffers-00071`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pCommandBuffers-00072`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pCommandBuffers-00073`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit-pCommandBuffers-00070`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit-pCommandBuffers-00071`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit-pCommandBuffers-00072`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit-pCommandBuffers-00073`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit-pCommandBuffers-00074`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pSubmits-02207`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pSubmits-02808`: user (explicit rule; the wrappers do not check it)
@@ -15835,13 +15742,26 @@ impl Queue {
             })();
             r?;
         }
+        crate::submission::check_fence(fence, &crate::submission::SUBMIT)?;
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+            })
+            .copied()
+            .collect();
+        crate::submission::check_command_buffers(
+            self.parent(),
+            &cbs,
+            &crate::submission::SUBMIT,
+        )?;
         unsafe { self.queue_submit_unchecked(submits, fence) }
     }
-    /**`vkQueueSubmit` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkQueueSubmit` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,
@@ -15866,15 +15786,16 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
         let device = self.parent();
         let mut kept = Vec::new();
         for s in submits {
-            let raw = unsafe {
-                core::slice::from_raw_parts(
-                    s.p_command_buffers,
-                    s.command_buffer_count as usize,
-                )
-            };
-            kept.extend(raw.iter().filter_map(|cb| device.command_buffer(*cb)));
+            unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
         }
-        fence.track(kept);
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+            })
+            .copied()
+            .collect();
+        crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
         Ok(())
     }
 }
@@ -15883,8 +15804,8 @@ impl Queue {
 
 # Valid usage
 
-- `VUID-vkQueueSubmit2-fence-04894`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-fence-04895`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-fence-04894`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit2-fence-04895`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueSubmit2-synchronization2-03866`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-commandBuffer-03867`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-semaphore-03868`: user (explicit rule; the wrappers do not check it)
@@ -15892,10 +15813,10 @@ impl Queue {
 - `VUID-vkQueueSubmit2-stageMask-03870`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-semaphore-03871`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-semaphore-03872`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03874`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03877`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkQueueSubmit2-commandBuffer-03874`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit2-commandBuffer-03875`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit2-commandBuffer-03876`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit2-commandBuffer-03877`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit2-commandBuffer-03878`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-commandBuffer-03879`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
@@ -15909,23 +15830,21 @@ impl Queue {
     pub fn queue_submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
-        fence: Option<&Fence>,
+        fence: &Fence,
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
                 let _ = s;
-                if let Some(h) = fence {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkQueueSubmit2-commonparent",
-                                "`fence` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
+                if !s.owned_by_device(fence.raw()) {
+                    return Err(
+                        fail(
+                            "VUID-vkQueueSubmit2-commonparent",
+                            "`fence` does not come from the VkDevice the command is called on"
+                                .into(),
+                        ),
+                    );
                 }
                 for x in submits.iter() {
                     crate::checks::check_submit_info2(x, s)?;
@@ -15934,18 +15853,34 @@ impl Queue {
             })();
             r?;
         }
+        crate::submission::check_fence(fence, &crate::submission::SUBMIT2)?;
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(
+                    s.p_command_buffer_infos,
+                    s.command_buffer_info_count,
+                )
+            })
+            .map(|i| i.command_buffer)
+            .collect();
+        crate::submission::check_command_buffers(
+            self.parent(),
+            &cbs,
+            &crate::submission::SUBMIT2,
+        )?;
         unsafe { self.queue_submit2_unchecked(submits, fence) }
     }
-    /**`vkQueueSubmit2` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkQueueSubmit2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_submit2_unchecked<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
-        fence: Option<&Fence>,
+        fence: &Fence,
     ) -> Result<()> {
         let r = unsafe {
             (self
@@ -15956,12 +15891,28 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
                 self.raw(),
                 submits.len() as u32,
                 submits.as_ptr().cast(),
-                fence.map_or(vk::Fence::null(), |h| h.raw()),
+                fence.raw(),
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        let device = self.parent();
+        let mut kept = Vec::new();
+        for s in submits {
+            unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
+        }
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(
+                    s.p_command_buffer_infos,
+                    s.command_buffer_info_count,
+                )
+            })
+            .map(|i| i.command_buffer)
+            .collect();
+        crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
         Ok(())
     }
 }
@@ -15977,6 +15928,7 @@ impl Queue {
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        self.parent().live().ledger().retire_queue(self.raw());
         Ok(())
     }
 }
@@ -16010,7 +15962,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         unsafe { self.reset_command_buffer_unchecked(flags) }
     }
-    /**`vkResetCommandBuffer` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkResetCommandBuffer` without its dynamic checks.
 
 # Safety
 
@@ -16069,7 +16021,7 @@ impl Device {
         }
         unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
     }
-    /**`vkResetCommandPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkResetCommandPool` without its dynamic checks.
 
 # Safety
 
@@ -16135,7 +16087,7 @@ impl Device {
         }
         unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
     }
-    /**`vkResetDescriptorPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkResetDescriptorPool` without its dynamic checks.
 
 # Safety
 
@@ -16190,7 +16142,7 @@ impl Device {
         }
         unsafe { self.reset_event_unchecked(event) }
     }
-    /**`vkResetEvent` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkResetEvent` without its dynamic checks.
 
 # Safety
 
@@ -16209,7 +16161,7 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkResetFences-pFences-01123`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetFences-pFences-01123`: dynamic (refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled))
 - `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
@@ -16243,16 +16195,24 @@ impl Device {
             })();
             r?;
         }
+        for f in fences {
+            if f.submission().is_some_and(|sub| !sub.poll(self)) {
+                return Err(Error::Validation {
+                    vuid: "VUID-vkResetFences-pFences-01123",
+                    message: "a fence is reset while the queue operation that signals it may still be executing"
+                        .into(),
+                });
+            }
+        }
         unsafe { self.reset_fences_unchecked(fences) }
     }
-    /**`vkResetFences` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkResetFences` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
-        let fences_w: &[&Fence] = fences;
         let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
             .map(|h| h.raw())
@@ -16265,9 +16225,6 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
-        }
-        for f in fences_w {
-            f.completed();
         }
         Ok(())
     }
@@ -16313,7 +16270,7 @@ impl Device {
             self.reset_query_pool_unchecked(query_pool, first_query, query_count)
         })
     }
-    /**`vkResetQueryPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkResetQueryPool` without its dynamic checks.
 
 # Safety
 
@@ -16366,7 +16323,7 @@ impl Device {
         }
         unsafe { self.set_debug_utils_object_name_ext_unchecked(name_info) }
     }
-    /**`vkSetDebugUtilsObjectNameEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkSetDebugUtilsObjectNameEXT` without its dynamic checks.
 
 # Safety
 
@@ -16419,7 +16376,7 @@ impl Device {
         }
         unsafe { self.set_debug_utils_object_tag_ext_unchecked(tag_info) }
     }
-    /**`vkSetDebugUtilsObjectTagEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkSetDebugUtilsObjectTagEXT` without its dynamic checks.
 
 # Safety
 
@@ -16477,7 +16434,7 @@ impl Device {
         }
         unsafe { self.set_event_unchecked(event) }
     }
-    /**`vkSetEvent` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkSetEvent` without its dynamic checks.
 
 # Safety
 
@@ -16541,7 +16498,7 @@ impl Device {
             )
         }
     }
-    /**`vkSetPrivateData` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkSetPrivateData` without its dynamic checks.
 
 # Safety
 
@@ -16657,7 +16614,7 @@ impl Instance {
             )
         }
     }
-    /**`vkSubmitDebugUtilsMessageEXT` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkSubmitDebugUtilsMessageEXT` without its dynamic checks.
 
 # Safety
 
@@ -16731,7 +16688,7 @@ impl Device {
         }
         Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
     }
-    /**`vkTrimCommandPool` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkTrimCommandPool` without its dynamic checks.
 
 # Safety
 
@@ -16800,7 +16757,7 @@ impl Device {
             )
         })
     }
-    /**`vkUpdateDescriptorSetWithTemplate` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkUpdateDescriptorSetWithTemplate` without its dynamic checks.
 
 # Safety
 
@@ -16880,7 +16837,7 @@ impl Device {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
         })
     }
-    /**`vkUpdateDescriptorSets` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkUpdateDescriptorSets` without its dynamic checks.
 
 # Safety
 
@@ -16964,7 +16921,7 @@ impl Device {
         }
         unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
     }
-    /**`vkWaitForFences` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkWaitForFences` without its dynamic checks.
 
 # Safety
 
@@ -16996,9 +16953,17 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        if r == vk::Result::SUCCESS && (wait_all == vk::TRUE || fences_w.len() == 1) {
-            for f in fences_w {
-                f.completed();
+        if r == vk::Result::SUCCESS {
+            if wait_all == vk::TRUE || fences_w.len() == 1 {
+                for f in fences_w {
+                    f.completed();
+                }
+            } else {
+                for f in fences_w {
+                    if let Some(sub) = f.submission() {
+                        sub.poll(self);
+                    }
+                }
             }
         }
         Ok(r)
@@ -17029,7 +16994,7 @@ impl Device {
         }
         unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
     }
-    /**`vkWaitSemaphores` without the dynamic checks of `runtime_implicit_validations`.
+    /**`vkWaitSemaphores` without its dynamic checks.
 
 # Safety
 

@@ -202,13 +202,7 @@ impl Frame<'_> {
             let _ = queue.queue_submit(&[], self.fence);
             return Err(e);
         }
-        self.fence.track(
-            waits
-                .iter()
-                .map(|(s, _)| s.retained())
-                .chain(signals.iter().map(|s| s.retained()))
-                .collect(),
-        );
+        // The submission holds its semaphores; the frame needs a new recording.
         self.commands.set_executable(false);
         *self.next = (*self.next + 1) % self.count;
         Ok(())

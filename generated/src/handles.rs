@@ -193,9 +193,7 @@ struct CommandBufferInner {
     raw: vk::CommandBuffer,
     parent: CommandPool,
     resources: Vutex<Vec<Retained>>,
-    executable: Vutex<bool>,
-    #[cfg(feature = "runtime_implicit_validations")]
-    level: vk::CommandBufferLevel,
+    uses: Vrc<crate::submission::Uses>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -215,13 +213,12 @@ impl CommandBuffer {
                 raw,
                 parent: parent.clone(),
                 resources: Vutex::new(Vec::new()),
-                executable: Vutex::new(false),
-                #[cfg(feature = "runtime_implicit_validations")]
-                level: vk::CommandBufferLevel::PRIMARY,
+                uses: Default::default(),
                 keep,
                 destroy,
             }),
         };
+        parent.parent().live().add(raw, &this.retained());
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -229,29 +226,38 @@ impl CommandBuffer {
     pub fn parent(&self) -> &CommandPool {
         &self.inner.parent
     }
-    /// Records the buffer's level, for the `bufferlevel` checks.
-    #[cfg(feature = "runtime_implicit_validations")]
-    pub(crate) fn with_level(mut self, level: vk::CommandBufferLevel) -> Self {
-        if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-            inner.level = level;
-        }
+    /// Records the buffer's level, for the `bufferlevel` checks and the
+    /// submission rules.
+    pub(crate) fn with_level(self, level: vk::CommandBufferLevel) -> Self {
+        self.inner.uses.set_secondary(level == vk::CommandBufferLevel::SECONDARY);
         self
     }
     /// The buffer's level.
-    #[cfg(feature = "runtime_implicit_validations")]
+    #[allow(dead_code)]
     pub(crate) fn level(&self) -> vk::CommandBufferLevel {
-        self.inner.level
+        if self.inner.uses.is_secondary() {
+            vk::CommandBufferLevel::SECONDARY
+        } else {
+            vk::CommandBufferLevel::PRIMARY
+        }
     }
+    /// The buffer's lifecycle state.
+    pub(crate) fn uses(&self) -> &Vrc<crate::submission::Uses> {
+        &self.inner.uses
+    }
+    /// Keeps what the last recording uses; what the recording before kept
+    /// goes, which `begin` allows only once no submission uses it.
     pub(crate) fn keep_alive(&self, objects: Vec<Retained>) {
-        *self.inner.resources.lock() = objects;
+        let old = core::mem::replace(&mut *self.inner.resources.lock(), objects);
+        drop(old);
     }
     pub(crate) fn set_executable(&self, executable: bool) {
-        *self.inner.executable.lock() = executable;
+        self.inner.uses.set_executable(executable);
     }
     /// Whether the buffer has been ended and can be submitted.
     #[inline]
     pub fn is_executable(&self) -> bool {
-        *self.inner.executable.lock()
+        self.inner.uses.is_executable()
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -288,6 +294,7 @@ impl Drop for CommandBufferInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.parent().objects().remove(self.raw);
+        self.parent.parent().live().remove(self.raw);
         if !self.destroy {
             return;
         }
@@ -318,6 +325,7 @@ struct CommandPoolInner {
     parent: Device,
     #[cfg(feature = "runtime_implicit_validations")]
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
+    create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -337,6 +345,7 @@ impl CommandPool {
                 parent: parent.clone(),
                 #[cfg(feature = "runtime_implicit_validations")]
                 queue_flags: std::sync::OnceLock::new(),
+                create_flags: std::sync::OnceLock::new(),
                 keep,
                 destroy,
             }),
@@ -359,6 +368,21 @@ impl CommandPool {
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags.get().copied().unwrap_or_default()
+    }
+    /// Records the flags the pool was created with.
+    pub(crate) fn with_create_flags(self, flags: vk::CommandPoolCreateFlags) -> Self {
+        let _ = self.inner.create_flags.set(flags);
+        self
+    }
+    /// Whether `begin` may reset a buffer of this pool implicitly
+    /// (`RESET_COMMAND_BUFFER`).
+    pub fn resets_buffers(&self) -> bool {
+        self.inner
+            .create_flags
+            .get()
+            .is_some_and(|f| {
+                f.contains(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
+            })
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -923,10 +947,7 @@ struct DeviceInner {
     fns: ash::Device,
     ext: DeviceExtensions,
     command_buffers: Vutex<
-        std::collections::HashMap<
-            vk::CommandBuffer,
-            tuff_runtime::Vweak<dyn tuff_runtime::Retain>,
-        >,
+        std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>,
     >,
     live: crate::retention::Live,
     #[cfg(feature = "runtime_implicit_validations")]
@@ -1011,13 +1032,10 @@ impl Device {
     pub fn parent(&self) -> &PhysicalDevice {
         &self.inner.physical
     }
-    /// Remembers a command buffer so that a submission naming its raw handle
-    /// can keep it alive.
+    /// Remembers a command buffer's lifecycle state, so that a submission
+    /// naming its raw handle can check and mark it.
     pub(crate) fn register_command_buffer(&self, cb: &CommandBuffer) {
-        self.inner
-            .command_buffers
-            .lock()
-            .insert(cb.raw(), Vrc::downgrade(&cb.retained()));
+        self.inner.command_buffers.lock().insert(cb.raw(), cb.uses().clone());
     }
     pub(crate) fn forget_command_buffer(&self, raw: vk::CommandBuffer) {
         self.inner.command_buffers.lock().remove(&raw);
@@ -1028,9 +1046,12 @@ impl Device {
     pub(crate) fn live(&self) -> &crate::retention::Live {
         &self.inner.live
     }
-    /// The live command buffer with this raw handle.
-    pub(crate) fn command_buffer(&self, raw: vk::CommandBuffer) -> Option<Retained> {
-        self.inner.command_buffers.lock().get(&raw).and_then(|w| w.upgrade())
+    /// The lifecycle state of the live command buffer with this raw handle.
+    pub(crate) fn command_buffer_uses(
+        &self,
+        raw: vk::CommandBuffer,
+    ) -> Option<Vrc<crate::submission::Uses>> {
+        self.inner.command_buffers.lock().get(&raw).cloned()
     }
 }
 impl Handle for Device {
@@ -1236,7 +1257,7 @@ pub struct Fence {
 struct FenceInner {
     raw: vk::Fence,
     parent: Device,
-    pending: Vutex<Vec<Retained>>,
+    submission: Vutex<Option<Vrc<crate::submission::Submission>>>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -1254,7 +1275,7 @@ impl Fence {
             inner: Vrc::new(FenceInner {
                 raw,
                 parent: parent.clone(),
-                pending: Vutex::new(Vec::new()),
+                submission: Vutex::new(None),
                 keep,
                 destroy,
             }),
@@ -1267,13 +1288,23 @@ impl Fence {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// Keeps `objects` alive until the fence is seen signalled or reset.
-    pub(crate) fn track(&self, objects: Vec<Retained>) {
-        self.inner.pending.lock().extend(objects);
+    /// Holds the queue operation that signals this fence until it is
+    /// known complete.
+    pub(crate) fn track(&self, sub: Vrc<crate::submission::Submission>) {
+        let old = self.inner.submission.lock().replace(sub);
+        drop(old);
     }
-    /// Releases what the completed submission kept alive.
+    /// The queue operation that signals this fence, while it is not known
+    /// complete.
+    pub(crate) fn submission(&self) -> Option<Vrc<crate::submission::Submission>> {
+        self.inner.submission.lock().clone().filter(|s| !s.is_complete())
+    }
+    /// The fence was seen signalled: its queue operation, and every one
+    /// submitted before it to that queue, are complete.
     pub(crate) fn completed(&self) {
-        self.inner.pending.lock().clear();
+        if let Some(sub) = self.submission() {
+            self.parent().live().ledger().retire(&sub);
+        }
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1314,9 +1345,10 @@ impl Drop for FenceInner {
         if !self.destroy {
             return;
         }
-        if !self.pending.lock().is_empty() {
-            unsafe {
-                let _ = (self
+        let submission = self.submission.lock().take();
+        if let Some(sub) = submission.filter(|s| !s.is_complete()) {
+            let r = unsafe {
+                (self
                     .parent
                     .fns()
                     .fp_v1_0()
@@ -1326,7 +1358,12 @@ impl Drop for FenceInner {
                     &self.raw,
                     vk::TRUE,
                     u64::MAX,
-                );
+                )
+            };
+            if r == vk::Result::SUCCESS {
+                self.parent.live().ledger().retire(&sub);
+            } else {
+                core::mem::forget(sub);
             }
         }
         unsafe {
@@ -2295,6 +2332,7 @@ struct QueueInner {
     parent: Device,
     #[cfg(feature = "runtime_implicit_validations")]
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
+    unfenced: Vutex<Vec<Vrc<crate::submission::Submission>>>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -2314,6 +2352,7 @@ impl Queue {
                 parent: parent.clone(),
                 #[cfg(feature = "runtime_implicit_validations")]
                 queue_flags: std::sync::OnceLock::new(),
+                unfenced: Vutex::new(Vec::new()),
                 keep,
                 destroy,
             }),
@@ -2335,6 +2374,21 @@ impl Queue {
     #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags.get().copied().unwrap_or_default()
+    }
+    /// Holds a queue operation without a fence (a presentation) until
+    /// it is known complete.
+    #[allow(dead_code)]
+    pub(crate) fn hold(&self, sub: Vrc<crate::submission::Submission>) {
+        let done: Vec<_> = {
+            let mut held = self.inner.unfenced.lock();
+            let (done, open): (Vec<_>, Vec<_>) = held
+                .drain(..)
+                .partition(|s| s.is_complete());
+            *held = open;
+            held.push(sub);
+            done
+        };
+        drop(done);
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2367,11 +2421,19 @@ impl core::ops::Deref for Queue {
         &self.inner.raw
     }
 }
-#[cfg(feature = "runtime_implicit_validations")]
 impl Drop for QueueInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        let held = core::mem::take(&mut *self.unfenced.lock());
+        if held.iter().any(|s| !s.is_complete()) {
+            let r = unsafe { (self.parent.fns().fp_v1_0().queue_wait_idle)(self.raw) };
+            if r == vk::Result::SUCCESS {
+                self.parent.live().ledger().retire_queue(self.raw);
+            } else {
+                core::mem::forget(held);
+            }
+        }
     }
 }
 ///A `VkRenderPass`. Clones share it; the last one to go calls `vkDestroyRenderPass`, after every submission that used it has completed.

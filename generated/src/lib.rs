@@ -39,11 +39,15 @@ mod presence;
 #[rustfmt::skip]
 pub mod recorder;
 #[rustfmt::skip]
+mod reach;
+#[rustfmt::skip]
 mod retention;
 #[rustfmt::skip]
 pub mod structs;
 #[rustfmt::skip]
 mod spirv;
+#[rustfmt::skip]
+mod submission;
 #[rustfmt::skip]
 mod support;
 #[rustfmt::skip]

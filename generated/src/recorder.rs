@@ -65,8 +65,12 @@ pub struct Recorder<'c, S: State> {
 
 impl CommandBuffer {
     /// `vkBeginCommandBuffer`: starts recording. Recording again drops what the
-    /// previous recording kept alive.
+    /// previous recording kept alive, so a buffer that a submission may still be
+    /// executing is refused (`VUID-vkBeginCommandBuffer-commandBuffer-00049`): wait
+    /// for the submission's fence first. Recording a buffer again needs a pool
+    /// created with `RESET_COMMAND_BUFFER` (`-00050`).
     pub fn begin(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
+        self.uses().check_begin(self.device(), self.parent().resets_buffers())?;
         #[cfg(feature = "runtime_implicit_validations")]
         crate::checks::check_command_buffer_begin_info(info, &self.device().scope())?;
         // SAFETY: the command buffer is borrowed mutably, so no other recording or
@@ -77,7 +81,7 @@ impl CommandBuffer {
         if r != vk::Result::SUCCESS {
             return Err(Error::Vk(r));
         }
-        self.set_executable(false);
+        self.uses().began(info.flags);
         Ok(Recorder {
             device: self.device().clone(),
             raw: self.raw(),
@@ -192,9 +196,10 @@ impl<'c> Recorder<'c, Outside> {
         if let Some(e) = self.poisoned {
             // The buffer holds only the commands before the failed check: it is
             // ended but not submittable.
+            self.cb.uses().ended(false);
             return Err(e);
         }
-        self.cb.set_executable(true);
+        self.cb.uses().ended(true);
         Ok(())
     }
 }

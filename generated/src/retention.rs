@@ -52,6 +52,8 @@ pub(crate) struct Live {
     sets: Vutex<HashMap<u64, HashMap<Slot, Retained>>>,
     /// Each device memory's size, type and whether it is mapped now.
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
+    /// The device's queue operations that may still be executing.
+    ledger: crate::submission::Ledger,
 }
 
 impl Default for Live {
@@ -60,11 +62,18 @@ impl Default for Live {
             objects: Vutex::new(HashMap::new()),
             sets: Vutex::new(HashMap::new()),
             memories: Vutex::new(HashMap::new()),
+            ledger: Default::default(),
         }
     }
 }
 
 impl Live {
+    /// The device's queue operations that may still be executing.
+    #[inline]
+    pub(crate) fn ledger(&self) -> &crate::submission::Ledger {
+        &self.ledger
+    }
+
     /// Lists a new object under its raw handle.
     pub(crate) fn add<H: vk::Handle>(&self, raw: H, object: &Retained) {
         let raw = raw.as_raw();

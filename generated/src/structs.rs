@@ -2932,7 +2932,7 @@ for CommandBufferInheritanceRenderingInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`: user (explicit rule; the wrappers do not check it)
+- `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-VkCommandBufferSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -20858,7 +20858,7 @@ impl<'a> core::ops::Deref for SpecializationInfo<'a> {
 
 - `VUID-VkSubmitInfo-pWaitDstStageMask-04090`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pCommandBuffers-00075`: user (explicit rule; the wrappers do not check it)
+- `VUID-VkSubmitInfo-pCommandBuffers-00075`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-00078`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)

@@ -93,7 +93,9 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
         .queue_family_index(family)
         .queue_priorities(&priorities)];
     // A typed pNext chain: only structs that extend VkDeviceCreateInfo are accepted.
-    let mut features13 = tuff::PhysicalDeviceVulkan13Features::new().private_data(vk::TRUE);
+    let mut features13 = tuff::PhysicalDeviceVulkan13Features::new()
+        .private_data(vk::TRUE)
+        .synchronization2(vk::TRUE);
     let device_exts = match wsi {
         Wsi::None => vec![],
         Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],
@@ -144,7 +146,9 @@ impl Setup {
         let pool = self
             .device
             .create_command_pool(
-                &tuff::CommandPoolCreateInfo::new().queue_family_index(self.family),
+                &tuff::CommandPoolCreateInfo::new()
+                    .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
+                    .queue_family_index(self.family),
             )
             .expect("pool");
         let cb = self

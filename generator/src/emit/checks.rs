@@ -844,12 +844,12 @@ fn queue_flags(queues: &str) -> TokenStream {
     }
 }
 
-fn snake(type_name: &str) -> String {
+pub(crate) fn snake(type_name: &str) -> String {
     type_name.trim_start_matches("Vk").to_snake_case()
 }
 
 /// The numeric `sType` of a struct.
-fn struct_type_value(cx: &Context, name: &str) -> Option<i32> {
+pub(crate) fn struct_type_value(cx: &Context, name: &str) -> Option<i32> {
     let t = cx.model.types.get(name)?;
     let value = t
         .members

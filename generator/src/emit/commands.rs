@@ -99,6 +99,115 @@ pub fn handled_elsewhere(cx: &Context, name: &str) -> Option<&'static str> {
     }
 }
 
+/// The queue operations whose fence is required: it holds what they use until they
+/// complete, and `vkQueueSubmit*` and `vkQueueBindSparse` have no other completion a
+/// host can see.
+const SUBMITS_WITH_FENCE: &[&str] = &["vkQueueSubmit", "vkQueueSubmit2", "vkQueueBindSparse"];
+
+/// A submission command's infos and the walk over one of them.
+fn submit_parts(name: &str) -> (TokenStream, TokenStream) {
+    match name {
+        "vkQueueSubmit" => (quote!(submits), super::reach::walk_fn("VkSubmitInfo")),
+        "vkQueueSubmit2" => (quote!(submits), super::reach::walk_fn("VkSubmitInfo2")),
+        _ => (quote!(bind_info), super::reach::walk_fn("VkBindSparseInfo")),
+    }
+}
+
+/// The raw command buffers a submission command's infos name.
+fn submitted_command_buffers(name: &str) -> TokenStream {
+    match name {
+        // SAFETY (both): the safe structs store every array with its length.
+        "vkQueueSubmit" => quote!(submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+            })
+            .copied()
+            .collect()),
+        "vkQueueSubmit2" => quote!(submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
+            })
+            .map(|i| i.command_buffer)
+            .collect()),
+        _ => quote!(smallvec::SmallVec::new()),
+    }
+}
+
+/// Checks a safe method runs in every build, after its `runtime_implicit_validations`
+/// checks, because without them a safe call could break memory safety: the code and
+/// the rules it checks. The submission template holds the logic; see the
+/// `submission` table of `settle.rs` for how the report counts them.
+fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
+    let submit = |rules: TokenStream, with_cbs: bool, vuids: Vec<&'static str>| {
+        let cbs = submitted_command_buffers(name);
+        let check_cbs = with_cbs.then(|| {
+            quote! {
+                let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = #cbs;
+                crate::submission::check_command_buffers(self.parent(), &cbs, &#rules)?;
+            }
+        });
+        Some((
+            quote! {
+                crate::submission::check_fence(fence, &#rules)?;
+                #check_cbs
+            },
+            vuids,
+        ))
+    };
+    match name {
+        "vkQueueSubmit" => submit(
+            quote!(crate::submission::SUBMIT),
+            true,
+            vec![
+                "VUID-vkQueueSubmit-fence-00063",
+                "VUID-vkQueueSubmit-fence-00064",
+                "VUID-VkSubmitInfo-pCommandBuffers-00075",
+                "VUID-vkQueueSubmit-pCommandBuffers-00070",
+                "VUID-vkQueueSubmit-pCommandBuffers-00071",
+                "VUID-vkQueueSubmit-pCommandBuffers-00072",
+                "VUID-vkQueueSubmit-pCommandBuffers-00073",
+            ],
+        ),
+        "vkQueueSubmit2" => submit(
+            quote!(crate::submission::SUBMIT2),
+            true,
+            vec![
+                "VUID-vkQueueSubmit2-fence-04894",
+                "VUID-vkQueueSubmit2-fence-04895",
+                "VUID-VkCommandBufferSubmitInfo-commandBuffer-03890",
+                "VUID-vkQueueSubmit2-commandBuffer-03874",
+                "VUID-vkQueueSubmit2-commandBuffer-03875",
+                "VUID-vkQueueSubmit2-commandBuffer-03876",
+                "VUID-vkQueueSubmit2-commandBuffer-03877",
+            ],
+        ),
+        "vkQueueBindSparse" => submit(
+            quote!(crate::submission::BIND_SPARSE),
+            false,
+            vec![
+                "VUID-vkQueueBindSparse-fence-01113",
+                "VUID-vkQueueBindSparse-fence-01114",
+            ],
+        ),
+        "vkResetFences" => Some((
+            quote! {
+                for f in fences {
+                    if f.submission().is_some_and(|sub| !sub.poll(self)) {
+                        return Err(Error::Validation {
+                            vuid: "VUID-vkResetFences-pFences-01123",
+                            message: "a fence is reset while the queue operation that signals it may still be executing".into(),
+                        });
+                    }
+                }
+            },
+            vec!["VUID-vkResetFences-pFences-01123"],
+        )),
+        _ => None,
+    }
+}
+
 /// A handle in a command's create info that the created object must not outlive
 /// (member, handle type): the method takes it again as a wrapper, writes it into the
 /// info and the new object keeps it alive.
@@ -154,7 +263,8 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             } else if category == Some("handle") {
                 // A submission's fence is required: it is what keeps the submitted
                 // command buffers alive until they complete.
-                let fence_of_submit = name == "vkQueueSubmit" && p.type_name == "VkFence";
+                let fence_of_submit =
+                    SUBMITS_WITH_FENCE.contains(&name) && p.type_name == "VkFence";
                 Param::Handle {
                     optional: optional && !fence_of_submit,
                 }
@@ -615,7 +725,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                             quote!(#w::from_raw(out, #parent_arg None, true).with_flags(create_info.flags))
                         }
                         "VkCommandPool" => quote!({
-                            let pool = #w::from_raw(out, #parent_arg None, true);
+                            let pool = #w::from_raw(out, #parent_arg None, true).with_create_flags(create_info.flags);
                             #[cfg(feature = "runtime_implicit_validations")]
                             let pool = pool.with_queue_flags(crate::validation::family_flags(self, create_info.queue_family_index));
                             pool
@@ -764,17 +874,39 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             let obj = ident(&param(&cmd.params[1].name));
             post.push(quote!(#obj.retain_memory(memory.retained());));
         }
-        "vkQueueSubmit" => post.push(quote! {
-            // The fence keeps the submitted command buffers, and so everything they
-            // use, alive until it is seen signalled.
+        "vkQueueSubmit" | "vkQueueSubmit2" | "vkQueueBindSparse" => {
+            let (list, walk) = submit_parts(&plan.name);
+            let cbs = submitted_command_buffers(&plan.name);
+            post.push(quote! {
+                // The fence holds everything the submission names (its command buffers,
+                // which keep what their recordings use, its semaphores, and whatever
+                // else its structs reach) until the submission is known complete.
+                let device = self.parent();
+                let mut kept = Vec::new();
+                for s in #list {
+                    // SAFETY: the safe structs store every array with its length.
+                    unsafe { #walk(s.as_raw(), device.live(), &mut kept) };
+                }
+                let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = #cbs;
+                crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
+            });
+        }
+        "vkQueuePresentKHR" => pre.push(quote! {
+            // Held before the call: a presentation the engine rejects still waits on
+            // its semaphores. The queue holds it until it is known complete.
             let device = self.parent();
             let mut kept = Vec::new();
-            for s in submits {
-                // SAFETY: the safe SubmitInfo stores a HandleSlice's handles and length.
-                let raw = unsafe { core::slice::from_raw_parts(s.p_command_buffers, s.command_buffer_count as usize) };
-                kept.extend(raw.iter().filter_map(|cb| device.command_buffer(*cb)));
+            // SAFETY: the safe struct stores every array with its length.
+            unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
+            self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept));
+        }),
+        "vkQueueWaitIdle" => post.push(quote!(self.parent().live().ledger().retire_queue(self.raw());)),
+        "vkDeviceWaitIdle" => post.push(quote!(self.live().ledger().retire_all();)),
+        "vkCmdExecuteCommands" => pre.insert(0, quote! {
+            // A primary is pending while it may run; so are the secondaries it executes.
+            for h in command_buffers {
+                self.command_buffer().uses().executes(h.uses());
             }
-            fence.track(kept);
         }),
         "vkUpdateDescriptorSets" => post.push(quote! {
             // SAFETY: the safe structs are transparent over ash's and their setters
@@ -794,11 +926,21 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             unsafe { self.live().write_template(descriptor_set.raw(), descriptor_update_template.entries(), data) };
         }),
         "vkGetFenceStatus" => post.push(quote!(if r == vk::Result::SUCCESS { fence.completed(); })),
-        "vkResetFences" => post.push(quote!(for f in fences_w { f.completed(); })),
-        "vkWaitForFences" => post.push(quote!(if r == vk::Result::SUCCESS && (wait_all == vk::TRUE || fences_w.len() == 1) { for f in fences_w { f.completed(); } })),
+        "vkWaitForFences" => post.push(quote! {
+            if r == vk::Result::SUCCESS {
+                if wait_all == vk::TRUE || fences_w.len() == 1 {
+                    for f in fences_w { f.completed(); }
+                } else {
+                    // One fence at least is signalled; ask each which.
+                    for f in fences_w {
+                        if let Some(sub) = f.submission() { sub.poll(self); }
+                    }
+                }
+            }
+        }),
         _ => {}
     }
-    if plan.name == "vkWaitForFences" || plan.name == "vkResetFences" {
+    if plan.name == "vkWaitForFences" {
         pre.insert(0, quote!(let fences_w: &[&Fence] = fences;));
     }
     if plan.name == "vkCreateDescriptorUpdateTemplate" {
@@ -812,7 +954,6 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     if plan.name == "vkAllocateCommandBuffers" {
         ret_expr = quote!({
             let cbs: Vec<CommandBuffer> = #ret_expr;
-            #[cfg(feature = "runtime_implicit_validations")]
             let cbs: Vec<CommandBuffer> = cbs.into_iter().map(|cb| cb.with_level(allocate_info.level)).collect();
             for cb in &cbs { self.register_command_buffer(cb); }
             cbs
@@ -982,7 +1123,8 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         super::doc_rules(cx, &plan.name)
     );
     let checks = checker.command_checks(plan);
-    let method = if checks.is_empty() {
+    let always = always_checks(&plan.name);
+    let method = if checks.is_empty() && always.is_none() {
         quote! {
             #[doc = #doc]
             #[inline]
@@ -999,13 +1141,15 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             .collect();
         let codes = checks.iter().map(|c| &c.code);
         let scope = scope_expr(cx, plan, &device_path);
+        let (always_code, always_vuids) = always.unwrap_or_default();
         let owned: Vec<String> = checks
             .iter()
-            .filter_map(|c| c.vuid.as_ref())
+            .filter_map(|c| c.vuid.as_deref())
+            .chain(always_vuids.iter().copied())
             .map(|v| format!("`{v}`"))
             .collect();
         let unchecked_doc = format!(
-            "`{}` without the dynamic checks of `runtime_implicit_validations`.\n\n# Safety\n\nThe caller upholds the rules that [`Self::{}`] checks at run time{}.",
+            "`{}` without its dynamic checks.\n\n# Safety\n\nThe caller upholds the rules that [`Self::{}`] checks at run time{}.",
             plan.name,
             command_fn(&plan.name),
             if owned.is_empty() {
@@ -1081,6 +1225,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                     #run
                     #guard
                 }
+                #always_code
                 // SAFETY: with runtime_implicit_validations the rules the unchecked call
                 // leaves to its caller were checked above; without it they are left to
                 // the user, as VALIDATION.md lists.
@@ -1187,19 +1332,6 @@ fn keep_expr(
     }))
 }
 
-/// Lookups of the handle members of a raw struct `x` of type `ty`, each pushing the
-/// live object onto `kept`.
-fn handle_gets(cx: &Context, ty: &str) -> Vec<TokenStream> {
-    struct_members(cx.model, &cx.facts, ty)
-        .into_iter()
-        .filter(|(_, s)| matches!(s, Member::Handle { .. }))
-        .map(|(m, _)| {
-            let g = field_ident(&m.name);
-            quote!(if let Some(o) = live.get(x.#g) { kept.push(o); })
-        })
-        .collect()
-}
-
 /// What a recorded command keeps alive beyond its wrapper arguments: the objects
 /// named by handle members of a struct argument (a render pass begin's framebuffer,
 /// a barrier's image), looked up among the device's live objects.
@@ -1209,47 +1341,10 @@ fn struct_retains(
     name: &Ident,
     slice: bool,
 ) -> Vec<TokenStream> {
-    if !cx.facts.is_safe(&p.type_name) {
+    if !cx.reaching.contains(&p.type_name) {
         return Vec::new();
     }
-    // Handle members of the struct, and of the structs in its arrays one level down
-    // (a rendering info's attachments, a dependency info's barriers).
-    let mut per_elem = Vec::new();
-    for (m, shape) in struct_members(cx.model, &cx.facts, &p.type_name) {
-        let f = field_ident(&m.name);
-        match shape {
-            Member::Handle { .. } => per_elem.push(quote! {
-                if let Some(o) = live.get(e.as_raw().#f) { kept.push(o); }
-            }),
-            Member::Slice { count, safe: true } => {
-                let inner = handle_gets(cx, &m.type_name);
-                if !inner.is_empty() {
-                    let c = field_ident(&count);
-                    per_elem.push(quote! {
-                        // SAFETY: the safe setter stored this array with its length.
-                        for x in unsafe { crate::retention::raw_slice(e.as_raw().#f, e.as_raw().#c) } {
-                            #(#inner)*
-                        }
-                    });
-                }
-            }
-            Member::StructRef { .. } if cx.facts.is_safe(&m.type_name) => {
-                let inner = handle_gets(cx, &m.type_name);
-                if !inner.is_empty() {
-                    per_elem.push(quote! {
-                        // SAFETY: the safe setter stored a reference that outlives `e`.
-                        if let Some(x) = unsafe { e.as_raw().#f.as_ref() } {
-                            #(#inner)*
-                        }
-                    });
-                }
-            }
-            _ => {}
-        }
-    }
-    if per_elem.is_empty() {
-        return Vec::new();
-    }
+    let walk = super::reach::walk_fn(&p.type_name);
     let elems = if slice {
         quote!(#name.iter())
     } else {
@@ -1259,7 +1354,8 @@ fn struct_retains(
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
-            for e in #elems { #(#per_elem)* }
+            // SAFETY: the safe structs store every pointer with its length.
+            for e in #elems { unsafe { #walk(e.as_raw(), live, &mut kept) }; }
             kept
         };
         for o in kept { self.retain(o); }

@@ -259,7 +259,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             physical: PhysicalDevice,
             fns: ash::Device,
             ext: DeviceExtensions,
-            command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, tuff_runtime::Vweak<dyn tuff_runtime::Retain>>>,
+            command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>>,
             live: crate::retention::Live,
             #[cfg(feature = "runtime_implicit_validations")]
             exts: crate::checks::Exts,
@@ -315,10 +315,10 @@ fn emit_device(cx: &Context) -> TokenStream {
             pub fn parent(&self) -> &PhysicalDevice {
                 &self.inner.physical
             }
-            /// Remembers a command buffer so that a submission naming its raw handle
-            /// can keep it alive.
+            /// Remembers a command buffer's lifecycle state, so that a submission
+            /// naming its raw handle can check and mark it.
             pub(crate) fn register_command_buffer(&self, cb: &CommandBuffer) {
-                self.inner.command_buffers.lock().insert(cb.raw(), Vrc::downgrade(&cb.retained()));
+                self.inner.command_buffers.lock().insert(cb.raw(), cb.uses().clone());
             }
             pub(crate) fn forget_command_buffer(&self, raw: vk::CommandBuffer) {
                 self.inner.command_buffers.lock().remove(&raw);
@@ -329,9 +329,9 @@ fn emit_device(cx: &Context) -> TokenStream {
             pub(crate) fn live(&self) -> &crate::retention::Live {
                 &self.inner.live
             }
-            /// The live command buffer with this raw handle.
-            pub(crate) fn command_buffer(&self, raw: vk::CommandBuffer) -> Option<Retained> {
-                self.inner.command_buffers.lock().get(&raw).and_then(|w| w.upgrade())
+            /// The lifecycle state of the live command buffer with this raw handle.
+            pub(crate) fn command_buffer_uses(&self, raw: vk::CommandBuffer) -> Option<Vrc<crate::submission::Uses>> {
+                self.inner.command_buffers.lock().get(&raw).cloned()
             }
         }
         impl Handle for Device {
@@ -426,7 +426,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     // wrapper that Vulkan lets refer to them through a struct can keep them alive.
     let live_path = parent
         .as_deref()
-        .filter(|_| !handle.dispatchable)
+        .filter(|_| !handle.dispatchable || name == "VkCommandBuffer")
         .and_then(|p| path_to(cx, p, "VkDevice"));
     let live_add = live_path
         .as_ref()
@@ -477,12 +477,21 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             quote!(#call;)
         };
         let fence_wait = (name == "VkFence").then(|| quote! {
-            if !self.pending.lock().is_empty() {
+            let submission = self.submission.lock().take();
+            if let Some(sub) = submission.filter(|s| !s.is_complete()) {
                 // SAFETY: the fence belongs to this device; waiting is always valid.
-                // Its pending submission still uses what it keeps alive, so the wait
-                // comes before those objects go (VUID-vkDestroyFence-fence-01120).
-                unsafe {
-                    let _ = (self.parent.fns().fp_v1_0().wait_for_fences)(self.parent.raw(), 1, &self.raw, vk::TRUE, u64::MAX);
+                // Its submission may still use what it keeps alive, so the wait comes
+                // before those objects go and before the fence does
+                // (VUID-vkDestroyFence-fence-01120).
+                let r = unsafe {
+                    (self.parent.fns().fp_v1_0().wait_for_fences)(self.parent.raw(), 1, &self.raw, vk::TRUE, u64::MAX)
+                };
+                if r == vk::Result::SUCCESS {
+                    self.parent.live().ledger().retire(&sub);
+                } else {
+                    // A lost device: nothing can be known complete, so what the
+                    // submission uses is leaked rather than freed under it.
+                    core::mem::forget(sub);
                 }
             }
         });
@@ -538,6 +547,26 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     };
     let drop_impl = match (drop_impl, &unregister) {
         (Some(d), _) => Some(d),
+        (None, u) if name == "VkQueue" => Some(quote! {
+            #cfg
+            impl Drop for #inner {
+                fn drop(&mut self) {
+                    #u
+                    let held = core::mem::take(&mut *self.unfenced.lock());
+                    if held.iter().any(|s| !s.is_complete()) {
+                        // SAFETY: the queue belongs to this live device. What its
+                        // fenceless operations use goes only once they are complete
+                        // (VUID-vkDestroySemaphore-semaphore-01137).
+                        let r = unsafe { (self.parent.fns().fp_v1_0().queue_wait_idle)(self.raw) };
+                        if r == vk::Result::SUCCESS {
+                            self.parent.live().ledger().retire_queue(self.raw);
+                        } else {
+                            core::mem::forget(held);
+                        }
+                    }
+                }
+            }
+        }),
         (None, Some(unregister)) if live_path.is_some() => Some(quote! {
             #cfg
             impl Drop for #inner {
@@ -660,36 +689,64 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
 fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
     match name {
         "VkCommandBuffer" => (
-            quote!(resources: Vutex<Vec<Retained>>, executable: Vutex<bool>, #[cfg(feature = "runtime_implicit_validations")] level: vk::CommandBufferLevel,),
-            quote!(resources: Vutex::new(Vec::new()), executable: Vutex::new(false), #[cfg(feature = "runtime_implicit_validations")] level: vk::CommandBufferLevel::PRIMARY,),
+            quote!(resources: Vutex<Vec<Retained>>, uses: Vrc<crate::submission::Uses>,),
+            quote!(resources: Vutex::new(Vec::new()), uses: Default::default(),),
             quote! {
-                /// Records the buffer's level, for the `bufferlevel` checks.
-                #[cfg(feature = "runtime_implicit_validations")]
-                pub(crate) fn with_level(mut self, level: vk::CommandBufferLevel) -> Self {
-                    if let Some(inner) = Vrc::get_mut(&mut self.inner) {
-                        inner.level = level;
-                    }
+                /// Records the buffer's level, for the `bufferlevel` checks and the
+                /// submission rules.
+                pub(crate) fn with_level(self, level: vk::CommandBufferLevel) -> Self {
+                    self.inner.uses.set_secondary(level == vk::CommandBufferLevel::SECONDARY);
                     self
                 }
                 /// The buffer's level.
-                #[cfg(feature = "runtime_implicit_validations")]
+                #[allow(dead_code)]
                 pub(crate) fn level(&self) -> vk::CommandBufferLevel {
-                    self.inner.level
+                    if self.inner.uses.is_secondary() {
+                        vk::CommandBufferLevel::SECONDARY
+                    } else {
+                        vk::CommandBufferLevel::PRIMARY
+                    }
                 }
+                /// The buffer's lifecycle state.
+                pub(crate) fn uses(&self) -> &Vrc<crate::submission::Uses> {
+                    &self.inner.uses
+                }
+                /// Keeps what the last recording uses; what the recording before kept
+                /// goes, which `begin` allows only once no submission uses it.
                 pub(crate) fn keep_alive(&self, objects: Vec<Retained>) {
-                    *self.inner.resources.lock() = objects;
+                    let old = core::mem::replace(&mut *self.inner.resources.lock(), objects);
+                    drop(old);
                 }
                 pub(crate) fn set_executable(&self, executable: bool) {
-                    *self.inner.executable.lock() = executable;
+                    self.inner.uses.set_executable(executable);
                 }
                 /// Whether the buffer has been ended and can be submitted.
                 #[inline]
                 pub fn is_executable(&self) -> bool {
-                    *self.inner.executable.lock()
+                    self.inner.uses.is_executable()
                 }
             },
         ),
-        "VkCommandPool" => queue_flags_state("the pool's family, for the `cmdpool` checks"),
+        "VkCommandPool" => {
+            let (f, i, fns) = queue_flags_state("the pool's family, for the `cmdpool` checks");
+            (
+                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,),
+                quote!(#i create_flags: std::sync::OnceLock::new(),),
+                quote! {
+                    #fns
+                    /// Records the flags the pool was created with.
+                    pub(crate) fn with_create_flags(self, flags: vk::CommandPoolCreateFlags) -> Self {
+                        let _ = self.inner.create_flags.set(flags);
+                        self
+                    }
+                    /// Whether `begin` may reset a buffer of this pool implicitly
+                    /// (`RESET_COMMAND_BUFFER`).
+                    pub fn resets_buffers(&self) -> bool {
+                        self.inner.create_flags.get().is_some_and(|f| f.contains(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER))
+                    }
+                },
+            )
+        }
         "VkDescriptorUpdateTemplate" => (
             quote!(entries: std::sync::OnceLock<Vec<vk::DescriptorUpdateTemplateEntry>>,),
             quote!(entries: std::sync::OnceLock::new(),),
@@ -706,18 +763,50 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                 }
             },
         ),
-        "VkQueue" => queue_flags_state("the queue's family, for the `queuetype` checks"),
+        "VkQueue" => {
+            let (f, i, fns) = queue_flags_state("the queue's family, for the `queuetype` checks");
+            (
+                quote!(#f unfenced: Vutex<Vec<Vrc<crate::submission::Submission>>>,),
+                quote!(#i unfenced: Vutex::new(Vec::new()),),
+                quote! {
+                    #fns
+                    /// Holds a queue operation without a fence (a presentation) until
+                    /// it is known complete.
+                    #[allow(dead_code)]
+                    pub(crate) fn hold(&self, sub: Vrc<crate::submission::Submission>) {
+                        let done: Vec<_> = {
+                            let mut held = self.inner.unfenced.lock();
+                            let (done, open): (Vec<_>, Vec<_>) = held.drain(..).partition(|s| s.is_complete());
+                            *held = open;
+                            held.push(sub);
+                            done
+                        };
+                        drop(done);
+                    }
+                },
+            )
+        }
         "VkFence" => (
-            quote!(pending: Vutex<Vec<Retained>>,),
-            quote!(pending: Vutex::new(Vec::new()),),
+            quote!(submission: Vutex<Option<Vrc<crate::submission::Submission>>>,),
+            quote!(submission: Vutex::new(None),),
             quote! {
-                /// Keeps `objects` alive until the fence is seen signalled or reset.
-                pub(crate) fn track(&self, objects: Vec<Retained>) {
-                    self.inner.pending.lock().extend(objects);
+                /// Holds the queue operation that signals this fence until it is
+                /// known complete.
+                pub(crate) fn track(&self, sub: Vrc<crate::submission::Submission>) {
+                    let old = self.inner.submission.lock().replace(sub);
+                    drop(old);
                 }
-                /// Releases what the completed submission kept alive.
+                /// The queue operation that signals this fence, while it is not known
+                /// complete.
+                pub(crate) fn submission(&self) -> Option<Vrc<crate::submission::Submission>> {
+                    self.inner.submission.lock().clone().filter(|s| !s.is_complete())
+                }
+                /// The fence was seen signalled: its queue operation, and every one
+                /// submitted before it to that queue, are complete.
                 pub(crate) fn completed(&self) {
-                    self.inner.pending.lock().clear();
+                    if let Some(sub) = self.submission() {
+                        self.parent().live().ledger().retire(&sub);
+                    }
                 }
             },
         ),

@@ -7,6 +7,7 @@ pub mod checks;
 pub mod commands;
 pub mod handles;
 pub mod names;
+pub mod reach;
 pub mod settle;
 pub mod shape;
 pub mod structs;
@@ -83,6 +84,8 @@ pub struct Context<'m> {
     pub validity: &'m Validity,
     /// Facts about structs.
     pub facts: types::TypeFacts,
+    /// The structs whose walk can find a handle (see `reach`).
+    pub reaching: std::collections::BTreeSet<String>,
     /// Records by item, for the docs.
     pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
 }
@@ -119,8 +122,10 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
         model,
         validity,
         facts: types::TypeFacts::new(model),
+        reaching: Default::default(),
         by_item: BTreeMap::new(),
     };
+    cx.reaching = reach::reaching(&cx);
     let records = {
         let plans = commands::plans(&cx);
         let ok: Vec<&commands::Plan> = plans.iter().filter_map(|(_, p)| p.as_ref().ok()).collect();
@@ -151,6 +156,7 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
         ("src/structs.rs", structs::emit(&cx)),
         ("src/commands.rs", commands::emit(&cx, &checker, &ok)),
         ("src/checks.rs", checker.emit()),
+        ("src/reach.rs", reach::emit(&cx)),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),
@@ -190,6 +196,10 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
         ),
         ("src/frames.rs", include_str!("../../templates/frames.rs")),
         ("src/spirv.rs", include_str!("../../templates/spirv.rs")),
+        (
+            "src/submission.rs",
+            include_str!("../../templates/submission.rs"),
+        ),
         (
             "src/physical.rs",
             include_str!("../../templates/physical.rs"),

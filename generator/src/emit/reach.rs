@@ -1,0 +1,183 @@
+//! The walk over everything a struct names: one function per struct that can reach
+//! a handle, through its handle members, handle arrays, nested structs, struct
+//! arrays and `pNext` chain. A command that binds, references or submits a struct
+//! keeps alive every live object the walk finds, so none goes while Vulkan may
+//! still use it; the walk is derived from the model, not listed by hand.
+
+use super::checks::{snake, struct_type_value};
+use super::names::{cfg_of, field_ident, ident, type_ident};
+use super::shape::{struct_members, Member};
+use super::Context;
+use proc_macro2::{Ident, Literal, TokenStream};
+use quote::quote;
+use std::collections::BTreeSet;
+
+/// The structs of the emitted API whose walk can find a handle.
+pub fn reaching(cx: &Context) -> BTreeSet<String> {
+    let model = cx.model;
+    let candidates: Vec<&String> = model
+        .emitted
+        .iter()
+        .filter(|n| model.category(n) == Some("struct") && cx.facts.is_safe(n))
+        .filter(|n| model.types[*n].alias.is_none())
+        .collect();
+    let mut found = BTreeSet::new();
+    // A fixed point: a struct reaches a handle when a member is one, or leads to a
+    // struct that reaches one.
+    loop {
+        let before = found.len();
+        for name in &candidates {
+            if found.contains(*name) {
+                continue;
+            }
+            let hit = struct_members(model, &cx.facts, name)
+                .iter()
+                .any(|(m, s)| match s {
+                    Member::Handle { .. } | Member::HandleSlice { .. } => true,
+                    Member::StructRef { .. }
+                    | Member::Nested
+                    | Member::Slice { safe: true, .. } => found.contains(&m.type_name),
+                    Member::PNext => extenders(cx, name).any(|e| found.contains(e)),
+                    _ => false,
+                });
+            if hit {
+                found.insert((*name).clone());
+            }
+        }
+        if found.len() == before {
+            return found;
+        }
+    }
+}
+
+/// The emitted structs that may extend `head`'s chain.
+fn extenders<'a>(cx: &'a Context, head: &'a str) -> impl Iterator<Item = &'a String> + 'a {
+    cx.model.types.values().filter_map(move |t| {
+        (cx.model.emitted.contains(&t.name)
+            && t.alias.is_none()
+            && t.struct_extends.iter().any(|h| h == head))
+        .then_some(&t.name)
+    })
+}
+
+/// The walk function of `name`, as a path from the generated crate's root.
+pub fn walk_fn(name: &str) -> TokenStream {
+    let f = fn_ident(name);
+    quote!(crate::reach::#f)
+}
+
+fn fn_ident(name: &str) -> Ident {
+    ident(&snake(name))
+}
+
+/// The `reach` module: a walk per reaching struct, and the `pNext` dispatch.
+pub fn emit(cx: &Context) -> TokenStream {
+    let model = cx.model;
+    let found = &cx.reaching;
+    let mut fns = Vec::new();
+    let mut arms = Vec::new();
+    for name in found {
+        let ty = type_ident(name);
+        let ty = if cx.facts.has_lifetime(name) {
+            quote!(#ty<'_>)
+        } else {
+            quote!(#ty)
+        };
+        let f = fn_ident(name);
+        let cfg = cfg_of(model, model.condition(name));
+        let mut parts = Vec::new();
+        for (m, shape) in struct_members(model, &cx.facts, name) {
+            let field = field_ident(&m.name);
+            let inner = || walk_fn(&m.type_name);
+            match shape {
+                Member::Handle { .. } => parts.push(quote!(out.extend(live.get(x.#field));)),
+                Member::HandleSlice { count } => {
+                    let c = field_ident(&count);
+                    parts.push(quote! {
+                        // SAFETY: the safe setter stored this array with its length.
+                        out.extend(live.keep(unsafe { crate::retention::raw_slice(x.#field, x.#c) }));
+                    });
+                }
+                Member::StructRef { .. } if found.contains(&m.type_name) => {
+                    let g = inner();
+                    parts.push(quote! {
+                        // SAFETY: the safe setter stored a reference that outlives `x`.
+                        if let Some(y) = unsafe { x.#field.as_ref() } {
+                            unsafe { #g(y, live, out) };
+                        }
+                    });
+                }
+                Member::Slice { count, safe: true } if found.contains(&m.type_name) => {
+                    let c = field_ident(&count);
+                    let g = inner();
+                    parts.push(quote! {
+                        // SAFETY: the safe setter stored this array with its length.
+                        for y in unsafe { crate::retention::raw_slice(x.#field, x.#c) } {
+                            unsafe { #g(y, live, out) };
+                        }
+                    });
+                }
+                Member::Nested if found.contains(&m.type_name) => {
+                    let g = inner();
+                    parts.push(quote!(unsafe { #g(&x.#field, live, out) };));
+                }
+                Member::PNext if extenders(cx, name).any(|e| found.contains(e)) => {
+                    parts.push(quote!(unsafe { next(x.p_next, live, out) };));
+                }
+                _ => {}
+            }
+        }
+        let doc =
+            format!("The live objects a `{name}` names, directly or through what it points to.");
+        fns.push(quote! {
+            #[doc = #doc]
+            ///
+            /// # Safety
+            ///
+            /// `x` was built through its safe counterpart, whose setters store every
+            /// pointer with its length and borrow what it points to.
+            #cfg
+            #[inline]
+            pub(crate) unsafe fn #f(x: &vk::#ty, live: &Live, out: &mut Vec<Retained>) {
+                #(#parts)*
+            }
+        });
+        if !model.types[name].struct_extends.is_empty() {
+            if let Some(v) = struct_type_value(cx, name) {
+                let lit = Literal::i32_unsuffixed(v);
+                arms.push(quote! {
+                    #cfg
+                    // SAFETY: a node with this structure type is this struct.
+                    #lit => unsafe { #f(&*(node as *const vk::BaseInStructure<'_>).cast::<vk::#ty>(), live, out) },
+                });
+            }
+        }
+    }
+    quote! {
+        //! What a struct names: the walks that keep objects alive. Every reaching
+        //! struct has one, whether or not a command of this build uses it yet.
+        #![allow(dead_code, unused_unsafe, clippy::missing_safety_doc)]
+        use crate::retention::Live;
+        use ash::vk;
+        use tuff_runtime::Retained;
+
+        /// The live objects the structs of a `pNext` chain name.
+        ///
+        /// # Safety
+        ///
+        /// `p` is null or a chain that `push_next` built from safe structs.
+        #[allow(dead_code)]
+        pub(crate) unsafe fn next(p: *const core::ffi::c_void, live: &Live, out: &mut Vec<Retained>) {
+            // SAFETY: the caller vouches for every node.
+            for node in unsafe { crate::support::chain_nodes(p) } {
+                #[allow(clippy::single_match)]
+                match node.s_type.as_raw() {
+                    #(#arms)*
+                    _ => {}
+                }
+            }
+        }
+
+        #(#fns)*
+    }
+}
