@@ -419,8 +419,8 @@ fn present_one_frame(
     s.queue
         .queue_submit(
             &[tuff::SubmitInfo::new()
-                .wait_semaphores(&waits)
-                .wait_dst_stage_mask(&stages)
+                .wait_semaphores(&waits, &stages)
+                .expect("one stage per semaphore")
                 .command_buffers(&cbs)
                 .signal_semaphores(&signals)],
             &fence,
@@ -433,8 +433,8 @@ fn present_one_frame(
         .queue_present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)
-                .swapchains(&swapchains)
-                .image_indices(&indices),
+                .swapchains(&swapchains, &indices)
+                .expect("one index per swapchain"),
         )
         .expect("present");
     assert!(

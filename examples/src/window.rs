@@ -357,8 +357,7 @@ impl<S: Scene> Live<S> {
         match gpu.queue.queue_present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)
-                .swapchains(&swapchains)
-                .image_indices(&indices),
+                .swapchains(&swapchains, &indices)?,
         ) {
             Ok(r) => self.stale |= r == vk::Result::SUBOPTIMAL_KHR,
             Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => self.stale = true,

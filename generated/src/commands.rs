@@ -16833,6 +16833,12 @@ impl Device {
             })();
             r?;
         }
+        crate::retention::Live::check_writes(unsafe {
+            core::slice::from_raw_parts(
+                descriptor_writes.as_ptr().cast(),
+                descriptor_writes.len(),
+            )
+        })?;
         Ok(unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
         })
@@ -16841,7 +16847,7 @@ impl Device {
 
 # Safety
 
-The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn update_descriptor_sets_unchecked<'a>(
         &self,

@@ -186,9 +186,7 @@ impl Frame<'_> {
         let commands = HandleSlice::new(&[&*self.commands]);
         let mut info = SubmitInfo::new().command_buffers(&commands);
         if !waits.is_empty() {
-            info = info
-                .wait_semaphores(&wait_semaphores)
-                .wait_dst_stage_mask(&stages);
+            info = info.wait_semaphores(&wait_semaphores, &stages)?;
         }
         if !signals.is_empty() {
             info = info.signal_semaphores(&signal_semaphores);

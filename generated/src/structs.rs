@@ -79,16 +79,16 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -257,16 +257,16 @@ impl<'a> ApplicationInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -409,16 +409,16 @@ impl<'a> AttachmentDescription2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -485,16 +485,16 @@ impl<'a> AttachmentDescriptionStencilLayout<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -524,7 +524,7 @@ impl<'a> core::ops::Deref for AttachmentDescriptionStencilLayout<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<AttachmentDescription2<'b>>
+unsafe impl<'a> Extends<AttachmentDescription2<'a>>
 for AttachmentDescriptionStencilLayout<'a> {}
 /**Safe counterpart of [`vk::AttachmentReference2`].
 
@@ -573,16 +573,16 @@ impl<'a> AttachmentReference2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -640,16 +640,16 @@ impl<'a> AttachmentReferenceStencilLayout<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -679,7 +679,7 @@ impl<'a> core::ops::Deref for AttachmentReferenceStencilLayout<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<AttachmentReference2<'b>>
+unsafe impl<'a> Extends<AttachmentReference2<'a>>
 for AttachmentReferenceStencilLayout<'a> {}
 /**Safe counterpart of [`vk::BaseInStructure`].
 
@@ -710,16 +710,16 @@ impl<'a> BaseInStructure<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -776,16 +776,16 @@ impl<'a> BaseOutStructure<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -845,16 +845,16 @@ impl<'a> BindBufferMemoryDeviceGroupInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -882,7 +882,7 @@ impl<'a> core::ops::Deref for BindBufferMemoryDeviceGroupInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BindBufferMemoryInfo<'b>>
+unsafe impl<'a> Extends<BindBufferMemoryInfo<'a>>
 for BindBufferMemoryDeviceGroupInfo<'a> {}
 /**Safe counterpart of [`vk::BindBufferMemoryInfo`].
 
@@ -951,16 +951,16 @@ impl<'a> BindBufferMemoryInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1030,16 +1030,16 @@ impl<'a> BindImageMemoryDeviceGroupInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1067,8 +1067,7 @@ impl<'a> core::ops::Deref for BindImageMemoryDeviceGroupInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>>
-for BindImageMemoryDeviceGroupInfo<'a> {}
+unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImageMemoryDeviceGroupInfo<'a> {}
 /**Safe counterpart of [`vk::BindImageMemoryInfo`].
 
 # Valid usage
@@ -1150,16 +1149,16 @@ impl<'a> BindImageMemoryInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1222,16 +1221,16 @@ impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1256,7 +1255,7 @@ impl<'a> core::ops::Deref for BindImageMemorySwapchainInfoKHR<'a> {
     }
 }
 #[cfg(feature = "khr_swapchain")]
-unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>>
+unsafe impl<'a> Extends<BindImageMemoryInfo<'a>>
 for BindImageMemorySwapchainInfoKHR<'a> {}
 /**Safe counterpart of [`vk::BindImagePlaneMemoryInfo`].
 
@@ -1289,16 +1288,16 @@ impl<'a> BindImagePlaneMemoryInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1326,7 +1325,7 @@ impl<'a> core::ops::Deref for BindImagePlaneMemoryInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BindImageMemoryInfo<'b>> for BindImagePlaneMemoryInfo<'a> {}
+unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImagePlaneMemoryInfo<'a> {}
 /**Safe counterpart of [`vk::BindSparseInfo`].
 
 # Valid usage
@@ -1365,7 +1364,7 @@ impl<'a> BindSparseInfo<'a> {
     #[inline]
     pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
         self.raw.wait_semaphore_count = value.len() as _;
-        self.raw.p_wait_semaphores = value.as_ptr();
+        self.raw.p_wait_semaphores = value.as_ptr().cast();
         self
     }
     ///Sets `pBufferBinds`.
@@ -1396,21 +1395,21 @@ impl<'a> BindSparseInfo<'a> {
     #[inline]
     pub fn signal_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
         self.raw.signal_semaphore_count = value.len() as _;
-        self.raw.p_signal_semaphores = value.as_ptr();
+        self.raw.p_signal_semaphores = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1555,16 +1554,16 @@ impl<'a> BlitImageInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1629,16 +1628,16 @@ impl<'a> BufferCopy2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1752,16 +1751,16 @@ impl<'a> BufferCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1822,16 +1821,16 @@ impl<'a> BufferDeviceAddressInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -1921,16 +1920,16 @@ impl<'a> BufferImageCopy2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2035,16 +2034,16 @@ impl<'a> BufferMemoryBarrier<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2273,16 +2272,16 @@ impl<'a> BufferMemoryBarrier2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2336,16 +2335,16 @@ impl<'a> BufferMemoryRequirementsInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2396,16 +2395,16 @@ impl<'a> BufferOpaqueCaptureAddressCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2435,7 +2434,7 @@ impl<'a> core::ops::Deref for BufferOpaqueCaptureAddressCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BufferCreateInfo<'b>>
+unsafe impl<'a> Extends<BufferCreateInfo<'a>>
 for BufferOpaqueCaptureAddressCreateInfo<'a> {}
 /**Safe counterpart of [`vk::BufferViewCreateInfo`].
 
@@ -2510,16 +2509,16 @@ impl<'a> BufferViewCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2586,16 +2585,16 @@ impl<'a> CommandBufferAllocateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2669,16 +2668,16 @@ impl<'a> CommandBufferBeginInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2775,16 +2774,16 @@ impl<'a> CommandBufferInheritanceInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2887,16 +2886,16 @@ impl<'a> CommandBufferInheritanceRenderingInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -2926,7 +2925,7 @@ impl<'a> core::ops::Deref for CommandBufferInheritanceRenderingInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<CommandBufferInheritanceInfo<'b>>
+unsafe impl<'a> Extends<CommandBufferInheritanceInfo<'a>>
 for CommandBufferInheritanceRenderingInfo<'a> {}
 /**Safe counterpart of [`vk::CommandBufferSubmitInfo`].
 
@@ -2967,16 +2966,16 @@ impl<'a> CommandBufferSubmitInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3036,16 +3035,16 @@ impl<'a> CommandPoolCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3157,16 +3156,16 @@ impl<'a> ComputePipelineCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3247,16 +3246,16 @@ impl<'a> CopyBufferInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3379,16 +3378,16 @@ impl<'a> CopyBufferToImageInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3500,16 +3499,16 @@ impl<'a> CopyDescriptorSet<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3668,16 +3667,16 @@ impl<'a> CopyImageInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3799,16 +3798,16 @@ impl<'a> CopyImageToBufferInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3870,16 +3869,16 @@ impl<'a> DebugUtilsLabelEXT<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -3981,16 +3980,16 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4083,16 +4082,16 @@ impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4125,7 +4124,7 @@ impl<'a> core::ops::Deref for DebugUtilsMessengerCreateInfoEXT<'a> {
     }
 }
 #[cfg(feature = "ext_debug_utils")]
-unsafe impl<'a, 'b> Extends<InstanceCreateInfo<'b>>
+unsafe impl<'a> Extends<InstanceCreateInfo<'a>>
 for DebugUtilsMessengerCreateInfoEXT<'a> {}
 /**Safe counterpart of [`vk::DebugUtilsObjectNameInfoEXT`].
 
@@ -4173,16 +4172,16 @@ impl<'a> DebugUtilsObjectNameInfoEXT<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4213,7 +4212,7 @@ impl<'a> core::ops::Deref for DebugUtilsObjectNameInfoEXT<'a> {
     }
 }
 #[cfg(feature = "ext_debug_utils")]
-unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>>
+unsafe impl<'a> Extends<PipelineShaderStageCreateInfo<'a>>
 for DebugUtilsObjectNameInfoEXT<'a> {}
 /**Safe counterpart of [`vk::DebugUtilsObjectTagInfoEXT`].
 
@@ -4270,16 +4269,16 @@ impl<'a> DebugUtilsObjectTagInfoEXT<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4369,16 +4368,16 @@ impl<'a> DependencyInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4592,16 +4591,16 @@ impl<'a> DescriptorPoolCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4657,16 +4656,16 @@ impl<'a> DescriptorPoolInlineUniformBlockCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4696,7 +4695,7 @@ impl<'a> core::ops::Deref for DescriptorPoolInlineUniformBlockCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DescriptorPoolCreateInfo<'b>>
+unsafe impl<'a> Extends<DescriptorPoolCreateInfo<'a>>
 for DescriptorPoolInlineUniformBlockCreateInfo<'a> {}
 /**Safe counterpart of [`vk::DescriptorSetAllocateInfo`].
 
@@ -4744,21 +4743,21 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
         value: &'a HandleSlice<'a, DescriptorSetLayout>,
     ) -> Self {
         self.raw.descriptor_set_count = value.len() as _;
-        self.raw.p_set_layouts = value.as_ptr();
+        self.raw.p_set_layouts = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4825,9 +4824,12 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
         self.raw.descriptor_type = value;
         self
     }
-    ///Sets `descriptorCount`.
+    ///Sets `descriptorCount`. `pImmutableSamplers` is cleared when its length differs from `value`.
     #[inline]
     pub fn descriptor_count(mut self, value: u32) -> Self {
+        if self.raw.descriptor_count != value {
+            self.raw.p_immutable_samplers = core::ptr::null();
+        }
         self.raw.descriptor_count = value;
         self
     }
@@ -4837,11 +4839,12 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
         self.raw.stage_flags = value;
         self
     }
-    ///Sets `pImmutableSamplers`.
+    ///Sets `pImmutableSamplers` (and `descriptorCount`).
     #[inline]
     pub fn immutable_samplers(mut self, value: &'a HandleSlice<'a, Sampler>) -> Self {
-        self.raw.descriptor_count = value.len() as _;
-        self.raw.p_immutable_samplers = value.as_ptr();
+        let len = value.len();
+        self.raw.descriptor_count = len as _;
+        self.raw.p_immutable_samplers = value.as_ptr().cast();
         self
     }
     /// The ash struct this lowers to.
@@ -4914,16 +4917,16 @@ impl<'a> DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -4953,7 +4956,7 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DescriptorSetLayoutCreateInfo<'b>>
+unsafe impl<'a> Extends<DescriptorSetLayoutCreateInfo<'a>>
 for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {}
 /**Safe counterpart of [`vk::DescriptorSetLayoutCreateInfo`].
 
@@ -5011,16 +5014,16 @@ impl<'a> DescriptorSetLayoutCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5072,16 +5075,16 @@ impl<'a> DescriptorSetLayoutSupport<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5141,16 +5144,16 @@ impl<'a> DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5180,7 +5183,7 @@ impl<'a> core::ops::Deref for DescriptorSetVariableDescriptorCountAllocateInfo<'
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DescriptorSetAllocateInfo<'b>>
+unsafe impl<'a> Extends<DescriptorSetAllocateInfo<'a>>
 for DescriptorSetVariableDescriptorCountAllocateInfo<'a> {}
 /**Safe counterpart of [`vk::DescriptorSetVariableDescriptorCountLayoutSupport`].
 
@@ -5204,16 +5207,16 @@ impl<'a> DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5243,7 +5246,7 @@ impl<'a> core::ops::Deref for DescriptorSetVariableDescriptorCountLayoutSupport<
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DescriptorSetLayoutSupport<'b>>
+unsafe impl<'a> Extends<DescriptorSetLayoutSupport<'a>>
 for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 /**Safe counterpart of [`vk::DescriptorUpdateTemplateCreateInfo`].
 
@@ -5329,16 +5332,16 @@ impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5397,16 +5400,16 @@ impl<'a> DeviceBufferMemoryRequirements<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5522,16 +5525,16 @@ impl<'a> DeviceCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5595,16 +5598,16 @@ impl<'a> DeviceGroupBindSparseInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5632,7 +5635,7 @@ impl<'a> core::ops::Deref for DeviceGroupBindSparseInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BindSparseInfo<'b>> for DeviceGroupBindSparseInfo<'a> {}
+unsafe impl<'a> Extends<BindSparseInfo<'a>> for DeviceGroupBindSparseInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupCommandBufferBeginInfo`].
 
 # Valid usage
@@ -5663,16 +5666,16 @@ impl<'a> DeviceGroupCommandBufferBeginInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5702,7 +5705,7 @@ impl<'a> core::ops::Deref for DeviceGroupCommandBufferBeginInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<CommandBufferBeginInfo<'b>>
+unsafe impl<'a> Extends<CommandBufferBeginInfo<'a>>
 for DeviceGroupCommandBufferBeginInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupDeviceCreateInfo`].
 
@@ -5735,21 +5738,21 @@ impl<'a> DeviceGroupDeviceCreateInfo<'a> {
         value: &'a HandleSlice<'a, PhysicalDevice>,
     ) -> Self {
         self.raw.physical_device_count = value.len() as _;
-        self.raw.p_physical_devices = value.as_ptr();
+        self.raw.p_physical_devices = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5777,7 +5780,7 @@ impl<'a> core::ops::Deref for DeviceGroupDeviceCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for DeviceGroupDeviceCreateInfo<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DeviceGroupDeviceCreateInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupPresentCapabilitiesKHR`].
 
 # Valid usage
@@ -5803,16 +5806,16 @@ impl<'a> DeviceGroupPresentCapabilitiesKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5890,16 +5893,16 @@ impl<'a> DeviceGroupPresentInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -5931,7 +5934,7 @@ impl<'a> core::ops::Deref for DeviceGroupPresentInfoKHR<'a> {
 }
 #[cfg(feature = "khr_swapchain")]
 #[cfg(feature = "khr_swapchain")]
-unsafe impl<'a, 'b> Extends<PresentInfoKHR<'b>> for DeviceGroupPresentInfoKHR<'a> {}
+unsafe impl<'a> Extends<PresentInfoKHR<'a>> for DeviceGroupPresentInfoKHR<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupRenderPassBeginInfo`].
 
 # Valid usage
@@ -5976,16 +5979,16 @@ impl<'a> DeviceGroupRenderPassBeginInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6013,9 +6016,8 @@ impl<'a> core::ops::Deref for DeviceGroupRenderPassBeginInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassBeginInfo<'b>>
-for DeviceGroupRenderPassBeginInfo<'a> {}
-unsafe impl<'a, 'b> Extends<RenderingInfo<'b>> for DeviceGroupRenderPassBeginInfo<'a> {}
+unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for DeviceGroupRenderPassBeginInfo<'a> {}
+unsafe impl<'a> Extends<RenderingInfo<'a>> for DeviceGroupRenderPassBeginInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupSubmitInfo`].
 
 # Valid usage
@@ -6067,16 +6069,16 @@ impl<'a> DeviceGroupSubmitInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6104,7 +6106,7 @@ impl<'a> core::ops::Deref for DeviceGroupSubmitInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SubmitInfo<'b>> for DeviceGroupSubmitInfo<'a> {}
+unsafe impl<'a> Extends<SubmitInfo<'a>> for DeviceGroupSubmitInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupSwapchainCreateInfoKHR`].
 
 # Valid usage
@@ -6137,16 +6139,16 @@ impl<'a> DeviceGroupSwapchainCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6180,7 +6182,7 @@ impl<'a> core::ops::Deref for DeviceGroupSwapchainCreateInfoKHR<'a> {
 }
 #[cfg(feature = "khr_swapchain")]
 #[cfg(feature = "khr_swapchain")]
-unsafe impl<'a, 'b> Extends<SwapchainCreateInfoKHR<'b>>
+unsafe impl<'a> Extends<SwapchainCreateInfoKHR<'a>>
 for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 /**Safe counterpart of [`vk::DeviceImageMemoryRequirements`].
 
@@ -6229,16 +6231,16 @@ impl<'a> DeviceImageMemoryRequirements<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6293,16 +6295,16 @@ impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6355,16 +6357,16 @@ impl<'a> DevicePrivateDataCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6392,7 +6394,7 @@ impl<'a> core::ops::Deref for DevicePrivateDataCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for DevicePrivateDataCreateInfo<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DevicePrivateDataCreateInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceQueueCreateInfo`].
 
 # Valid usage
@@ -6444,16 +6446,16 @@ impl<'a> DeviceQueueCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6526,16 +6528,16 @@ impl<'a> DeviceQueueInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6595,16 +6597,16 @@ impl<'a> EventCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6662,16 +6664,16 @@ impl<'a> ExportFenceCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6699,7 +6701,7 @@ impl<'a> core::ops::Deref for ExportFenceCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<FenceCreateInfo<'b>> for ExportFenceCreateInfo<'a> {}
+unsafe impl<'a> Extends<FenceCreateInfo<'a>> for ExportFenceCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ExportMemoryAllocateInfo`].
 
 # Valid usage
@@ -6730,16 +6732,16 @@ impl<'a> ExportMemoryAllocateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6767,7 +6769,7 @@ impl<'a> core::ops::Deref for ExportMemoryAllocateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>> for ExportMemoryAllocateInfo<'a> {}
+unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryAllocateInfo<'a> {}
 /**Safe counterpart of [`vk::ExportSemaphoreCreateInfo`].
 
 # Valid usage
@@ -6798,16 +6800,16 @@ impl<'a> ExportSemaphoreCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6835,7 +6837,7 @@ impl<'a> core::ops::Deref for ExportSemaphoreCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SemaphoreCreateInfo<'b>> for ExportSemaphoreCreateInfo<'a> {}
+unsafe impl<'a> Extends<SemaphoreCreateInfo<'a>> for ExportSemaphoreCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ExternalBufferProperties`].
 
 # Valid usage
@@ -6859,16 +6861,16 @@ impl<'a> ExternalBufferProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6919,16 +6921,16 @@ impl<'a> ExternalFenceProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -6978,16 +6980,16 @@ impl<'a> ExternalImageFormatProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7015,7 +7017,7 @@ impl<'a> core::ops::Deref for ExternalImageFormatProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageFormatProperties2<'b>>
+unsafe impl<'a> Extends<ImageFormatProperties2<'a>>
 for ExternalImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::ExternalMemoryBufferCreateInfo`].
 
@@ -7046,16 +7048,16 @@ impl<'a> ExternalMemoryBufferCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7083,8 +7085,7 @@ impl<'a> core::ops::Deref for ExternalMemoryBufferCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<BufferCreateInfo<'b>>
-for ExternalMemoryBufferCreateInfo<'a> {}
+unsafe impl<'a> Extends<BufferCreateInfo<'a>> for ExternalMemoryBufferCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ExternalMemoryImageCreateInfo`].
 
 # Valid usage
@@ -7114,16 +7115,16 @@ impl<'a> ExternalMemoryImageCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7151,7 +7152,7 @@ impl<'a> core::ops::Deref for ExternalMemoryImageCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ExternalMemoryImageCreateInfo<'a> {}
+unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ExternalMemoryImageCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ExternalSemaphoreProperties`].
 
 # Valid usage
@@ -7175,16 +7176,16 @@ impl<'a> ExternalSemaphoreProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7243,16 +7244,16 @@ impl<'a> FenceCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7304,16 +7305,16 @@ impl<'a> FormatProperties2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7363,16 +7364,16 @@ impl<'a> FormatProperties3<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7400,7 +7401,7 @@ impl<'a> core::ops::Deref for FormatProperties3<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<FormatProperties2<'b>> for FormatProperties3<'a> {}
+unsafe impl<'a> Extends<FormatProperties2<'a>> for FormatProperties3<'a> {}
 /**Safe counterpart of [`vk::FramebufferAttachmentImageInfo`].
 
 # Valid usage
@@ -7465,16 +7466,16 @@ impl<'a> FramebufferAttachmentImageInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7535,16 +7536,16 @@ impl<'a> FramebufferAttachmentsCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -7574,7 +7575,7 @@ impl<'a> core::ops::Deref for FramebufferAttachmentsCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<FramebufferCreateInfo<'b>>
+unsafe impl<'a> Extends<FramebufferCreateInfo<'a>>
 for FramebufferAttachmentsCreateInfo<'a> {}
 /**Safe counterpart of [`vk::FramebufferCreateInfo`].
 
@@ -7676,7 +7677,7 @@ impl<'a> FramebufferCreateInfo<'a> {
     #[inline]
     pub fn attachments(mut self, value: &'a HandleSlice<'a, ImageView>) -> Self {
         self.raw.attachment_count = value.len() as _;
-        self.raw.p_attachments = value.as_ptr();
+        self.raw.p_attachments = value.as_ptr().cast();
         self
     }
     ///Sets `width`.
@@ -7699,16 +7700,16 @@ impl<'a> FramebufferCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8055,16 +8056,20 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         self.raw.flags = value;
         self
     }
-    ///Sets `stageCount`.
+    ///Sets `stageCount`. `pStages` is cleared when its length differs from `value`.
     #[inline]
     pub fn stage_count(mut self, value: u32) -> Self {
+        if self.raw.stage_count != value {
+            self.raw.p_stages = core::ptr::null();
+        }
         self.raw.stage_count = value;
         self
     }
-    ///Sets `pStages`.
+    ///Sets `pStages` (and `stageCount`).
     #[inline]
     pub fn stages(mut self, value: &'a [PipelineShaderStageCreateInfo<'a>]) -> Self {
-        self.raw.stage_count = value.len() as _;
+        let len = value.len();
+        self.raw.stage_count = len as _;
         self.raw.p_stages = value.as_ptr().cast();
         self
     }
@@ -8229,16 +8234,16 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8318,16 +8323,16 @@ impl<'a> ImageBlit2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8415,16 +8420,16 @@ impl<'a> ImageCopy2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8675,16 +8680,16 @@ impl<'a> ImageCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8742,16 +8747,16 @@ impl<'a> ImageFormatListCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8779,11 +8784,10 @@ impl<'a> core::ops::Deref for ImageFormatListCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageFormatListCreateInfo<'a> {}
+unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageFormatListCreateInfo<'a> {}
 #[cfg(feature = "khr_swapchain")]
-unsafe impl<'a, 'b> Extends<SwapchainCreateInfoKHR<'b>>
-for ImageFormatListCreateInfo<'a> {}
-unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
+unsafe impl<'a> Extends<SwapchainCreateInfoKHR<'a>> for ImageFormatListCreateInfo<'a> {}
+unsafe impl<'a> Extends<PhysicalDeviceImageFormatInfo2<'a>>
 for ImageFormatListCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ImageFormatProperties2`].
 
@@ -8809,16 +8813,16 @@ impl<'a> ImageFormatProperties2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -8968,16 +8972,16 @@ impl<'a> ImageMemoryBarrier<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9252,16 +9256,16 @@ impl<'a> ImageMemoryBarrier2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9322,16 +9326,16 @@ impl<'a> ImageMemoryRequirementsInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9385,16 +9389,16 @@ impl<'a> ImagePlaneMemoryRequirementsInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9424,7 +9428,7 @@ impl<'a> core::ops::Deref for ImagePlaneMemoryRequirementsInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageMemoryRequirementsInfo2<'b>>
+unsafe impl<'a> Extends<ImageMemoryRequirementsInfo2<'a>>
 for ImagePlaneMemoryRequirementsInfo<'a> {}
 /**Safe counterpart of [`vk::ImageResolve2`].
 
@@ -9483,16 +9487,16 @@ impl<'a> ImageResolve2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9551,16 +9555,16 @@ impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9616,16 +9620,16 @@ impl<'a> ImageStencilUsageCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9653,8 +9657,8 @@ impl<'a> core::ops::Deref for ImageStencilUsageCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageStencilUsageCreateInfo<'a> {}
-unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
+unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageStencilUsageCreateInfo<'a> {}
+unsafe impl<'a> Extends<PhysicalDeviceImageFormatInfo2<'a>>
 for ImageStencilUsageCreateInfo<'a> {}
 /**Safe counterpart of [`vk::ImageSwapchainCreateInfoKHR`].
 
@@ -9688,16 +9692,16 @@ impl<'a> ImageSwapchainCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9728,7 +9732,7 @@ impl<'a> core::ops::Deref for ImageSwapchainCreateInfoKHR<'a> {
     }
 }
 #[cfg(feature = "khr_swapchain")]
-unsafe impl<'a, 'b> Extends<ImageCreateInfo<'b>> for ImageSwapchainCreateInfoKHR<'a> {}
+unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageSwapchainCreateInfoKHR<'a> {}
 /**Safe counterpart of [`vk::ImageViewCreateInfo`].
 
 # Valid usage
@@ -9886,16 +9890,16 @@ impl<'a> ImageViewCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9948,16 +9952,16 @@ impl<'a> ImageViewUsageCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -9985,7 +9989,7 @@ impl<'a> core::ops::Deref for ImageViewUsageCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageViewCreateInfo<'b>> for ImageViewUsageCreateInfo<'a> {}
+unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for ImageViewUsageCreateInfo<'a> {}
 /**Safe counterpart of [`vk::InstanceCreateInfo`].
 
 # Valid usage
@@ -10049,16 +10053,16 @@ impl<'a> InstanceCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10135,16 +10139,16 @@ impl<'a> MappedMemoryRange<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10204,16 +10208,16 @@ impl<'a> MemoryAllocateFlagsInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10241,7 +10245,7 @@ impl<'a> core::ops::Deref for MemoryAllocateFlagsInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>> for MemoryAllocateFlagsInfo<'a> {}
+unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryAllocateFlagsInfo<'a> {}
 /**Safe counterpart of [`vk::MemoryAllocateInfo`].
 
 # Valid usage
@@ -10320,16 +10324,16 @@ impl<'a> MemoryAllocateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10394,16 +10398,16 @@ impl<'a> MemoryBarrier<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10595,16 +10599,16 @@ impl<'a> MemoryBarrier2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10632,7 +10636,7 @@ impl<'a> core::ops::Deref for MemoryBarrier2<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SubpassDependency2<'b>> for MemoryBarrier2<'a> {}
+unsafe impl<'a> Extends<SubpassDependency2<'a>> for MemoryBarrier2<'a> {}
 /**Safe counterpart of [`vk::MemoryDedicatedAllocateInfo`].
 
 # Valid usage
@@ -10684,16 +10688,16 @@ impl<'a> MemoryDedicatedAllocateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10721,7 +10725,7 @@ impl<'a> core::ops::Deref for MemoryDedicatedAllocateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>> for MemoryDedicatedAllocateInfo<'a> {}
+unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryDedicatedAllocateInfo<'a> {}
 /**Safe counterpart of [`vk::MemoryDedicatedRequirements`].
 
 # Valid usage
@@ -10744,16 +10748,16 @@ impl<'a> MemoryDedicatedRequirements<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10781,8 +10785,7 @@ impl<'a> core::ops::Deref for MemoryDedicatedRequirements<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryRequirements2<'b>>
-for MemoryDedicatedRequirements<'a> {}
+unsafe impl<'a> Extends<MemoryRequirements2<'a>> for MemoryDedicatedRequirements<'a> {}
 /**Safe counterpart of [`vk::MemoryOpaqueCaptureAddressAllocateInfo`].
 
 # Valid usage
@@ -10811,16 +10814,16 @@ impl<'a> MemoryOpaqueCaptureAddressAllocateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10850,7 +10853,7 @@ impl<'a> core::ops::Deref for MemoryOpaqueCaptureAddressAllocateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<MemoryAllocateInfo<'b>>
+unsafe impl<'a> Extends<MemoryAllocateInfo<'a>>
 for MemoryOpaqueCaptureAddressAllocateInfo<'a> {}
 /**Safe counterpart of [`vk::MemoryRequirements2`].
 
@@ -10876,16 +10879,16 @@ impl<'a> MemoryRequirements2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -10945,16 +10948,16 @@ impl<'a> MetalSurfaceCreateInfoEXT<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11030,16 +11033,16 @@ impl<'a> PhysicalDevice16BitStorageFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11069,9 +11072,9 @@ impl<'a> core::ops::Deref for PhysicalDevice16BitStorageFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDevice16BitStorageFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDevice16BitStorageFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevice8BitStorageFeatures`].
 
@@ -11113,16 +11116,16 @@ impl<'a> PhysicalDevice8BitStorageFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11152,10 +11155,9 @@ impl<'a> core::ops::Deref for PhysicalDevice8BitStorageFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDevice8BitStorageFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-for PhysicalDevice8BitStorageFeatures<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDevice8BitStorageFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceBufferDeviceAddressFeatures`].
 
 # Valid usage
@@ -11196,16 +11198,16 @@ impl<'a> PhysicalDeviceBufferDeviceAddressFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11235,9 +11237,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceBufferDeviceAddressFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceBufferDeviceAddressFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceBufferDeviceAddressFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDepthStencilResolveProperties`].
 
@@ -11261,16 +11263,16 @@ impl<'a> PhysicalDeviceDepthStencilResolveProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11300,7 +11302,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceDepthStencilResolveProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceDepthStencilResolveProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDescriptorIndexingFeatures`].
 
@@ -11498,16 +11500,16 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11537,9 +11539,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceDescriptorIndexingFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDescriptorIndexingProperties`].
 
@@ -11563,16 +11565,16 @@ impl<'a> PhysicalDeviceDescriptorIndexingProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11602,7 +11604,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceDescriptorIndexingProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceDescriptorIndexingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDriverProperties`].
 
@@ -11626,16 +11628,16 @@ impl<'a> PhysicalDeviceDriverProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11663,7 +11665,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceDriverProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceDriverProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDynamicRenderingFeatures`].
 
@@ -11693,16 +11695,16 @@ impl<'a> PhysicalDeviceDynamicRenderingFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11732,9 +11734,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceDynamicRenderingFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceDynamicRenderingFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceDynamicRenderingFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceExternalBufferInfo`].
 
@@ -11781,16 +11783,16 @@ impl<'a> PhysicalDeviceExternalBufferInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11850,16 +11852,16 @@ impl<'a> PhysicalDeviceExternalFenceInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11916,16 +11918,16 @@ impl<'a> PhysicalDeviceExternalImageFormatInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -11955,7 +11957,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalImageFormatInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceImageFormatInfo2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceImageFormatInfo2<'a>>
 for PhysicalDeviceExternalImageFormatInfo<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceExternalSemaphoreInfo`].
 
@@ -11988,16 +11990,16 @@ impl<'a> PhysicalDeviceExternalSemaphoreInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12055,16 +12057,16 @@ impl<'a> PhysicalDeviceFeatures2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12092,7 +12094,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceFeatures2<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>> for PhysicalDeviceFeatures2<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceFeatures2<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceFloatControlsProperties`].
 
 # Valid usage
@@ -12115,16 +12117,16 @@ impl<'a> PhysicalDeviceFloatControlsProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12154,7 +12156,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceFloatControlsProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceFloatControlsProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceGroupProperties`].
 
@@ -12179,16 +12181,16 @@ impl<'a> PhysicalDeviceGroupProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12244,16 +12246,16 @@ impl<'a> PhysicalDeviceHostQueryResetFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12283,9 +12285,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceHostQueryResetFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceHostQueryResetFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceHostQueryResetFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceIDProperties`].
 
@@ -12309,16 +12311,16 @@ impl<'a> PhysicalDeviceIDProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12346,7 +12348,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceIDProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceIDProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceImageFormatInfo2`].
 
@@ -12410,16 +12412,16 @@ impl<'a> PhysicalDeviceImageFormatInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12475,16 +12477,16 @@ impl<'a> PhysicalDeviceImageRobustnessFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12514,9 +12516,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceImageRobustnessFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceImageRobustnessFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceImageRobustnessFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceImagelessFramebufferFeatures`].
 
@@ -12546,16 +12548,16 @@ impl<'a> PhysicalDeviceImagelessFramebufferFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12585,9 +12587,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceImagelessFramebufferFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceImagelessFramebufferFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceImagelessFramebufferFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceInlineUniformBlockFeatures`].
 
@@ -12626,16 +12628,16 @@ impl<'a> PhysicalDeviceInlineUniformBlockFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12665,9 +12667,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceInlineUniformBlockFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceInlineUniformBlockFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceInlineUniformBlockFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceInlineUniformBlockProperties`].
 
@@ -12691,16 +12693,16 @@ impl<'a> PhysicalDeviceInlineUniformBlockProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12730,7 +12732,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceInlineUniformBlockProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceInlineUniformBlockProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance3Properties`].
 
@@ -12754,16 +12756,16 @@ impl<'a> PhysicalDeviceMaintenance3Properties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12793,7 +12795,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceMaintenance3Properties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceMaintenance3Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance4Features`].
 
@@ -12823,16 +12825,16 @@ impl<'a> PhysicalDeviceMaintenance4Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12862,9 +12864,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceMaintenance4Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceMaintenance4Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceMaintenance4Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance4Properties`].
 
@@ -12888,16 +12890,16 @@ impl<'a> PhysicalDeviceMaintenance4Properties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -12927,7 +12929,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceMaintenance4Properties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceMaintenance4Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMemoryProperties2`].
 
@@ -12953,16 +12955,16 @@ impl<'a> PhysicalDeviceMemoryProperties2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13032,16 +13034,16 @@ impl<'a> PhysicalDeviceMultiviewFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13069,10 +13071,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceMultiviewFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceMultiviewFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-for PhysicalDeviceMultiviewFeatures<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceMultiviewFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMultiviewProperties`].
 
 # Valid usage
@@ -13095,16 +13096,16 @@ impl<'a> PhysicalDeviceMultiviewProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13134,7 +13135,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceMultiviewProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceMultiviewProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePipelineCreationCacheControlFeatures`].
 
@@ -13164,16 +13165,16 @@ impl<'a> PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13203,9 +13204,9 @@ impl<'a> core::ops::Deref for PhysicalDevicePipelineCreationCacheControlFeatures
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDevicePipelineCreationCacheControlFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDevicePipelineCreationCacheControlFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePointClippingProperties`].
 
@@ -13229,16 +13230,16 @@ impl<'a> PhysicalDevicePointClippingProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13268,7 +13269,7 @@ impl<'a> core::ops::Deref for PhysicalDevicePointClippingProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDevicePointClippingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePrivateDataFeatures`].
 
@@ -13298,16 +13299,16 @@ impl<'a> PhysicalDevicePrivateDataFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13337,10 +13338,9 @@ impl<'a> core::ops::Deref for PhysicalDevicePrivateDataFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDevicePrivateDataFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-for PhysicalDevicePrivateDataFeatures<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDevicePrivateDataFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceProperties2`].
 
 # Valid usage
@@ -13365,16 +13365,16 @@ impl<'a> PhysicalDeviceProperties2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13430,16 +13430,16 @@ impl<'a> PhysicalDeviceProtectedMemoryFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13469,9 +13469,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceProtectedMemoryFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceProtectedMemoryFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceProtectedMemoryFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceProtectedMemoryProperties`].
 
@@ -13495,16 +13495,16 @@ impl<'a> PhysicalDeviceProtectedMemoryProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13534,7 +13534,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceProtectedMemoryProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceProtectedMemoryProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerFilterMinmaxProperties`].
 
@@ -13558,16 +13558,16 @@ impl<'a> PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13597,7 +13597,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerYcbcrConversionFeatures`].
 
@@ -13627,16 +13627,16 @@ impl<'a> PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13666,9 +13666,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceScalarBlockLayoutFeatures`].
 
@@ -13698,16 +13698,16 @@ impl<'a> PhysicalDeviceScalarBlockLayoutFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13737,9 +13737,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceScalarBlockLayoutFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSeparateDepthStencilLayoutsFeatures`].
 
@@ -13769,16 +13769,16 @@ impl<'a> PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13808,9 +13808,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderAtomicInt64Features`].
 
@@ -13846,16 +13846,16 @@ impl<'a> PhysicalDeviceShaderAtomicInt64Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13885,9 +13885,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderAtomicInt64Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderAtomicInt64Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderAtomicInt64Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures`].
 
@@ -13917,16 +13917,16 @@ impl<'a> PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -13958,9 +13958,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderDemoteToHelperInvocationFeatur
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderDrawParametersFeatures`].
 
@@ -13990,16 +13990,16 @@ impl<'a> PhysicalDeviceShaderDrawParametersFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14029,9 +14029,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderDrawParametersFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderDrawParametersFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderDrawParametersFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderFloat16Int8Features`].
 
@@ -14067,16 +14067,16 @@ impl<'a> PhysicalDeviceShaderFloat16Int8Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14106,9 +14106,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderFloat16Int8Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderFloat16Int8Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderFloat16Int8Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderIntegerDotProductFeatures`].
 
@@ -14138,16 +14138,16 @@ impl<'a> PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14177,9 +14177,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderIntegerDotProductFeatures<'a> 
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderIntegerDotProductFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderIntegerDotProductFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderIntegerDotProductProperties`].
 
@@ -14203,16 +14203,16 @@ impl<'a> PhysicalDeviceShaderIntegerDotProductProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14242,7 +14242,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderIntegerDotProductProperties<'a
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceShaderIntegerDotProductProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures`].
 
@@ -14272,16 +14272,16 @@ impl<'a> PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14311,9 +14311,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderTerminateInvocationFeatures`].
 
@@ -14343,16 +14343,16 @@ impl<'a> PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14382,9 +14382,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceShaderTerminateInvocationFeatures<'a
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSparseImageFormatInfo2`].
 
@@ -14446,16 +14446,16 @@ impl<'a> PhysicalDeviceSparseImageFormatInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14507,16 +14507,16 @@ impl<'a> PhysicalDeviceSubgroupProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14546,7 +14546,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceSubgroupProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceSubgroupProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupSizeControlFeatures`].
 
@@ -14582,16 +14582,16 @@ impl<'a> PhysicalDeviceSubgroupSizeControlFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14621,9 +14621,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSubgroupSizeControlFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceSubgroupSizeControlFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceSubgroupSizeControlFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupSizeControlProperties`].
 
@@ -14647,16 +14647,16 @@ impl<'a> PhysicalDeviceSubgroupSizeControlProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14686,7 +14686,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceSubgroupSizeControlProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceSubgroupSizeControlProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSynchronization2Features`].
 
@@ -14716,16 +14716,16 @@ impl<'a> PhysicalDeviceSynchronization2Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14755,9 +14755,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceSynchronization2Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceSynchronization2Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceSynchronization2Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTexelBufferAlignmentProperties`].
 
@@ -14781,16 +14781,16 @@ impl<'a> PhysicalDeviceTexelBufferAlignmentProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14820,7 +14820,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceTexelBufferAlignmentProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceTexelBufferAlignmentProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTextureCompressionASTCHDRFeatures`].
 
@@ -14850,16 +14850,16 @@ impl<'a> PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14889,9 +14889,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTimelineSemaphoreFeatures`].
 
@@ -14921,16 +14921,16 @@ impl<'a> PhysicalDeviceTimelineSemaphoreFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -14960,9 +14960,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceTimelineSemaphoreFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTimelineSemaphoreProperties`].
 
@@ -14986,16 +14986,16 @@ impl<'a> PhysicalDeviceTimelineSemaphoreProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15025,7 +15025,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceTimelineSemaphoreProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceTimelineSemaphoreProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceToolProperties`].
 
@@ -15050,16 +15050,16 @@ impl<'a> PhysicalDeviceToolProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15115,16 +15115,16 @@ impl<'a> PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15154,9 +15154,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceUniformBufferStandardLayoutFeatures<
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVariablePointersFeatures`].
 
@@ -15193,16 +15193,16 @@ impl<'a> PhysicalDeviceVariablePointersFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15232,9 +15232,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVariablePointersFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVariablePointersFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceVariablePointersFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan11Features`].
 
@@ -15330,16 +15330,16 @@ impl<'a> PhysicalDeviceVulkan11Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15367,10 +15367,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan11Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkan11Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-for PhysicalDeviceVulkan11Features<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan11Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan11Properties`].
 
 # Valid usage
@@ -15393,16 +15392,16 @@ impl<'a> PhysicalDeviceVulkan11Properties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15432,7 +15431,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan11Properties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceVulkan11Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan12Features`].
 
@@ -15795,16 +15794,16 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15832,10 +15831,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan12Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkan12Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-for PhysicalDeviceVulkan12Features<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan12Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan12Properties`].
 
 # Valid usage
@@ -15858,16 +15856,16 @@ impl<'a> PhysicalDeviceVulkan12Properties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -15897,7 +15895,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan12Properties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceVulkan12Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan13Features`].
 
@@ -16014,16 +16012,16 @@ impl<'a> PhysicalDeviceVulkan13Features<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16051,10 +16049,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan13Features<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkan13Features<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
-for PhysicalDeviceVulkan13Features<'a> {}
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan13Features<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan13Properties`].
 
 # Valid usage
@@ -16077,16 +16074,16 @@ impl<'a> PhysicalDeviceVulkan13Properties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16116,7 +16113,7 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkan13Properties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceProperties2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceVulkan13Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkanMemoryModelFeatures`].
 
@@ -16161,16 +16158,16 @@ impl<'a> PhysicalDeviceVulkanMemoryModelFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16200,9 +16197,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceVulkanMemoryModelFeatures<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures`].
 
@@ -16232,16 +16229,16 @@ impl<'a> PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16273,9 +16270,9 @@ impl<'a> core::ops::Deref for PhysicalDeviceZeroInitializeWorkgroupMemoryFeature
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PhysicalDeviceFeatures2<'b>>
+unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
-unsafe impl<'a, 'b> Extends<DeviceCreateInfo<'b>>
+unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 /**Safe counterpart of [`vk::PipelineCacheCreateInfo`].
 
@@ -16318,16 +16315,16 @@ impl<'a> PipelineCacheCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16403,19 +16400,23 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
         self.raw.logic_op = value;
         self
     }
-    ///Sets `attachmentCount`.
+    ///Sets `attachmentCount`. `pAttachments` is cleared when its length differs from `value`.
     #[inline]
     pub fn attachment_count(mut self, value: u32) -> Self {
+        if self.raw.attachment_count != value {
+            self.raw.p_attachments = core::ptr::null();
+        }
         self.raw.attachment_count = value;
         self
     }
-    ///Sets `pAttachments`.
+    ///Sets `pAttachments` (and `attachmentCount`).
     #[inline]
     pub fn attachments(
         mut self,
         value: &'a [vk::PipelineColorBlendAttachmentState],
     ) -> Self {
-        self.raw.attachment_count = value.len() as _;
+        let len = value.len();
+        self.raw.attachment_count = len as _;
         self.raw.p_attachments = value.as_ptr().cast();
         self
     }
@@ -16427,16 +16428,16 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16490,16 +16491,16 @@ impl<'a> PipelineCreationFeedbackCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16529,9 +16530,9 @@ impl<'a> core::ops::Deref for PipelineCreationFeedbackCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<GraphicsPipelineCreateInfo<'b>>
+unsafe impl<'a> Extends<GraphicsPipelineCreateInfo<'a>>
 for PipelineCreationFeedbackCreateInfo<'a> {}
-unsafe impl<'a, 'b> Extends<ComputePipelineCreateInfo<'b>>
+unsafe impl<'a> Extends<ComputePipelineCreateInfo<'a>>
 for PipelineCreationFeedbackCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineDepthStencilStateCreateInfo`].
 
@@ -16624,16 +16625,16 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16702,16 +16703,16 @@ impl<'a> PipelineDynamicStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16788,16 +16789,16 @@ impl<'a> PipelineInputAssemblyStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -16928,7 +16929,7 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
         value: &'a HandleSlice<'a, DescriptorSetLayout>,
     ) -> Self {
         self.raw.set_layout_count = value.len() as _;
-        self.raw.p_set_layouts = value.as_ptr();
+        self.raw.p_set_layouts = value.as_ptr().cast();
         self
     }
     ///Sets `pPushConstantRanges`.
@@ -16940,16 +16941,16 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17044,16 +17045,16 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17182,16 +17183,16 @@ impl<'a> PipelineRasterizationStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17268,16 +17269,16 @@ impl<'a> PipelineRenderingCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17305,7 +17306,7 @@ impl<'a> core::ops::Deref for PipelineRenderingCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<GraphicsPipelineCreateInfo<'b>>
+unsafe impl<'a> Extends<GraphicsPipelineCreateInfo<'a>>
 for PipelineRenderingCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineShaderStageCreateInfo`].
 
@@ -17412,16 +17413,16 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17469,16 +17470,16 @@ impl<'a> PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17508,7 +17509,7 @@ impl<'a> core::ops::Deref for PipelineShaderStageRequiredSubgroupSizeCreateInfo<
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>>
+unsafe impl<'a> Extends<PipelineShaderStageCreateInfo<'a>>
 for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineTessellationDomainOriginStateCreateInfo`].
 
@@ -17539,16 +17540,16 @@ impl<'a> PipelineTessellationDomainOriginStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17578,7 +17579,7 @@ impl<'a> core::ops::Deref for PipelineTessellationDomainOriginStateCreateInfo<'a
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PipelineTessellationStateCreateInfo<'b>>
+unsafe impl<'a> Extends<PipelineTessellationStateCreateInfo<'a>>
 for PipelineTessellationDomainOriginStateCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineTessellationStateCreateInfo`].
 
@@ -17618,16 +17619,16 @@ impl<'a> PipelineTessellationStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17715,16 +17716,16 @@ impl<'a> PipelineVertexInputStateCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17797,44 +17798,52 @@ impl<'a> PipelineViewportStateCreateInfo<'a> {
         self.raw.flags = value;
         self
     }
-    ///Sets `viewportCount`.
+    ///Sets `viewportCount`. `pViewports` is cleared when its length differs from `value`.
     #[inline]
     pub fn viewport_count(mut self, value: u32) -> Self {
+        if self.raw.viewport_count != value {
+            self.raw.p_viewports = core::ptr::null();
+        }
         self.raw.viewport_count = value;
         self
     }
-    ///Sets `pViewports`.
+    ///Sets `pViewports` (and `viewportCount`).
     #[inline]
     pub fn viewports(mut self, value: &'a [vk::Viewport]) -> Self {
-        self.raw.viewport_count = value.len() as _;
+        let len = value.len();
+        self.raw.viewport_count = len as _;
         self.raw.p_viewports = value.as_ptr().cast();
         self
     }
-    ///Sets `scissorCount`.
+    ///Sets `scissorCount`. `pScissors` is cleared when its length differs from `value`.
     #[inline]
     pub fn scissor_count(mut self, value: u32) -> Self {
+        if self.raw.scissor_count != value {
+            self.raw.p_scissors = core::ptr::null();
+        }
         self.raw.scissor_count = value;
         self
     }
-    ///Sets `pScissors`.
+    ///Sets `pScissors` (and `scissorCount`).
     #[inline]
     pub fn scissors(mut self, value: &'a [vk::Rect2D]) -> Self {
-        self.raw.scissor_count = value.len() as _;
+        let len = value.len();
+        self.raw.scissor_count = len as _;
         self.raw.p_scissors = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17899,35 +17908,47 @@ impl<'a> PresentInfoKHR<'a> {
     #[inline]
     pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
         self.raw.wait_semaphore_count = value.len() as _;
-        self.raw.p_wait_semaphores = value.as_ptr();
+        self.raw.p_wait_semaphores = value.as_ptr().cast();
         self
     }
-    ///Sets `pSwapchains`.
+    /**Sets `pSwapchains`, `pImageIndices` (and `swapchainCount`): one element of each per entry.
+
+# Errors
+
+[`Error::Validation`](crate::Error::Validation) when the slices' lengths differ.*/
     #[inline]
-    pub fn swapchains(mut self, value: &'a HandleSlice<'a, SwapchainKHR>) -> Self {
-        self.raw.swapchain_count = value.len() as _;
-        self.raw.p_swapchains = value.as_ptr();
-        self
-    }
-    ///Sets `pImageIndices`.
-    #[inline]
-    pub fn image_indices(mut self, value: &'a [u32]) -> Self {
-        self.raw.swapchain_count = value.len() as _;
-        self.raw.p_image_indices = value.as_ptr().cast();
-        self
+    pub fn swapchains(
+        mut self,
+        swapchains: &'a HandleSlice<'a, SwapchainKHR>,
+        image_indices: &'a [u32],
+    ) -> crate::Result<Self> {
+        let len = swapchains.len();
+        if image_indices.len() != len {
+            return Err(crate::Error::Validation {
+                vuid: "VUID-VkPresentInfoKHR-pImageIndices-parameter",
+                message: format!(
+                    "`pImageIndices` has {} elements but `pSwapchains` has {}",
+                    image_indices.len(), len
+                ),
+            });
+        }
+        self.raw.swapchain_count = len as _;
+        self.raw.p_swapchains = swapchains.as_ptr().cast();
+        self.raw.p_image_indices = image_indices.as_ptr().cast();
+        Ok(self)
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -17987,16 +18008,16 @@ impl<'a> PrivateDataSlotCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18052,16 +18073,16 @@ impl<'a> ProtectedSubmitInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18089,7 +18110,7 @@ impl<'a> core::ops::Deref for ProtectedSubmitInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SubmitInfo<'b>> for ProtectedSubmitInfo<'a> {}
+unsafe impl<'a> Extends<SubmitInfo<'a>> for ProtectedSubmitInfo<'a> {}
 /**Safe counterpart of [`vk::QueryPoolCreateInfo`].
 
 # Valid usage
@@ -18150,16 +18171,16 @@ impl<'a> QueryPoolCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18211,16 +18232,16 @@ impl<'a> QueueFamilyProperties2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18277,21 +18298,21 @@ impl<'a> RenderPassAttachmentBeginInfo<'a> {
     #[inline]
     pub fn attachments(mut self, value: &'a HandleSlice<'a, ImageView>) -> Self {
         self.raw.attachment_count = value.len() as _;
-        self.raw.p_attachments = value.as_ptr();
+        self.raw.p_attachments = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18319,8 +18340,7 @@ impl<'a> core::ops::Deref for RenderPassAttachmentBeginInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassBeginInfo<'b>>
-for RenderPassAttachmentBeginInfo<'a> {}
+unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for RenderPassAttachmentBeginInfo<'a> {}
 /**Safe counterpart of [`vk::RenderPassBeginInfo`].
 
 # Valid usage
@@ -18402,16 +18422,16 @@ impl<'a> RenderPassBeginInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18510,16 +18530,16 @@ impl<'a> RenderPassCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18639,16 +18659,16 @@ impl<'a> RenderPassCreateInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18710,16 +18730,16 @@ impl<'a> RenderPassInputAttachmentAspectCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18749,7 +18769,7 @@ impl<'a> core::ops::Deref for RenderPassInputAttachmentAspectCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassCreateInfo<'b>>
+unsafe impl<'a> Extends<RenderPassCreateInfo<'a>>
 for RenderPassInputAttachmentAspectCreateInfo<'a> {}
 /**Safe counterpart of [`vk::RenderPassMultiviewCreateInfo`].
 
@@ -18800,16 +18820,16 @@ impl<'a> RenderPassMultiviewCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -18837,8 +18857,7 @@ impl<'a> core::ops::Deref for RenderPassMultiviewCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<RenderPassCreateInfo<'b>>
-for RenderPassMultiviewCreateInfo<'a> {}
+unsafe impl<'a> Extends<RenderPassCreateInfo<'a>> for RenderPassMultiviewCreateInfo<'a> {}
 /**Safe counterpart of [`vk::RenderingAttachmentInfo`].
 
 # Valid usage
@@ -18940,16 +18959,16 @@ impl<'a> RenderingAttachmentInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19134,16 +19153,16 @@ impl<'a> RenderingInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19269,16 +19288,16 @@ impl<'a> ResolveImageInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19470,16 +19489,16 @@ impl<'a> SamplerCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19536,16 +19555,16 @@ impl<'a> SamplerReductionModeCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19573,8 +19592,7 @@ impl<'a> core::ops::Deref for SamplerReductionModeCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SamplerCreateInfo<'b>>
-for SamplerReductionModeCreateInfo<'a> {}
+unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SamplerYcbcrConversionCreateInfo`].
 
 # Valid usage
@@ -19669,16 +19687,16 @@ impl<'a> SamplerYcbcrConversionCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19730,16 +19748,16 @@ impl<'a> SamplerYcbcrConversionImageFormatProperties<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19769,7 +19787,7 @@ impl<'a> core::ops::Deref for SamplerYcbcrConversionImageFormatProperties<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<ImageFormatProperties2<'b>>
+unsafe impl<'a> Extends<ImageFormatProperties2<'a>>
 for SamplerYcbcrConversionImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::SamplerYcbcrConversionInfo`].
 
@@ -19801,16 +19819,16 @@ impl<'a> SamplerYcbcrConversionInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19833,8 +19851,8 @@ impl<'a> core::ops::Deref for SamplerYcbcrConversionInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SamplerCreateInfo<'b>> for SamplerYcbcrConversionInfo<'a> {}
-unsafe impl<'a, 'b> Extends<ImageViewCreateInfo<'b>> for SamplerYcbcrConversionInfo<'a> {}
+unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerYcbcrConversionInfo<'a> {}
+unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for SamplerYcbcrConversionInfo<'a> {}
 /**Safe counterpart of [`vk::SemaphoreCreateInfo`].
 
 # Valid usage
@@ -19867,16 +19885,16 @@ impl<'a> SemaphoreCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -19945,16 +19963,16 @@ impl<'a> SemaphoreSignalInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20041,16 +20059,16 @@ impl<'a> SemaphoreSubmitInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20110,16 +20128,16 @@ impl<'a> SemaphoreTypeCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20147,8 +20165,8 @@ impl<'a> core::ops::Deref for SemaphoreTypeCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SemaphoreCreateInfo<'b>> for SemaphoreTypeCreateInfo<'a> {}
-unsafe impl<'a, 'b> Extends<PhysicalDeviceExternalSemaphoreInfo<'b>>
+unsafe impl<'a> Extends<SemaphoreCreateInfo<'a>> for SemaphoreTypeCreateInfo<'a> {}
+unsafe impl<'a> Extends<PhysicalDeviceExternalSemaphoreInfo<'a>>
 for SemaphoreTypeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SemaphoreWaitInfo`].
 
@@ -20182,32 +20200,44 @@ impl<'a> SemaphoreWaitInfo<'a> {
         self.raw.flags = value;
         self
     }
-    ///Sets `pSemaphores`.
+    /**Sets `pSemaphores`, `pValues` (and `semaphoreCount`): one element of each per entry.
+
+# Errors
+
+[`Error::Validation`](crate::Error::Validation) when the slices' lengths differ.*/
     #[inline]
-    pub fn semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
-        self.raw.semaphore_count = value.len() as _;
-        self.raw.p_semaphores = value.as_ptr();
-        self
-    }
-    ///Sets `pValues`.
-    #[inline]
-    pub fn values(mut self, value: &'a [u64]) -> Self {
-        self.raw.semaphore_count = value.len() as _;
-        self.raw.p_values = value.as_ptr().cast();
-        self
+    pub fn semaphores(
+        mut self,
+        semaphores: &'a HandleSlice<'a, Semaphore>,
+        values: &'a [u64],
+    ) -> crate::Result<Self> {
+        let len = semaphores.len();
+        if values.len() != len {
+            return Err(crate::Error::Validation {
+                vuid: "VUID-VkSemaphoreWaitInfo-pValues-parameter",
+                message: format!(
+                    "`pValues` has {} elements but `pSemaphores` has {}", values.len(),
+                    len
+                ),
+            });
+        }
+        self.raw.semaphore_count = len as _;
+        self.raw.p_semaphores = semaphores.as_ptr().cast();
+        self.raw.p_values = values.as_ptr().cast();
+        Ok(self)
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20285,16 +20315,16 @@ impl<'a> ShaderModuleCreateInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20322,7 +20352,7 @@ impl<'a> core::ops::Deref for ShaderModuleCreateInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<PipelineShaderStageCreateInfo<'b>>
+unsafe impl<'a> Extends<PipelineShaderStageCreateInfo<'a>>
 for ShaderModuleCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SparseBufferMemoryBindInfo`].
 
@@ -20402,16 +20432,16 @@ impl<'a> SparseImageFormatProperties2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20613,16 +20643,16 @@ impl<'a> SparseImageMemoryRequirements2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -20906,46 +20936,58 @@ impl<'a> SubmitInfo<'a> {
             _marker: PhantomData,
         }
     }
-    ///Sets `pWaitSemaphores`.
+    /**Sets `pWaitSemaphores`, `pWaitDstStageMask` (and `waitSemaphoreCount`): one element of each per entry.
+
+# Errors
+
+[`Error::Validation`](crate::Error::Validation) when the slices' lengths differ.*/
     #[inline]
-    pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
-        self.raw.wait_semaphore_count = value.len() as _;
-        self.raw.p_wait_semaphores = value.as_ptr();
-        self
-    }
-    ///Sets `pWaitDstStageMask`.
-    #[inline]
-    pub fn wait_dst_stage_mask(mut self, value: &'a [vk::PipelineStageFlags]) -> Self {
-        self.raw.wait_semaphore_count = value.len() as _;
-        self.raw.p_wait_dst_stage_mask = value.as_ptr().cast();
-        self
+    pub fn wait_semaphores(
+        mut self,
+        wait_semaphores: &'a HandleSlice<'a, Semaphore>,
+        wait_dst_stage_mask: &'a [vk::PipelineStageFlags],
+    ) -> crate::Result<Self> {
+        let len = wait_semaphores.len();
+        if wait_dst_stage_mask.len() != len {
+            return Err(crate::Error::Validation {
+                vuid: "VUID-VkSubmitInfo-pWaitDstStageMask-parameter",
+                message: format!(
+                    "`pWaitDstStageMask` has {} elements but `pWaitSemaphores` has {}",
+                    wait_dst_stage_mask.len(), len
+                ),
+            });
+        }
+        self.raw.wait_semaphore_count = len as _;
+        self.raw.p_wait_semaphores = wait_semaphores.as_ptr().cast();
+        self.raw.p_wait_dst_stage_mask = wait_dst_stage_mask.as_ptr().cast();
+        Ok(self)
     }
     ///Sets `pCommandBuffers`.
     #[inline]
     pub fn command_buffers(mut self, value: &'a HandleSlice<'a, CommandBuffer>) -> Self {
         self.raw.command_buffer_count = value.len() as _;
-        self.raw.p_command_buffers = value.as_ptr();
+        self.raw.p_command_buffers = value.as_ptr().cast();
         self
     }
     ///Sets `pSignalSemaphores`.
     #[inline]
     pub fn signal_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
         self.raw.signal_semaphore_count = value.len() as _;
-        self.raw.p_signal_semaphores = value.as_ptr();
+        self.raw.p_signal_semaphores = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21045,16 +21087,16 @@ impl<'a> SubmitInfo2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21112,16 +21154,16 @@ impl<'a> SubpassBeginInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21260,16 +21302,16 @@ impl<'a> SubpassDependency2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21380,19 +21422,38 @@ impl<'a> SubpassDescription<'a> {
         self.raw.p_input_attachments = value.as_ptr().cast();
         self
     }
-    ///Sets `pColorAttachments`.
+    ///Sets `pColorAttachments` (and `colorAttachmentCount`). `pResolveAttachments` shares that count: it is cleared when its length differs.
     #[inline]
     pub fn color_attachments(mut self, value: &'a [vk::AttachmentReference]) -> Self {
-        self.raw.color_attachment_count = value.len() as _;
+        let len = value.len();
+        if self.raw.color_attachment_count as usize != len {
+            self.raw.p_resolve_attachments = core::ptr::null();
+        }
+        self.raw.color_attachment_count = len as _;
         self.raw.p_color_attachments = value.as_ptr().cast();
         self
     }
-    ///Sets `pResolveAttachments`.
+    /**Sets `pResolveAttachments`, which must have `colorAttachmentCount` elements, as many as the `pColorAttachments` set before.
+
+# Errors
+
+[`Error::Validation`](crate::Error::Validation) (`VUID-VkSubpassDescription-pResolveAttachments-parameter`) when the length differs.*/
     #[inline]
-    pub fn resolve_attachments(mut self, value: &'a [vk::AttachmentReference]) -> Self {
-        self.raw.color_attachment_count = value.len() as _;
+    pub fn resolve_attachments(
+        mut self,
+        value: &'a [vk::AttachmentReference],
+    ) -> crate::Result<Self> {
+        if value.len() != self.raw.color_attachment_count as usize {
+            return Err(crate::Error::Validation {
+                vuid: "VUID-VkSubpassDescription-pResolveAttachments-parameter",
+                message: format!(
+                    "`pResolveAttachments` has {} elements but `colorAttachmentCount` is {}",
+                    value.len(), self.raw.color_attachment_count
+                ),
+            });
+        }
         self.raw.p_resolve_attachments = value.as_ptr().cast();
-        self
+        Ok(self)
     }
     ///Sets `pDepthStencilAttachment`.
     #[inline]
@@ -21536,19 +21597,38 @@ impl<'a> SubpassDescription2<'a> {
         self.raw.p_input_attachments = value.as_ptr().cast();
         self
     }
-    ///Sets `pColorAttachments`.
+    ///Sets `pColorAttachments` (and `colorAttachmentCount`). `pResolveAttachments` shares that count: it is cleared when its length differs.
     #[inline]
     pub fn color_attachments(mut self, value: &'a [AttachmentReference2<'a>]) -> Self {
-        self.raw.color_attachment_count = value.len() as _;
+        let len = value.len();
+        if self.raw.color_attachment_count as usize != len {
+            self.raw.p_resolve_attachments = core::ptr::null();
+        }
+        self.raw.color_attachment_count = len as _;
         self.raw.p_color_attachments = value.as_ptr().cast();
         self
     }
-    ///Sets `pResolveAttachments`.
+    /**Sets `pResolveAttachments`, which must have `colorAttachmentCount` elements, as many as the `pColorAttachments` set before.
+
+# Errors
+
+[`Error::Validation`](crate::Error::Validation) (`VUID-VkSubpassDescription2-pResolveAttachments-parameter`) when the length differs.*/
     #[inline]
-    pub fn resolve_attachments(mut self, value: &'a [AttachmentReference2<'a>]) -> Self {
-        self.raw.color_attachment_count = value.len() as _;
+    pub fn resolve_attachments(
+        mut self,
+        value: &'a [AttachmentReference2<'a>],
+    ) -> crate::Result<Self> {
+        if value.len() != self.raw.color_attachment_count as usize {
+            return Err(crate::Error::Validation {
+                vuid: "VUID-VkSubpassDescription2-pResolveAttachments-parameter",
+                message: format!(
+                    "`pResolveAttachments` has {} elements but `colorAttachmentCount` is {}",
+                    value.len(), self.raw.color_attachment_count
+                ),
+            });
+        }
         self.raw.p_resolve_attachments = value.as_ptr().cast();
-        self
+        Ok(self)
     }
     ///Sets `pDepthStencilAttachment`.
     #[inline]
@@ -21572,16 +21652,16 @@ impl<'a> SubpassDescription2<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21673,16 +21753,16 @@ impl<'a> SubpassDescriptionDepthStencilResolve<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21712,7 +21792,7 @@ impl<'a> core::ops::Deref for SubpassDescriptionDepthStencilResolve<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SubpassDescription2<'b>>
+unsafe impl<'a> Extends<SubpassDescription2<'a>>
 for SubpassDescriptionDepthStencilResolve<'a> {}
 /**Safe counterpart of [`vk::SubpassEndInfo`].
 
@@ -21738,16 +21818,16 @@ impl<'a> SubpassEndInfo<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21935,16 +22015,16 @@ impl<'a> SwapchainCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -21990,44 +22070,52 @@ impl<'a> TimelineSemaphoreSubmitInfo<'a> {
             _marker: PhantomData,
         }
     }
-    ///Sets `waitSemaphoreValueCount`.
+    ///Sets `waitSemaphoreValueCount`. `pWaitSemaphoreValues` is cleared when its length differs from `value`.
     #[inline]
     pub fn wait_semaphore_value_count(mut self, value: u32) -> Self {
+        if self.raw.wait_semaphore_value_count != value {
+            self.raw.p_wait_semaphore_values = core::ptr::null();
+        }
         self.raw.wait_semaphore_value_count = value;
         self
     }
-    ///Sets `pWaitSemaphoreValues`.
+    ///Sets `pWaitSemaphoreValues` (and `waitSemaphoreValueCount`).
     #[inline]
     pub fn wait_semaphore_values(mut self, value: &'a [u64]) -> Self {
-        self.raw.wait_semaphore_value_count = value.len() as _;
+        let len = value.len();
+        self.raw.wait_semaphore_value_count = len as _;
         self.raw.p_wait_semaphore_values = value.as_ptr().cast();
         self
     }
-    ///Sets `signalSemaphoreValueCount`.
+    ///Sets `signalSemaphoreValueCount`. `pSignalSemaphoreValues` is cleared when its length differs from `value`.
     #[inline]
     pub fn signal_semaphore_value_count(mut self, value: u32) -> Self {
+        if self.raw.signal_semaphore_value_count != value {
+            self.raw.p_signal_semaphore_values = core::ptr::null();
+        }
         self.raw.signal_semaphore_value_count = value;
         self
     }
-    ///Sets `pSignalSemaphoreValues`.
+    ///Sets `pSignalSemaphoreValues` (and `signalSemaphoreValueCount`).
     #[inline]
     pub fn signal_semaphore_values(mut self, value: &'a [u64]) -> Self {
-        self.raw.signal_semaphore_value_count = value.len() as _;
+        let len = value.len();
+        self.raw.signal_semaphore_value_count = len as _;
         self.raw.p_signal_semaphore_values = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -22055,8 +22143,8 @@ impl<'a> core::ops::Deref for TimelineSemaphoreSubmitInfo<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<SubmitInfo<'b>> for TimelineSemaphoreSubmitInfo<'a> {}
-unsafe impl<'a, 'b> Extends<BindSparseInfo<'b>> for TimelineSemaphoreSubmitInfo<'a> {}
+unsafe impl<'a> Extends<SubmitInfo<'a>> for TimelineSemaphoreSubmitInfo<'a> {}
+unsafe impl<'a> Extends<BindSparseInfo<'a>> for TimelineSemaphoreSubmitInfo<'a> {}
 /**Safe counterpart of [`vk::WaylandSurfaceCreateInfoKHR`].
 
 # Valid usage
@@ -22111,16 +22199,16 @@ impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -22204,16 +22292,16 @@ impl<'a> Win32SurfaceCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -22338,39 +22426,54 @@ impl<'a> WriteDescriptorSet<'a> {
         self.raw.descriptor_type = value;
         self
     }
-    ///Sets `pImageInfo`.
+    ///Sets `pImageInfo` (and `descriptorCount`). `pBufferInfo`, `pTexelBufferView` share that count: each is cleared when its length differs.
     #[inline]
     pub fn image_info(mut self, value: &'a [DescriptorImageInfo<'a>]) -> Self {
-        self.raw.descriptor_count = value.len() as _;
+        let len = value.len();
+        if self.raw.descriptor_count as usize != len {
+            self.raw.p_buffer_info = core::ptr::null();
+            self.raw.p_texel_buffer_view = core::ptr::null();
+        }
+        self.raw.descriptor_count = len as _;
         self.raw.p_image_info = value.as_ptr().cast();
         self
     }
-    ///Sets `pBufferInfo`.
+    ///Sets `pBufferInfo` (and `descriptorCount`). `pImageInfo`, `pTexelBufferView` share that count: each is cleared when its length differs.
     #[inline]
     pub fn buffer_info(mut self, value: &'a [DescriptorBufferInfo<'a>]) -> Self {
-        self.raw.descriptor_count = value.len() as _;
+        let len = value.len();
+        if self.raw.descriptor_count as usize != len {
+            self.raw.p_image_info = core::ptr::null();
+            self.raw.p_texel_buffer_view = core::ptr::null();
+        }
+        self.raw.descriptor_count = len as _;
         self.raw.p_buffer_info = value.as_ptr().cast();
         self
     }
-    ///Sets `pTexelBufferView`.
+    ///Sets `pTexelBufferView` (and `descriptorCount`). `pImageInfo`, `pBufferInfo` share that count: each is cleared when its length differs.
     #[inline]
     pub fn texel_buffer_view(mut self, value: &'a HandleSlice<'a, BufferView>) -> Self {
-        self.raw.descriptor_count = value.len() as _;
-        self.raw.p_texel_buffer_view = value.as_ptr();
+        let len = value.len();
+        if self.raw.descriptor_count as usize != len {
+            self.raw.p_image_info = core::ptr::null();
+            self.raw.p_buffer_info = core::ptr::null();
+        }
+        self.raw.descriptor_count = len as _;
+        self.raw.p_texel_buffer_view = value.as_ptr().cast();
         self
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -22425,16 +22528,16 @@ impl<'a> WriteDescriptorSetInlineUniformBlock<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -22464,7 +22567,7 @@ impl<'a> core::ops::Deref for WriteDescriptorSetInlineUniformBlock<'a> {
         &self.raw
     }
 }
-unsafe impl<'a, 'b> Extends<WriteDescriptorSet<'b>>
+unsafe impl<'a> Extends<WriteDescriptorSet<'a>>
 for WriteDescriptorSetInlineUniformBlock<'a> {}
 /**Safe counterpart of [`vk::XcbSurfaceCreateInfoKHR`].
 
@@ -22520,16 +22623,16 @@ impl<'a> XcbSurfaceCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }
@@ -22613,16 +22716,16 @@ impl<'a> XlibSurfaceCreateInfoKHR<'a> {
     }
     /// Pushes a struct that extends this one onto its `pNext` chain; only
     /// structs that the registry says extend this one are accepted.
+    ///
+    /// `next` becomes one node of this chain: whatever `next` chained before is
+    /// no longer on it, and `next` stays borrowed, for as long as this struct's
+    /// own borrows, so it cannot be used again with this chain's pointer in it.
     #[inline]
     pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
         unsafe {
-            let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            let mut last = next;
-            while !(*last).p_next.is_null() {
-                last = (*last).p_next;
-            }
-            (*last).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = next as _;
+            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+            (*node).p_next = self.raw.p_next as *mut _;
+            self.raw.p_next = node as _;
         }
         self
     }

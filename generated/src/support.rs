@@ -111,11 +111,12 @@ impl Entry {
 /// handles. Borrowing the wrappers keeps them alive while the struct is used.
 ///
 /// ```no_run
-/// # fn f(a: &tuff::Semaphore, b: &tuff::Semaphore) {
+/// # fn f(a: &tuff::Semaphore, b: &tuff::Semaphore) -> tuff::Result<()> {
 /// let waits = tuff::HandleSlice::new(&[a, b]);
-/// let submit = tuff::SubmitInfo::new().wait_semaphores(&waits);
+/// let stages = [ash::vk::PipelineStageFlags::TRANSFER; 2];
+/// let submit = tuff::SubmitInfo::new().wait_semaphores(&waits, &stages)?;
 /// # let _ = submit;
-/// # }
+/// # Ok(()) }
 /// ```
 pub struct HandleSlice<'a, T: Handle> {
     raw: smallvec::SmallVec<[T::Raw; 4]>,

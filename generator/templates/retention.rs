@@ -197,14 +197,62 @@ impl Live {
         }
     }
 
+    /// Refuses a write whose type selects an array that was not set: the driver
+    /// reads `descriptorCount` elements of that array.
+    pub(crate) fn check_writes(writes: &[vk::WriteDescriptorSet<'_>]) -> crate::Result<()> {
+        use vk::DescriptorType as T;
+        for (i, w) in writes.iter().enumerate() {
+            if w.descriptor_count == 0 {
+                continue;
+            }
+            let (missing, vuid, array) = match w.descriptor_type {
+                T::SAMPLER | T::COMBINED_IMAGE_SAMPLER => (
+                    w.p_image_info.is_null(),
+                    "VUID-VkWriteDescriptorSet-descriptorType-00325",
+                    "pImageInfo",
+                ),
+                T::SAMPLED_IMAGE | T::STORAGE_IMAGE => (
+                    w.p_image_info.is_null(),
+                    "VUID-VkWriteDescriptorSet-descriptorType-02996",
+                    "pImageInfo",
+                ),
+                T::INPUT_ATTACHMENT => (
+                    w.p_image_info.is_null(),
+                    "VUID-VkWriteDescriptorSet-descriptorType-07683",
+                    "pImageInfo",
+                ),
+                T::UNIFORM_BUFFER | T::STORAGE_BUFFER | T::UNIFORM_BUFFER_DYNAMIC | T::STORAGE_BUFFER_DYNAMIC => (
+                    w.p_buffer_info.is_null(),
+                    "VUID-VkWriteDescriptorSet-descriptorType-00324",
+                    "pBufferInfo",
+                ),
+                T::UNIFORM_TEXEL_BUFFER | T::STORAGE_TEXEL_BUFFER => (
+                    w.p_texel_buffer_view.is_null(),
+                    "VUID-VkWriteDescriptorSet-descriptorType-02994",
+                    "pTexelBufferView",
+                ),
+                _ => (false, "", ""),
+            };
+            if missing {
+                return Err(crate::Error::Validation {
+                    vuid,
+                    message: format!(
+                        "write {i} is of type {:?} but its `{array}` is not set",
+                        w.descriptor_type
+                    ),
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// Keeps what `writes` put into their sets, and copies what `copies` copy.
     ///
     /// # Safety
     ///
     /// The array each write's type selects holds `descriptorCount` elements or is
-    /// null. The safe setters store each array with its length but do not tie the
-    /// type to the array: a mismatch breaks VUID-VkWriteDescriptorSet-descriptorType-00324
-    /// to -00330, which are the caller's, and the driver then reads the same memory.
+    /// null: the safe setters keep every array that is set as long as the count, and
+    /// [`Live::check_writes`] refuses a write whose array is not set.
     pub(crate) unsafe fn write_sets(
         &self,
         writes: &[vk::WriteDescriptorSet<'_>],

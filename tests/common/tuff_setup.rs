@@ -69,7 +69,7 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
         .expect("cannot create an instance (is VK_LAYER_KHRONOS_validation installed?)");
     let messenger = validation.then(|| {
         instance
-            .create_debug_utils_messenger_ext(&messenger_info)
+            .create_debug_utils_messenger_ext(&messages.messenger_info())
             .expect("debug messenger")
     });
     let physicals = instance

@@ -204,6 +204,15 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
             },
             vec!["VUID-vkResetFences-pFences-01123"],
         )),
+        "vkUpdateDescriptorSets" => Some((
+            quote! {
+                // SAFETY: the safe struct is transparent over ash's.
+                crate::retention::Live::check_writes(unsafe {
+                    core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len())
+                })?;
+            },
+            vec!["VUID-VkWriteDescriptorSet-descriptorType-00324"],
+        )),
         _ => None,
     }
 }
@@ -909,10 +918,9 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             }
         }),
         "vkUpdateDescriptorSets" => post.push(quote! {
-            // SAFETY: the safe structs are transparent over ash's and their setters
-            // store each array with its length; that the type matches the array set
-            // is the caller's rule (VUID-VkWriteDescriptorSet-descriptorType-00324 and
-            // after), which the driver relies on too.
+            // SAFETY: the safe structs are transparent over ash's, their setters keep
+            // every array that is set as long as the count, and `check_writes` refused
+            // a write whose type selects an array that is not set.
             unsafe {
                 self.live().write_sets(
                     core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len()),

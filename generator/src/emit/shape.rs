@@ -250,3 +250,99 @@ pub fn is_c_scalar(name: &str) -> bool {
             | "char"
     )
 }
+
+/// The arrays of a struct that share one count member, and how their setters keep
+/// the count equal to the length of every array that is set.
+///
+/// A count read by several arrays is where a builder goes wrong: a setter per array
+/// that each writes the count lets the last one win, and Vulkan then reads past the
+/// shorter array. The roles below make a disagreeing struct unbuildable.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CountGroup {
+    /// The member that holds the length.
+    pub count: String,
+    /// Required arrays: set together by one setter, named after the first, that
+    /// refuses slices of different lengths.
+    pub leads: Vec<String>,
+    /// Optional arrays beside leads: their setter refuses a length other than the
+    /// count the leads set, and a lead setter of another length clears them.
+    pub followers: Vec<String>,
+    /// Arrays of which Vulkan reads at most one, or that are all optional with no
+    /// lead: each setter writes the count and clears the others of another length.
+    pub alternatives: Vec<String>,
+    /// The count has its own setter too (it means something without any array);
+    /// that setter clears the arrays of another length.
+    pub count_setter: bool,
+}
+
+impl CountGroup {
+    /// Whether a member is one of this group's arrays.
+    pub fn holds(&self, member: &str) -> bool {
+        self.leads
+            .iter()
+            .chain(&self.followers)
+            .chain(&self.alternatives)
+            .any(|m| m == member)
+    }
+
+    /// The group's arrays other than `member`.
+    pub fn others<'s>(&'s self, member: &'s str) -> impl Iterator<Item = &'s String> + 's {
+        self.leads
+            .iter()
+            .chain(&self.followers)
+            .chain(&self.alternatives)
+            .filter(move |m| *m != member)
+    }
+}
+
+/// The count groups of a struct whose count more than one setter writes.
+pub fn count_groups(members: &[(Field, Member)]) -> Vec<CountGroup> {
+    let mut groups: Vec<CountGroup> = Vec::new();
+    for (m, shape) in members {
+        let count = match shape {
+            Member::HandleSlice { count }
+            | Member::Slice { count, .. }
+            | Member::Bytes { count }
+            | Member::CStrSlice { count } => count,
+            _ => continue,
+        };
+        let i = match groups.iter().position(|g| &g.count == count) {
+            Some(i) => i,
+            None => {
+                let count_setter = members
+                    .iter()
+                    .any(|(f, s)| &f.name == count && *s == Member::Value);
+                groups.push(CountGroup {
+                    count: count.clone(),
+                    leads: Vec::new(),
+                    followers: Vec::new(),
+                    alternatives: Vec::new(),
+                    count_setter,
+                });
+                groups.len() - 1
+            }
+        };
+        let optional = crate::model::attrs::parse_optional(m.optional.as_deref())
+            .first()
+            .copied()
+            .unwrap_or(false);
+        let g = &mut groups[i];
+        if optional || m.noautovalidity {
+            g.alternatives.push(m.name.clone());
+        } else {
+            g.leads.push(m.name.clone());
+        }
+    }
+    for g in &mut groups {
+        // Beside leads, an optional array follows the count they set; noautovalidity
+        // arrays are read by condition (`descriptorType` picks one), so they stay
+        // alternatives only where no lead exists.
+        if !g.leads.is_empty() {
+            g.followers = std::mem::take(&mut g.alternatives);
+        }
+    }
+    groups.retain(|g| {
+        g.leads.len() + g.followers.len() + g.alternatives.len() + usize::from(g.count_setter) > 1
+    });
+    groups
+}

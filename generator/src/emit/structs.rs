@@ -5,9 +5,10 @@
 //! are typed: `push_next` accepts only structs that `structextends` the head.
 
 use super::names::{cfg_of, field_ident, type_ident};
-use super::shape::{struct_members, Member};
+use super::shape::{count_groups, struct_members, CountGroup, Member};
 use super::types::{array_size, ash_type, TypeFacts};
 use super::{doc_rules, Context};
+use crate::registry::Field;
 use proc_macro2::TokenStream;
 use quote::quote;
 
@@ -54,6 +55,12 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
     };
     let cfg = cfg_of(model, model.condition(name));
     let members = struct_members(model, facts, name);
+    let groups = count_groups(&members);
+    let array_tys: Vec<(String, TokenStream)> = members
+        .iter()
+        .filter_map(|(m, shape)| array_param(cx, m, shape))
+        .map(|a| (a.member, a.ty))
+        .collect();
     let mut ctor_args = Vec::new();
     let mut ctor_sets = Vec::new();
     let mut setters = Vec::new();
@@ -66,9 +73,20 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
         if returned_only && !matches!(shape, Member::PNext) {
             continue;
         }
+        if let Some(array) = array_param(cx, m, shape) {
+            setters.extend(array_setter(name, m, &array, &groups, &array_tys));
+            continue;
+        }
         match shape {
             Member::SType | Member::Count | Member::Unsupported(_) => {}
+            Member::HandleSlice { .. }
+            | Member::Slice { .. }
+            | Member::Bytes { .. }
+            | Member::CStrSlice { .. } => unreachable!("arrays are set above"),
             Member::PNext => {}
+            Member::Value if groups.iter().any(|g| g.count == m.name) => {
+                setters.push(count_setter(m, ty.unwrap_or_else(|| quote!(u32)), &groups));
+            }
             Member::Value => {
                 let ty = ty.unwrap_or_else(|| quote!(()));
                 setters.push(quote! {
@@ -116,19 +134,6 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
                     });
                 }
             }
-            Member::HandleSlice { count } => {
-                let w = type_ident(&m.type_name);
-                let c = field_ident(count);
-                setters.push(quote! {
-                    #[doc = #doc]
-                    #[inline]
-                    pub fn #setter(mut self, value: &'a HandleSlice<'a, #w>) -> Self {
-                        self.raw.#c = value.len() as _;
-                        self.raw.#f = value.as_ptr();
-                        self
-                    }
-                });
-            }
             Member::Nested => {
                 let target = safe_or_ash(cx, &m.type_name);
                 ctor_args.push(quote!(#setter: #target));
@@ -167,35 +172,6 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
                     });
                 }
             }
-            Member::Slice { count, safe } => {
-                let c = field_ident(count);
-                let elem = if *safe {
-                    safe_or_ash(cx, &m.type_name)
-                } else {
-                    ty.unwrap_or_else(|| quote!(()))
-                };
-                setters.push(quote! {
-                    #[doc = #doc]
-                    #[inline]
-                    pub fn #setter(mut self, value: &'a [#elem]) -> Self {
-                        self.raw.#c = value.len() as _;
-                        self.raw.#f = value.as_ptr().cast();
-                        self
-                    }
-                });
-            }
-            Member::Bytes { count } => {
-                let c = field_ident(count);
-                setters.push(quote! {
-                    #[doc = #doc]
-                    #[inline]
-                    pub fn #setter(mut self, value: &'a [u8]) -> Self {
-                        self.raw.#c = value.len() as _;
-                        self.raw.#f = value.as_ptr().cast();
-                        self
-                    }
-                });
-            }
             Member::Code { count } => {
                 let c = field_ident(count);
                 setters.push(quote! {
@@ -230,18 +206,6 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
                         }
                     });
                 }
-            }
-            Member::CStrSlice { count } => {
-                let c = field_ident(count);
-                setters.push(quote! {
-                    #[doc = #doc]
-                    #[inline]
-                    pub fn #setter(mut self, value: &'a [CStrPtr<'a>]) -> Self {
-                        self.raw.#c = value.len() as _;
-                        self.raw.#f = value.as_ptr().cast();
-                        self
-                    }
-                });
             }
             Member::UserData => {
                 setters.push(quote! {
@@ -295,19 +259,21 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
         quote! {
             /// Pushes a struct that extends this one onto its `pNext` chain; only
             /// structs that the registry says extend this one are accepted.
+            ///
+            /// `next` becomes one node of this chain: whatever `next` chained before is
+            /// no longer on it, and `next` stays borrowed, for as long as this struct's
+            /// own borrows, so it cannot be used again with this chain's pointer in it.
             #[inline]
             pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
                 // SAFETY: `Extends` is implemented only for structs that begin with
                 // `sType` and `pNext` (the VkBaseOutStructure layout), as this one
-                // does; `next` and its chain are borrowed for `'a`, as long as `self`.
+                // does, and only for `T` of this struct's lifetime; `next` is
+                // borrowed for that lifetime, so the chain it now points into
+                // outlives every use of it.
                 unsafe {
-                    let next = next as *mut T as *mut vk::BaseOutStructure<'a>;
-                    let mut last = next;
-                    while !(*last).p_next.is_null() {
-                        last = (*last).p_next;
-                    }
-                    (*last).p_next = self.raw.p_next as *mut _;
-                    self.raw.p_next = next as _;
+                    let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
+                    (*node).p_next = self.raw.p_next as *mut _;
+                    self.raw.p_next = node as _;
                 }
                 self
             }
@@ -363,7 +329,9 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
                 #cfg
                 #head_cfg
                 // SAFETY: the registry lists this struct in the head's `structextends`.
-                unsafe impl<'a, 'b> Extends<#h<'b>> for #id<'a> {}
+                // One lifetime for both: a pushed struct holds the head's chain, so it
+                // must not outlive what the head borrows.
+                unsafe impl<'a> Extends<#h<'a>> for #id<'a> {}
             }
         })
         .collect();
@@ -415,5 +383,242 @@ pub fn safe_or_ash(cx: &Context, name: &str) -> TokenStream {
         quote!(vk::#id<'a>)
     } else {
         quote!(vk::#id)
+    }
+}
+
+/// How an array member is taken and lowered: the setter's parameter type, and the
+/// pointer and length of `value`.
+struct ArrayParam {
+    member: String,
+    count: String,
+    ty: TokenStream,
+}
+
+fn array_param(cx: &Context, m: &Field, shape: &Member) -> Option<ArrayParam> {
+    let (count, ty) = match shape {
+        Member::HandleSlice { count } => {
+            let w = type_ident(&m.type_name);
+            (count, quote!(&'a HandleSlice<'a, #w>))
+        }
+        Member::Slice { count, safe } => {
+            let elem = if *safe {
+                safe_or_ash(cx, &m.type_name)
+            } else {
+                ash_type(cx.model, &cx.facts, &m.type_name).unwrap_or_else(|| quote!(()))
+            };
+            (count, quote!(&'a [#elem]))
+        }
+        Member::Bytes { count } => (count, quote!(&'a [u8])),
+        Member::CStrSlice { count } => (count, quote!(&'a [CStrPtr<'a>])),
+        _ => return None,
+    };
+    Some(ArrayParam {
+        member: m.name.clone(),
+        count: count.clone(),
+        ty,
+    })
+}
+
+/// Statements that null the listed array members when the count is about to change
+/// to `len`, so that no array is left shorter than the count.
+fn clear_unless_len<'a>(
+    others: impl Iterator<Item = &'a String>,
+    count: &proc_macro2::Ident,
+) -> TokenStream {
+    let fields: Vec<_> = others.map(|o| field_ident(o)).collect();
+    if fields.is_empty() {
+        return quote!();
+    }
+    quote! {
+        if self.raw.#count as usize != len {
+            #(self.raw.#fields = core::ptr::null();)*
+        }
+    }
+}
+
+fn array_setter(
+    struct_name: &str,
+    m: &Field,
+    array: &ArrayParam,
+    groups: &[CountGroup],
+    array_tys: &[(String, TokenStream)],
+) -> Option<TokenStream> {
+    let f = field_ident(&m.name);
+    let setter = field_ident(&super::names::param(&m.name));
+    let c = field_ident(&array.count);
+    let ty = &array.ty;
+    let Some(g) = groups.iter().find(|g| g.holds(&m.name)) else {
+        let doc = format!("Sets `{}`.", m.name);
+        return Some(quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #setter(mut self, value: #ty) -> Self {
+                self.raw.#c = value.len() as _;
+                self.raw.#f = value.as_ptr().cast();
+                self
+            }
+        });
+    };
+    if g.leads.len() > 1 {
+        // The first lead sets them all; the others have no setter of their own.
+        if g.leads[0] != m.name {
+            return None;
+        }
+        return Some(lead_setter(struct_name, g, m, array_tys));
+    }
+    if g.followers.contains(&m.name) {
+        let vuid = format!("VUID-{struct_name}-{}-parameter", m.name);
+        let doc = format!(
+            "Sets `{}`, which must have `{}` elements, as many as the {} set before.\n\n\
+             # Errors\n\n[`Error::Validation`](crate::Error::Validation) (`{vuid}`) when \
+             the length differs.",
+            m.name,
+            array.count,
+            g.leads
+                .iter()
+                .map(|l| format!("`{l}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        let what = format!(
+            "`{}` has {{}} elements but `{}` is {{}}",
+            m.name, array.count
+        );
+        return Some(quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #setter(mut self, value: #ty) -> crate::Result<Self> {
+                if value.len() != self.raw.#c as usize {
+                    return Err(crate::Error::Validation {
+                        vuid: #vuid,
+                        message: format!(#what, value.len(), self.raw.#c),
+                    });
+                }
+                self.raw.#f = value.as_ptr().cast();
+                Ok(self)
+            }
+        });
+    }
+    // A single lead, or an alternative: this setter decides the count.
+    let clear = clear_unless_len(g.others(&m.name), &c);
+    let others: Vec<String> = g.others(&m.name).map(|o| format!("`{o}`")).collect();
+    let doc = if others.is_empty() {
+        format!("Sets `{}` (and `{}`).", m.name, array.count)
+    } else {
+        format!(
+            "Sets `{}` (and `{}`). {} share{} that count: {} cleared when its length differs.",
+            m.name,
+            array.count,
+            others.join(", "),
+            if others.len() == 1 { "s" } else { "" },
+            if others.len() == 1 {
+                "it is"
+            } else {
+                "each is"
+            },
+        )
+    };
+    Some(quote! {
+        #[doc = #doc]
+        #[inline]
+        pub fn #setter(mut self, value: #ty) -> Self {
+            let len = value.len();
+            #clear
+            self.raw.#c = len as _;
+            self.raw.#f = value.as_ptr().cast();
+            self
+        }
+    })
+}
+
+/// One setter for every required array of a count: lengths that disagree are
+/// refused before the struct holds them.
+fn lead_setter(
+    struct_name: &str,
+    g: &CountGroup,
+    first: &Field,
+    array_tys: &[(String, TokenStream)],
+) -> TokenStream {
+    let param_tys: Vec<&TokenStream> = g
+        .leads
+        .iter()
+        .map(|l| {
+            &array_tys
+                .iter()
+                .find(|(n, _)| n == l)
+                .expect("every lead is an array")
+                .1
+        })
+        .collect();
+    let setter = field_ident(&super::names::param(&first.name));
+    let c = field_ident(&g.count);
+    let params: Vec<_> = g
+        .leads
+        .iter()
+        .map(|l| field_ident(&super::names::param(l)))
+        .collect();
+    let fields: Vec<_> = g.leads.iter().map(|l| field_ident(l)).collect();
+    let first_param = &params[0];
+    let checks = g.leads.iter().zip(&params).skip(1).map(|(l, p)| {
+        let vuid = format!("VUID-{struct_name}-{l}-parameter");
+        let what = format!("`{}` has {{}} elements but `{}` has {{}}", l, g.leads[0]);
+        quote! {
+            if #p.len() != len {
+                return Err(crate::Error::Validation {
+                    vuid: #vuid,
+                    message: format!(#what, #p.len(), len),
+                });
+            }
+        }
+    });
+    let clear = clear_unless_len(g.followers.iter().chain(&g.alternatives), &c);
+    let names: Vec<String> = g.leads.iter().map(|l| format!("`{l}`")).collect();
+    let doc = format!(
+        "Sets {} (and `{}`): one element of each per entry.\n\n# Errors\n\n\
+         [`Error::Validation`](crate::Error::Validation) when the slices' lengths differ.",
+        names.join(", "),
+        g.count
+    );
+    quote! {
+        #[doc = #doc]
+        #[inline]
+        pub fn #setter(mut self, #(#params: #param_tys),*) -> crate::Result<Self> {
+            let len = #first_param.len();
+            #(#checks)*
+            #clear
+            self.raw.#c = len as _;
+            #(self.raw.#fields = #params.as_ptr().cast();)*
+            Ok(self)
+        }
+    }
+}
+
+/// The setter of a count that also means something alone: it clears the arrays that
+/// share it whose length differs.
+fn count_setter(m: &Field, ty: TokenStream, groups: &[CountGroup]) -> TokenStream {
+    let g = groups
+        .iter()
+        .find(|g| g.count == m.name)
+        .expect("a group of this count");
+    let f = field_ident(&m.name);
+    let setter = field_ident(&super::names::param(&m.name));
+    let arrays: Vec<_> = g.others("").map(|o| field_ident(o)).collect();
+    let names: Vec<String> = g.others("").map(|o| format!("`{o}`")).collect();
+    let doc = format!(
+        "Sets `{}`. {} {} cleared when its length differs from `value`.",
+        m.name,
+        names.join(", "),
+        if names.len() == 1 { "is" } else { "are each" },
+    );
+    quote! {
+        #[doc = #doc]
+        #[inline]
+        pub fn #setter(mut self, value: #ty) -> Self {
+            if self.raw.#f != value {
+                #(self.raw.#arrays = core::ptr::null();)*
+            }
+            self.raw.#f = value;
+            self
+        }
     }
 }
