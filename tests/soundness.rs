@@ -452,6 +452,226 @@ fn a_buffer_of_a_pool_without_reset_is_recorded_once() {
     assert_silent(&s.messages);
 }
 
+#[test]
+fn reset_of_a_buffer_of_a_pool_without_reset_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let pool = s
+        .device
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
+    let mut cb = s
+        .device
+        .allocate_command_buffers(
+            &pool,
+            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
+        )
+        .expect("command buffer")
+        .pop()
+        .expect("one");
+    assert_eq!(
+        vuid(cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())),
+        "VUID-vkResetCommandBuffer-commandBuffer-00046"
+    );
+    assert_silent(&s.messages);
+    // SAFETY: none; the buffer is in the initial state, so the driver's reset is
+    // harmless, and the layer reports the pool's missing flag.
+    unsafe { cb.reset_command_buffer_unchecked(vk::CommandBufferResetFlags::empty()) }
+        .expect("reset");
+    assert_layer_reports(&s, "VUID-vkResetCommandBuffer-commandBuffer-00046");
+}
+
+// Class B: a reset of a pool, or of a buffer, never leaves a wrapper naming an object
+// in a state its type does not allow.
+
+#[test]
+fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let gate = event(&s);
+    let done = fence(&s);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let none = vk::CommandPoolResetFlags::empty();
+
+    // A live recorder: the reset would pull its buffer out of the recording state.
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+    assert_eq!(
+        vuid(s.device.reset_command_pool(&pool, none)),
+        "VUID-vkEndCommandBuffer-commandBuffer-00059"
+    );
+    rec.end().expect("end");
+    s.device
+        .reset_command_pool(&pool, none)
+        .expect("reset once the recorder is gone");
+    assert!(
+        !cb.is_executable(),
+        "a pool reset returns its buffers to the initial state"
+    );
+    assert_eq!(
+        vuid(submit(&s, &[&cb], &done)),
+        "VUID-vkQueueSubmit-pCommandBuffers-00070"
+    );
+
+    // A pending buffer: neither its pool nor the buffer itself is reset.
+    record_gated_fill(
+        &mut cb,
+        vk::CommandBufferUsageFlags::empty(),
+        &gate,
+        &buffer,
+    );
+    submit(&s, &[&cb], &done).expect("submit");
+    assert_eq!(
+        vuid(s.device.reset_command_pool(&pool, none)),
+        "VUID-vkResetCommandPool-commandPool-00040"
+    );
+    assert_eq!(
+        vuid(cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())),
+        "VUID-vkResetCommandBuffer-commandBuffer-00045"
+    );
+    s.device.set_event(&gate).expect("set");
+    wait(&s, &done);
+    cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())
+        .expect("reset once complete");
+    s.device
+        .reset_command_pool(&pool, none)
+        .expect("pool reset once complete");
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn a_descriptor_pool_is_not_reset_while_its_sets_are_alive() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let set = uniform_set(&s);
+    let UniformSet {
+        set,
+        _pool: pool,
+        _layout: layout,
+    } = set;
+    assert_eq!(
+        vuid(
+            s.device
+                .reset_descriptor_pool(&pool, vk::DescriptorPoolResetFlags::empty())
+        ),
+        "VUID-vkResetDescriptorPool-descriptorPool-00313"
+    );
+    drop(set);
+    s.device
+        .reset_descriptor_pool(&pool, vk::DescriptorPoolResetFlags::empty())
+        .expect("reset once no set is left");
+    // The pool gives sets again after its reset.
+    let layouts = tuff::HandleSlice::new(&[&layout]);
+    let again = s
+        .device
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )
+        .expect("allocate after reset");
+    assert_eq!(again.len(), 1);
+    assert_silent(&s.messages);
+}
+
+// Class C: the recorder's type state is the command buffer's.
+
+#[test]
+fn recorder_states_follow_the_begin_info() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(16, vk::ImageUsageFlags::empty());
+    let (_spool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+    let continue_flags = vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE;
+
+    // A secondary needs inheritance info.
+    assert_eq!(
+        vuid(secondary.begin(&tuff::CommandBufferBeginInfo::new())),
+        "VUID-vkBeginCommandBuffer-commandBuffer-00051"
+    );
+    // One that continues a render pass instance is not recorded as outside one.
+    let inheritance = tuff::CommandBufferInheritanceInfo::new()
+        .render_pass(Some(&target.render_pass))
+        .framebuffer(Some(&target.framebuffer));
+    let info = tuff::CommandBufferBeginInfo::new()
+        .flags(continue_flags)
+        .inheritance_info(Some(&inheritance));
+    assert!(matches!(
+        secondary.begin(&info),
+        Err(tuff::Error::Misuse(_))
+    ));
+    // Nor begun to continue an instance it cannot name.
+    let nameless = tuff::CommandBufferInheritanceInfo::new();
+    assert_eq!(
+        vuid(
+            secondary.begin_continuing(
+                &tuff::CommandBufferBeginInfo::new()
+                    .flags(continue_flags)
+                    .inheritance_info(Some(&nameless))
+            )
+        ),
+        "VUID-VkCommandBufferBeginInfo-flags-06002"
+    );
+    let (_ppool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    assert!(matches!(
+        primary.begin_continuing(&info),
+        Err(tuff::Error::Misuse(_))
+    ));
+
+    let rec = secondary.begin_continuing(&info).expect("begin continuing");
+    rec.end().expect("end continuing");
+    let rec = primary
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin primary");
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 16,
+                height: 16,
+            },
+        })
+        .clear_values(&clear);
+    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
+    rec.cmd_execute_commands(&[&secondary]);
+    rec.cmd_end_render_pass().end().expect("end primary");
+    let done = fence(&s);
+    submit(&s, &[&primary], &done).expect("submit");
+    wait(&s, &done);
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let done = fence(&s);
+    {
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+        drop(rec);
+    }
+    assert_eq!(
+        vuid(submit(&s, &[&cb], &done)),
+        "VUID-vkQueueSubmit-pCommandBuffers-00070"
+    );
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin after an abandoned recording");
+    rec.cmd_fill_buffer(&buffer, 0, 256, 2);
+    rec.end().expect("end");
+    submit(&s, &[&cb], &done).expect("submit");
+    wait(&s, &done);
+    assert_silent(&s.messages);
+}
+
 // Class D: a count shared by several arrays. Every setter either refuses a length
 // that disagrees with the arrays already set, or clears those arrays, so that no
 // array a struct points at is shorter than its count.

@@ -260,6 +260,7 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
                 .collect();
             for cb in &cbs {
                 self.register_command_buffer(cb);
+                command_pool.adopt(cb.uses());
             }
             cbs
         })
@@ -332,12 +333,15 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(
-            out
+        Ok({
+            let sets: Vec<DescriptorSet> = out
                 .into_iter()
                 .map(|raw| DescriptorSet::from_raw(raw, descriptor_pool, None, true))
-                .collect(),
-        )
+                .collect();
+            sets.into_iter()
+                .map(|set| set.with_token(descriptor_pool.set_token()))
+                .collect()
+        })
     }
 }
 impl Device {
@@ -15932,13 +15936,13 @@ impl Queue {
         Ok(())
     }
 }
-impl<'c, S: State> Recorder<'c, S> {
+impl CommandBuffer {
     /**`vkResetCommandBuffer`
 
 # Valid usage
 
 - `VUID-vkResetCommandBuffer-commandBuffer-00045`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkResetCommandBuffer-commandBuffer-00046`: user (explicit rule; the wrappers do not check it)
+- `VUID-vkResetCommandBuffer-commandBuffer-00046`: dynamic (refuses a buffer whose pool was created without RESET_COMMAND_BUFFER)
 - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
     #[inline]
@@ -15960,13 +15964,14 @@ impl<'c, S: State> Recorder<'c, S> {
             })();
             r?;
         }
+        self.uses().check_reset(self.device(), self.parent().resets_buffers())?;
         unsafe { self.reset_command_buffer_unchecked(flags) }
     }
     /**`vkResetCommandBuffer` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_command_buffer`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_command_buffer`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, `VUID-vkResetCommandBuffer-commandBuffer-00045`, `VUID-vkResetCommandBuffer-commandBuffer-00046`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn reset_command_buffer_unchecked(
         &mut self,
@@ -15978,6 +15983,8 @@ The caller upholds the rules that [`Self::reset_command_buffer`] checks at run t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        self.uses().reset();
+        self.keep_alive(Vec::new());
         Ok(())
     }
 }
@@ -16019,13 +16026,14 @@ impl Device {
             })();
             r?;
         }
+        crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
         unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
     }
     /**`vkResetCommandPool` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn reset_command_pool_unchecked(
         &self,
@@ -16040,6 +16048,9 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
+        }
+        for u in command_pool.buffer_uses() {
+            u.reset();
         }
         Ok(())
     }
@@ -16085,13 +16096,20 @@ impl Device {
             })();
             r?;
         }
+        if descriptor_pool.has_sets() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
+                message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset"
+                    .into(),
+            });
+        }
         unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
     }
     /**`vkResetDescriptorPool` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn reset_descriptor_pool_unchecked(
         &self,

@@ -326,6 +326,7 @@ struct CommandPoolInner {
     #[cfg(feature = "runtime_implicit_validations")]
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,
+    buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -346,6 +347,7 @@ impl CommandPool {
                 #[cfg(feature = "runtime_implicit_validations")]
                 queue_flags: std::sync::OnceLock::new(),
                 create_flags: std::sync::OnceLock::new(),
+                buffers: Vutex::new(Vec::new()),
                 keep,
                 destroy,
             }),
@@ -373,6 +375,17 @@ impl CommandPool {
     pub(crate) fn with_create_flags(self, flags: vk::CommandPoolCreateFlags) -> Self {
         let _ = self.inner.create_flags.set(flags);
         self
+    }
+    /// Lists a buffer allocated from the pool, whose state a reset of
+    /// the pool changes.
+    pub(crate) fn adopt(&self, uses: &Vrc<crate::submission::Uses>) {
+        let mut buffers = self.inner.buffers.lock();
+        buffers.retain(|w| w.strong_count() > 0);
+        buffers.push(Vrc::downgrade(uses));
+    }
+    /// The lifecycle states of the pool's live buffers.
+    pub(crate) fn buffer_uses(&self) -> Vec<Vrc<crate::submission::Uses>> {
+        self.inner.buffers.lock().iter().filter_map(|w| w.upgrade()).collect()
     }
     /// Whether `begin` may reset a buffer of this pool implicitly
     /// (`RESET_COMMAND_BUFFER`).
@@ -536,6 +549,7 @@ struct DescriptorPoolInner {
     raw: vk::DescriptorPool,
     parent: Device,
     flags: std::sync::OnceLock<vk::DescriptorPoolCreateFlags>,
+    sets: Vrc<()>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -554,6 +568,7 @@ impl DescriptorPool {
                 raw,
                 parent: parent.clone(),
                 flags: std::sync::OnceLock::new(),
+                sets: Vrc::new(()),
                 keep,
                 destroy,
             }),
@@ -580,6 +595,16 @@ impl DescriptorPool {
     pub(crate) fn with_flags(self, flags: vk::DescriptorPoolCreateFlags) -> Self {
         let _ = self.inner.flags.set(flags);
         self
+    }
+    /// A token each set allocated from the pool holds: the pool is reset
+    /// only when none is left.
+    pub(crate) fn set_token(&self) -> Vrc<()> {
+        self.inner.sets.clone()
+    }
+    /// Whether a set allocated from the pool is still alive (held by the
+    /// program, or by a command buffer or submission that uses it).
+    pub(crate) fn has_sets(&self) -> bool {
+        Vrc::strong_count(&self.inner.sets) > 1
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -642,6 +667,7 @@ pub struct DescriptorSet {
 struct DescriptorSetInner {
     raw: vk::DescriptorSet,
     parent: DescriptorPool,
+    token: std::sync::OnceLock<Vrc<()>>,
     keep: Option<Retained>,
     destroy: bool,
 }
@@ -660,6 +686,7 @@ impl DescriptorSet {
             inner: Vrc::new(DescriptorSetInner {
                 raw,
                 parent: parent.clone(),
+                token: std::sync::OnceLock::new(),
                 keep,
                 destroy,
             }),
@@ -671,6 +698,11 @@ impl DescriptorSet {
     #[inline]
     pub fn parent(&self) -> &DescriptorPool {
         &self.inner.parent
+    }
+    /// Holds its pool's token, so the pool is not reset under it.
+    pub(crate) fn with_token(self, token: Vrc<()>) -> Self {
+        let _ = self.inner.token.set(token);
+        self
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]

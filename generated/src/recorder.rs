@@ -6,11 +6,12 @@
 //! alive by the command buffer, and by the fence of every submission of it.
 
 use crate::handles::{CommandBuffer, Device};
+use crate::submission::Uses;
 use crate::structs::CommandBufferBeginInfo;
 use crate::{Error, Handle, Result};
 use ash::vk;
 use core::marker::PhantomData;
-use tuff_runtime::Retained;
+use tuff_runtime::{Retained, Vrc};
 
 /// A recording state.
 pub trait State {}
@@ -26,12 +27,28 @@ pub struct InRenderPass;
 /// Recording inside dynamic rendering begun with `cmd_begin_rendering`.
 #[derive(Debug)]
 pub struct InRendering;
+/// Recording a secondary command buffer that continues a render pass instance begun
+/// in the primary that executes it ([`CommandBuffer::begin_continuing`]): commands
+/// of a render pass instance, but neither its end nor its next subpass.
+#[derive(Debug)]
+pub struct Continuing;
 
 impl State for Outside {}
 impl State for InRenderPass {}
 impl State for InRendering {}
+impl State for Continuing {}
 impl Inside for InRenderPass {}
 impl Inside for InRendering {}
+impl Inside for Continuing {}
+
+/// Tells the buffer's lifecycle state when its recorder goes, however it goes.
+struct Alive(Vrc<Uses>);
+
+impl Drop for Alive {
+    fn drop(&mut self) {
+        self.0.set_recorder(false);
+    }
+}
 
 /// A command buffer in the recording state `S`.
 ///
@@ -60,21 +77,103 @@ pub struct Recorder<'c, S: State> {
     /// check, so its end is not recorded either.
     #[cfg(feature = "runtime_implicit_validations")]
     skipped_begin: bool,
+    alive: Alive,
     _state: PhantomData<S>,
 }
 
 impl CommandBuffer {
-    /// `vkBeginCommandBuffer`: starts recording. Recording again drops what the
-    /// previous recording kept alive, so a buffer that a submission may still be
-    /// executing is refused (`VUID-vkBeginCommandBuffer-commandBuffer-00049`): wait
-    /// for the submission's fence first. Recording a buffer again needs a pool
-    /// created with `RESET_COMMAND_BUFFER` (`-00050`).
+    /// `vkBeginCommandBuffer`: starts recording, outside any render pass instance.
+    /// Recording again drops what the previous recording kept alive, so a buffer
+    /// that a submission may still be executing is refused
+    /// (`VUID-vkBeginCommandBuffer-commandBuffer-00049`): wait for the submission's
+    /// fence first. Recording a buffer again needs a pool created with
+    /// `RESET_COMMAND_BUFFER` (`-00050`). A buffer whose recorder was dropped
+    /// without `end` is reset first.
+    ///
+    /// # Errors
+    ///
+    /// Besides those rules: a secondary buffer needs inheritance info (`-00051`), and
+    /// a secondary that continues a render pass instance
+    /// (`RENDER_PASS_CONTINUE`) is begun with [`Self::begin_continuing`], whose
+    /// recorder is inside that instance.
     pub fn begin(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
-        self.uses().check_begin(self.device(), self.parent().resets_buffers())?;
+        if self.level() == vk::CommandBufferLevel::SECONDARY
+            && info.flags.contains(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
+        {
+            return Err(Error::Misuse(
+                "a secondary command buffer begun with RENDER_PASS_CONTINUE records inside a render pass instance: use `begin_continuing`",
+            ));
+        }
+        self.begin_in(info)
+    }
+
+    /// `vkBeginCommandBuffer` of a secondary command buffer that continues a render
+    /// pass instance (`flags` holds `RENDER_PASS_CONTINUE`): its recorder records
+    /// the commands of a render pass instance, and the primary that executes it
+    /// must be inside a compatible one.
+    ///
+    /// # Errors
+    ///
+    /// The rules of [`Self::begin`]; a primary buffer, or `flags` without
+    /// `RENDER_PASS_CONTINUE`, is refused; so is inheritance info with neither a
+    /// render pass nor a `CommandBufferInheritanceRenderingInfo`
+    /// (`VUID-VkCommandBufferBeginInfo-flags-06002`).
+    pub fn begin_continuing(
+        &mut self,
+        info: &CommandBufferBeginInfo<'_>,
+    ) -> Result<Recorder<'_, Continuing>> {
+        if self.level() != vk::CommandBufferLevel::SECONDARY
+            || !info.flags.contains(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
+        {
+            return Err(Error::Misuse(
+                "`begin_continuing` begins a secondary command buffer with RENDER_PASS_CONTINUE in its flags",
+            ));
+        }
+        // SAFETY: the safe setter stores a reference that outlives `info`.
+        let inheritance = unsafe { info.p_inheritance_info.as_ref() };
+        if let Some(inheritance) = inheritance {
+            // SAFETY: the safe inheritance info only chains structs pushed through
+            // `push_next`.
+            let rendering = unsafe { crate::support::chain_nodes(inheritance.p_next) }
+                .any(|n| n.s_type == vk::StructureType::COMMAND_BUFFER_INHERITANCE_RENDERING_INFO);
+            if inheritance.render_pass == vk::RenderPass::null() && !rendering {
+                return Err(Error::Validation {
+                    vuid: "VUID-VkCommandBufferBeginInfo-flags-06002",
+                    message: "the inheritance info names no render pass and chains no CommandBufferInheritanceRenderingInfo".into(),
+                });
+            }
+        }
+        Ok(self.begin_in(info)?.into_state())
+    }
+
+    fn begin_in(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
+        if self.level() == vk::CommandBufferLevel::SECONDARY && info.p_inheritance_info.is_null() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkBeginCommandBuffer-commandBuffer-00051",
+                message: "a secondary command buffer is begun without inheritance info".into(),
+            });
+        }
+        let still_recording = self.uses().check_begin(self.device(), self.parent().resets_buffers())?;
         #[cfg(feature = "runtime_implicit_validations")]
         crate::checks::check_command_buffer_begin_info(info, &self.device().scope())?;
+        if still_recording {
+            // SAFETY: the buffer is not pending (checked above) and its pool resets
+            // buffers (a recorded buffer of another pool was refused above), so it
+            // may be reset (VUID-vkResetCommandBuffer-commandBuffer-00045, -00046).
+            let r = unsafe {
+                (self.device().fns().fp_v1_0().reset_command_buffer)(
+                    self.raw(),
+                    vk::CommandBufferResetFlags::empty(),
+                )
+            };
+            if r != vk::Result::SUCCESS {
+                return Err(Error::Vk(r));
+            }
+            self.uses().reset();
+        }
         // SAFETY: the command buffer is borrowed mutably, so no other recording or
-        // submission of it is under way on the host; `info` is a valid struct.
+        // submission of it is under way on the host; it is neither recording nor
+        // pending (checked above); `info` is a valid struct.
         let r = unsafe {
             (self.device().fns().fp_v1_0().begin_command_buffer)(self.raw(), info.as_raw())
         };
@@ -82,9 +181,11 @@ impl CommandBuffer {
             return Err(Error::Vk(r));
         }
         self.uses().began(info.flags);
+        self.uses().set_recorder(true);
         Ok(Recorder {
             device: self.device().clone(),
             raw: self.raw(),
+            alive: Alive(self.uses().clone()),
             cb: self,
             kept: Vec::new(),
             last: 0,
@@ -175,18 +276,16 @@ impl<'c, S: State> Recorder<'c, S> {
             poisoned: self.poisoned,
             #[cfg(feature = "runtime_implicit_validations")]
             skipped_begin: self.skipped_begin,
+            alive: self.alive,
             _state: PhantomData,
         }
     }
-}
 
-impl<'c> Recorder<'c, Outside> {
-    /// `vkEndCommandBuffer`: ends recording; the command buffer can be submitted.
-    /// With `runtime_implicit_validations`, a check that failed during recording is
-    /// returned here, and the buffer cannot be submitted.
-    pub fn end(self) -> Result<()> {
-        // SAFETY: the recorder proves the buffer is recording and outside any render
-        // pass instance (VUID-vkEndCommandBuffer-commandBuffer-00060).
+    /// `vkEndCommandBuffer`, in a state where ending is valid.
+    fn finish(self) -> Result<()> {
+        // SAFETY: the recorder proves the buffer is recording, and its callers are
+        // the states outside a render pass instance begun in this buffer
+        // (VUID-vkEndCommandBuffer-commandBuffer-00060).
         let r = unsafe { (self.cb.device().fns().fp_v1_0().end_command_buffer)(self.cb.raw()) };
         if r != vk::Result::SUCCESS {
             return Err(Error::Vk(r));
@@ -201,5 +300,22 @@ impl<'c> Recorder<'c, Outside> {
         }
         self.cb.uses().ended(true);
         Ok(())
+    }
+}
+
+impl<'c> Recorder<'c, Outside> {
+    /// `vkEndCommandBuffer`: ends recording; the command buffer can be submitted.
+    /// With `runtime_implicit_validations`, a check that failed during recording is
+    /// returned here, and the buffer cannot be submitted.
+    pub fn end(self) -> Result<()> {
+        self.finish()
+    }
+}
+
+impl<'c> Recorder<'c, Continuing> {
+    /// `vkEndCommandBuffer`: ends recording of a secondary that continues a render
+    /// pass instance; a primary inside a compatible instance can execute it.
+    pub fn end(self) -> Result<()> {
+        self.finish()
     }
 }

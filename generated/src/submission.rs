@@ -160,6 +160,11 @@ impl Default for Uses {
 struct UsesState {
     /// Begun since allocation (or the last reset).
     begun: bool,
+    /// Begun and not ended: a recorder was dropped or forgotten, or is alive.
+    recording: bool,
+    /// A `Recorder` of the buffer is alive: a pool reset would pull the buffer out of
+    /// the recording state under it.
+    recorder: bool,
     secondary: bool,
     executable: bool,
     simultaneous: bool,
@@ -210,9 +215,16 @@ impl Uses {
 
     /// `vkBeginCommandBuffer` is about to be called; refuses a buffer that is pending
     /// (VUID-vkBeginCommandBuffer-commandBuffer-00049), and one that is not in the
-    /// initial state when its pool cannot reset it implicitly (-00050).
-    pub(crate) fn check_begin(&self, device: &Device, pool_resets: bool) -> Result<()> {
-        if !pool_resets && self.state.lock().begun {
+    /// initial state when its pool cannot reset it implicitly (-00050). Returns
+    /// whether the buffer is still recording (its recorder was dropped without
+    /// `end`), which `begin` must reset first, since begin may not restart a
+    /// recording (-00049 again).
+    pub(crate) fn check_begin(&self, device: &Device, pool_resets: bool) -> Result<bool> {
+        let (begun, recording) = {
+            let state = self.state.lock();
+            (state.begun, state.recording)
+        };
+        if !pool_resets && begun {
             return Err(Error::Validation {
                 vuid: "VUID-vkBeginCommandBuffer-commandBuffer-00050",
                 message: "the command buffer was recorded before and its pool was not created with RESET_COMMAND_BUFFER".into(),
@@ -224,7 +236,49 @@ impl Uses {
                 message: "the command buffer is pending: a submission that uses it may still be executing (wait for its fence first)".into(),
             });
         }
+        Ok(recording)
+    }
+
+    /// `vkResetCommandBuffer` is about to be called: refuses a pending buffer
+    /// (VUID-vkResetCommandBuffer-commandBuffer-00045) and a buffer of a pool
+    /// without RESET_COMMAND_BUFFER (-00046).
+    pub(crate) fn check_reset(&self, device: &Device, pool_resets: bool) -> Result<()> {
+        if !pool_resets {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetCommandBuffer-commandBuffer-00046",
+                message: "the command buffer's pool was not created with RESET_COMMAND_BUFFER".into(),
+            });
+        }
+        if self.is_pending(device) {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetCommandBuffer-commandBuffer-00045",
+                message: "the command buffer is pending: a submission that uses it may still be executing (wait for its fence first)".into(),
+            });
+        }
         Ok(())
+    }
+
+    /// The buffer went back to the initial state (its reset, or its pool's).
+    pub(crate) fn reset(&self) {
+        let old = {
+            let mut state = self.state.lock();
+            state.begun = false;
+            state.recording = false;
+            state.executable = false;
+            state.generation += 1;
+            core::mem::take(&mut state.secondaries)
+        };
+        drop(old);
+    }
+
+    /// A recorder of the buffer is alive (`true`) or went (`false`).
+    pub(crate) fn set_recorder(&self, alive: bool) {
+        self.state.lock().recorder = alive;
+    }
+
+    /// Whether a recorder of the buffer is alive.
+    pub(crate) fn has_recorder(&self) -> bool {
+        self.state.lock().recorder
     }
 
     /// Recording began with `flags`.
@@ -232,6 +286,7 @@ impl Uses {
         let old = {
             let mut state = self.state.lock();
             state.begun = true;
+            state.recording = true;
             state.executable = false;
             state.generation += 1;
             state.simultaneous = flags.contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE);
@@ -245,6 +300,7 @@ impl Uses {
     /// recorded.
     pub(crate) fn ended(&self, executable: bool) {
         let mut state = self.state.lock();
+        state.recording = false;
         state.executable = executable;
     }
 
@@ -437,4 +493,26 @@ pub(crate) fn submitted(
         f.track(sub.clone());
     }
     sub
+}
+
+/// `vkResetCommandPool` is about to be called on a pool whose buffers have `uses`:
+/// refuses a pending buffer (VUID-vkResetCommandPool-commandPool-00040) and a buffer
+/// that a live recorder is recording into, whose commands after the reset would be
+/// recorded into a buffer that is not recording (VUID-vkEndCommandBuffer-commandBuffer-00059).
+pub(crate) fn check_pool_reset(device: &Device, uses: &[Vrc<Uses>]) -> Result<()> {
+    for u in uses {
+        if u.is_pending(device) {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetCommandPool-commandPool-00040",
+                message: "a command buffer of the pool is pending: a submission that uses it may still be executing (wait for its fence first)".into(),
+            });
+        }
+        if u.has_recorder() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkEndCommandBuffer-commandBuffer-00059",
+                message: "a recorder of a command buffer of the pool is alive; end or drop it before the pool is reset".into(),
+            });
+        }
+    }
+    Ok(())
 }

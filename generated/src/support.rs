@@ -22,6 +22,10 @@ pub enum Error {
         /// What was wrong.
         message: String,
     },
+    /// A safe method was asked for something it cannot do while keeping its
+    /// guarantees; the text says which method can.
+    #[error("{0}")]
+    Misuse(&'static str),
     /// An extension command was called on an instance or device that did not enable
     /// the extension.
     #[error("extension {0} is not enabled on this instance or device")]

@@ -204,6 +204,28 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
             },
             vec!["VUID-vkResetFences-pFences-01123"],
         )),
+        "vkResetCommandBuffer" => Some((
+            quote!(self.uses().check_reset(self.device(), self.parent().resets_buffers())?;),
+            vec![
+                "VUID-vkResetCommandBuffer-commandBuffer-00045",
+                "VUID-vkResetCommandBuffer-commandBuffer-00046",
+            ],
+        )),
+        "vkResetCommandPool" => Some((
+            quote!(crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;),
+            vec!["VUID-vkResetCommandPool-commandPool-00040"],
+        )),
+        "vkResetDescriptorPool" => Some((
+            quote! {
+                if descriptor_pool.has_sets() {
+                    return Err(Error::Validation {
+                        vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
+                        message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset".into(),
+                    });
+                }
+            },
+            vec!["VUID-vkResetDescriptorPool-descriptorPool-00313"],
+        )),
         "vkUpdateDescriptorSets" => Some((
             quote! {
                 // SAFETY: the safe struct is transparent over ash's.
@@ -226,6 +248,12 @@ fn kept_member(name: &str) -> Option<(&'static str, &'static str)> {
         "vkCreateSwapchainKHR" => Some(("surface", "VkSurfaceKHR")),
         _ => None,
     }
+}
+
+/// Whether a command is recorded into its command buffer (and so is a method of the
+/// recorder), rather than acting on the buffer itself.
+fn recorded(plan: &Plan) -> bool {
+    plan.receiver == "VkCommandBuffer" && plan.name.starts_with("vkCmd")
 }
 
 /// Plan a command, or say why it cannot be emitted safely.
@@ -455,7 +483,10 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     let cmd = &model.commands[&plan.name];
     let cfg = super::names::cfg_of(model, model.condition(&plan.name));
     let f = ident(&command_fn(&plan.name));
-    let is_cmd = plan.receiver == "VkCommandBuffer";
+    // Commands recorded into a command buffer go on the recorder; the others of a
+    // command buffer (`vkResetCommandBuffer`) on the buffer itself, taken mutably,
+    // so that no recorder of it is alive.
+    let is_cmd = recorded(plan);
     let lvl = level(model, &plan.name);
     let receiver_raw = if plan.receiver == "Entry" {
         quote!()
@@ -909,6 +940,17 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
             self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept));
         }),
+        "vkResetCommandBuffer" => post.push(quote! {
+            // Initial state; the last recording's objects go, as no submission uses
+            // the buffer (checked).
+            self.uses().reset();
+            self.keep_alive(Vec::new());
+        }),
+        "vkResetCommandPool" => post.push(quote! {
+            for u in command_pool.buffer_uses() {
+                u.reset();
+            }
+        }),
         "vkQueueWaitIdle" => post.push(quote!(self.parent().live().ledger().retire_queue(self.raw());)),
         "vkDeviceWaitIdle" => post.push(quote!(self.live().ledger().retire_all();)),
         "vkCmdExecuteCommands" => pre.insert(0, quote! {
@@ -959,11 +1001,20 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             template.with_entries(unsafe { crate::retention::raw_slice(raw.p_descriptor_update_entries, raw.descriptor_update_entry_count) })
         });
     }
+    if plan.name == "vkAllocateDescriptorSets" {
+        ret_expr = quote!({
+            let sets: Vec<DescriptorSet> = #ret_expr;
+            sets.into_iter().map(|set| set.with_token(descriptor_pool.set_token())).collect()
+        });
+    }
     if plan.name == "vkAllocateCommandBuffers" {
         ret_expr = quote!({
             let cbs: Vec<CommandBuffer> = #ret_expr;
             let cbs: Vec<CommandBuffer> = cbs.into_iter().map(|cb| cb.with_level(allocate_info.level)).collect();
-            for cb in &cbs { self.register_command_buffer(cb); }
+            for cb in &cbs {
+                self.register_command_buffer(cb);
+                command_pool.adopt(cb.uses());
+            }
             cbs
         });
     }
@@ -1085,7 +1136,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         quote!(#ext_check #body)
     };
     let lt = if lifetimes { quote!(<'a>) } else { quote!() };
-    let mut self_ref = if is_cmd {
+    let mut self_ref = if plan.receiver == "VkCommandBuffer" {
         quote!(&mut self)
     } else {
         quote!(&self)
@@ -1248,7 +1299,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     };
     match plan.receiver.as_str() {
         "Entry" => quote!(#cfg impl Entry { #method }),
-        "VkCommandBuffer" => {
+        "VkCommandBuffer" if recorded(plan) => {
             let state = match (cmd.renderpass.as_deref(), plan.name.as_str()) {
                 (
                     _,

@@ -730,14 +730,25 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
         "VkCommandPool" => {
             let (f, i, fns) = queue_flags_state("the pool's family, for the `cmdpool` checks");
             (
-                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,),
-                quote!(#i create_flags: std::sync::OnceLock::new(),),
+                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>, buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>,),
+                quote!(#i create_flags: std::sync::OnceLock::new(), buffers: Vutex::new(Vec::new()),),
                 quote! {
                     #fns
                     /// Records the flags the pool was created with.
                     pub(crate) fn with_create_flags(self, flags: vk::CommandPoolCreateFlags) -> Self {
                         let _ = self.inner.create_flags.set(flags);
                         self
+                    }
+                    /// Lists a buffer allocated from the pool, whose state a reset of
+                    /// the pool changes.
+                    pub(crate) fn adopt(&self, uses: &Vrc<crate::submission::Uses>) {
+                        let mut buffers = self.inner.buffers.lock();
+                        buffers.retain(|w| w.strong_count() > 0);
+                        buffers.push(Vrc::downgrade(uses));
+                    }
+                    /// The lifecycle states of the pool's live buffers.
+                    pub(crate) fn buffer_uses(&self) -> Vec<Vrc<crate::submission::Uses>> {
+                        self.inner.buffers.lock().iter().filter_map(|w| w.upgrade()).collect()
                     }
                     /// Whether `begin` may reset a buffer of this pool implicitly
                     /// (`RESET_COMMAND_BUFFER`).
@@ -747,6 +758,33 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                 },
             )
         }
+        "VkDescriptorPool" => (
+            quote!(sets: Vrc<()>,),
+            quote!(sets: Vrc::new(()),),
+            quote! {
+                /// A token each set allocated from the pool holds: the pool is reset
+                /// only when none is left.
+                pub(crate) fn set_token(&self) -> Vrc<()> {
+                    self.inner.sets.clone()
+                }
+                /// Whether a set allocated from the pool is still alive (held by the
+                /// program, or by a command buffer or submission that uses it).
+                pub(crate) fn has_sets(&self) -> bool {
+                    Vrc::strong_count(&self.inner.sets) > 1
+                }
+            },
+        ),
+        "VkDescriptorSet" => (
+            quote!(token: std::sync::OnceLock<Vrc<()>>,),
+            quote!(token: std::sync::OnceLock::new(),),
+            quote! {
+                /// Holds its pool's token, so the pool is not reset under it.
+                pub(crate) fn with_token(self, token: Vrc<()>) -> Self {
+                    let _ = self.inner.token.set(token);
+                    self
+                }
+            },
+        ),
         "VkDescriptorUpdateTemplate" => (
             quote!(entries: std::sync::OnceLock<Vec<vk::DescriptorUpdateTemplateEntry>>,),
             quote!(entries: std::sync::OnceLock::new(),),

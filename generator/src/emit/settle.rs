@@ -88,6 +88,9 @@ fn submission(vuid: &str) -> Option<Settlement> {
         "VUID-vkBeginCommandBuffer-commandBuffer-00050" => Settlement::Dynamic(
             "`CommandBuffer::begin` refuses a buffer begun before when its pool was created without RESET_COMMAND_BUFFER".into(),
         ),
+        "VUID-vkResetCommandBuffer-commandBuffer-00046" => Settlement::Dynamic(
+            "refuses a buffer whose pool was created without RESET_COMMAND_BUFFER".into(),
+        ),
         "VUID-vkDestroyFence-fence-01120" => Settlement::Static(
             "a fence whose queue operation may still be executing waits for it before it is destroyed".into(),
         ),
