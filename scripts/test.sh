@@ -14,6 +14,6 @@ cargo clippy -p tuff-runtime -p tuff-tests --all-targets --features tuff-runtime
 cargo clippy -p tuff-tests --all-targets --features runtime_implicit_validations,multi_thread -- -D warnings
 cargo test --workspace
 # The runtime again with Vrc = Arc and Vutex = a mutex.
-cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread
+cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tuff-tests/multi_thread
 # The wrappers with their dynamic checks of implicit rules compiled in.
 cargo test -p tuff-tests --features runtime_implicit_validations --test implicit_checks --test wrappers

@@ -840,3 +840,84 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
     // the report leaves it to the user.
     assert_silent(&s.messages);
 }
+
+// Class F: objects the registry marks externally synchronized. With `multi_thread`
+// every wrapper of one object shares one lock, and a call holds the locks of every
+// such object it names; the layer's thread-safety checks see no two calls at once.
+
+#[cfg(feature = "multi_thread")]
+#[test]
+fn two_wrappers_of_one_queue_never_submit_at_once() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let other = s.device.get_device_queue(s.family, 0);
+    let (buffer, _memory) = transfer_buffer(&s);
+    std::thread::scope(|scope| {
+        for queue in [&s.queue, &other] {
+            let s = &s;
+            let buffer = &buffer;
+            scope.spawn(move || {
+                let done = fence(s);
+                let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+                let mut rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                rec.cmd_fill_buffer(buffer, 0, 256, 1);
+                rec.end().expect("end");
+                let cbs = tuff::HandleSlice::new(&[&cb]);
+                for _ in 0..200 {
+                    queue
+                        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+                        .expect("submit");
+                    wait(s, &done);
+                    s.device.reset_fences(&[&done]).expect("reset");
+                }
+            });
+        }
+    });
+    assert_silent(&s.messages);
+}
+
+#[cfg(feature = "multi_thread")]
+#[test]
+fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let (pool, first) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut buffers = s
+        .device
+        .allocate_command_buffers(
+            &pool,
+            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
+        )
+        .expect("command buffers");
+    buffers.push(first);
+    std::thread::scope(|scope| {
+        for mut cb in buffers {
+            let buffer = &buffer;
+            let s = &s;
+            let pool = &pool;
+            scope.spawn(move || {
+                for i in 0..2000 {
+                    let mut rec = cb
+                        .begin(&tuff::CommandBufferBeginInfo::new())
+                        .expect("begin");
+                    rec.cmd_fill_buffer(buffer, 0, 256, i);
+                    rec.end().expect("end");
+                }
+                // Freed while the other thread may be recording from the same pool.
+                drop(cb);
+                let more = s
+                    .device
+                    .allocate_command_buffers(
+                        pool,
+                        &tuff::CommandBufferAllocateInfo::new(pool).command_buffer_count(1),
+                    )
+                    .expect("allocate while the other thread records");
+                drop(more);
+            });
+        }
+    });
+    assert_silent(&s.messages);
+}

@@ -107,6 +107,18 @@ impl Device {
         semaphore: Option<&Semaphore>,
         fence: Option<&Fence>,
     ) -> Result<(u32, vk::Result)> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(swapchain.host_sync().clone());
+            if let Some(h) = semaphore {
+                syncs.push(h.host_sync().clone());
+            }
+            if let Some(h) = fence {
+                syncs.push(h.host_sync().clone());
+            }
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -161,6 +173,18 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
         semaphore: Option<&Semaphore>,
         fence: Option<&Fence>,
     ) -> Result<(u32, vk::Result)> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(swapchain.host_sync().clone());
+            if let Some(h) = semaphore {
+                syncs.push(h.host_sync().clone());
+            }
+            if let Some(h) = fence {
+                syncs.push(h.host_sync().clone());
+            }
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .ext()
             .khr_swapchain
@@ -199,6 +223,12 @@ impl Device {
         command_pool: &CommandPool,
         allocate_info: &CommandBufferAllocateInfo<'a>,
     ) -> Result<Vec<CommandBuffer>> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -230,6 +260,12 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
         command_pool: &CommandPool,
         allocate_info: &CommandBufferAllocateInfo<'a>,
     ) -> Result<Vec<CommandBuffer>> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().command_pool = command_pool.raw();
         let mut out = vec![
@@ -281,6 +317,12 @@ impl Device {
         descriptor_pool: &DescriptorPool,
         allocate_info: &DescriptorSetAllocateInfo<'a>,
     ) -> Result<Vec<DescriptorSet>> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(descriptor_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -314,6 +356,12 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
         descriptor_pool: &DescriptorPool,
         allocate_info: &DescriptorSetAllocateInfo<'a>,
     ) -> Result<Vec<DescriptorSet>> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(descriptor_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().descriptor_pool = descriptor_pool.raw();
         let mut out = vec![
@@ -447,6 +495,12 @@ impl Device {
         memory: &DeviceMemory,
         memory_offset: vk::DeviceSize,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(buffer.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -486,6 +540,12 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
         memory: &DeviceMemory,
         memory_offset: vk::DeviceSize,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(buffer.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .fns()
@@ -603,6 +663,12 @@ impl Device {
         memory: &DeviceMemory,
         memory_offset: vk::DeviceSize,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(image.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -642,6 +708,12 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
         memory: &DeviceMemory,
         memory_offset: vk::DeviceSize,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(image.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .fns()
@@ -11544,6 +11616,21 @@ impl Device {
         surface: &SurfaceKHR,
         create_info: &SwapchainCreateInfoKHR<'a>,
     ) -> Result<SwapchainKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            syncs
+                .extend(
+                    self
+                        .live()
+                        .sync_of(
+                            vk::ObjectType::SWAPCHAIN_KHR,
+                            vk::Handle::as_raw(create_info.old_swapchain),
+                        ),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -11567,6 +11654,21 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         surface: &SurfaceKHR,
         create_info: &SwapchainCreateInfoKHR<'a>,
     ) -> Result<SwapchainKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            syncs
+                .extend(
+                    self
+                        .live()
+                        .sync_of(
+                            vk::ObjectType::SWAPCHAIN_KHR,
+                            vk::Handle::as_raw(create_info.old_swapchain),
+                        ),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .ext()
             .khr_swapchain
@@ -11830,6 +11932,12 @@ impl Device {
 - `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn device_wait_idle(&self) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.extend(self.live().queue_syncs());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe { (self.fns().fp_v1_0().device_wait_idle)(self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -12581,6 +12689,12 @@ impl Device {
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -12611,6 +12725,12 @@ The caller upholds the rules that [`Self::get_device_group_surface_present_modes
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .ext()
             .khr_swapchain
@@ -13944,6 +14064,12 @@ impl PhysicalDevice {
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -13974,6 +14100,12 @@ The caller upholds the rules that [`Self::get_physical_device_present_rectangles
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .parent()
             .ext()
@@ -15374,6 +15506,12 @@ impl Device {
         dst_cache: &PipelineCache,
         src_caches: &[&PipelineCache],
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(dst_cache.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15422,6 +15560,12 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
         dst_cache: &PipelineCache,
         src_caches: &[&PipelineCache],
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(dst_cache.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
             .iter()
             .map(|h| h.raw())
@@ -15496,6 +15640,13 @@ impl Queue {
         bind_info: &[BindSparseInfo<'a>],
         fence: &Fence,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15542,6 +15693,13 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
         bind_info: &[BindSparseInfo<'a>],
         fence: &Fence,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .parent()
@@ -15641,6 +15799,43 @@ impl Queue {
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<vk::Result> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            for s in unsafe {
+                crate::retention::raw_slice(
+                    present_info.p_wait_semaphores,
+                    present_info.wait_semaphore_count,
+                )
+            } {
+                syncs
+                    .extend(
+                        self
+                            .parent()
+                            .live()
+                            .sync_of(vk::ObjectType::SEMAPHORE, vk::Handle::as_raw(*s)),
+                    );
+            }
+            for s in unsafe {
+                crate::retention::raw_slice(
+                    present_info.p_swapchains,
+                    present_info.swapchain_count,
+                )
+            } {
+                syncs
+                    .extend(
+                        self
+                            .parent()
+                            .live()
+                            .sync_of(
+                                vk::ObjectType::SWAPCHAIN_KHR,
+                                vk::Handle::as_raw(*s),
+                            ),
+                    );
+            }
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15663,6 +15858,43 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<vk::Result> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            for s in unsafe {
+                crate::retention::raw_slice(
+                    present_info.p_wait_semaphores,
+                    present_info.wait_semaphore_count,
+                )
+            } {
+                syncs
+                    .extend(
+                        self
+                            .parent()
+                            .live()
+                            .sync_of(vk::ObjectType::SEMAPHORE, vk::Handle::as_raw(*s)),
+                    );
+            }
+            for s in unsafe {
+                crate::retention::raw_slice(
+                    present_info.p_swapchains,
+                    present_info.swapchain_count,
+                )
+            } {
+                syncs
+                    .extend(
+                        self
+                            .parent()
+                            .live()
+                            .sync_of(
+                                vk::ObjectType::SWAPCHAIN_KHR,
+                                vk::Handle::as_raw(*s),
+                            ),
+                    );
+            }
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .parent()
             .ext()
@@ -15725,6 +15957,13 @@ impl Queue {
         submits: &[SubmitInfo<'a>],
         fence: &Fence,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15772,6 +16011,13 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
         submits: &[SubmitInfo<'a>],
         fence: &Fence,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .parent()
@@ -15836,6 +16082,13 @@ impl Queue {
         submits: &[SubmitInfo2<'a>],
         fence: &Fence,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15886,6 +16139,13 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
         submits: &[SubmitInfo2<'a>],
         fence: &Fence,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .parent()
@@ -15928,6 +16188,12 @@ impl Queue {
 - `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn queue_wait_idle(&self) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe { (self.parent().fns().fp_v1_0().queue_wait_idle)(self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -15950,6 +16216,13 @@ impl CommandBuffer {
         &mut self,
         flags: vk::CommandBufferResetFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(self.parent().host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -15977,6 +16250,13 @@ The caller upholds the rules that [`Self::reset_command_buffer`] checks at run t
         &mut self,
         flags: vk::CommandBufferResetFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(self.parent().host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self.device().fns().fp_v1_0().reset_command_buffer)(self.raw(), flags)
         };
@@ -16004,6 +16284,12 @@ impl Device {
         command_pool: &CommandPool,
         flags: vk::CommandPoolResetFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16040,6 +16326,12 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
         command_pool: &CommandPool,
         flags: vk::CommandPoolResetFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .fns()
@@ -16071,6 +16363,12 @@ impl Device {
         descriptor_pool: &DescriptorPool,
         flags: vk::DescriptorPoolResetFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(descriptor_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16116,6 +16414,12 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
         descriptor_pool: &DescriptorPool,
         flags: vk::DescriptorPoolResetFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(descriptor_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe {
             (self
                 .fns()
@@ -16125,6 +16429,7 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        descriptor_pool.forget_deferred();
         Ok(())
     }
 }
@@ -16141,6 +16446,12 @@ impl Device {
 - `VUID-vkResetEvent-event-03823`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
     pub fn reset_event(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16167,6 +16478,12 @@ impl Device {
 The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -16186,6 +16503,14 @@ impl Device {
 - `VUID-vkResetFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            for h in fences.iter() {
+                syncs.push(h.host_sync().clone());
+            }
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16231,6 +16556,14 @@ impl Device {
 The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            for h in fences.iter() {
+                syncs.push(h.host_sync().clone());
+            }
+            tuff_runtime::lock_all(syncs)
+        };
         let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
             .map(|h| h.raw())
@@ -16329,6 +16662,15 @@ impl Device {
         &self,
         name_info: &DebugUtilsObjectNameInfoEXT<'a>,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs
+                .extend(
+                    self.live().sync_of(name_info.object_type, name_info.object_handle),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16351,6 +16693,15 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
         &self,
         name_info: &DebugUtilsObjectNameInfoEXT<'a>,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs
+                .extend(
+                    self.live().sync_of(name_info.object_type, name_info.object_handle),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .ext()
             .ext_debug_utils
@@ -16382,6 +16733,15 @@ impl Device {
         &self,
         tag_info: &DebugUtilsObjectTagInfoEXT<'a>,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs
+                .extend(
+                    self.live().sync_of(tag_info.object_type, tag_info.object_handle),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16404,6 +16764,15 @@ The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] check
         &self,
         tag_info: &DebugUtilsObjectTagInfoEXT<'a>,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs
+                .extend(
+                    self.live().sync_of(tag_info.object_type, tag_info.object_handle),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
         let ext_table = self
             .ext()
             .ext_debug_utils
@@ -16433,6 +16802,12 @@ impl Device {
 - `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16459,6 +16834,12 @@ impl Device {
 The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn set_event_unchecked(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -16679,6 +17060,12 @@ impl Device {
         command_pool: &CommandPool,
         flags: vk::CommandPoolTrimFlags,
     ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -16717,6 +17104,12 @@ The caller upholds the rules that [`Self::trim_command_pool`] checks at run time
         command_pool: &CommandPool,
         flags: vk::CommandPoolTrimFlags,
     ) -> () {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
         unsafe {
             (self
                 .fns()

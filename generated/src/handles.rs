@@ -18,6 +18,7 @@ struct BufferInner {
     bound: Vutex<Option<Retained>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Buffer {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -36,9 +37,10 @@ impl Buffer {
                 bound: Vutex::new(None),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -49,6 +51,13 @@ impl Buffer {
     /// Keeps `memory` alive as long as this object, once it is bound to it.
     pub(crate) fn retain_memory(&self, memory: Retained) {
         *self.inner.bound.lock() = Some(memory);
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -109,6 +118,7 @@ struct BufferViewInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl BufferView {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -126,15 +136,23 @@ impl BufferView {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -196,6 +214,7 @@ struct CommandBufferInner {
     uses: Vrc<crate::submission::Uses>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl CommandBuffer {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -216,9 +235,10 @@ impl CommandBuffer {
                 uses: Default::default(),
                 keep,
                 destroy,
+                sync: parent.parent().live().sync_for(raw),
             }),
         };
-        parent.parent().live().add(raw, &this.retained());
+        parent.parent().live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -258,6 +278,13 @@ impl CommandBuffer {
     #[inline]
     pub fn is_executable(&self) -> bool {
         self.inner.uses.is_executable()
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -299,6 +326,11 @@ impl Drop for CommandBufferInner {
             return;
         }
         self.parent.parent().forget_command_buffer(self.raw);
+        let Some(_pool) = self.parent.host_sync().try_lock() else {
+            self.parent.defer_free(self.raw);
+            return;
+        };
+        self.parent.free_deferred();
         unsafe {
             (self
                 .parent
@@ -327,8 +359,10 @@ struct CommandPoolInner {
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,
     buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>,
+    deferred: Vutex<Vec<vk::CommandBuffer>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl CommandPool {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -348,11 +382,13 @@ impl CommandPool {
                 queue_flags: std::sync::OnceLock::new(),
                 create_flags: std::sync::OnceLock::new(),
                 buffers: Vutex::new(Vec::new()),
+                deferred: Vutex::new(Vec::new()),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -376,6 +412,30 @@ impl CommandPool {
         let _ = self.inner.create_flags.set(flags);
         self
     }
+    /// Keeps a buffer whose wrapper went while another thread held
+    /// the pool, to be freed under the pool's lock.
+    #[allow(dead_code)]
+    pub(crate) fn defer_free(&self, raw: vk::CommandBuffer) {
+        self.inner.deferred.lock().push(raw);
+    }
+    /// Frees the buffers kept by `defer_free`; the caller holds the pool.
+    pub(crate) fn free_deferred(&self) {
+        let raws = core::mem::take(&mut *self.inner.deferred.lock());
+        if !raws.is_empty() {
+            unsafe {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_0()
+                    .free_command_buffers)(
+                    self.parent().raw(),
+                    self.raw(),
+                    raws.len() as u32,
+                    raws.as_ptr(),
+                )
+            };
+        }
+    }
     /// Lists a buffer allocated from the pool, whose state a reset of
     /// the pool changes.
     pub(crate) fn adopt(&self, uses: &Vrc<crate::submission::Uses>) {
@@ -396,6 +456,13 @@ impl CommandPool {
             .is_some_and(|f| {
                 f.contains(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
             })
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -458,6 +525,7 @@ struct DebugUtilsMessengerEXTInner {
     parent: Instance,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 #[cfg(feature = "ext_debug_utils")]
 impl DebugUtilsMessengerEXT {
@@ -476,6 +544,7 @@ impl DebugUtilsMessengerEXT {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: tuff_runtime::HostSync::new(),
             }),
         };
         this
@@ -484,6 +553,13 @@ impl DebugUtilsMessengerEXT {
     #[inline]
     pub fn parent(&self) -> &Instance {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -550,8 +626,10 @@ struct DescriptorPoolInner {
     parent: Device,
     flags: std::sync::OnceLock<vk::DescriptorPoolCreateFlags>,
     sets: Vrc<()>,
+    deferred: Vutex<Vec<vk::DescriptorSet>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl DescriptorPool {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -569,11 +647,13 @@ impl DescriptorPool {
                 parent: parent.clone(),
                 flags: std::sync::OnceLock::new(),
                 sets: Vrc::new(()),
+                deferred: Vutex::new(Vec::new()),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -596,6 +676,34 @@ impl DescriptorPool {
         let _ = self.inner.flags.set(flags);
         self
     }
+    /// Keeps a set whose wrapper went while another thread held the pool,
+    /// to be freed under the pool's lock.
+    #[allow(dead_code)]
+    pub(crate) fn defer_free(&self, raw: vk::DescriptorSet) {
+        self.inner.deferred.lock().push(raw);
+    }
+    /// Forgets the sets kept by `defer_free`: a reset of the pool freed them.
+    pub(crate) fn forget_deferred(&self) {
+        self.inner.deferred.lock().clear();
+    }
+    /// Frees the sets kept by `defer_free`; the caller holds the pool.
+    pub(crate) fn free_deferred(&self) {
+        let raws = core::mem::take(&mut *self.inner.deferred.lock());
+        if !raws.is_empty() {
+            let _ = unsafe {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_0()
+                    .free_descriptor_sets)(
+                    self.parent().raw(),
+                    self.raw(),
+                    raws.len() as u32,
+                    raws.as_ptr(),
+                )
+            };
+        }
+    }
     /// A token each set allocated from the pool holds: the pool is reset
     /// only when none is left.
     pub(crate) fn set_token(&self) -> Vrc<()> {
@@ -605,6 +713,13 @@ impl DescriptorPool {
     /// program, or by a command buffer or submission that uses it).
     pub(crate) fn has_sets(&self) -> bool {
         Vrc::strong_count(&self.inner.sets) > 1
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -670,6 +785,7 @@ struct DescriptorSetInner {
     token: std::sync::OnceLock<Vrc<()>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl DescriptorSet {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -689,9 +805,10 @@ impl DescriptorSet {
                 token: std::sync::OnceLock::new(),
                 keep,
                 destroy,
+                sync: parent.parent().live().sync_for(raw),
             }),
         };
-        parent.parent().live().add(raw, &this.retained());
+        parent.parent().live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -703,6 +820,13 @@ impl DescriptorSet {
     pub(crate) fn with_token(self, token: Vrc<()>) -> Self {
         let _ = self.inner.token.set(token);
         self
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -746,6 +870,11 @@ impl Drop for DescriptorSetInner {
         if !self.parent.frees_sets() {
             return;
         }
+        let Some(_pool) = self.parent.host_sync().try_lock() else {
+            self.parent.defer_free(self.raw);
+            return;
+        };
+        self.parent.free_deferred();
         unsafe {
             let _ = (self
                 .parent
@@ -772,6 +901,7 @@ struct DescriptorSetLayoutInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl DescriptorSetLayout {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -789,15 +919,23 @@ impl DescriptorSetLayout {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -863,6 +1001,7 @@ struct DescriptorUpdateTemplateInner {
     entries: std::sync::OnceLock<Vec<vk::DescriptorUpdateTemplateEntry>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl DescriptorUpdateTemplate {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -881,9 +1020,10 @@ impl DescriptorUpdateTemplate {
                 entries: std::sync::OnceLock::new(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -903,6 +1043,13 @@ impl DescriptorUpdateTemplate {
     /// The template's entries.
     pub(crate) fn entries(&self) -> &[vk::DescriptorUpdateTemplateEntry] {
         self.inner.entries.get().map_or(&[], Vec::as_slice)
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1119,6 +1266,7 @@ struct DeviceMemoryInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl DeviceMemory {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1136,15 +1284,23 @@ impl DeviceMemory {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1205,6 +1361,7 @@ struct EventInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Event {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1222,15 +1379,23 @@ impl Event {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1292,6 +1457,7 @@ struct FenceInner {
     submission: Vutex<Option<Vrc<crate::submission::Submission>>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Fence {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1310,9 +1476,10 @@ impl Fence {
                 submission: Vutex::new(None),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -1337,6 +1504,13 @@ impl Fence {
         if let Some(sub) = self.submission() {
             self.parent().live().ledger().retire(&sub);
         }
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1418,6 +1592,7 @@ struct FramebufferInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Framebuffer {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1435,15 +1610,23 @@ impl Framebuffer {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1505,6 +1688,7 @@ struct ImageInner {
     bound: Vutex<Option<Retained>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Image {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1523,9 +1707,10 @@ impl Image {
                 bound: Vutex::new(None),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -1536,6 +1721,13 @@ impl Image {
     /// Keeps `memory` alive as long as this object, once it is bound to it.
     pub(crate) fn retain_memory(&self, memory: Retained) {
         *self.inner.bound.lock() = Some(memory);
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1596,6 +1788,7 @@ struct ImageViewInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl ImageView {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1613,15 +1806,23 @@ impl ImageView {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1851,6 +2052,7 @@ struct PhysicalDeviceInner {
     parent: Instance,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl PhysicalDevice {
     ///Wraps a handle created from `parent`; it is not destroyed (the implementation owns it) when the last clone goes.
@@ -1868,6 +2070,7 @@ impl PhysicalDevice {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: tuff_runtime::HostSync::new(),
             }),
         };
         this
@@ -1876,6 +2079,13 @@ impl PhysicalDevice {
     #[inline]
     pub fn parent(&self) -> &Instance {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -1926,6 +2136,7 @@ struct PipelineInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Pipeline {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -1943,15 +2154,23 @@ impl Pipeline {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2012,6 +2231,7 @@ struct PipelineCacheInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl PipelineCache {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2029,15 +2249,23 @@ impl PipelineCache {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2098,6 +2326,7 @@ struct PipelineLayoutInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl PipelineLayout {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2115,15 +2344,23 @@ impl PipelineLayout {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2188,6 +2425,7 @@ struct PrivateDataSlotInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl PrivateDataSlot {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2205,15 +2443,23 @@ impl PrivateDataSlot {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2278,6 +2524,7 @@ struct QueryPoolInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl QueryPool {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2295,15 +2542,23 @@ impl QueryPool {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2367,6 +2622,7 @@ struct QueueInner {
     unfenced: Vutex<Vec<Vrc<crate::submission::Submission>>>,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Queue {
     ///Wraps a handle created from `parent`; it is not destroyed (the implementation owns it) when the last clone goes.
@@ -2387,8 +2643,10 @@ impl Queue {
                 unfenced: Vutex::new(Vec::new()),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
@@ -2421,6 +2679,13 @@ impl Queue {
             done
         };
         drop(done);
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2457,6 +2722,8 @@ impl Drop for QueueInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        let _queue = self.sync.lock();
         let held = core::mem::take(&mut *self.unfenced.lock());
         if held.iter().any(|s| !s.is_complete()) {
             let r = unsafe { (self.parent.fns().fp_v1_0().queue_wait_idle)(self.raw) };
@@ -2479,6 +2746,7 @@ struct RenderPassInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl RenderPass {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2496,15 +2764,23 @@ impl RenderPass {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2565,6 +2841,7 @@ struct SamplerInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Sampler {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2582,15 +2859,23 @@ impl Sampler {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2651,6 +2936,7 @@ struct SamplerYcbcrConversionInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl SamplerYcbcrConversion {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2668,15 +2954,23 @@ impl SamplerYcbcrConversion {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2741,6 +3035,7 @@ struct SemaphoreInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl Semaphore {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2758,15 +3053,23 @@ impl Semaphore {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2827,6 +3130,7 @@ struct ShaderModuleInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 impl ShaderModule {
     ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
@@ -2844,15 +3148,23 @@ impl ShaderModule {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -2915,6 +3227,7 @@ struct SurfaceKHRInner {
     parent: Instance,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 #[cfg(feature = "khr_surface")]
 impl SurfaceKHR {
@@ -2933,6 +3246,7 @@ impl SurfaceKHR {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: tuff_runtime::HostSync::new(),
             }),
         };
         this
@@ -2941,6 +3255,13 @@ impl SurfaceKHR {
     #[inline]
     pub fn parent(&self) -> &Instance {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]
@@ -3005,6 +3326,7 @@ struct SwapchainKHRInner {
     parent: Device,
     keep: Option<Retained>,
     destroy: bool,
+    sync: tuff_runtime::HostSync,
 }
 #[cfg(feature = "khr_swapchain")]
 impl SwapchainKHR {
@@ -3023,15 +3345,23 @@ impl SwapchainKHR {
                 parent: parent.clone(),
                 keep,
                 destroy,
+                sync: parent.live().sync_for(raw),
             }),
         };
-        parent.live().add(raw, &this.retained());
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
         this
     }
     /// The object this one was created from, which it keeps alive.
     #[inline]
     pub fn parent(&self) -> &Device {
         &self.inner.parent
+    }
+    /// The object's host synchronization: held by every call that the
+    /// specification says must not use the object from two threads at once.
+    #[inline]
+    #[allow(dead_code)]
+    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+        &self.inner.sync
     }
     /// Another object this one keeps alive (a swapchain for its images).
     #[inline]

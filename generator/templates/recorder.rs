@@ -78,6 +78,9 @@ pub struct Recorder<'c, S: State> {
     #[cfg(feature = "runtime_implicit_validations")]
     skipped_begin: bool,
     alive: Alive,
+    /// The command pool is externally synchronized by every command recorded into
+    /// any of its buffers: held for the whole recording.
+    pool_sync: tuff_runtime::HostSyncGuard,
     _state: PhantomData<S>,
 }
 
@@ -153,6 +156,7 @@ impl CommandBuffer {
                 message: "a secondary command buffer is begun without inheritance info".into(),
             });
         }
+        let pool_sync = self.parent().host_sync().lock();
         let still_recording = self.uses().check_begin(self.device(), self.parent().resets_buffers())?;
         #[cfg(feature = "runtime_implicit_validations")]
         crate::checks::check_command_buffer_begin_info(info, &self.device().scope())?;
@@ -186,6 +190,7 @@ impl CommandBuffer {
             device: self.device().clone(),
             raw: self.raw(),
             alive: Alive(self.uses().clone()),
+            pool_sync,
             cb: self,
             kept: Vec::new(),
             last: 0,
@@ -277,6 +282,7 @@ impl<'c, S: State> Recorder<'c, S> {
             #[cfg(feature = "runtime_implicit_validations")]
             skipped_begin: self.skipped_begin,
             alive: self.alive,
+            pool_sync: self.pool_sync,
             _state: PhantomData,
         }
     }

@@ -12,7 +12,7 @@
 
 use ash::vk::{self, Handle as _};
 use std::collections::HashMap;
-use tuff_runtime::{Retained, Vrc, Vutex, Vweak};
+use tuff_runtime::{HostSync, Retained, Vrc, Vutex, Vweak};
 
 /// The array a raw struct member points to.
 ///
@@ -46,14 +46,21 @@ unsafe fn read<T: Copy + Default>(ptr: *const T, i: usize) -> T {
 /// descriptor's handles (an image descriptor has a view and a sampler).
 type Slot = (u32, u32, u8);
 
+/// A live object, weakly, and its host synchronization.
+type LiveEntry = (Vweak<dyn tuff_runtime::Retain>, HostSync);
+
 /// The live objects of one device, and what each descriptor set refers to.
 pub(crate) struct Live {
-    objects: Vutex<HashMap<(vk::ObjectType, u64), Vweak<dyn tuff_runtime::Retain>>>,
+    /// Each live object, weakly, with the host synchronization that every wrapper of
+    /// its handle shares.
+    objects: Vutex<HashMap<(vk::ObjectType, u64), LiveEntry>>,
     sets: Vutex<HashMap<u64, HashMap<Slot, Retained>>>,
     /// Each device memory's size, type and whether it is mapped now.
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
     /// The device's queue operations that may still be executing.
     ledger: crate::submission::Ledger,
+    /// The host synchronization of each queue of the device.
+    queues: Vutex<HashMap<u64, HostSync>>,
 }
 
 impl Default for Live {
@@ -63,6 +70,7 @@ impl Default for Live {
             sets: Vutex::new(HashMap::new()),
             memories: Vutex::new(HashMap::new()),
             ledger: Default::default(),
+            queues: Vutex::new(HashMap::new()),
         }
     }
 }
@@ -74,12 +82,38 @@ impl Live {
         &self.ledger
     }
 
+    /// The host synchronization of a new wrapper of `raw`. A queue can get several
+    /// wrappers (`get_device_queue` twice) and Vulkan synchronizes the queue, not
+    /// the wrappers, so every wrapper of one queue shares one for the device's life
+    /// (a device has few queues); any other object gets a new one.
+    pub(crate) fn sync_for<H: vk::Handle>(&self, raw: H) -> HostSync {
+        if H::TYPE == vk::ObjectType::QUEUE {
+            self.queues.lock().entry(raw.as_raw()).or_default().clone()
+        } else {
+            HostSync::new()
+        }
+    }
+
+    /// The host synchronization of a live object named by its type and raw handle.
+    pub(crate) fn sync_of(&self, ty: vk::ObjectType, raw: u64) -> Option<HostSync> {
+        self.objects
+            .lock()
+            .get(&(ty, raw))
+            .filter(|(w, _)| w.strong_count() > 0)
+            .map(|(_, s)| s.clone())
+    }
+
+    /// The host synchronizations of every queue of the device.
+    pub(crate) fn queue_syncs(&self) -> Vec<HostSync> {
+        self.queues.lock().values().cloned().collect()
+    }
+
     /// Lists a new object under its raw handle.
-    pub(crate) fn add<H: vk::Handle>(&self, raw: H, object: &Retained) {
+    pub(crate) fn add<H: vk::Handle>(&self, raw: H, object: &Retained, sync: &HostSync) {
         let raw = raw.as_raw();
         self.objects
             .lock()
-            .insert((H::TYPE, raw), Vrc::downgrade(object));
+            .insert((H::TYPE, raw), (Vrc::downgrade(object), sync.clone()));
         if H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
             // A new set starts empty, even if its handle was a set's that a pool reset
             // freed while that set's wrapper lived on; released outside the lock.
@@ -95,7 +129,7 @@ impl Live {
         let key = (H::TYPE, raw.as_raw());
         let unlisted = {
             let mut objects = self.objects.lock();
-            let gone = objects.get(&key).is_some_and(|w| w.strong_count() == 0);
+            let gone = objects.get(&key).is_some_and(|(w, _)| w.strong_count() == 0);
             if gone {
                 objects.remove(&key);
             }
@@ -145,7 +179,7 @@ impl Live {
         self.objects
             .lock()
             .get(&(H::TYPE, raw))
-            .and_then(|w| w.upgrade())
+            .and_then(|(w, _)| w.upgrade())
     }
 
     /// The live objects among `raws`, for a wrapper to keep.

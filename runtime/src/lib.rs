@@ -28,7 +28,10 @@ pub use memory::{
     AllocError, Allocation, AllocationBacking, AllocationParts, AllocationRequest, Allocator,
     DeviceOwner, GpuAllocator, MemoryLocation, NaiveAllocator,
 };
-pub use sync::{MaybeSend, MaybeSendSync, Retain, Retained, Vrc, Vutex, VutexGuard, Vweak};
+pub use sync::{
+    lock_all, HostSync, HostSyncGuard, MaybeSend, MaybeSendSync, Retain, Retained, Vrc, Vutex,
+    VutexGuard, Vweak,
+};
 
 /// True when the `runtime_implicit_validations` feature compiles in the generated
 /// code's run-time checks of implicit rules. When false those checks are not compiled

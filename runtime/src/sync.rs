@@ -254,9 +254,136 @@ impl<T: MaybeSendSync + ?Sized> Retain for T {}
 /// ```
 pub type Retained = Vrc<dyn Retain>;
 
+/// The host synchronization of one Vulkan object: what the specification asks of a
+/// parameter it marks externally synchronized (no two threads use the object in
+/// such a call at once). With `multi_thread` it is a reentrant lock, so one thread
+/// may hold it across nested calls (a recording holds its command pool's); without
+/// it, nothing can reach the object from another thread and it is empty.
+///
+/// ```
+/// let queue = tuff_runtime::HostSync::new();
+/// let guard = queue.lock();
+/// let again = queue.lock(); // the same thread may lock it again
+/// drop((again, guard));
+/// ```
+#[derive(Clone, Default)]
+pub struct HostSync {
+    #[cfg(feature = "multi_thread")]
+    lock: std::sync::Arc<parking_lot::ReentrantMutex<()>>,
+}
+
+/// A held [`HostSync`]: released when dropped. It owns its share of the lock, so a
+/// recorder can hold one for as long as it records.
+#[must_use = "the object is synchronized only while the guard lives"]
+pub struct HostSyncGuard {
+    #[cfg(feature = "multi_thread")]
+    _guard: parking_lot::lock_api::ArcReentrantMutexGuard<
+        parking_lot::RawMutex,
+        parking_lot::RawThreadId,
+        (),
+    >,
+}
+
+impl HostSync {
+    /// A new, unlocked synchronization.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Waits until no other thread holds the object, then holds it.
+    #[inline]
+    pub fn lock(&self) -> HostSyncGuard {
+        HostSyncGuard {
+            #[cfg(feature = "multi_thread")]
+            _guard: parking_lot::ReentrantMutex::lock_arc(&self.lock),
+        }
+    }
+
+    /// Holds the object if no other thread does, without waiting.
+    #[inline]
+    pub fn try_lock(&self) -> Option<HostSyncGuard> {
+        #[cfg(feature = "multi_thread")]
+        {
+            parking_lot::ReentrantMutex::try_lock_arc(&self.lock)
+                .map(|g| HostSyncGuard { _guard: g })
+        }
+        #[cfg(not(feature = "multi_thread"))]
+        {
+            Some(HostSyncGuard {})
+        }
+    }
+
+    /// Identifies the lock, so several are always taken in one order.
+    #[cfg(feature = "multi_thread")]
+    fn key(&self) -> usize {
+        std::sync::Arc::as_ptr(&self.lock) as usize
+    }
+}
+
+/// Holds every object of one call, each once, in one order for all threads (by
+/// address), so two calls that share objects cannot each wait for the other.
+///
+/// ```
+/// let (a, b) = (tuff_runtime::HostSync::new(), tuff_runtime::HostSync::new());
+/// let held = tuff_runtime::lock_all(vec![b.clone(), a.clone(), b.clone()]);
+/// drop(held);
+/// ```
+#[allow(unused_mut)]
+pub fn lock_all(mut syncs: Vec<HostSync>) -> Vec<HostSyncGuard> {
+    #[cfg(feature = "multi_thread")]
+    {
+        syncs.sort_by_key(HostSync::key);
+        syncs.dedup_by_key(|s| s.key());
+        syncs.iter().map(HostSync::lock).collect()
+    }
+    #[cfg(not(feature = "multi_thread"))]
+    {
+        drop(syncs);
+        Vec::new()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[cfg(feature = "multi_thread")]
+    #[test]
+    fn host_syncs_exclude_other_threads_and_never_deadlock() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let (a, b) = (HostSync::new(), HostSync::new());
+        let inside = AtomicUsize::new(0);
+        std::thread::scope(|scope| {
+            for flip in [false, true] {
+                let (a, b, inside) = (a.clone(), b.clone(), &inside);
+                scope.spawn(move || {
+                    for _ in 0..10_000 {
+                        // Opposite orders on the two threads: lock_all sorts them.
+                        let order = if flip {
+                            vec![b.clone(), a.clone()]
+                        } else {
+                            vec![a.clone(), b.clone()]
+                        };
+                        let held = lock_all(order);
+                        assert_eq!(
+                            inside.fetch_add(1, Ordering::SeqCst),
+                            0,
+                            "two threads inside"
+                        );
+                        // Reentrant: the holder may lock again.
+                        drop(a.lock());
+                        inside.fetch_sub(1, Ordering::SeqCst);
+                        drop(held);
+                    }
+                });
+            }
+        });
+        let held = a.lock();
+        let other =
+            std::thread::scope(|scope| scope.spawn(|| a.try_lock().is_none()).join().unwrap());
+        assert!(other, "another thread got a held lock");
+        drop(held);
+    }
 
     #[test]
     fn try_lock_fails_while_locked() {

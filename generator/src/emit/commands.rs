@@ -271,6 +271,11 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     if table(model, name).is_none() {
         return Err("no function table".into());
     }
+    if let Some(path) = super::sync::unsupported_member(cx, name) {
+        return Err(format!(
+            "`{path}` is externally synchronized and the wrappers cannot lock it"
+        ));
+    }
     let parsed: Vec<_> = cmd.params.iter().map(|p| model.parse_field(p)).collect();
     // Counts named by another parameter's len.
     let count_refs: Vec<(usize, String)> = parsed
@@ -946,6 +951,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             self.uses().reset();
             self.keep_alive(Vec::new());
         }),
+        "vkResetDescriptorPool" => post.push(quote!(descriptor_pool.forget_deferred();)),
         "vkResetCommandPool" => post.push(quote! {
             for u in command_pool.buffer_uses() {
                 u.reset();
@@ -1130,10 +1136,11 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     } else {
         quote!(#ret_ty)
     };
+    let host_sync = super::sync::host_syncs(cx, plan);
     let body = if fallible && cmd.return_type != "VkResult" && two_call.is_none() {
-        quote!(#ext_check Ok({ #body }))
+        quote!(#host_sync #ext_check Ok({ #body }))
     } else {
-        quote!(#ext_check #body)
+        quote!(#host_sync #ext_check #body)
     };
     let lt = if lifetimes { quote!(<'a>) } else { quote!() };
     let mut self_ref = if plan.receiver == "VkCommandBuffer" {
@@ -1279,6 +1286,8 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             #[doc = #doc]
             #[inline]
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) -> #ret_checked {
+                // Held across the checks too, so what they saw holds at the call.
+                #host_sync
                 #[cfg(feature = "runtime_implicit_validations")]
                 {
                     #run

@@ -426,11 +426,16 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     // wrapper that Vulkan lets refer to them through a struct can keep them alive.
     let live_path = parent
         .as_deref()
-        .filter(|_| !handle.dispatchable || name == "VkCommandBuffer")
+        .filter(|_| !handle.dispatchable || name == "VkCommandBuffer" || name == "VkQueue")
         .and_then(|p| path_to(cx, p, "VkDevice"));
     let live_add = live_path
         .as_ref()
-        .map(|path| quote!(parent #path.live().add(raw, &this.retained());));
+        .map(|path| quote!(parent #path.live().add(raw, &this.retained(), &this.inner.sync);));
+    // Every wrapper of one object shares the object's host synchronization.
+    let sync_init = match &live_path {
+        Some(path) => quote!(parent #path.live().sync_for(raw)),
+        None => quote!(tuff_runtime::HostSync::new()),
+    };
     let unregister = match (&unregister, &live_path) {
         (_, Some(path)) => Some(quote! {
             #unregister
@@ -506,6 +511,22 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
         } else {
             quote!()
         };
+        // vkFreeCommandBuffers and vkFreeDescriptorSets synchronize the pool. A drop
+        // never waits for it: another thread may hold it for a whole recording while
+        // it waits for a lock this thread holds (a queue whose idle wait released the
+        // last reference). The pool then frees the handle later, under its lock.
+        let fence_wait = if matches!(name, "VkCommandBuffer" | "VkDescriptorSet") {
+            quote! {
+                #fence_wait
+                let Some(_pool) = self.parent.host_sync().try_lock() else {
+                    self.parent.defer_free(self.raw);
+                    return;
+                };
+                self.parent.free_deferred();
+            }
+        } else {
+            fence_wait
+        };
         Some(quote! {
             #cfg
             impl Drop for #inner {
@@ -552,6 +573,8 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             impl Drop for #inner {
                 fn drop(&mut self) {
                     #u
+                    // Another wrapper of the queue may be submitting on another thread.
+                    let _queue = self.sync.lock();
                     let held = core::mem::take(&mut *self.unfenced.lock());
                     if held.iter().any(|s| !s.is_complete()) {
                         // SAFETY: the queue belongs to this live device. What its
@@ -621,6 +644,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             #extra_field
             keep: Option<Retained>,
             destroy: bool,
+            sync: tuff_runtime::HostSync,
         }
         #cfg
         impl #id {
@@ -637,6 +661,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
                         #extra_init
                         keep,
                         destroy,
+                        sync: #sync_init,
                     }),
                 };
                 #live_add
@@ -647,6 +672,13 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             #descriptor_pool_extra
             #pool_setter
             #extra_fns
+            /// The object's host synchronization: held by every call that the
+            /// specification says must not use the object from two threads at once.
+            #[inline]
+            #[allow(dead_code)]
+            pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+                &self.inner.sync
+            }
             /// Another object this one keeps alive (a swapchain for its images).
             #[inline]
             #[allow(dead_code)]
@@ -730,14 +762,33 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
         "VkCommandPool" => {
             let (f, i, fns) = queue_flags_state("the pool's family, for the `cmdpool` checks");
             (
-                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>, buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>,),
-                quote!(#i create_flags: std::sync::OnceLock::new(), buffers: Vutex::new(Vec::new()),),
+                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>, buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>, deferred: Vutex<Vec<vk::CommandBuffer>>,),
+                quote!(#i create_flags: std::sync::OnceLock::new(), buffers: Vutex::new(Vec::new()), deferred: Vutex::new(Vec::new()),),
                 quote! {
                     #fns
                     /// Records the flags the pool was created with.
                     pub(crate) fn with_create_flags(self, flags: vk::CommandPoolCreateFlags) -> Self {
                         let _ = self.inner.create_flags.set(flags);
                         self
+                    }
+                    /// Keeps a buffer whose wrapper went while another thread held
+                    /// the pool, to be freed under the pool's lock.
+                    #[allow(dead_code)]
+                    pub(crate) fn defer_free(&self, raw: vk::CommandBuffer) {
+                        self.inner.deferred.lock().push(raw);
+                    }
+                    /// Frees the buffers kept by `defer_free`; the caller holds the pool.
+                    pub(crate) fn free_deferred(&self) {
+                        let raws = core::mem::take(&mut *self.inner.deferred.lock());
+                        if !raws.is_empty() {
+                            // SAFETY: their wrappers are gone and no submission uses them
+                            // (each waited for its fence before it went); the caller
+                            // holds the pool (VUID-vkFreeCommandBuffers-commandPool-parameter's
+                            // external synchronization).
+                            unsafe {
+                                (self.parent().fns().fp_v1_0().free_command_buffers)(self.parent().raw(), self.raw(), raws.len() as u32, raws.as_ptr())
+                            };
+                        }
                     }
                     /// Lists a buffer allocated from the pool, whose state a reset of
                     /// the pool changes.
@@ -759,9 +810,31 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
             )
         }
         "VkDescriptorPool" => (
-            quote!(sets: Vrc<()>,),
-            quote!(sets: Vrc::new(()),),
+            quote!(sets: Vrc<()>, deferred: Vutex<Vec<vk::DescriptorSet>>,),
+            quote!(sets: Vrc::new(()), deferred: Vutex::new(Vec::new()),),
             quote! {
+                /// Keeps a set whose wrapper went while another thread held the pool,
+                /// to be freed under the pool's lock.
+                #[allow(dead_code)]
+                pub(crate) fn defer_free(&self, raw: vk::DescriptorSet) {
+                    self.inner.deferred.lock().push(raw);
+                }
+                /// Forgets the sets kept by `defer_free`: a reset of the pool freed them.
+                pub(crate) fn forget_deferred(&self) {
+                    self.inner.deferred.lock().clear();
+                }
+                /// Frees the sets kept by `defer_free`; the caller holds the pool.
+                pub(crate) fn free_deferred(&self) {
+                    let raws = core::mem::take(&mut *self.inner.deferred.lock());
+                    if !raws.is_empty() {
+                        // SAFETY: their wrappers are gone, so nothing records or
+                        // submits them; the pool frees sets (only such sets are
+                        // deferred) and the caller holds it.
+                        let _ = unsafe {
+                            (self.parent().fns().fp_v1_0().free_descriptor_sets)(self.parent().raw(), self.raw(), raws.len() as u32, raws.as_ptr())
+                        };
+                    }
+                }
                 /// A token each set allocated from the pool holds: the pool is reset
                 /// only when none is left.
                 pub(crate) fn set_token(&self) -> Vrc<()> {

@@ -11,6 +11,7 @@ pub mod reach;
 pub mod settle;
 pub mod shape;
 pub mod structs;
+pub mod sync;
 pub mod types;
 
 use crate::config::Config;
