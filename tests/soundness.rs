@@ -672,6 +672,105 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
     assert_silent(&s.messages);
 }
 
+#[test]
+fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let gate = event(&s);
+    let done = fence(&s);
+    let target = s.color_target(16, vk::ImageUsageFlags::empty());
+    let formats = [vk::Format::R8G8B8A8_UNORM];
+    let image_infos = [tuff::FramebufferAttachmentImageInfo::new()
+        .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT)
+        .width(16)
+        .height(16)
+        .layer_count(1)
+        .view_formats(&formats)];
+    let mut attachments_info =
+        tuff::FramebufferAttachmentsCreateInfo::new().attachment_image_infos(&image_infos);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let live_with_view;
+    let setter;
+    {
+        // A second view of the target's image, given only at render-pass begin.
+        let view = s
+            .device
+            .create_image_view(
+                &tuff::ImageViewCreateInfo::new(&target.image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .subresource_range(vk::ImageSubresourceRange {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        base_mip_level: 0,
+                        level_count: 1,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    }),
+            )
+            .expect("view");
+        let views = tuff::HandleSlice::new(&[&view]);
+        // An imageless framebuffer reads no view at creation, only the count: it is
+        // given the target's own view, so that only the begin info names `view`.
+        let creation_views = tuff::HandleSlice::new(&[&target.view]);
+        let framebuffer = s
+            .device
+            .create_framebuffer(
+                &tuff::FramebufferCreateInfo::new(&target.render_pass)
+                    .flags(vk::FramebufferCreateFlags::IMAGELESS)
+                    .attachments(&creation_views)
+                    .width(16)
+                    .height(16)
+                    .layers(1)
+                    .push_next(&mut attachments_info),
+            )
+            .expect("imageless framebuffer");
+        live_with_view = s.device.live_object_count();
+        let mut at_begin = tuff::RenderPassAttachmentBeginInfo::new().attachments(&views);
+        let clear = [vk::ClearValue::default()];
+        let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &framebuffer)
+            .render_area(vk::Rect2D {
+                offset: vk::Offset2D::default(),
+                extent: vk::Extent2D {
+                    width: 16,
+                    height: 16,
+                },
+            })
+            .clear_values(&clear)
+            .push_next(&mut at_begin);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.cmd_wait_events(
+            &[&gate],
+            vk::PipelineStageFlags::HOST,
+            vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            &[],
+            &[],
+            &[],
+        );
+        let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        rec.cmd_end_render_pass().end().expect("end");
+        submit(&s, &[&cb], &done).expect("submit");
+        // Set from another thread after a while, so that a failed assertion below
+        // does not leave the queue waiting for ever.
+        setter = set_later(&s, &gate);
+        // The view and the framebuffer go here, while the submission waits; nothing
+        // retires it before the wait below, however early the gate opens.
+    }
+    assert_eq!(
+        s.device.live_object_count(),
+        live_with_view,
+        "the pending submission keeps the view and the framebuffer"
+    );
+    wait(&s, &done);
+    setter.join().expect("setter");
+    // The recording still holds them; a new recording lets them go.
+    cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())
+        .expect("reset");
+    assert_eq!(s.device.live_object_count(), live_with_view - 2);
+    assert_silent(&s.messages);
+}
+
 // Class D: a count shared by several arrays. Every setter either refuses a length
 // that disagrees with the arrays already set, or clears those arrays, so that no
 // array a struct points at is shorter than its count.

@@ -108,6 +108,15 @@ impl Live {
         self.queues.lock().values().cloned().collect()
     }
 
+    /// How many listed objects are alive.
+    pub(crate) fn count(&self) -> usize {
+        self.objects
+            .lock()
+            .values()
+            .filter(|(w, _)| w.strong_count() > 0)
+            .count()
+    }
+
     /// Lists a new object under its raw handle.
     pub(crate) fn add<H: vk::Handle>(&self, raw: H, object: &Retained, sync: &HostSync) {
         let raw = raw.as_raw();

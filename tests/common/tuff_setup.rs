@@ -96,6 +96,9 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
     let mut features13 = tuff::PhysicalDeviceVulkan13Features::new()
         .private_data(vk::TRUE)
         .synchronization2(vk::TRUE);
+    let mut features12 = tuff::PhysicalDeviceVulkan12Features::new()
+        .imageless_framebuffer(vk::TRUE)
+        .timeline_semaphore(vk::TRUE);
     let device_exts = match wsi {
         Wsi::None => vec![],
         Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],
@@ -105,7 +108,8 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
             &tuff::DeviceCreateInfo::new()
                 .queue_create_infos(&queues)
                 .enabled_extension_names(&device_exts)
-                .push_next(&mut features13),
+                .push_next(&mut features13)
+                .push_next(&mut features12),
         )
         .expect("create device");
     let queue = device.get_device_queue(family, 0);

@@ -329,6 +329,24 @@ fn emit_device(cx: &Context) -> TokenStream {
             pub(crate) fn live(&self) -> &crate::retention::Live {
                 &self.inner.live
             }
+            /// How many objects of this device are alive (queues, command
+            /// buffers and every non-dispatchable object), whether the program
+            /// holds them or something it made does (a command buffer holds what
+            /// its last recording uses, a pending submission what it runs): a
+            /// check for leaks, and for what work in flight keeps.
+            ///
+            /// ```no_run
+            /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+            /// let before = device.live_object_count();
+            /// let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
+            /// assert_eq!(device.live_object_count(), before + 1);
+            /// drop(fence);
+            /// assert_eq!(device.live_object_count(), before);
+            /// # Ok(()) }
+            /// ```
+            pub fn live_object_count(&self) -> usize {
+                self.inner.live.count()
+            }
             /// The lifecycle state of the live command buffer with this raw handle.
             pub(crate) fn command_buffer_uses(&self, raw: vk::CommandBuffer) -> Option<Vrc<crate::submission::Uses>> {
                 self.inner.command_buffers.lock().get(&raw).cloned()
