@@ -285,6 +285,81 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
     unsafe { s.queue.queue_submit_unchecked(&[], &signalled) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00063");
     s.queue.queue_wait_idle().expect("idle");
+    let signalled = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+        .expect("fence");
+    // SAFETY: as above.
+    unsafe { s.queue.queue_submit2_unchecked(&[], &signalled) }.expect("unchecked submit2");
+    assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04894");
+    s.queue.queue_wait_idle().expect("idle");
+    let signalled = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+        .expect("fence");
+    assert_eq!(
+        vuid(s.queue.queue_bind_sparse(&[], &signalled)),
+        "VUID-vkQueueBindSparse-fence-01113"
+    );
+    assert_silent(&s.messages);
+    // SAFETY: as above; an empty bind binds nothing. Lavapipe has no sparse
+    // binding and returns an error once the layer has seen the call.
+    let _ = unsafe { s.queue.queue_bind_sparse_unchecked(&[], &signalled) };
+    assert_layer_reports(&s, "VUID-vkQueueBindSparse-fence-01113");
+    s.queue.queue_wait_idle().expect("idle");
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn a_busy_fence_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let gate = event(&s);
+    let done = fence(&s);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    record_gated_fill(
+        &mut cb,
+        vk::CommandBufferUsageFlags::empty(),
+        &gate,
+        &buffer,
+    );
+    submit(&s, &[&cb], &done).expect("submit");
+    let setter = set_later(&s, &gate);
+    assert_eq!(
+        vuid(submit(&s, &[], &done)),
+        "VUID-vkQueueSubmit-fence-00064"
+    );
+    assert_eq!(
+        vuid(s.queue.queue_submit2(&[], &done)),
+        "VUID-vkQueueSubmit2-fence-04895"
+    );
+    assert_eq!(
+        vuid(s.queue.queue_bind_sparse(&[], &done)),
+        "VUID-vkQueueBindSparse-fence-01114"
+    );
+    assert_eq!(
+        vuid(s.device.reset_fences(&[&done])),
+        "VUID-vkResetFences-pFences-01123"
+    );
+    assert_silent(&s.messages);
+    // The same calls without tuff's checks: the layer names the same rules. The
+    // program keeps the buffer and the command buffer until the queue is idle.
+    // SAFETY: an empty submission signals the fence after the pending one; the
+    // reset only breaks the rule under test.
+    unsafe { s.queue.queue_submit_unchecked(&[], &done) }.expect("unchecked submit");
+    assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00064");
+    // SAFETY: as above.
+    unsafe { s.queue.queue_submit2_unchecked(&[], &done) }.expect("unchecked submit2");
+    assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04895");
+    // SAFETY: as above; an empty bind binds nothing (and lavapipe refuses it).
+    let _ = unsafe { s.queue.queue_bind_sparse_unchecked(&[], &done) };
+    assert_layer_reports(&s, "VUID-vkQueueBindSparse-fence-01114");
+    // SAFETY: as above.
+    unsafe { s.device.reset_fences_unchecked(&[&done]) }.expect("unchecked reset");
+    assert_layer_reports(&s, "VUID-vkResetFences-pFences-01123");
+    setter.join().expect("setter");
+    s.queue.queue_wait_idle().expect("idle");
     assert_silent(&s.messages);
 }
 
@@ -771,6 +846,39 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
     assert_silent(&s.messages);
 }
 
+#[test]
+fn a_set_layout_keeps_its_immutable_samplers() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let sampler = s
+        .device
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
+    let samplers = tuff::HandleSlice::new(&[&sampler]);
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::SAMPLER)
+        .immutable_samplers(&samplers)
+        .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+    let layout = s
+        .device
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let with_both = s.device.live_object_count();
+    drop(samplers);
+    drop(sampler);
+    assert_eq!(
+        s.device.live_object_count(),
+        with_both,
+        "the layout keeps the sampler its binding names"
+    );
+    drop(layout);
+    assert_eq!(s.device.live_object_count(), with_both - 2);
+    assert_silent(&s.messages);
+}
+
 // Class D: a count shared by several arrays. Every setter either refuses a length
 // that disagrees with the arrays already set, or clears those arrays, so that no
 // array a struct points at is shorter than its count.
@@ -1019,4 +1127,80 @@ fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
         }
     });
     assert_silent(&s.messages);
+}
+
+/// Every count field of a safe struct that more than one setter writes (arrays that
+/// share it, or the count's own setter beside an array): each of those setters
+/// refuses a length that disagrees (returns a `Result`) or clears the arrays that
+/// would no longer match. Read from the emitted code, for every struct at once.
+#[test]
+fn every_count_that_two_setters_write_is_guarded() {
+    use quote::ToTokens;
+    use std::collections::BTreeMap;
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../generated/src/structs.rs");
+    let text = std::fs::read_to_string(path).expect("generated structs");
+    let file = syn::parse_file(&text).expect("structs.rs parses");
+    let mut unguarded = Vec::new();
+    let mut shared = 0;
+    for item in &file.items {
+        let syn::Item::Impl(imp) = item else { continue };
+        if imp.trait_.is_some() {
+            continue;
+        }
+        let ty = imp.self_ty.to_token_stream().to_string();
+        // count field -> (setter, sets it from an array's length, guarded)
+        let mut writers: BTreeMap<String, Vec<(String, bool, bool)>> = BTreeMap::new();
+        let mut array_counts = Vec::new();
+        for it in &imp.items {
+            let syn::ImplItem::Fn(f) = it else { continue };
+            let body = f.block.to_token_stream().to_string();
+            let output = f.sig.output.to_token_stream().to_string();
+            let guarded = output.contains("Result") || body.contains("core :: ptr :: null ()");
+            for (at, _) in body.match_indices("self . raw . ") {
+                let rest = &body[at + "self . raw . ".len()..];
+                let rest = rest.split(';').next().unwrap_or_default();
+                let Some((field, value)) = rest.split_once(" = ") else {
+                    continue;
+                };
+                let field = field.trim().to_owned();
+                let value = value.trim();
+                let from_len = value.contains("len");
+                let plain = value == "value";
+                if from_len {
+                    array_counts.push(field.clone());
+                }
+                if from_len || plain {
+                    writers.entry(field).or_default().push((
+                        f.sig.ident.to_string(),
+                        from_len,
+                        guarded,
+                    ));
+                }
+            }
+        }
+        for (field, setters) in writers {
+            if !array_counts.contains(&field) || setters.len() < 2 {
+                continue;
+            }
+            shared += 1;
+            let arrays = setters.iter().filter(|(_, from_len, _)| *from_len).count();
+            for (setter, from_len, guarded) in setters {
+                // The only array of a count may set it: the count's own setter is
+                // the one that must guard.
+                let needs_guard = !from_len || arrays > 1;
+                if needs_guard && !guarded {
+                    unguarded.push(format!("{ty}::{setter} (writes `{field}`)"));
+                }
+            }
+        }
+    }
+    assert!(
+        shared >= 6,
+        "only {shared} shared counts found: the scan is broken"
+    );
+    assert!(
+        unguarded.is_empty(),
+        "setters that write a shared count without refusing or clearing:\n{}",
+        unguarded.join("\n")
+    );
 }

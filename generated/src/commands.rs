@@ -10001,7 +10001,13 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    kept.extend(live.get(create_info.as_raw().buffer));
+                    unsafe {
+                        crate::reach::buffer_view_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -10165,8 +10171,13 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
                     {
                         let live = self.live();
                         let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        kept.extend(live.get(info.as_raw().layout));
-                        kept.extend(live.get(info.as_raw().base_pipeline_handle));
+                        unsafe {
+                            crate::reach::compute_pipeline_create_info(
+                                info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -10345,7 +10356,26 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(DescriptorSetLayout::from_raw(out, self, None, true))
+        Ok(
+            DescriptorSetLayout::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::descriptor_set_layout_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Device {
@@ -10409,8 +10439,13 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    kept.extend(live.get(create_info.as_raw().descriptor_set_layout));
-                    kept.extend(live.get(create_info.as_raw().pipeline_layout));
+                    unsafe {
+                        crate::reach::descriptor_update_template_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -10662,16 +10697,13 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    kept.extend(live.get(create_info.as_raw().render_pass));
-                    kept.extend(
-                        live
-                            .keep(unsafe {
-                                crate::retention::raw_slice(
-                                    create_info.as_raw().p_attachments,
-                                    create_info.as_raw().attachment_count,
-                                )
-                            }),
-                    );
+                    unsafe {
+                        crate::reach::framebuffer_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -10771,9 +10803,13 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
                     {
                         let live = self.live();
                         let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        kept.extend(live.get(info.as_raw().layout));
-                        kept.extend(live.get(info.as_raw().render_pass));
-                        kept.extend(live.get(info.as_raw().base_pipeline_handle));
+                        unsafe {
+                            crate::reach::graphics_pipeline_create_info(
+                                info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -10836,7 +10872,26 @@ The caller upholds the rules that [`Self::create_image`] checks at run time (tho
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(Image::from_raw(out, self, None, true))
+        Ok(
+            Image::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::image_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Device {
@@ -10897,7 +10952,13 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    kept.extend(live.get(create_info.as_raw().image));
+                    unsafe {
+                        crate::reach::image_view_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -11143,15 +11204,13 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    kept.extend(
-                        live
-                            .keep(unsafe {
-                                crate::retention::raw_slice(
-                                    create_info.as_raw().p_set_layouts,
-                                    create_info.as_raw().set_layout_count,
-                                )
-                            }),
-                    );
+                    unsafe {
+                        crate::reach::pipeline_layout_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -11429,7 +11488,26 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(Sampler::from_raw(out, self, None, true))
+        Ok(
+            Sampler::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::sampler_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
     }
 }
 impl Device {

@@ -95,6 +95,8 @@ impl Live {
     }
 
     /// The host synchronization of a live object named by its type and raw handle.
+    // Used by extension commands only (presentation, debug names).
+    #[allow(dead_code)]
     pub(crate) fn sync_of(&self, ty: vk::ObjectType, raw: u64) -> Option<HostSync> {
         self.objects
             .lock()

@@ -1369,6 +1369,20 @@ fn keep_expr(
     skip: Option<&str>,
     device_path: &TokenStream,
 ) -> Option<TokenStream> {
+    if cx.reaching.contains(info_ty) && skip.is_none() {
+        // Everything the info reaches, nested structs and `pNext` included: a
+        // descriptor set layout keeps the immutable samplers of its bindings. New
+        // objects keep only older ones, so no cycle can form.
+        let walk = super::reach::walk_fn(info_ty);
+        return Some(quote!({
+            let live = #device_path.live();
+            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+            // SAFETY: the safe info stores every array with its length and chains
+            // only structs pushed through `push_next`.
+            unsafe { #walk(#var.as_raw(), live, &mut kept) };
+            (!kept.is_empty()).then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+        }));
+    }
     let mut parts = Vec::new();
     for (m, shape) in struct_members(cx.model, &cx.facts, info_ty) {
         if m.type_name == parent || Some(m.name.as_str()) == skip {
