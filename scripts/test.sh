@@ -17,3 +17,6 @@ cargo test --workspace
 cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tuff-tests/multi_thread
 # The wrappers with their dynamic checks of implicit rules compiled in.
 cargo test -p tuff-tests --features runtime_implicit_validations --test implicit_checks --test wrappers
+# The adversarial suite under valgrind's memcheck: no invalid read or write, no use
+# of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
+bash scripts/valgrind.sh
