@@ -419,6 +419,26 @@ fn command_buffers_in_the_wrong_state_are_refused() {
         "VUID-vkQueueSubmit-pCommandBuffers-00070"
     );
     assert_silent(&s.messages);
+
+    // The same submissions without tuff's checks: the layer names the same rules.
+    for (cb, rule) in [
+        (&fresh, "VUID-vkQueueSubmit-pCommandBuffers-00070"),
+        (&secondary, "VUID-VkSubmitInfo-pCommandBuffers-00075"),
+    ] {
+        let cbs = tuff::HandleSlice::new(&[cb]);
+        // SAFETY: lavapipe runs a never-recorded buffer as an empty one and a
+        // secondary's fill as a primary's; the program keeps everything until the
+        // fence is waited for.
+        unsafe {
+            s.queue
+                .queue_submit_unchecked(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+        }
+        .expect("unchecked submit");
+        assert_layer_reports(&s, rule);
+        wait(&s, &done);
+        s.device.reset_fences(&[&done]).expect("reset");
+    }
+    assert_silent(&s.messages);
 }
 
 #[test]
@@ -1203,4 +1223,98 @@ fn every_count_that_two_setters_write_is_guarded() {
         "setters that write a shared count without refusing or clearing:\n{}",
         unguarded.join("\n")
     );
+}
+
+/// Timeline semaphores are told from binary ones by their create info, and each is
+/// used only where its values are given: the driver reads a value per timeline
+/// semaphore of a batch, and a counter value of a binary one does not exist.
+#[test]
+fn timeline_semaphores_are_used_only_with_their_values() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let binary = semaphore(&s);
+    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
+        .semaphore_type(vk::SemaphoreType::TIMELINE)
+        .initial_value(0);
+    let timeline = s
+        .device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline semaphore");
+
+    assert_eq!(
+        vuid(s.device.get_semaphore_counter_value(&binary)),
+        "VUID-vkGetSemaphoreCounterValue-semaphore-03255"
+    );
+    assert_eq!(
+        s.device
+            .get_semaphore_counter_value(&timeline)
+            .expect("value"),
+        0
+    );
+    let binaries = tuff::HandleSlice::new(&[&binary]);
+    let wait_binary = tuff::SemaphoreWaitInfo::new()
+        .semaphores(&binaries, &[1])
+        .expect("one value per semaphore");
+    assert_eq!(
+        vuid(s.device.wait_semaphores(&wait_binary, 0)),
+        "VUID-VkSemaphoreWaitInfo-pSemaphores-03256"
+    );
+    assert_eq!(
+        vuid(
+            s.device
+                .signal_semaphore(&tuff::SemaphoreSignalInfo::new(&binary).value(1))
+        ),
+        "VUID-VkSemaphoreSignalInfo-semaphore-03257"
+    );
+
+    let done = fence(&s);
+    let timelines = tuff::HandleSlice::new(&[&timeline]);
+    let no_values = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
+        &done,
+    );
+    assert_eq!(vuid(no_values), "VUID-VkSubmitInfo-pWaitSemaphores-03239");
+    // A count without values, and values of another count.
+    let mut counted = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_value_count(1);
+    let r = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new()
+            .signal_semaphores(&timelines)
+            .push_next(&mut counted)],
+        &done,
+    );
+    assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
+    let mut two = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1, 2]);
+    let r = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new()
+            .signal_semaphores(&timelines)
+            .push_next(&mut two)],
+        &done,
+    );
+    assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
+    assert_silent(&s.messages);
+
+    let mut one = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
+    s.queue
+        .queue_submit(
+            &[tuff::SubmitInfo::new()
+                .signal_semaphores(&timelines)
+                .push_next(&mut one)],
+            &done,
+        )
+        .expect("submit with its value");
+    let wait_one = tuff::SemaphoreWaitInfo::new()
+        .semaphores(&timelines, &[1])
+        .expect("one value per semaphore");
+    assert_eq!(
+        s.device.wait_semaphores(&wait_one, u64::MAX).expect("wait"),
+        vk::Result::SUCCESS
+    );
+    assert_eq!(
+        s.device
+            .get_semaphore_counter_value(&timeline)
+            .expect("value"),
+        1
+    );
+    wait(&s, &done);
+    assert_silent(&s.messages);
 }

@@ -46,13 +46,19 @@ impl Device {
             })();
             r?;
         }
+        crate::submission::check_semaphore_type(
+            self.live(),
+            &[acquire_info.semaphore],
+            false,
+            "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
+        )?;
         unsafe { self.acquire_next_image2_khr_unchecked(acquire_info) }
     }
     /**`vkAcquireNextImage2KHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time: `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn acquire_next_image2_khr_unchecked<'a>(
         &self,
@@ -156,6 +162,14 @@ impl Device {
             })();
             r?;
         }
+        if let Some(semaphore) = semaphore {
+            crate::submission::check_semaphore_type(
+                self.live(),
+                &[semaphore.raw()],
+                false,
+                "VUID-vkAcquireNextImageKHR-semaphore-03265",
+            )?;
+        }
         unsafe {
             self.acquire_next_image_khr_unchecked(swapchain, timeout, semaphore, fence)
         }
@@ -164,7 +178,7 @@ impl Device {
 
 # Safety
 
-The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, `VUID-vkAcquireNextImageKHR-semaphore-03265`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn acquire_next_image_khr_unchecked(
         &self,
@@ -11619,7 +11633,13 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(Semaphore::from_raw(out, self, None, true))
+        Ok({
+            let semaphore: Semaphore = Semaphore::from_raw(out, self, None, true);
+            if crate::submission::creates_timeline(create_info) {
+                self.live().set_timeline(semaphore.raw());
+            }
+            semaphore
+        })
     }
 }
 impl Device {
@@ -15385,13 +15405,19 @@ impl Device {
             })();
             r?;
         }
+        crate::submission::check_semaphore_type(
+            self.live(),
+            &[semaphore.raw()],
+            true,
+            "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
+        )?;
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
     }
     /**`vkGetSemaphoreCounterValue` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, `VUID-vkGetSemaphoreCounterValue-semaphore-03255`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn get_semaphore_counter_value_unchecked(
         &self,
@@ -15758,13 +15784,31 @@ impl Queue {
             r?;
         }
         crate::submission::check_fence(fence, &crate::submission::BIND_SPARSE)?;
+        for b in bind_info {
+            let b = b.as_raw();
+            unsafe {
+                crate::submission::check_timeline_batch(
+                    self.parent().live(),
+                    crate::retention::raw_slice(
+                        b.p_wait_semaphores,
+                        b.wait_semaphore_count,
+                    ),
+                    crate::retention::raw_slice(
+                        b.p_signal_semaphores,
+                        b.signal_semaphore_count,
+                    ),
+                    b.p_next,
+                    &crate::submission::BIND_SPARSE_TIMELINE,
+                )
+            }?;
+        }
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
     }
     /**`vkQueueBindSparse` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_bind_sparse_unchecked<'a>(
         &self,
@@ -15924,13 +15968,25 @@ impl Queue {
             })();
             r?;
         }
+        let waits = unsafe {
+            crate::retention::raw_slice(
+                present_info.p_wait_semaphores,
+                present_info.wait_semaphore_count,
+            )
+        };
+        crate::submission::check_semaphore_type(
+            self.parent().live(),
+            waits,
+            false,
+            "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
+        )?;
         unsafe { self.queue_present_khr_unchecked(present_info) }
     }
     /**`vkQueuePresentKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_present_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::queue_present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_present_khr_unchecked<'a>(
         &self,
@@ -16076,13 +16132,31 @@ impl Queue {
             &cbs,
             &crate::submission::SUBMIT,
         )?;
+        for b in submits {
+            let b = b.as_raw();
+            unsafe {
+                crate::submission::check_timeline_batch(
+                    self.parent().live(),
+                    crate::retention::raw_slice(
+                        b.p_wait_semaphores,
+                        b.wait_semaphore_count,
+                    ),
+                    crate::retention::raw_slice(
+                        b.p_signal_semaphores,
+                        b.signal_semaphore_count,
+                    ),
+                    b.p_next,
+                    &crate::submission::SUBMIT_TIMELINE,
+                )
+            }?;
+        }
         unsafe { self.queue_submit_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,
@@ -17018,6 +17092,24 @@ impl Device {
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
+        crate::submission::check_semaphore_type(
+            self.live(),
+            &[signal_info.semaphore],
+            true,
+            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
+        )?;
+        unsafe { self.signal_semaphore_unchecked(signal_info) }
+    }
+    /**`vkSignalSemaphore` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn signal_semaphore_unchecked<'a>(
+        &self,
+        signal_info: &SemaphoreSignalInfo<'a>,
+    ) -> Result<()> {
         let r = unsafe {
             (self
                 .fns()
@@ -17487,13 +17579,25 @@ impl Device {
             })();
             r?;
         }
+        let semaphores = unsafe {
+            crate::retention::raw_slice(
+                wait_info.p_semaphores,
+                wait_info.semaphore_count,
+            )
+        };
+        crate::submission::check_semaphore_type(
+            self.live(),
+            semaphores,
+            true,
+            "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
+        )?;
         unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
     }
     /**`vkWaitSemaphores` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_semaphores`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn wait_semaphores_unchecked<'a>(
         &self,

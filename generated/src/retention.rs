@@ -61,6 +61,8 @@ pub(crate) struct Live {
     ledger: crate::submission::Ledger,
     /// The host synchronization of each queue of the device.
     queues: Vutex<HashMap<u64, HostSync>>,
+    /// The device's timeline semaphores (the others are binary).
+    timelines: Vutex<std::collections::HashSet<u64>>,
 }
 
 impl Default for Live {
@@ -71,6 +73,7 @@ impl Default for Live {
             memories: Vutex::new(HashMap::new()),
             ledger: Default::default(),
             queues: Vutex::new(HashMap::new()),
+            timelines: Vutex::new(std::collections::HashSet::new()),
         }
     }
 }
@@ -108,6 +111,16 @@ impl Live {
     /// The host synchronizations of every queue of the device.
     pub(crate) fn queue_syncs(&self) -> Vec<HostSync> {
         self.queues.lock().values().cloned().collect()
+    }
+
+    /// Records that a new semaphore is a timeline semaphore.
+    pub(crate) fn set_timeline(&self, raw: vk::Semaphore) {
+        self.timelines.lock().insert(raw.as_raw());
+    }
+
+    /// Whether a live semaphore is a timeline semaphore.
+    pub(crate) fn is_timeline(&self, raw: vk::Semaphore) -> bool {
+        self.timelines.lock().contains(&raw.as_raw())
     }
 
     /// How many listed objects are alive.
@@ -148,6 +161,9 @@ impl Live {
         };
         if unlisted && H::TYPE == vk::ObjectType::DEVICE_MEMORY {
             self.memories.lock().remove(&key.1);
+        }
+        if unlisted && H::TYPE == vk::ObjectType::SEMAPHORE {
+            self.timelines.lock().remove(&key.1);
         }
         // A set whose handle a newer wrapper took over keeps that wrapper's contents.
         if unlisted && H::TYPE == vk::ObjectType::DESCRIPTOR_SET {

@@ -516,3 +516,121 @@ pub(crate) fn check_pool_reset(device: &Device, uses: &[Vrc<Uses>]) -> Result<()
     }
     Ok(())
 }
+
+/// The rules of a batch's timeline semaphore values, by the struct that holds it.
+pub(crate) struct TimelineRules {
+    /// A timeline semaphore without a `VkTimelineSemaphoreSubmitInfo`.
+    pub missing: &'static str,
+    /// Wait values that are not one per wait semaphore.
+    pub waits: &'static str,
+    /// Signal values that are not one per signal semaphore.
+    pub signals: &'static str,
+}
+
+pub(crate) const SUBMIT_TIMELINE: TimelineRules = TimelineRules {
+    missing: "VUID-VkSubmitInfo-pWaitSemaphores-03239",
+    waits: "VUID-VkSubmitInfo-pNext-03240",
+    signals: "VUID-VkSubmitInfo-pNext-03241",
+};
+
+pub(crate) const BIND_SPARSE_TIMELINE: TimelineRules = TimelineRules {
+    missing: "VUID-VkBindSparseInfo-pWaitSemaphores-03246",
+    waits: "VUID-VkBindSparseInfo-pNext-03247",
+    signals: "VUID-VkBindSparseInfo-pNext-03248",
+};
+
+/// Refuses a batch whose timeline semaphores have no value, or fewer values than
+/// semaphores: the driver reads one value per semaphore from the chained
+/// `VkTimelineSemaphoreSubmitInfo`.
+///
+/// # Safety
+///
+/// `next` is a chain built by `push_next` on a safe struct.
+pub(crate) unsafe fn check_timeline_batch(
+    live: &crate::retention::Live,
+    waits: &[vk::Semaphore],
+    signals: &[vk::Semaphore],
+    next: *const core::ffi::c_void,
+    rules: &TimelineRules,
+) -> Result<()> {
+    let wait_timeline = waits.iter().any(|s| live.is_timeline(*s));
+    let signal_timeline = signals.iter().any(|s| live.is_timeline(*s));
+    if !wait_timeline && !signal_timeline {
+        return Ok(());
+    }
+    // SAFETY: the caller vouches for the chain; the sType says what the node is.
+    let info = unsafe { crate::support::chain_nodes(next) }
+        .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
+        .map(|n| unsafe { &*(n as *const vk::BaseInStructure<'_>).cast::<vk::TimelineSemaphoreSubmitInfo<'_>>() });
+    let Some(info) = info else {
+        return Err(Error::Validation {
+            vuid: rules.missing,
+            message: "a batch names a timeline semaphore but chains no TimelineSemaphoreSubmitInfo".into(),
+        });
+    };
+    // A count set on its own leaves its values unset: the driver would read them.
+    if wait_timeline && !waits.is_empty() && info.p_wait_semaphore_values.is_null() {
+        return Err(Error::Validation {
+            vuid: rules.waits,
+            message: "the batch waits on a timeline semaphore but its wait values are not set".into(),
+        });
+    }
+    if signal_timeline && !signals.is_empty() && info.p_signal_semaphore_values.is_null() {
+        return Err(Error::Validation {
+            vuid: rules.signals,
+            message: "the batch signals a timeline semaphore but its signal values are not set".into(),
+        });
+    }
+    if wait_timeline && info.wait_semaphore_value_count as usize != waits.len() {
+        return Err(Error::Validation {
+            vuid: rules.waits,
+            message: format!(
+                "{} wait values for {} wait semaphores",
+                info.wait_semaphore_value_count,
+                waits.len()
+            ),
+        });
+    }
+    if signal_timeline && info.signal_semaphore_value_count as usize != signals.len() {
+        return Err(Error::Validation {
+            vuid: rules.signals,
+            message: format!(
+                "{} signal values for {} signal semaphores",
+                info.signal_semaphore_value_count,
+                signals.len()
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// Whether a semaphore create info asks for a timeline semaphore.
+pub(crate) fn creates_timeline(info: &crate::structs::SemaphoreCreateInfo<'_>) -> bool {
+    // SAFETY: the safe create info only chains structs pushed through `push_next`;
+    // the sType says what the node is.
+    unsafe { crate::support::chain_nodes(info.p_next) }
+        .find(|n| n.s_type == vk::StructureType::SEMAPHORE_TYPE_CREATE_INFO)
+        .is_some_and(|n| {
+            let t = unsafe { &*(n as *const vk::BaseInStructure<'_>).cast::<vk::SemaphoreTypeCreateInfo<'_>>() };
+            t.semaphore_type == vk::SemaphoreType::TIMELINE
+        })
+}
+
+/// Refuses a semaphore of the wrong type for a command that takes only one type.
+pub(crate) fn check_semaphore_type(
+    live: &crate::retention::Live,
+    semaphores: &[vk::Semaphore],
+    timeline: bool,
+    vuid: &'static str,
+) -> Result<()> {
+    if semaphores.iter().any(|s| live.is_timeline(*s) != timeline) {
+        return Err(Error::Validation {
+            vuid,
+            message: format!(
+                "a semaphore is not a {} semaphore",
+                if timeline { "timeline" } else { "binary" }
+            ),
+        });
+    }
+    Ok(())
+}

@@ -148,10 +148,35 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
                 crate::submission::check_command_buffers(self.parent(), &cbs, &#rules)?;
             }
         });
+        // The batches' timeline semaphore values.
+        let check_timeline = match name {
+            "vkQueueSubmit" => Some((quote!(submits), quote!(crate::submission::SUBMIT_TIMELINE))),
+            "vkQueueBindSparse" => Some((quote!(bind_info), quote!(crate::submission::BIND_SPARSE_TIMELINE))),
+            _ => None,
+        }
+        .map(|(batches, rules)| {
+            quote! {
+                for b in #batches {
+                    let b = b.as_raw();
+                    // SAFETY: the safe structs store each array with its length and
+                    // chain only structs pushed through `push_next`.
+                    unsafe {
+                        crate::submission::check_timeline_batch(
+                            self.parent().live(),
+                            crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                            crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+                            b.p_next,
+                            &#rules,
+                        )
+                    }?;
+                }
+            }
+        });
         Some((
             quote! {
                 crate::submission::check_fence(fence, &#rules)?;
                 #check_cbs
+                #check_timeline
             },
             vuids,
         ))
@@ -168,6 +193,9 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
                 "VUID-vkQueueSubmit-pCommandBuffers-00071",
                 "VUID-vkQueueSubmit-pCommandBuffers-00072",
                 "VUID-vkQueueSubmit-pCommandBuffers-00073",
+                "VUID-VkSubmitInfo-pWaitSemaphores-03239",
+                "VUID-VkSubmitInfo-pNext-03240",
+                "VUID-VkSubmitInfo-pNext-03241",
             ],
         ),
         "vkQueueSubmit2" => submit(
@@ -189,6 +217,9 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
             vec![
                 "VUID-vkQueueBindSparse-fence-01113",
                 "VUID-vkQueueBindSparse-fence-01114",
+                "VUID-VkBindSparseInfo-pWaitSemaphores-03246",
+                "VUID-VkBindSparseInfo-pNext-03247",
+                "VUID-VkBindSparseInfo-pNext-03248",
             ],
         ),
         "vkResetFences" => Some((
@@ -203,6 +234,42 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
                 }
             },
             vec!["VUID-vkResetFences-pFences-01123"],
+        )),
+        "vkGetSemaphoreCounterValue" => Some((
+            quote!(crate::submission::check_semaphore_type(self.live(), &[semaphore.raw()], true, "VUID-vkGetSemaphoreCounterValue-semaphore-03255")?;),
+            vec!["VUID-vkGetSemaphoreCounterValue-semaphore-03255"],
+        )),
+        "vkWaitSemaphores" => Some((
+            quote! {
+                // SAFETY: the safe struct stores the array with its length.
+                let semaphores = unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+                crate::submission::check_semaphore_type(self.live(), semaphores, true, "VUID-VkSemaphoreWaitInfo-pSemaphores-03256")?;
+            },
+            vec!["VUID-VkSemaphoreWaitInfo-pSemaphores-03256"],
+        )),
+        "vkSignalSemaphore" => Some((
+            quote!(crate::submission::check_semaphore_type(self.live(), &[signal_info.semaphore], true, "VUID-VkSemaphoreSignalInfo-semaphore-03257")?;),
+            vec!["VUID-VkSemaphoreSignalInfo-semaphore-03257"],
+        )),
+        "vkAcquireNextImageKHR" => Some((
+            quote! {
+                if let Some(semaphore) = semaphore {
+                    crate::submission::check_semaphore_type(self.live(), &[semaphore.raw()], false, "VUID-vkAcquireNextImageKHR-semaphore-03265")?;
+                }
+            },
+            vec!["VUID-vkAcquireNextImageKHR-semaphore-03265"],
+        )),
+        "vkAcquireNextImage2KHR" => Some((
+            quote!(crate::submission::check_semaphore_type(self.live(), &[acquire_info.semaphore], false, "VUID-VkAcquireNextImageInfoKHR-semaphore-03266")?;),
+            vec!["VUID-VkAcquireNextImageInfoKHR-semaphore-03266"],
+        )),
+        "vkQueuePresentKHR" => Some((
+            quote! {
+                // SAFETY: the safe struct stores the array with its length.
+                let waits = unsafe { crate::retention::raw_slice(present_info.p_wait_semaphores, present_info.wait_semaphore_count) };
+                crate::submission::check_semaphore_type(self.parent().live(), waits, false, "VUID-vkQueuePresentKHR-pWaitSemaphores-03267")?;
+            },
+            vec!["VUID-vkQueuePresentKHR-pWaitSemaphores-03267"],
         )),
         "vkResetCommandBuffer" => Some((
             quote!(self.uses().check_reset(self.device(), self.parent().resets_buffers())?;),
@@ -1007,6 +1074,15 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             template.with_entries(unsafe { crate::retention::raw_slice(raw.p_descriptor_update_entries, raw.descriptor_update_entry_count) })
         });
     }
+    if plan.name == "vkCreateSemaphore" {
+        ret_expr = quote!({
+            let semaphore: Semaphore = #ret_expr;
+            if crate::submission::creates_timeline(create_info) {
+                self.live().set_timeline(semaphore.raw());
+            }
+            semaphore
+        });
+    }
     if plan.name == "vkAllocateDescriptorSets" {
         ret_expr = quote!({
             let sets: Vec<DescriptorSet> = #ret_expr;
@@ -1282,17 +1358,23 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 (ret_checked, quote!(r?;), call)
             }
         };
+        // Only commands with implicit checks get the block that runs them.
+        let implicit_block = (!checks.is_empty()).then(|| {
+            quote! {
+                #[cfg(feature = "runtime_implicit_validations")]
+                {
+                    #run
+                    #guard
+                }
+            }
+        });
         quote! {
             #[doc = #doc]
             #[inline]
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) -> #ret_checked {
                 // Held across the checks too, so what they saw holds at the call.
                 #host_sync
-                #[cfg(feature = "runtime_implicit_validations")]
-                {
-                    #run
-                    #guard
-                }
+                #implicit_block
                 #always_code
                 // SAFETY: with runtime_implicit_validations the rules the unchecked call
                 // leaves to its caller were checked above; without it they are left to
