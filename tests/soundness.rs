@@ -1318,3 +1318,126 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     wait(&s, &done);
     assert_silent(&s.messages);
 }
+
+/// The two submission commands that take command buffers, and the rule each breaks
+/// for one wrong state.
+#[derive(Clone, Copy)]
+enum Submitter {
+    Submit,
+    Submit2,
+}
+
+impl Submitter {
+    fn submit(
+        self,
+        s: &Setup,
+        cbs: &[&tuff::CommandBuffer],
+        fence: &tuff::Fence,
+    ) -> tuff::Result<()> {
+        match self {
+            Submitter::Submit => submit(s, cbs, fence),
+            Submitter::Submit2 => {
+                let infos: Vec<tuff::CommandBufferSubmitInfo> = cbs
+                    .iter()
+                    .map(|cb| tuff::CommandBufferSubmitInfo::new(cb))
+                    .collect();
+                s.queue.queue_submit2(
+                    &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
+                    fence,
+                )
+            }
+        }
+    }
+
+    /// Not executable, a secondary, twice at once, a secondary recorded again. (A
+    /// secondary pending through another primary, the fifth state, is reachable
+    /// only after the layer's own complaint at recording: a non-simultaneous
+    /// secondary belongs to the last primary that recorded it.)
+    fn rules(self) -> [&'static str; 4] {
+        match self {
+            Submitter::Submit => [
+                "VUID-vkQueueSubmit-pCommandBuffers-00070",
+                "VUID-VkSubmitInfo-pCommandBuffers-00075",
+                "VUID-vkQueueSubmit-pCommandBuffers-00071",
+                "VUID-vkQueueSubmit-pCommandBuffers-00072",
+            ],
+            Submitter::Submit2 => [
+                "VUID-vkQueueSubmit2-commandBuffer-03874",
+                "VUID-VkCommandBufferSubmitInfo-commandBuffer-03890",
+                "VUID-vkQueueSubmit2-commandBuffer-03875",
+                "VUID-vkQueueSubmit2-commandBuffer-03876",
+            ],
+        }
+    }
+}
+
+/// Records `primary` (with `flags`) to execute `secondary`.
+fn record_execute(
+    primary: &mut tuff::CommandBuffer,
+    flags: vk::CommandBufferUsageFlags,
+    secondary: &tuff::CommandBuffer,
+) {
+    let mut rec = primary
+        .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
+        .expect("begin primary");
+    rec.cmd_execute_commands(&[secondary]);
+    rec.end().expect("end primary");
+}
+
+#[test]
+fn every_submission_command_refuses_every_wrong_command_buffer_state() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let none = vk::CommandBufferUsageFlags::empty();
+    for submitter in [Submitter::Submit, Submitter::Submit2] {
+        let [invalid, secondary_rule, twice, rerecorded] = submitter.rules();
+        let gate = event(&s);
+        let done = fence(&s);
+        let (_pool, fresh) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        assert_eq!(vuid(submitter.submit(&s, &[&fresh], &done)), invalid);
+
+        let (_spool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+        let inheritance = tuff::CommandBufferInheritanceInfo::new();
+        let secondary_begin =
+            tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
+        let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
+        rec.cmd_wait_events(
+            &[&gate],
+            vk::PipelineStageFlags::HOST,
+            vk::PipelineStageFlags::TRANSFER,
+            &[],
+            &[],
+            &[],
+        );
+        rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+        rec.end().expect("end secondary");
+        assert_eq!(
+            vuid(submitter.submit(&s, &[&secondary], &done)),
+            secondary_rule
+        );
+
+        let (_ppool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        record_execute(&mut primary, none, &secondary);
+        assert_eq!(
+            vuid(submitter.submit(&s, &[&primary, &primary], &done)),
+            twice
+        );
+
+        // Without SIMULTANEOUS_USE a secondary belongs to the last primary that
+        // recorded it: the first is invalid once a second records it.
+        let (_opool, mut other) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        record_execute(&mut other, none, &secondary);
+        assert_eq!(vuid(submitter.submit(&s, &[&primary], &done)), invalid);
+        submitter.submit(&s, &[&other], &done).expect("submit");
+        s.device.set_event(&gate).expect("set");
+        wait(&s, &done);
+        s.device.reset_fences(&[&done]).expect("reset");
+
+        // The secondary recorded again: the primary that executes it is invalid.
+        let rec = secondary.begin(&secondary_begin).expect("begin again");
+        rec.end().expect("end again");
+        assert_eq!(vuid(submitter.submit(&s, &[&other], &done)), rerecorded);
+        assert_silent(&s.messages);
+    }
+}

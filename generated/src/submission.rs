@@ -174,8 +174,13 @@ struct UsesState {
     generation: u64,
     /// The submissions that use the buffer, directly or through a primary.
     subs: Vec<Vweak<Submission>>,
-    /// The secondaries the current recording executes, with their generation then.
-    secondaries: Vec<(Vrc<Uses>, u64)>,
+    /// Bumped each time a primary records this secondary: without SIMULTANEOUS_USE
+    /// a secondary belongs to the last primary that recorded it, and the earlier
+    /// ones are invalid.
+    links: u64,
+    /// The secondaries the current recording executes, with their generation and
+    /// link count then.
+    secondaries: Vec<(Vrc<Uses>, u64, u64)>,
 }
 
 impl Uses {
@@ -306,11 +311,15 @@ impl Uses {
 
     /// The current recording executes `secondary`.
     pub(crate) fn executes(&self, secondary: &Vrc<Uses>) {
-        let generation = secondary.state.lock().generation;
+        let (generation, links) = {
+            let mut s = secondary.state.lock();
+            s.links += 1;
+            (s.generation, s.links)
+        };
         self.state
             .lock()
             .secondaries
-            .push((secondary.clone(), generation));
+            .push((secondary.clone(), generation, links));
     }
 
     /// `sub` uses this buffer and the secondaries its recording executes.
@@ -322,7 +331,7 @@ impl Uses {
                 // A one-time buffer goes to the invalid state once submitted.
                 state.executable = false;
             }
-            state.secondaries.iter().map(|(s, _)| s.clone()).collect()
+            state.secondaries.iter().map(|(s, _, _)| s.clone()).collect()
         };
         for s in secondaries {
             s.mark(sub);
@@ -449,11 +458,17 @@ pub(crate) fn check_command_buffers(
                 "a command buffer without SIMULTANEOUS_USE is submitted while a submission that uses it may still be executing",
             ));
         }
-        for (sec, generation) in secondaries {
-            let (now, executable, simultaneous) = {
+        for (sec, generation, links) in secondaries {
+            let (now, executable, simultaneous, links_now) = {
                 let s = sec.state.lock();
-                (s.generation, s.executable, s.simultaneous)
+                (s.generation, s.executable, s.simultaneous, s.links)
             };
+            if !simultaneous && links_now != links {
+                return Err(refuse(
+                    rules.executable,
+                    "a secondary command buffer it executes, without SIMULTANEOUS_USE, was recorded into another primary since, which leaves this one invalid",
+                ));
+            }
             if now != generation || !executable {
                 return Err(refuse(
                     rules.secondary_executable,

@@ -73,12 +73,15 @@ fn submission(vuid: &str) -> Option<Settlement> {
         | "VUID-vkQueueSubmit-pCommandBuffers-00070"
         | "VUID-vkQueueSubmit-pCommandBuffers-00071"
         | "VUID-vkQueueSubmit-pCommandBuffers-00072"
-        | "VUID-vkQueueSubmit-pCommandBuffers-00073"
         | "VUID-VkCommandBufferSubmitInfo-commandBuffer-03890"
         | "VUID-vkQueueSubmit2-commandBuffer-03874"
         | "VUID-vkQueueSubmit2-commandBuffer-03875"
-        | "VUID-vkQueueSubmit2-commandBuffer-03876"
-        | "VUID-vkQueueSubmit2-commandBuffer-03877" => Settlement::Dynamic(cbs.into()),
+        | "VUID-vkQueueSubmit2-commandBuffer-03876" => Settlement::Dynamic(cbs.into()),
+        "VUID-vkQueueSubmit-pCommandBuffers-00073" | "VUID-vkQueueSubmit2-commandBuffer-03877" => {
+            Settlement::User(
+                "checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet".into(),
+            )
+        }
         "VUID-vkResetFences-pFences-01123" => Settlement::Dynamic(
             "refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled)".into(),
         ),
