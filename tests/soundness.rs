@@ -467,7 +467,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         &[],
         &[],
     );
-    rec.cmd_execute_commands(&[&secondary]);
+    rec.cmd_execute_commands(&[&secondary]).expect("execute");
     rec.end().expect("end primary");
     submit(&s, &[&primary], &done).expect("submit");
 
@@ -731,7 +731,7 @@ fn recorder_states_follow_the_begin_info() {
         })
         .clear_values(&clear);
     let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
-    rec.cmd_execute_commands(&[&secondary]);
+    rec.cmd_execute_commands(&[&secondary]).expect("execute");
     rec.cmd_end_render_pass().end().expect("end primary");
     let done = fence(&s);
     submit(&s, &[&primary], &done).expect("submit");
@@ -1380,7 +1380,7 @@ fn record_execute(
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin primary");
-    rec.cmd_execute_commands(&[secondary]);
+    rec.cmd_execute_commands(&[secondary]).expect("execute");
     rec.end().expect("end primary");
 }
 
@@ -1430,6 +1430,16 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
         record_execute(&mut other, none, &secondary);
         assert_eq!(vuid(submitter.submit(&s, &[&primary], &done)), invalid);
         submitter.submit(&s, &[&other], &done).expect("submit");
+        // Nor can a third primary take it while it is pending.
+        let (_tpool, mut third) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = third
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin third");
+        assert_eq!(
+            vuid(rec.cmd_execute_commands(&[&secondary])),
+            "VUID-vkCmdExecuteCommands-pCommandBuffers-00091"
+        );
+        rec.end().expect("end third");
         s.device.set_event(&gate).expect("set");
         wait(&s, &done);
         s.device.reset_fences(&[&done]).expect("reset");

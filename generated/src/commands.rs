@@ -6142,7 +6142,10 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdExecuteCommands-pNext-06036`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdExecuteCommands-pNext-06037`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_execute_commands(&mut self, command_buffers: &[&CommandBuffer]) -> () {
+    pub fn cmd_execute_commands(
+        &mut self,
+        command_buffers: &[&CommandBuffer],
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6190,8 +6193,15 @@ impl<'c, S: State> Recorder<'c, S> {
                 }
                 Ok(())
             })();
-            if !self.accept(r) {
-                return;
+            r?;
+        }
+        for h in command_buffers {
+            if h.uses().is_pending_exclusive(self.device()) {
+                return Err(Error::Validation {
+                    vuid: "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
+                    message: "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing"
+                        .into(),
+                });
             }
         }
         unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
@@ -6200,34 +6210,36 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_execute_commands_unchecked(
         &mut self,
         command_buffers: &[&CommandBuffer],
-    ) -> () {
-        for h in command_buffers {
-            self.command_buffer().uses().executes(h.uses());
-        }
-        for h in command_buffers {
-            self.retain(h.retained());
-        }
-        let command_buffers: smallvec::SmallVec<[vk::CommandBuffer; 8]> = command_buffers
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_execute_commands)(
-                self.raw(),
-                command_buffers.len() as u32,
-                command_buffers.as_ptr(),
-            )
-        };
-        ()
+    ) -> Result<()> {
+        Ok({
+            for h in command_buffers {
+                self.command_buffer().uses().executes(h.uses());
+            }
+            for h in command_buffers {
+                self.retain(h.retained());
+            }
+            let command_buffers: smallvec::SmallVec<[vk::CommandBuffer; 8]> = command_buffers
+                .iter()
+                .map(|h| h.raw())
+                .collect();
+            unsafe {
+                (self
+                    .device()
+                    .fns()
+                    .fp_v1_0()
+                    .cmd_execute_commands)(
+                    self.raw(),
+                    command_buffers.len() as u32,
+                    command_buffers.as_ptr(),
+                )
+            };
+            ()
+        })
     }
 }
 impl<'c> Recorder<'c, Outside> {

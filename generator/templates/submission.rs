@@ -208,6 +208,12 @@ impl Uses {
         subs.iter().any(|s| !s.poll(device))
     }
 
+    /// Whether the buffer was recorded without SIMULTANEOUS_USE and a submission that
+    /// uses it may still be executing.
+    pub(crate) fn is_pending_exclusive(&self, device: &Device) -> bool {
+        !self.state.lock().simultaneous && self.is_pending(device)
+    }
+
     /// Whether the buffer was allocated as a secondary.
     pub(crate) fn is_secondary(&self) -> bool {
         self.state.lock().secondary

@@ -235,6 +235,19 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
             },
             vec!["VUID-vkResetFences-pFences-01123"],
         )),
+        "vkCmdExecuteCommands" => Some((
+            quote! {
+                for h in command_buffers {
+                    if h.uses().is_pending_exclusive(self.device()) {
+                        return Err(Error::Validation {
+                            vuid: "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
+                            message: "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing".into(),
+                        });
+                    }
+                }
+            },
+            vec!["VUID-vkCmdExecuteCommands-pCommandBuffers-00091"],
+        )),
         "vkGetSemaphoreCounterValue" => Some((
             quote!(crate::submission::check_semaphore_type(self.live(), &[semaphore.raw()], true, "VUID-vkGetSemaphoreCounterValue-semaphore-03255")?;),
             vec!["VUID-vkGetSemaphoreCounterValue-semaphore-03255"],
@@ -598,7 +611,10 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     let mut ret_expr = quote!(());
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
-    let mut fallible = cmd.return_type == "VkResult" || fallible_ext;
+    // A recorded command that an always-on check may refuse returns its error.
+    let mut fallible = cmd.return_type == "VkResult"
+        || fallible_ext
+        || (is_cmd && always_checks(&plan.name).is_some());
     let mut lifetimes = false;
     let created_ty = cmd
         .params
