@@ -1451,3 +1451,30 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
         assert_silent(&s.messages);
     }
 }
+
+/// A debug name is written under the named object's lock; with `multi_thread` an
+/// object without one the device can hold (the device itself, the instance's
+/// objects) is refused rather than named while another thread may use it.
+#[cfg(feature = "multi_thread")]
+#[test]
+fn debug_names_are_given_only_to_objects_the_device_can_lock() {
+    use tuff::vk::Handle as _;
+    use tuff::Handle as _;
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let name = |ty: vk::ObjectType, raw: u64| {
+        s.device.set_debug_utils_object_name_ext(
+            &tuff::DebugUtilsObjectNameInfoEXT::new()
+                .object_type(ty)
+                .object_handle(raw)
+                .object_name(Some(c"named")),
+        )
+    };
+    name(vk::ObjectType::BUFFER, buffer.raw().as_raw()).expect("a buffer of the device");
+    assert!(matches!(
+        name(vk::ObjectType::DEVICE, s.device.raw().as_raw()),
+        Err(tuff::Error::Misuse(_))
+    ));
+    assert_silent(&s.messages);
+}

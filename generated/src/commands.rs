@@ -16830,8 +16830,12 @@ impl Device {
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs
-                .extend(
-                    self.live().sync_of(name_info.object_type, name_info.object_handle),
+                .push(
+                    crate::submission::named_object_sync(
+                        self,
+                        name_info.object_type,
+                        name_info.object_handle,
+                    )?,
                 );
             tuff_runtime::lock_all(syncs)
         };
@@ -16861,8 +16865,12 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs
-                .extend(
-                    self.live().sync_of(name_info.object_type, name_info.object_handle),
+                .push(
+                    crate::submission::named_object_sync(
+                        self,
+                        name_info.object_type,
+                        name_info.object_handle,
+                    )?,
                 );
             tuff_runtime::lock_all(syncs)
         };
@@ -16901,8 +16909,12 @@ impl Device {
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs
-                .extend(
-                    self.live().sync_of(tag_info.object_type, tag_info.object_handle),
+                .push(
+                    crate::submission::named_object_sync(
+                        self,
+                        tag_info.object_type,
+                        tag_info.object_handle,
+                    )?,
                 );
             tuff_runtime::lock_all(syncs)
         };
@@ -16932,8 +16944,12 @@ The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] check
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs
-                .extend(
-                    self.live().sync_of(tag_info.object_type, tag_info.object_handle),
+                .push(
+                    crate::submission::named_object_sync(
+                        self,
+                        tag_info.object_type,
+                        tag_info.object_handle,
+                    )?,
                 );
             tuff_runtime::lock_all(syncs)
         };

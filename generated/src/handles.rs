@@ -1145,7 +1145,7 @@ impl Device {
         let mut ext = DeviceExtensions::default();
         let _ = enabled;
         #[cfg(feature = "ext_debug_utils")]
-        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_debug_utils".as_bytes()) {
+        if physical.parent().ext().ext_debug_utils.is_some() {
             ext.ext_debug_utils = Some(
                 ash::ext::debug_utils::Device::new(physical.parent().fns(), &fns)
                     .fp()

@@ -655,3 +655,23 @@ pub(crate) fn check_semaphore_type(
     }
     Ok(())
 }
+
+/// The host synchronization of an object a debug name or tag is given to: that of a
+/// live object of the device. An object the device does not list (the device itself,
+/// which every call of another thread uses, and the instance's own objects: the
+/// instance, a physical device, a surface, a messenger) has none it can hold; with
+/// `multi_thread`, where another thread could use it meanwhile, naming it is refused.
+#[allow(dead_code)]
+pub(crate) fn named_object_sync(
+    device: &Device,
+    ty: vk::ObjectType,
+    raw: u64,
+) -> Result<tuff_runtime::HostSync> {
+    match device.live().sync_of(ty, raw) {
+        Some(sync) => Ok(sync),
+        None if tuff_runtime::MULTI_THREAD => Err(Error::Misuse(
+            "with multi_thread, only the device and its objects can be named or tagged through it: another thread could use any other object meanwhile",
+        )),
+        None => Ok(tuff_runtime::HostSync::new()),
+    }
+}

@@ -30,7 +30,7 @@ pub use memory::{
 };
 pub use sync::{
     lock_all, HostSync, HostSyncGuard, MaybeSend, MaybeSendSync, Retain, Retained, Vrc, Vutex,
-    VutexGuard, Vweak,
+    VutexGuard, Vweak, MULTI_THREAD,
 };
 
 /// True when the `runtime_implicit_validations` feature compiles in the generated

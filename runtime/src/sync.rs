@@ -254,6 +254,13 @@ impl<T: MaybeSendSync + ?Sized> Retain for T {}
 /// ```
 pub type Retained = Vrc<dyn Retain>;
 
+/// Whether this build shares wrappers between threads (`multi_thread`).
+///
+/// ```
+/// assert_eq!(tuff_runtime::MULTI_THREAD, cfg!(feature = "multi_thread"));
+/// ```
+pub const MULTI_THREAD: bool = cfg!(feature = "multi_thread");
+
 /// The host synchronization of one Vulkan object: what the specification asks of a
 /// parameter it marks externally synchronized (no two threads use the object in
 /// such a call at once). With `multi_thread` it is a reentrant lock, so one thread

@@ -124,9 +124,17 @@ fn ext_tables(
             pub #f: Option<#module::#fn_ty>,
         });
         let name_lit = e.as_str();
+        // An instance extension's device-level commands (debug names) are there when
+        // the instance enabled it; the device's own list never names it.
+        let instance_ext = at == Level::Device && cx.model.instance_extensions.contains(e);
+        let enabled = if instance_ext {
+            quote!(physical.parent().ext().#f.is_some())
+        } else {
+            quote!(enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()))
+        };
         loads.push(quote! {
             #[cfg(feature = #feat)]
-            if enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()) {
+            if #enabled {
                 ext.#f = Some(#module::#loader::new(#loader_args).fp().clone());
             }
         });

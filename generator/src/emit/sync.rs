@@ -43,13 +43,14 @@ fn member(command: &str, path: &str) -> Option<TokenStream> {
                 syncs.extend(self.parent().live().sync_of(vk::ObjectType::SWAPCHAIN_KHR, vk::Handle::as_raw(*s)));
             }
         },
-        // Objects of the device; an instance's own objects are not listed there, and
-        // naming them is left to the caller's synchronization (see the method's docs).
+        // The device itself, or an object of it; an instance's own objects have no
+        // lock the device can find, so naming them is refused where another thread
+        // could use them (see `named_object_sync`).
         ("vkSetDebugUtilsObjectNameEXT", "pNameInfo->objectHandle") => quote! {
-            syncs.extend(self.live().sync_of(name_info.object_type, name_info.object_handle));
+            syncs.push(crate::submission::named_object_sync(self, name_info.object_type, name_info.object_handle)?);
         },
         ("vkSetDebugUtilsObjectTagEXT", "pTagInfo->objectHandle") => quote! {
-            syncs.extend(self.live().sync_of(tag_info.object_type, tag_info.object_handle));
+            syncs.push(crate::submission::named_object_sync(self, tag_info.object_type, tag_info.object_handle)?);
         },
         _ => return None,
     })

@@ -50,6 +50,8 @@ pub struct Model {
     pub enabled: BTreeSet<String>,
     /// For each extension, what it depends on (vk.xml's expression).
     pub extension_depends: BTreeMap<String, String>,
+    /// The instance extensions (`type="instance"`); the others are device ones.
+    pub instance_extensions: BTreeSet<String>,
 }
 
 /// A handle type and what the registry says about its lifetime.
@@ -322,6 +324,12 @@ impl Model {
                 .extensions
                 .iter()
                 .filter_map(|e| Some((e.name.clone(), e.depends.clone()?)))
+                .collect(),
+            instance_extensions: registry
+                .extensions
+                .iter()
+                .filter(|e| e.ext_type.as_deref() == Some("instance"))
+                .map(|e| e.name.clone())
                 .collect(),
         })
     }

@@ -53,6 +53,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                     name: f.name,
                     number: f.number,
                     supported: None,
+                    ext_type: None,
                     depends: f.depends,
                     requires: convert_requires(f.children, None, &mut numbers, &mut aliases),
                 });
@@ -77,6 +78,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                         name: e.name,
                         number: e.number.map(|n| n.to_string()),
                         supported: e.supported,
+                        ext_type: e.ext_type,
                         depends,
                         requires,
                     });

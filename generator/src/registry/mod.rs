@@ -141,6 +141,8 @@ pub struct Interface {
     pub number: Option<String>,
     /// For extensions: `supported` (`vulkan`, `vulkansc`, `disabled`, ...).
     pub supported: Option<String>,
+    /// For extensions: `type`, `instance` or `device`.
+    pub ext_type: Option<String>,
     /// For extensions: what it depends on, in vk.xml's expression syntax.
     pub depends: Option<String>,
     /// Its `<require>` blocks for the vulkan API.
