@@ -545,6 +545,17 @@ fn a_buffer_of_a_pool_without_reset_is_recorded_once() {
         "VUID-vkBeginCommandBuffer-commandBuffer-00050"
     );
     assert_silent(&s.messages);
+    // `begin` has no unchecked twin: the same call through ash, and the layer names
+    // the same rule.
+    let raw = tuff::Handle::raw(&cb);
+    let begin = vk::CommandBufferBeginInfo::default();
+    // SAFETY: the buffer is executable and not pending; lavapipe resets it, and the
+    // layer reports only the rule under test. It is ended again at once.
+    unsafe {
+        let _ = s.device.fns().begin_command_buffer(raw, &begin);
+        let _ = s.device.fns().end_command_buffer(raw);
+    }
+    assert_layer_reports(&s, "VUID-vkBeginCommandBuffer-commandBuffer-00050");
 }
 
 #[test]
