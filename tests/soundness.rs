@@ -1489,3 +1489,67 @@ fn debug_names_are_given_only_to_objects_the_device_can_lock() {
     ));
     assert_silent(&s.messages);
 }
+
+/// A timeline value seen on the host tells that the batches signalling it finished:
+/// what they used goes then, before their fence is looked at, and the fence still
+/// waits for its own signal before it can be reset or dropped.
+#[test]
+fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let gate = event(&s);
+    let done = fence(&s);
+    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
+        .semaphore_type(vk::SemaphoreType::TIMELINE)
+        .initial_value(0);
+    let timeline = s
+        .device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline semaphore");
+    let before = s.device.live_object_count();
+    {
+        let (buffer, _memory) = transfer_buffer(&s);
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        record_gated_fill(
+            &mut cb,
+            vk::CommandBufferUsageFlags::empty(),
+            &gate,
+            &buffer,
+        );
+        let cbs = tuff::HandleSlice::new(&[&cb]);
+        let signals = tuff::HandleSlice::new(&[&timeline]);
+        let mut values = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
+        s.queue
+            .queue_submit(
+                &[tuff::SubmitInfo::new()
+                    .command_buffers(&cbs)
+                    .signal_semaphores(&signals)
+                    .push_next(&mut values)],
+                &done,
+            )
+            .expect("submit");
+    }
+    assert!(
+        s.device.live_object_count() > before,
+        "the pending submission keeps its buffer, memory, pool and command buffer"
+    );
+    s.device.set_event(&gate).expect("set");
+    let timelines = tuff::HandleSlice::new(&[&timeline]);
+    let wait_info = tuff::SemaphoreWaitInfo::new()
+        .semaphores(&timelines, &[1])
+        .expect("one value per semaphore");
+    assert_eq!(
+        s.device
+            .wait_semaphores(&wait_info, u64::MAX)
+            .expect("wait"),
+        vk::Result::SUCCESS
+    );
+    assert_eq!(
+        s.device.live_object_count(),
+        before,
+        "the value was reached: the batch's objects went"
+    );
+    wait(&s, &done);
+    s.device.reset_fences(&[&done]).expect("reset");
+    assert_silent(&s.messages);
+}

@@ -15445,6 +15445,7 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        self.live().ledger().reached(semaphore.raw(), out);
         Ok(out)
     }
 }
@@ -15857,7 +15858,15 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
             };
         }
         let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = smallvec::SmallVec::new();
-        crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
+        let batches = Vec::new();
+        crate::submission::submitted(
+            device,
+            self.raw(),
+            Some(fence),
+            &cbs,
+            kept,
+            batches,
+        );
         Ok(())
     }
 }
@@ -16056,7 +16065,9 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
                 &mut kept,
             )
         };
-        self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept));
+        self.hold(
+            crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()),
+        );
         let r = unsafe {
             (ext_table
                 .queue_present_khr)(
@@ -16209,7 +16220,15 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
             })
             .copied()
             .collect();
-        crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
+        let batches = crate::submission::submit_timeline_batches(device.live(), submits);
+        crate::submission::submitted(
+            device,
+            self.raw(),
+            Some(fence),
+            &cbs,
+            kept,
+            batches,
+        );
         Ok(())
     }
 }
@@ -16340,7 +16359,18 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
             })
             .map(|i| i.command_buffer)
             .collect();
-        crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
+        let batches = crate::submission::submit2_timeline_batches(
+            device.live(),
+            submits,
+        );
+        crate::submission::submitted(
+            device,
+            self.raw(),
+            Some(fence),
+            &cbs,
+            kept,
+            batches,
+        );
         Ok(())
     }
 }
@@ -17644,6 +17674,25 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
+        }
+        if r == vk::Result::SUCCESS
+            && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY)
+        {
+            let semaphores = unsafe {
+                crate::retention::raw_slice(
+                    wait_info.p_semaphores,
+                    wait_info.semaphore_count,
+                )
+            };
+            let values = unsafe {
+                crate::retention::raw_slice(
+                    wait_info.p_values,
+                    wait_info.semaphore_count,
+                )
+            };
+            for (s, v) in semaphores.iter().zip(values) {
+                self.live().ledger().reached(*s, *v);
+            }
         }
         Ok(r)
     }

@@ -2,8 +2,9 @@
 
 //! Queue submissions: what a submission uses is held until the submission is known
 //! to be complete, by any route (its fence seen signalled, a later fence of the same
-//! queue seen signalled, `queue_wait_idle`, `device_wait_idle`), and never released
-//! by a reset. Command buffers carry their lifecycle state here, so that a buffer is
+//! queue seen signalled, `queue_wait_idle`, `device_wait_idle`, or a timeline value
+//! seen on the host that every one of its batches signals), and never released by a
+//! reset. Command buffers carry their lifecycle state here, so that a buffer is
 //! neither begun again nor submitted in a state Vulkan forbids.
 //!
 //! A fence holds its submission strongly; the device's ledger and each submitted
@@ -22,20 +23,59 @@ pub(crate) struct Submission {
     seq: u64,
     /// The fence it signals, or null.
     fence: vk::Fence,
-    /// What it uses; `None` once it is known complete.
-    kept: Vutex<Option<Vec<Retained>>>,
+    state: Vutex<SubmissionState>,
+}
+
+struct SubmissionState {
+    /// What it uses; `None` once it is known complete, or once every batch is known
+    /// to have finished executing (its timeline signal was seen).
+    kept: Option<Vec<Retained>>,
+    /// Known complete: its fence (or a later one of the queue) was seen signalled or
+    /// the queue went idle. A timeline signal alone does not tell this: the fence
+    /// may still be waiting to signal.
+    complete: bool,
+    /// For each batch that has not been seen finished, the timeline values whose
+    /// signal shows that it did (a signal that covers all of the batch's commands).
+    /// A batch without one keeps the submission's objects until it completes.
+    batches: Vec<Vec<(vk::Semaphore, u64)>>,
 }
 
 impl Submission {
     /// Whether the submission is known complete.
     pub(crate) fn is_complete(&self) -> bool {
-        self.kept.lock().is_none()
+        self.state.lock().complete
     }
 
-    /// Releases what the submission used.
+    /// Marks the submission complete and releases what it used.
     fn complete(&self) {
-        let kept = self.kept.lock().take();
+        let kept = {
+            let mut state = self.state.lock();
+            state.complete = true;
+            state.batches.clear();
+            state.kept.take()
+        };
         // Released outside the lock: the last reference to an object runs its Drop.
+        drop(kept);
+    }
+
+    /// Timeline semaphore `semaphore` reached `value`: the batches that signal it
+    /// with a value no greater have finished, and once every batch has, what the
+    /// submission used goes (the submission itself stays incomplete until its fence
+    /// is seen).
+    fn reached(&self, semaphore: vk::Semaphore, value: u64) {
+        let kept = {
+            let mut state = self.state.lock();
+            if state.kept.is_none() || state.batches.is_empty() {
+                return;
+            }
+            state
+                .batches
+                .retain(|signals| !signals.iter().any(|(s, v)| *s == semaphore && *v <= value));
+            if !state.batches.is_empty() {
+                return;
+            }
+            state.kept.take()
+        };
         drop(kept);
     }
 
@@ -43,8 +83,8 @@ impl Submission {
     /// it signalled; a signalled fence retires the submission on `device`.
     pub(crate) fn poll(&self, device: &Device) -> bool {
         let signalled = {
-            let kept = self.kept.lock();
-            if kept.is_none() {
+            let state = self.state.lock();
+            if state.complete {
                 return true;
             }
             if self.fence == vk::Fence::null() {
@@ -89,14 +129,25 @@ impl Ledger {
         queue: vk::Queue,
         fence: vk::Fence,
         kept: Vec<Retained>,
+        batches: Vec<Vec<(vk::Semaphore, u64)>>,
     ) -> Vrc<Submission> {
         let mut state = self.state.lock();
         state.next += 1;
+        // A batch without a timeline signal can only finish with the fence.
+        let batches = if batches.iter().any(Vec::is_empty) {
+            Vec::new()
+        } else {
+            batches
+        };
         let sub = Vrc::new(Submission {
             queue,
             seq: state.next,
             fence,
-            kept: Vutex::new(Some(kept)),
+            state: Vutex::new(SubmissionState {
+                kept: Some(kept),
+                complete: false,
+                batches,
+            }),
         });
         // A weak entry whose submission is gone or complete is dropped here, so the
         // ledger stays as long as the work in flight.
@@ -113,6 +164,21 @@ impl Ledger {
         let (queue, seq) = (done.queue, done.seq);
         self.retire_where(|s| s.queue == queue && s.seq <= seq);
         done.complete();
+    }
+
+    /// Timeline semaphore `semaphore` was seen at `value` (a wait returned, or its
+    /// counter was read): the batches that signal it with a value no greater have
+    /// finished executing, and submissions whose batches all have release what they
+    /// use. A semaphore signal covers only its own batch, so nothing earlier on the
+    /// queue is released by it.
+    pub(crate) fn reached(&self, semaphore: vk::Semaphore, value: u64) {
+        let subs: Vec<Vrc<Submission>> = {
+            let state = self.state.lock();
+            state.subs.iter().filter_map(Vweak::upgrade).collect()
+        };
+        for s in subs {
+            s.reached(semaphore, value);
+        }
     }
 
     /// Every submission to `queue` is complete (`vkQueueWaitIdle` returned).
@@ -500,11 +566,14 @@ pub(crate) fn submitted(
     fence: Option<&crate::Fence>,
     cbs: &[vk::CommandBuffer],
     kept: Vec<Retained>,
+    batches: Vec<Vec<(vk::Semaphore, u64)>>,
 ) -> Vrc<Submission> {
-    let sub = device
-        .live()
-        .ledger()
-        .record(queue, fence.map_or(vk::Fence::null(), |f| f.raw()), kept);
+    let sub = device.live().ledger().record(
+        queue,
+        fence.map_or(vk::Fence::null(), |f| f.raw()),
+        kept,
+        batches,
+    );
     for raw in cbs {
         if let Some(uses) = device.command_buffer_uses(*raw) {
             uses.mark(&sub);
@@ -674,4 +743,52 @@ pub(crate) fn named_object_sync(
         )),
         None => Ok(tuff_runtime::HostSync::new()),
     }
+}
+
+/// For each batch of a `vkQueueSubmit`, the timeline values it signals: the values of
+/// its timeline semaphores in its chained `VkTimelineSemaphoreSubmitInfo` (checked to
+/// be one per semaphore before the call). Every signal covers the whole batch.
+pub(crate) fn submit_timeline_batches(
+    live: &crate::retention::Live,
+    submits: &[crate::structs::SubmitInfo<'_>],
+) -> Vec<Vec<(vk::Semaphore, u64)>> {
+    submits
+        .iter()
+        .map(|b| {
+            // SAFETY: the safe struct stores each array with its length and chains
+            // only structs pushed through `push_next`; the sType says what the node is.
+            let signals = unsafe { crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count) };
+            let values = unsafe { crate::support::chain_nodes(b.p_next) }
+                .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
+                .map(|n| unsafe { &*(n as *const vk::BaseInStructure<'_>).cast::<vk::TimelineSemaphoreSubmitInfo<'_>>() })
+                .filter(|t| !t.p_signal_semaphore_values.is_null())
+                .map(|t| unsafe { crate::retention::raw_slice(t.p_signal_semaphore_values, t.signal_semaphore_value_count) })
+                .unwrap_or(&[]);
+            signals
+                .iter()
+                .zip(values)
+                .filter(|(s, _)| live.is_timeline(**s))
+                .map(|(s, v)| (*s, *v))
+                .collect()
+        })
+        .collect()
+}
+
+/// For each batch of a `vkQueueSubmit2`, the timeline values it signals once all of
+/// its commands are done (a stage mask of ALL_COMMANDS; a narrower one says less).
+pub(crate) fn submit2_timeline_batches(
+    live: &crate::retention::Live,
+    submits: &[crate::structs::SubmitInfo2<'_>],
+) -> Vec<Vec<(vk::Semaphore, u64)>> {
+    submits
+        .iter()
+        .map(|b| {
+            // SAFETY: the safe struct stores the array with its length.
+            unsafe { crate::retention::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count) }
+                .iter()
+                .filter(|i| i.stage_mask.contains(vk::PipelineStageFlags2::ALL_COMMANDS) && live.is_timeline(i.semaphore))
+                .map(|i| (i.semaphore, i.value))
+                .collect()
+        })
+        .collect()
 }

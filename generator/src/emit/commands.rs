@@ -1005,6 +1005,12 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         "vkQueueSubmit" | "vkQueueSubmit2" | "vkQueueBindSparse" => {
             let (list, walk) = submit_parts(&plan.name);
             let cbs = submitted_command_buffers(&plan.name);
+            // What a timeline signal tells of each batch (sparse binds: nothing yet).
+            let batches = match plan.name.as_str() {
+                "vkQueueSubmit" => quote!(crate::submission::submit_timeline_batches(device.live(), submits)),
+                "vkQueueSubmit2" => quote!(crate::submission::submit2_timeline_batches(device.live(), submits)),
+                _ => quote!(Vec::new()),
+            };
             post.push(quote! {
                 // The fence holds everything the submission names (its command buffers,
                 // which keep what their recordings use, its semaphores, and whatever
@@ -1016,7 +1022,8 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                     unsafe { #walk(s.as_raw(), device.live(), &mut kept) };
                 }
                 let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = #cbs;
-                crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept);
+                let batches = #batches;
+                crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept, batches);
             });
         }
         "vkQueuePresentKHR" => pre.push(quote! {
@@ -1026,7 +1033,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             let mut kept = Vec::new();
             // SAFETY: the safe struct stores every array with its length.
             unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
-            self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept));
+            self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()));
         }),
         "vkResetCommandBuffer" => post.push(quote! {
             // Initial state; the last recording's objects go, as no submission uses
@@ -1038,6 +1045,21 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         "vkResetCommandPool" => post.push(quote! {
             for u in command_pool.buffer_uses() {
                 u.reset();
+            }
+        }),
+        // A timeline value seen on the host: the batches that signal it are done.
+        "vkGetSemaphoreCounterValue" => post.push(quote! {
+            self.live().ledger().reached(semaphore.raw(), out);
+        }),
+        "vkWaitSemaphores" => post.push(quote! {
+            // Only a wait for all of them says each reached its value.
+            if r == vk::Result::SUCCESS && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY) {
+                // SAFETY: the safe struct stores both arrays with their one length.
+                let semaphores = unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+                let values = unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
+                for (s, v) in semaphores.iter().zip(values) {
+                    self.live().ledger().reached(*s, *v);
+                }
             }
         }),
         "vkQueueWaitIdle" => post.push(quote!(self.parent().live().ledger().retire_queue(self.raw());)),
