@@ -119,10 +119,25 @@ pub fn minimal_feature_sets(model: &Model, condition: &str) -> Vec<BTreeSet<Stri
     if condition == "core" || expr::eval(condition, &versions) {
         return vec![BTreeSet::new()];
     }
+    let fixed = |n: &str| {
+        if n == "core" || n.starts_with("VK_VERSION_") {
+            Some(n == "core" || versions.contains(n))
+        } else if !model.enabled.contains(n) {
+            Some(false)
+        } else {
+            None
+        }
+    };
+    if let Some(sets) = expr::minimal_sets(condition, &fixed) {
+        return sets;
+    }
+    // A negation (validusage.json's keys only): search subsets of the names it
+    // mentions, as tokens.
+    let mentioned = expr::names(condition);
     let exts: Vec<&String> = model
         .enabled
         .iter()
-        .filter(|n| !n.starts_with("VK_VERSION_") && condition.contains(n.as_str()))
+        .filter(|n| !n.starts_with("VK_VERSION_") && mentioned.contains(n.as_str()))
         .collect();
     let mut found: Vec<BTreeSet<String>> = Vec::new();
     // Subsets in order of size, so that a superset of a found set is skipped.

@@ -17,6 +17,17 @@ pub fn eval(expr: &str, enabled: &BTreeSet<String>) -> bool {
     p.or()
 }
 
+/// The names an expression mentions.
+pub fn names(expr: &str) -> BTreeSet<&str> {
+    tokenize(expr)
+        .into_iter()
+        .filter_map(|t| match t {
+            Tok::Name(n) => Some(n),
+            _ => None,
+        })
+        .collect()
+}
+
 /// Nesting deeper than this (in parentheses or `!`) evaluates to false rather than
 /// recursing further: real registries nest a few levels.
 const MAX_DEPTH: usize = 64;
@@ -113,6 +124,99 @@ impl Parser<'_> {
     }
 }
 
+/// The minimal sets of names whose presence together makes `expr` true, where
+/// `fixed` settles the names it knows (an enabled version: true; a name that cannot
+/// be enabled: false) and leaves the others open. Exact, with no cap on how many
+/// names take part: the expression is put in disjunctive normal form. `None` for an
+/// expression with a negation (only validusage.json's condition keys have one) or
+/// one that does not parse.
+pub fn minimal_sets(
+    expr: &str,
+    fixed: &dyn Fn(&str) -> Option<bool>,
+) -> Option<Vec<BTreeSet<String>>> {
+    let tokens = tokenize(expr);
+    let mut d = Dnf {
+        t: &tokens,
+        pos: 0,
+        depth: 0,
+        fixed,
+    };
+    let sets = d.or()?;
+    if d.pos != tokens.len() {
+        return None;
+    }
+    Some(minimize(sets))
+}
+
+/// Drops every set that holds another one, and duplicates.
+fn minimize(mut sets: Vec<BTreeSet<String>>) -> Vec<BTreeSet<String>> {
+    sets.sort_by_key(BTreeSet::len);
+    let mut out: Vec<BTreeSet<String>> = Vec::new();
+    for s in sets {
+        if !out.iter().any(|o| o.is_subset(&s)) {
+            out.push(s);
+        }
+    }
+    out
+}
+
+struct Dnf<'a> {
+    t: &'a [Tok<'a>],
+    pos: usize,
+    depth: usize,
+    fixed: &'a dyn Fn(&str) -> Option<bool>,
+}
+
+impl Dnf<'_> {
+    fn or(&mut self) -> Option<Vec<BTreeSet<String>>> {
+        let mut sets = self.and()?;
+        while self.t.get(self.pos) == Some(&Tok::Or) {
+            self.pos += 1;
+            sets.extend(self.and()?);
+        }
+        Some(minimize(sets))
+    }
+
+    fn and(&mut self) -> Option<Vec<BTreeSet<String>>> {
+        let mut sets = self.atom()?;
+        while self.t.get(self.pos) == Some(&Tok::And) {
+            self.pos += 1;
+            let right = self.atom()?;
+            let mut product = Vec::with_capacity(sets.len() * right.len());
+            for l in &sets {
+                for r in &right {
+                    product.push(l.union(r).cloned().collect());
+                }
+            }
+            sets = minimize(product);
+        }
+        Some(sets)
+    }
+
+    fn atom(&mut self) -> Option<Vec<BTreeSet<String>>> {
+        if self.depth > MAX_DEPTH {
+            return None;
+        }
+        let token = self.t.get(self.pos);
+        self.pos += 1;
+        match token {
+            Some(Tok::Open) => {
+                self.depth += 1;
+                let v = self.or()?;
+                self.depth -= 1;
+                (self.t.get(self.pos) == Some(&Tok::Close)).then(|| self.pos += 1)?;
+                Some(v)
+            }
+            Some(Tok::Name(n)) => Some(match (self.fixed)(n) {
+                Some(true) => vec![BTreeSet::new()],
+                Some(false) => Vec::new(),
+                None => vec![BTreeSet::from([n.to_string()])],
+            }),
+            _ => None,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -129,6 +233,26 @@ mod tests {
         assert!(eval("(A,C)+C", &en));
         assert!(eval("C+!(A,B)", &en));
         assert!(!eval("!(C)", &en));
+    }
+
+    #[test]
+    fn minimal_sets_are_exact_and_uncapped() {
+        let open = |n: &str| match n {
+            "core" | "V1" => Some(true),
+            "V9" => Some(false),
+            _ => None,
+        };
+        let sets = |e: &str| minimal_sets(e, &open).expect("parses");
+        // A name is a token, not a substring: maintenance1 is not in maintenance10.
+        assert_eq!(sets("maintenance10"), vec![set(&["maintenance10"])]);
+        assert_eq!(sets("V1,A"), vec![set(&[])]);
+        assert_eq!(sets("V9+A,B+C"), vec![set(&["B", "C"])]);
+        assert_eq!(sets("(A,B)+(A,C)"), vec![set(&["A"]), set(&["B", "C"])]);
+        // Twenty alternatives: the old search stopped at sixteen.
+        let many: Vec<String> = (0..20).map(|i| format!("E{i}")).collect();
+        assert_eq!(sets(&many.join(",")).len(), 20);
+        assert_eq!(minimal_sets("!A", &open), None);
+        assert_eq!(minimal_sets("(A", &open), None);
     }
 
     #[test]
