@@ -159,3 +159,24 @@ fn enumeration() {
         show(methods(&commands, &["enumerate_physical_devices"])),
     );
 }
+
+/// The emitted code reads as written by hand: no function declares `-> ()`.
+#[test]
+fn no_emitted_function_returns_unit_explicitly() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(&dir).expect("generated/src") {
+        let path = entry.expect("entry").path();
+        let text = std::fs::read_to_string(&path).expect("a generated file");
+        for (i, line) in text.lines().enumerate() {
+            if line.contains("-> ()") {
+                found.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "explicit unit returns:\n{}",
+        found.join("\n")
+    );
+}

@@ -920,7 +920,7 @@ impl<'c, S: State> Recorder<'c, S> {
         query_pool: &QueryPool,
         query: u32,
         flags: vk::QueryControlFlags,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -971,7 +971,7 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
         query_pool: &QueryPool,
         query: u32,
         flags: vk::QueryControlFlags,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -1323,7 +1323,7 @@ impl<'c, S: State> Recorder<'c, S> {
         first_set: u32,
         descriptor_sets: &[&DescriptorSet],
         dynamic_offsets: &[u32],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -1403,7 +1403,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
         first_set: u32,
         descriptor_sets: &[&DescriptorSet],
         dynamic_offsets: &[u32],
-    ) -> () {
+    ) {
         for h in descriptor_sets {
             self.retain(h.retained());
         }
@@ -1455,7 +1455,7 @@ impl<'c, S: State> Recorder<'c, S> {
         buffer: &Buffer,
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -1506,7 +1506,7 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
         buffer: &Buffer,
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -1555,7 +1555,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -1605,7 +1605,7 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -1643,7 +1643,7 @@ impl<'c, S: State> Recorder<'c, S> {
         first_binding: u32,
         buffers: &[&Buffer],
         offsets: &[vk::DeviceSize],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -1701,7 +1701,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
         first_binding: u32,
         buffers: &[&Buffer],
         offsets: &[vk::DeviceSize],
-    ) -> () {
+    ) {
         for h in buffers {
             self.retain(h.retained());
         }
@@ -1758,7 +1758,7 @@ impl<'c, S: State> Recorder<'c, S> {
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -1824,7 +1824,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
-    ) -> () {
+    ) {
         for h in buffers {
             self.retain(h.retained());
         }
@@ -1924,7 +1924,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2017,7 +2017,7 @@ The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2054,7 +2054,7 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) -> () {
+    pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2090,7 +2090,7 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
     pub unsafe fn cmd_blit_image2_unchecked<'a>(
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2144,7 +2144,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2199,7 +2199,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2254,7 +2254,7 @@ impl<'c> Recorder<'c, Outside> {
         image_layout: vk::ImageLayout,
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2319,7 +2319,7 @@ The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run 
         image_layout: vk::ImageLayout,
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2379,7 +2379,7 @@ impl<'c> Recorder<'c, Outside> {
         image_layout: vk::ImageLayout,
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2449,7 +2449,7 @@ The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks
         image_layout: vk::ImageLayout,
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2501,7 +2501,7 @@ impl<'c> Recorder<'c, Outside> {
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2565,7 +2565,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2599,10 +2599,7 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_copy_buffer2<'a>(
-        &mut self,
-        copy_buffer_info: &CopyBufferInfo2<'a>,
-    ) -> () {
+    pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2639,7 +2636,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
     pub unsafe fn cmd_copy_buffer2_unchecked<'a>(
         &mut self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2732,7 +2729,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2812,7 +2809,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -2853,7 +2850,7 @@ impl<'c> Recorder<'c, Outside> {
     pub fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -2893,7 +2890,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
     pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3022,7 +3019,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3109,7 +3106,7 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3145,7 +3142,7 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) -> () {
+    pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3182,7 +3179,7 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
     pub unsafe fn cmd_copy_image2_unchecked<'a>(
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3273,7 +3270,7 @@ impl<'c> Recorder<'c, Outside> {
         src_image_layout: vk::ImageLayout,
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3353,7 +3350,7 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
         src_image_layout: vk::ImageLayout,
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3393,7 +3390,7 @@ impl<'c> Recorder<'c, Outside> {
     pub fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3433,7 +3430,7 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
     pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3501,7 +3498,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_offset: vk::DeviceSize,
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3575,7 +3572,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
         dst_offset: vk::DeviceSize,
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3674,7 +3671,7 @@ impl<'c> Recorder<'c, Outside> {
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3713,7 +3710,7 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3808,7 +3805,7 @@ impl<'c> Recorder<'c, Outside> {
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3857,7 +3854,7 @@ The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -3949,11 +3946,7 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_dispatch_indirect(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-    ) -> () {
+    pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -3998,7 +3991,7 @@ The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run 
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -4219,7 +4212,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         instance_count: u32,
         first_vertex: u32,
         first_instance: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -4264,7 +4257,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
         instance_count: u32,
         first_vertex: u32,
         first_instance: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -4493,7 +4486,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         first_index: u32,
         vertex_offset: i32,
         first_instance: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -4540,7 +4533,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
         first_index: u32,
         vertex_offset: i32,
         first_instance: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -4777,7 +4770,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         offset: vk::DeviceSize,
         draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -4826,7 +4819,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
         offset: vk::DeviceSize,
         draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -5071,7 +5064,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         count_buffer_offset: vk::DeviceSize,
         max_draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -5138,7 +5131,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
         count_buffer_offset: vk::DeviceSize,
         max_draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -5376,7 +5369,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         offset: vk::DeviceSize,
         draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -5423,7 +5416,7 @@ The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time
         offset: vk::DeviceSize,
         draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -5660,7 +5653,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         count_buffer_offset: vk::DeviceSize,
         max_draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -5727,7 +5720,7 @@ The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at ru
         count_buffer_offset: vk::DeviceSize,
         max_draw_count: u32,
         stride: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -5823,7 +5816,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdEndQuery-queryPool-03227`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdEndQuery-queryPool-03228`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) -> () {
+    pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -5868,7 +5861,7 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
         &mut self,
         query_pool: &QueryPool,
         query: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -6271,7 +6264,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_offset: vk::DeviceSize,
         size: vk::DeviceSize,
         data: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6319,7 +6312,7 @@ The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: 
         dst_offset: vk::DeviceSize,
         size: vk::DeviceSize,
         data: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -6413,7 +6406,7 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdNextSubpass-None-02349`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) -> () {
+    pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6459,10 +6452,7 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_next_subpass_unchecked(
-        &mut self,
-        contents: vk::SubpassContents,
-    ) -> () {
+    pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
         unsafe {
             (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
         };
@@ -6489,7 +6479,7 @@ impl<'c> Recorder<'c, InRenderPass> {
         &mut self,
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6536,7 +6526,7 @@ The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time
         &mut self,
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -6613,7 +6603,7 @@ impl<'c, S: State> Recorder<'c, S> {
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6684,7 +6674,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -6752,10 +6742,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdPipelineBarrier2-None-06191`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_pipeline_barrier2<'a>(
-        &mut self,
-        dependency_info: &DependencyInfo<'a>,
-    ) -> () {
+    pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6792,7 +6779,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
     pub unsafe fn cmd_pipeline_barrier2_unchecked<'a>(
         &mut self,
         dependency_info: &DependencyInfo<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -6845,7 +6832,7 @@ impl<'c, S: State> Recorder<'c, S> {
         stage_flags: vk::ShaderStageFlags,
         offset: u32,
         values: &[u8],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -6913,7 +6900,7 @@ The caller upholds the rules that [`Self::cmd_push_constants`] checks at run tim
         stage_flags: vk::ShaderStageFlags,
         offset: u32,
         values: &[u8],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -6966,7 +6953,7 @@ impl<'c> Recorder<'c, Outside> {
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7016,7 +7003,7 @@ The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: 
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7062,7 +7049,7 @@ impl<'c> Recorder<'c, Outside> {
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7112,7 +7099,7 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7146,7 +7133,7 @@ impl<'c> Recorder<'c, Outside> {
         query_pool: &QueryPool,
         first_query: u32,
         query_count: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7194,7 +7181,7 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
         query_pool: &QueryPool,
         first_query: u32,
         query_count: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7274,7 +7261,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7360,7 +7347,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7399,7 +7386,7 @@ impl<'c> Recorder<'c, Outside> {
     pub fn cmd_resolve_image2<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7435,7 +7422,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
     pub unsafe fn cmd_resolve_image2_unchecked<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7472,7 +7459,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetBlendConstants-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) -> () {
+    pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7507,7 +7494,7 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
     pub unsafe fn cmd_set_blend_constants_unchecked(
         &mut self,
         blend_constants: &[f32; 4usize],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7530,7 +7517,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetCullMode-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) -> () {
+    pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7567,10 +7554,7 @@ impl<'c, S: State> Recorder<'c, S> {
 
 The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_cull_mode_unchecked(
-        &mut self,
-        cull_mode: vk::CullModeFlags,
-    ) -> () {
+    pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode)
         };
@@ -7593,7 +7577,7 @@ impl<'c, S: State> Recorder<'c, S> {
         depth_bias_constant_factor: f32,
         depth_bias_clamp: f32,
         depth_bias_slope_factor: f32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7636,7 +7620,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
         depth_bias_constant_factor: f32,
         depth_bias_clamp: f32,
         depth_bias_slope_factor: f32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7663,7 +7647,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) -> () {
+    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7698,7 +7682,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
     pub unsafe fn cmd_set_depth_bias_enable_unchecked(
         &mut self,
         depth_bias_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7727,7 +7711,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         min_depth_bounds: f32,
         max_depth_bounds: f32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7765,7 +7749,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
         &mut self,
         min_depth_bounds: f32,
         max_depth_bounds: f32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7790,7 +7774,7 @@ impl<'c, S: State> Recorder<'c, S> {
     pub fn cmd_set_depth_bounds_test_enable(
         &mut self,
         depth_bounds_test_enable: vk::Bool32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7827,7 +7811,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
     pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
         &mut self,
         depth_bounds_test_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7850,7 +7834,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthCompareOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) -> () {
+    pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7890,7 +7874,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at r
     pub unsafe fn cmd_set_depth_compare_op_unchecked(
         &mut self,
         depth_compare_op: vk::CompareOp,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7912,7 +7896,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) -> () {
+    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -7947,7 +7931,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
     pub unsafe fn cmd_set_depth_test_enable_unchecked(
         &mut self,
         depth_test_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -7969,7 +7953,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) -> () {
+    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8004,7 +7988,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
     pub unsafe fn cmd_set_depth_write_enable_unchecked(
         &mut self,
         depth_write_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8028,7 +8012,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)*/
     #[inline]
-    pub fn cmd_set_device_mask(&mut self, device_mask: u32) -> () {
+    pub fn cmd_set_device_mask(&mut self, device_mask: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8061,7 +8045,7 @@ impl<'c, S: State> Recorder<'c, S> {
 
 The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) -> () {
+    pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) {
         unsafe {
             (self.device().fns().fp_v1_1().cmd_set_device_mask)(self.raw(), device_mask)
         };
@@ -8096,11 +8080,7 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdSetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkCmdSetEvent-commandBuffer-01152`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_event(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags,
-    ) -> () {
+    pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8150,7 +8130,7 @@ The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `V
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8184,7 +8164,7 @@ impl<'c> Recorder<'c, Outside> {
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8230,7 +8210,7 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8269,7 +8249,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetFrontFace-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) -> () {
+    pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8306,10 +8286,7 @@ impl<'c, S: State> Recorder<'c, S> {
 
 The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_front_face_unchecked(
-        &mut self,
-        front_face: vk::FrontFace,
-    ) -> () {
+    pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face)
         };
@@ -8327,7 +8304,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_line_width(&mut self, line_width: f32) -> () {
+    pub fn cmd_set_line_width(&mut self, line_width: f32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8359,7 +8336,7 @@ impl<'c, S: State> Recorder<'c, S> {
 
 The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) -> () {
+    pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) {
         unsafe {
             (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width)
         };
@@ -8380,7 +8357,7 @@ impl<'c, S: State> Recorder<'c, S> {
     pub fn cmd_set_primitive_restart_enable(
         &mut self,
         primitive_restart_enable: vk::Bool32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8417,7 +8394,7 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
     pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
         &mut self,
         primitive_restart_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8443,7 +8420,7 @@ impl<'c, S: State> Recorder<'c, S> {
     pub fn cmd_set_primitive_topology(
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8483,7 +8460,7 @@ The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at
     pub unsafe fn cmd_set_primitive_topology_unchecked(
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8508,7 +8485,7 @@ impl<'c, S: State> Recorder<'c, S> {
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
         rasterizer_discard_enable: vk::Bool32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8545,7 +8522,7 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
     pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
         &mut self,
         rasterizer_discard_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8578,11 +8555,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetScissor-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetScissor-viewportScissor2D-04789`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_scissor<'a>(
-        &mut self,
-        first_scissor: u32,
-        scissors: &[vk::Rect2D],
-    ) -> () {
+    pub fn cmd_set_scissor<'a>(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8626,7 +8599,7 @@ The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: 
         &mut self,
         first_scissor: u32,
         scissors: &[vk::Rect2D],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8661,7 +8634,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-04820`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) -> () {
+    pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8704,7 +8677,7 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
     pub unsafe fn cmd_set_scissor_with_count_unchecked<'a>(
         &mut self,
         scissors: &[vk::Rect2D],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8735,7 +8708,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8784,7 +8757,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks 
         &mut self,
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8819,7 +8792,7 @@ impl<'c, S: State> Recorder<'c, S> {
         pass_op: vk::StencilOp,
         depth_fail_op: vk::StencilOp,
         compare_op: vk::CompareOp,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8899,7 +8872,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
         pass_op: vk::StencilOp,
         depth_fail_op: vk::StencilOp,
         compare_op: vk::CompareOp,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -8933,7 +8906,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         face_mask: vk::StencilFaceFlags,
         reference: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -8982,7 +8955,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at 
         &mut self,
         face_mask: vk::StencilFaceFlags,
         reference: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9004,10 +8977,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetStencilTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
-    pub fn cmd_set_stencil_test_enable(
-        &mut self,
-        stencil_test_enable: vk::Bool32,
-    ) -> () {
+    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9042,7 +9012,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
     pub unsafe fn cmd_set_stencil_test_enable_unchecked(
         &mut self,
         stencil_test_enable: vk::Bool32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9069,7 +9039,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9118,7 +9088,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
         &mut self,
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9149,7 +9119,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9193,7 +9163,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9225,7 +9195,7 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-04819`: user (explicit rule; the wrappers do not check it)*/
     #[inline]
-    pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) -> () {
+    pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9268,7 +9238,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
     pub unsafe fn cmd_set_viewport_with_count_unchecked<'a>(
         &mut self,
         viewports: &[vk::Viewport],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9312,7 +9282,7 @@ impl<'c> Recorder<'c, Outside> {
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
         data: &[u8],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9367,7 +9337,7 @@ The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
         data: &[u8],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9447,7 +9417,7 @@ impl<'c, S: State> Recorder<'c, S> {
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9531,7 +9501,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) -> () {
+    ) {
         for h in events {
             self.retain(h.retained());
         }
@@ -9614,7 +9584,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9672,7 +9642,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
-    ) -> () {
+    ) {
         for h in events {
             self.retain(h.retained());
         }
@@ -9742,7 +9712,7 @@ impl<'c, S: State> Recorder<'c, S> {
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
         query: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9794,7 +9764,7 @@ The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run ti
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
         query: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -9849,7 +9819,7 @@ impl<'c, S: State> Recorder<'c, S> {
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
         query: u32,
-    ) -> () {
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
@@ -9901,7 +9871,7 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
         query: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .device()
@@ -12568,7 +12538,7 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
         &self,
         info: &BufferMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -12647,7 +12617,7 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] ch
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -12703,7 +12673,7 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
         &self,
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -12903,7 +12873,7 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -13349,7 +13319,7 @@ The caller upholds the rules that [`Self::get_image_memory_requirements2`] check
         &self,
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -13610,7 +13580,7 @@ The caller upholds the rules that [`Self::get_physical_device_external_buffer_pr
         &self,
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -13670,7 +13640,7 @@ The caller upholds the rules that [`Self::get_physical_device_external_fence_pro
         &self,
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -13730,7 +13700,7 @@ The caller upholds the rules that [`Self::get_physical_device_external_semaphore
         &self,
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -13778,7 +13748,7 @@ impl PhysicalDevice {
     pub fn get_physical_device_features2<'a>(
         &self,
         features: &mut PhysicalDeviceFeatures2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -13888,7 +13858,7 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties2
         &self,
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -14142,7 +14112,7 @@ The caller upholds the rules that [`Self::get_physical_device_memory_properties2
     pub unsafe fn get_physical_device_memory_properties2_unchecked<'a>(
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -14313,7 +14283,7 @@ The caller upholds the rules that [`Self::get_physical_device_properties2`] chec
     pub unsafe fn get_physical_device_properties2_unchecked<'a>(
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .parent()
@@ -16826,7 +16796,7 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
         query_pool: &QueryPool,
         first_query: u32,
         query_count: u32,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -17331,7 +17301,7 @@ The caller upholds the rules that [`Self::trim_command_pool`] checks at run time
         &self,
         command_pool: &CommandPool,
         flags: vk::CommandPoolTrimFlags,
-    ) -> () {
+    ) {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -17407,7 +17377,7 @@ The caller upholds the rules that [`Self::update_descriptor_set_with_template`] 
         descriptor_set: &DescriptorSet,
         descriptor_update_template: &DescriptorUpdateTemplate,
         data: *const core::ffi::c_void,
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()
@@ -17492,7 +17462,7 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
         &self,
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
-    ) -> () {
+    ) {
         unsafe {
             (self
                 .fns()

@@ -1297,6 +1297,12 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             ),
         )
     };
+    // No `-> ()`: a unit return is left out, as hand-written code would.
+    let ret_arrow = if ret.to_string() == "()" {
+        quote!()
+    } else {
+        quote!(-> #ret)
+    };
     let doc = format!(
         "`{}`{safety}{}",
         plan.name,
@@ -1308,7 +1314,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         quote! {
             #[doc = #doc]
             #[inline]
-            pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) -> #ret {
+            pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #ret_arrow {
                 #body
             }
         }
@@ -1396,6 +1402,11 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 (ret_checked, quote!(r?;), call)
             }
         };
+        let checked_arrow = if ret_checked.to_string() == "()" {
+            quote!()
+        } else {
+            quote!(-> #ret_checked)
+        };
         // Only commands with implicit checks get the block that runs them.
         let implicit_block = (!checks.is_empty()).then(|| {
             quote! {
@@ -1409,7 +1420,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         quote! {
             #[doc = #doc]
             #[inline]
-            pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) -> #ret_checked {
+            pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #checked_arrow {
                 // Held across the checks too, so what they saw holds at the call.
                 #host_sync
                 #implicit_block
@@ -1421,7 +1432,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             }
             #[doc = #unchecked_doc]
             #[inline]
-            pub unsafe fn #unchecked #lt(#self_ref, #(#args),*) -> #ret {
+            pub unsafe fn #unchecked #lt(#self_ref, #(#args),*) #ret_arrow {
                 #body
             }
         }
