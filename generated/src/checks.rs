@@ -3117,7 +3117,6 @@ pub(crate) fn check_acquire_next_image_info_khr(
     v: &vk::AcquireNextImageInfoKHR<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.swapchain != Default::default() && !s.owned_by_device(v.swapchain) {
         return Err(
             fail(
@@ -3151,7 +3150,6 @@ pub(crate) fn check_attachment_description(
     v: &vk::AttachmentDescription,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_attachment_description_flags(
         v.flags,
         s,
@@ -3204,7 +3202,6 @@ pub(crate) fn check_attachment_description2(
     v: &vk::AttachmentDescription2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_attachment_description_flags(
         v.flags,
         s,
@@ -3262,7 +3259,6 @@ pub(crate) fn check_attachment_description_stencil_layout(
     v: &vk::AttachmentDescriptionStencilLayout<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.stencil_initial_layout,
         s,
@@ -3280,7 +3276,6 @@ pub(crate) fn check_attachment_reference(
     v: &vk::AttachmentReference,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.layout,
         s,
@@ -3293,7 +3288,6 @@ pub(crate) fn check_attachment_reference2(
     v: &vk::AttachmentReference2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.layout,
         s,
@@ -3307,7 +3301,6 @@ pub(crate) fn check_attachment_reference_stencil_layout(
     v: &vk::AttachmentReferenceStencilLayout<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.stencil_layout,
         s,
@@ -3320,7 +3313,6 @@ pub(crate) fn check_bind_buffer_memory_info(
     v: &vk::BindBufferMemoryInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.buffer != Default::default() && !s.owned_by_device(v.buffer) {
         return Err(
             fail(
@@ -3347,7 +3339,6 @@ pub(crate) fn check_bind_image_memory_info(
     v: &vk::BindImageMemoryInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.image != Default::default() && !s.owned_by_device(v.image) {
         return Err(
             fail(
@@ -3373,7 +3364,6 @@ pub(crate) fn check_bind_image_plane_memory_info(
     v: &vk::BindImagePlaneMemoryInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_aspect_flag_bits(
         v.plane_aspect,
         s,
@@ -3386,7 +3376,6 @@ pub(crate) fn check_bind_sparse_info(
     v: &vk::BindSparseInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3426,7 +3415,6 @@ pub(crate) fn check_blit_image_info2(
     v: &vk::BlitImageInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.src_image_layout,
         s,
@@ -3474,7 +3462,6 @@ pub(crate) fn check_buffer_create_info(
     v: &vk::BufferCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_buffer_create_flags(
         v.flags,
         s,
@@ -3506,7 +3493,6 @@ pub(crate) fn check_buffer_image_copy(
     v: &vk::BufferImageCopy,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     Ok(())
@@ -3516,7 +3502,6 @@ pub(crate) fn check_buffer_image_copy2(
     v: &vk::BufferImageCopy2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     crate::checks::chain(v.p_next, s, Some("VUID-VkBufferImageCopy2-sType-unique"))?;
@@ -3527,7 +3512,6 @@ pub(crate) fn check_buffer_memory_barrier2(
     v: &vk::BufferMemoryBarrier2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_stage_flags2(
         v.src_stage_mask,
         s,
@@ -3555,7 +3539,6 @@ pub(crate) fn check_buffer_view_create_info(
     v: &vk::BufferViewCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -3577,7 +3560,6 @@ pub(crate) fn check_clear_attachment(
     v: &vk::ClearAttachment,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_aspect_flags(
         v.aspect_mask,
         s,
@@ -3598,7 +3580,6 @@ pub(crate) fn check_command_buffer_allocate_info(
     v: &vk::CommandBufferAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_command_buffer_level(
         v.level,
         s,
@@ -3611,7 +3592,6 @@ pub(crate) fn check_command_buffer_begin_info(
     v: &vk::CommandBufferBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_command_buffer_usage_flags(
         v.flags,
         s,
@@ -3635,7 +3615,6 @@ pub(crate) fn check_command_buffer_inheritance_info(
     v: &vk::CommandBufferInheritanceInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.render_pass != Default::default() && !s.owned_by_device(v.render_pass) {
         return Err(
             fail(
@@ -3666,7 +3645,6 @@ pub(crate) fn check_command_buffer_inheritance_rendering_info(
     v: &vk::CommandBufferInheritanceRenderingInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_rendering_flags(
         v.flags,
         s,
@@ -3701,7 +3679,6 @@ pub(crate) fn check_command_pool_create_info(
     v: &vk::CommandPoolCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_command_pool_create_flags(
         v.flags,
         s,
@@ -3714,7 +3691,6 @@ pub(crate) fn check_component_mapping(
     v: &vk::ComponentMapping,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_component_swizzle(
         v.r,
         s,
@@ -3742,7 +3718,6 @@ pub(crate) fn check_compute_pipeline_create_info(
     v: &vk::ComputePipelineCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_create_flags(
         v.flags,
         s,
@@ -3781,7 +3756,6 @@ pub(crate) fn check_copy_buffer_info2(
     v: &vk::CopyBufferInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.region_count == 0 {
         return Err(
             fail(
@@ -3815,7 +3789,6 @@ pub(crate) fn check_copy_buffer_to_image_info2(
     v: &vk::CopyBufferToImageInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.dst_image_layout,
         s,
@@ -3857,7 +3830,6 @@ pub(crate) fn check_copy_descriptor_set(
     v: &vk::CopyDescriptorSet<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.src_set != Default::default() && !s.owned_by_device(v.src_set) {
         return Err(
             fail(
@@ -3883,7 +3855,6 @@ pub(crate) fn check_copy_image_info2(
     v: &vk::CopyImageInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.src_image_layout,
         s,
@@ -3930,7 +3901,6 @@ pub(crate) fn check_copy_image_to_buffer_info2(
     v: &vk::CopyImageToBufferInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.src_image_layout,
         s,
@@ -3973,7 +3943,6 @@ pub(crate) fn check_debug_utils_messenger_callback_data_ext(
     v: &vk::DebugUtilsMessengerCallbackDataEXT<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -3998,7 +3967,6 @@ pub(crate) fn check_debug_utils_messenger_create_info_ext(
     v: &vk::DebugUtilsMessengerCreateInfoEXT<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -4049,7 +4017,6 @@ pub(crate) fn check_debug_utils_object_name_info_ext(
     v: &vk::DebugUtilsObjectNameInfoEXT<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_object_type(
         v.object_type,
         s,
@@ -4063,7 +4030,6 @@ pub(crate) fn check_debug_utils_object_tag_info_ext(
     v: &vk::DebugUtilsObjectTagInfoEXT<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_object_type(
         v.object_type,
         s,
@@ -4084,7 +4050,6 @@ pub(crate) fn check_dependency_info(
     v: &vk::DependencyInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_dependency_flags(
         v.dependency_flags,
         s,
@@ -4110,7 +4075,6 @@ pub(crate) fn check_descriptor_image_info(
     v: &vk::DescriptorImageInfo,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.sampler != Default::default() && !s.owned_by_device(v.sampler) {
         return Err(
             fail(
@@ -4136,7 +4100,6 @@ pub(crate) fn check_descriptor_pool_create_info(
     v: &vk::DescriptorPoolCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_descriptor_pool_create_flags(
         v.flags,
         s,
@@ -4157,7 +4120,6 @@ pub(crate) fn check_descriptor_pool_size(
     v: &vk::DescriptorPoolSize,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_descriptor_type(
         v.ty,
         s,
@@ -4170,7 +4132,6 @@ pub(crate) fn check_descriptor_set_allocate_info(
     v: &vk::DescriptorSetAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.descriptor_set_count == 0 {
         return Err(
             fail(
@@ -4211,7 +4172,6 @@ pub(crate) fn check_descriptor_set_layout_binding(
     v: &vk::DescriptorSetLayoutBinding<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_descriptor_type(
         v.descriptor_type,
         s,
@@ -4224,7 +4184,6 @@ pub(crate) fn check_descriptor_set_layout_binding_flags_create_info(
     v: &vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     for e in unsafe { members(v.p_binding_flags, v.binding_count) } {
         crate::checks::flags_descriptor_binding_flags(
             *e,
@@ -4239,7 +4198,6 @@ pub(crate) fn check_descriptor_set_layout_create_info(
     v: &vk::DescriptorSetLayoutCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_descriptor_set_layout_create_flags(
         v.flags,
         s,
@@ -4260,7 +4218,6 @@ pub(crate) fn check_descriptor_set_layout_support(
     v: &vk::DescriptorSetLayoutSupport<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(
         v.p_next,
         s,
@@ -4273,7 +4230,6 @@ pub(crate) fn check_descriptor_update_template_create_info(
     v: &vk::DescriptorUpdateTemplateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -4327,7 +4283,6 @@ pub(crate) fn check_descriptor_update_template_entry(
     v: &vk::DescriptorUpdateTemplateEntry,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_descriptor_type(
         v.descriptor_type,
         s,
@@ -4340,7 +4295,6 @@ pub(crate) fn check_device_buffer_memory_requirements(
     v: &vk::DeviceBufferMemoryRequirements<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if !v.p_create_info.is_null() {
         crate::checks::check_buffer_create_info(unsafe { &*v.p_create_info }, s)?;
     }
@@ -4351,7 +4305,6 @@ pub(crate) fn check_device_create_info(
     v: &vk::DeviceCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail("VUID-VkDeviceCreateInfo-flags-zerobitmask", "`flags` is not 0".into()),
@@ -4377,7 +4330,6 @@ pub(crate) fn check_device_group_present_info_khr(
     v: &vk::DeviceGroupPresentInfoKHR<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_device_group_present_mode_flag_bits_khr(
         v.mode,
         s,
@@ -4391,7 +4343,6 @@ pub(crate) fn check_device_group_swapchain_create_info_khr(
     v: &vk::DeviceGroupSwapchainCreateInfoKHR<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_device_group_present_mode_flags_khr(
         v.modes,
         s,
@@ -4412,7 +4363,6 @@ pub(crate) fn check_device_image_memory_requirements(
     v: &vk::DeviceImageMemoryRequirements<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_aspect_flag_bits(
         v.plane_aspect,
         s,
@@ -4428,7 +4378,6 @@ pub(crate) fn check_device_queue_create_info(
     v: &vk::DeviceQueueCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_device_queue_create_flags(
         v.flags,
         s,
@@ -4454,7 +4403,6 @@ pub(crate) fn check_device_queue_info2(
     v: &vk::DeviceQueueInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_device_queue_create_flags(
         v.flags,
         s,
@@ -4467,7 +4415,6 @@ pub(crate) fn check_event_create_info(
     v: &vk::EventCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_event_create_flags(
         v.flags,
         s,
@@ -4481,7 +4428,6 @@ pub(crate) fn check_export_fence_create_info(
     v: &vk::ExportFenceCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_external_fence_handle_type_flags(
         v.handle_types,
         s,
@@ -4494,7 +4440,6 @@ pub(crate) fn check_export_memory_allocate_info(
     v: &vk::ExportMemoryAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_external_memory_handle_type_flags(
         v.handle_types,
         s,
@@ -4507,7 +4452,6 @@ pub(crate) fn check_export_semaphore_create_info(
     v: &vk::ExportSemaphoreCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_external_semaphore_handle_type_flags(
         v.handle_types,
         s,
@@ -4520,7 +4464,6 @@ pub(crate) fn check_external_memory_buffer_create_info(
     v: &vk::ExternalMemoryBufferCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_external_memory_handle_type_flags(
         v.handle_types,
         s,
@@ -4533,7 +4476,6 @@ pub(crate) fn check_external_memory_image_create_info(
     v: &vk::ExternalMemoryImageCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_external_memory_handle_type_flags(
         v.handle_types,
         s,
@@ -4546,7 +4488,6 @@ pub(crate) fn check_fence_create_info(
     v: &vk::FenceCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_fence_create_flags(
         v.flags,
         s,
@@ -4560,7 +4501,6 @@ pub(crate) fn check_format_properties2(
     v: &vk::FormatProperties2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(v.p_next, s, Some("VUID-VkFormatProperties2-sType-unique"))?;
     Ok(())
 }
@@ -4569,7 +4509,6 @@ pub(crate) fn check_framebuffer_attachment_image_info(
     v: &vk::FramebufferAttachmentImageInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_create_flags(
         v.flags,
         s,
@@ -4602,7 +4541,6 @@ pub(crate) fn check_framebuffer_attachments_create_info(
     v: &vk::FramebufferAttachmentsCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     for e in unsafe {
         members(v.p_attachment_image_infos, v.attachment_image_info_count)
     } {
@@ -4615,7 +4553,6 @@ pub(crate) fn check_framebuffer_create_info(
     v: &vk::FramebufferCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_framebuffer_create_flags(
         v.flags,
         s,
@@ -4653,7 +4590,6 @@ pub(crate) fn check_graphics_pipeline_create_info(
     v: &vk::GraphicsPipelineCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_create_flags(
         v.flags,
         s,
@@ -4754,7 +4690,6 @@ pub(crate) fn check_graphics_pipeline_create_info(
 }
 ///The implicit rules of `VkImageBlit` that are checked at run time.
 pub(crate) fn check_image_blit(v: &vk::ImageBlit, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
@@ -4763,7 +4698,6 @@ pub(crate) fn check_image_blit(v: &vk::ImageBlit, s: &Scope<'_>) -> Result<()> {
 }
 ///The implicit rules of `VkImageBlit2` that are checked at run time.
 pub(crate) fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
@@ -4773,7 +4707,6 @@ pub(crate) fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result
 }
 ///The implicit rules of `VkImageCopy` that are checked at run time.
 pub(crate) fn check_image_copy(v: &vk::ImageCopy, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
@@ -4782,7 +4715,6 @@ pub(crate) fn check_image_copy(v: &vk::ImageCopy, s: &Scope<'_>) -> Result<()> {
 }
 ///The implicit rules of `VkImageCopy2` that are checked at run time.
 pub(crate) fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
@@ -4794,7 +4726,6 @@ pub(crate) fn check_image_create_info(
     v: &vk::ImageCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_create_flags(
         v.flags,
         s,
@@ -4847,7 +4778,6 @@ pub(crate) fn check_image_format_list_create_info(
     v: &vk::ImageFormatListCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     for e in unsafe { members(v.p_view_formats, v.view_format_count) } {
         crate::checks::enum_format(
             *e,
@@ -4862,7 +4792,6 @@ pub(crate) fn check_image_format_properties2(
     v: &vk::ImageFormatProperties2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(
         v.p_next,
         s,
@@ -4875,7 +4804,6 @@ pub(crate) fn check_image_memory_barrier(
     v: &vk::ImageMemoryBarrier<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.old_layout,
         s,
@@ -4896,7 +4824,6 @@ pub(crate) fn check_image_memory_barrier2(
     v: &vk::ImageMemoryBarrier2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_stage_flags2(
         v.src_stage_mask,
         s,
@@ -4937,7 +4864,6 @@ pub(crate) fn check_image_memory_requirements_info2(
     v: &vk::ImageMemoryRequirementsInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(
         v.p_next,
         s,
@@ -4950,7 +4876,6 @@ pub(crate) fn check_image_plane_memory_requirements_info(
     v: &vk::ImagePlaneMemoryRequirementsInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_aspect_flag_bits(
         v.plane_aspect,
         s,
@@ -4960,7 +4885,6 @@ pub(crate) fn check_image_plane_memory_requirements_info(
 }
 ///The implicit rules of `VkImageResolve` that are checked at run time.
 pub(crate) fn check_image_resolve(v: &vk::ImageResolve, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
@@ -4972,7 +4896,6 @@ pub(crate) fn check_image_resolve2(
     v: &vk::ImageResolve2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
@@ -4984,7 +4907,6 @@ pub(crate) fn check_image_stencil_usage_create_info(
     v: &vk::ImageStencilUsageCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_usage_flags(
         v.stencil_usage,
         s,
@@ -5005,7 +4927,6 @@ pub(crate) fn check_image_subresource(
     v: &vk::ImageSubresource,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_aspect_flags(
         v.aspect_mask,
         s,
@@ -5026,7 +4947,6 @@ pub(crate) fn check_image_subresource_layers(
     v: &vk::ImageSubresourceLayers,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_aspect_flags(
         v.aspect_mask,
         s,
@@ -5047,7 +4967,6 @@ pub(crate) fn check_image_subresource_range(
     v: &vk::ImageSubresourceRange,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_aspect_flags(
         v.aspect_mask,
         s,
@@ -5068,7 +4987,6 @@ pub(crate) fn check_image_view_create_info(
     v: &vk::ImageViewCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_view_create_flags(
         v.flags,
         s,
@@ -5096,7 +5014,6 @@ pub(crate) fn check_image_view_usage_create_info(
     v: &vk::ImageViewUsageCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_usage_flags(
         v.usage,
         s,
@@ -5117,7 +5034,6 @@ pub(crate) fn check_input_attachment_aspect_reference(
     v: &vk::InputAttachmentAspectReference,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_image_aspect_flags(
         v.aspect_mask,
         s,
@@ -5138,7 +5054,6 @@ pub(crate) fn check_instance_create_info(
     v: &vk::InstanceCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_instance_create_flags(
         v.flags,
         s,
@@ -5152,7 +5067,6 @@ pub(crate) fn check_memory_allocate_flags_info(
     v: &vk::MemoryAllocateFlagsInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_memory_allocate_flags(
         v.flags,
         s,
@@ -5165,7 +5079,6 @@ pub(crate) fn check_memory_allocate_info(
     v: &vk::MemoryAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(v.p_next, s, Some("VUID-VkMemoryAllocateInfo-sType-unique"))?;
     Ok(())
 }
@@ -5174,7 +5087,6 @@ pub(crate) fn check_memory_barrier(
     v: &vk::MemoryBarrier<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_access_flags(
         v.src_access_mask,
         s,
@@ -5192,7 +5104,6 @@ pub(crate) fn check_memory_barrier2(
     v: &vk::MemoryBarrier2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_stage_flags2(
         v.src_stage_mask,
         s,
@@ -5220,7 +5131,6 @@ pub(crate) fn check_memory_dedicated_allocate_info(
     v: &vk::MemoryDedicatedAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.image != Default::default() && !s.owned_by_device(v.image) {
         return Err(
             fail(
@@ -5245,7 +5155,6 @@ pub(crate) fn check_memory_requirements2(
     v: &vk::MemoryRequirements2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(v.p_next, s, Some("VUID-VkMemoryRequirements2-sType-unique"))?;
     Ok(())
 }
@@ -5253,9 +5162,8 @@ pub(crate) fn check_memory_requirements2(
 #[cfg(feature = "ext_metal_surface")]
 pub(crate) fn check_metal_surface_create_info_ext(
     v: &vk::MetalSurfaceCreateInfoEXT<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5271,7 +5179,6 @@ pub(crate) fn check_physical_device_external_buffer_info(
     v: &vk::PhysicalDeviceExternalBufferInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_buffer_create_flags(
         v.flags,
         s,
@@ -5302,7 +5209,6 @@ pub(crate) fn check_physical_device_external_fence_info(
     v: &vk::PhysicalDeviceExternalFenceInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_external_fence_handle_type_flag_bits(
         v.handle_type,
         s,
@@ -5315,7 +5221,6 @@ pub(crate) fn check_physical_device_external_image_format_info(
     v: &vk::PhysicalDeviceExternalImageFormatInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_external_memory_handle_type_flag_bits(
         v.handle_type,
         s,
@@ -5328,7 +5233,6 @@ pub(crate) fn check_physical_device_external_semaphore_info(
     v: &vk::PhysicalDeviceExternalSemaphoreInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_external_semaphore_handle_type_flag_bits(
         v.handle_type,
         s,
@@ -5346,7 +5250,6 @@ pub(crate) fn check_physical_device_image_format_info2(
     v: &vk::PhysicalDeviceImageFormatInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_format(
         v.format,
         s,
@@ -5392,7 +5295,6 @@ pub(crate) fn check_physical_device_memory_properties2(
     v: &vk::PhysicalDeviceMemoryProperties2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(
         v.p_next,
         s,
@@ -5405,7 +5307,6 @@ pub(crate) fn check_physical_device_properties2(
     v: &vk::PhysicalDeviceProperties2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(
         v.p_next,
         s,
@@ -5418,7 +5319,6 @@ pub(crate) fn check_physical_device_sparse_image_format_info2(
     v: &vk::PhysicalDeviceSparseImageFormatInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_format(
         v.format,
         s,
@@ -5459,7 +5359,6 @@ pub(crate) fn check_pipeline_cache_create_info(
     v: &vk::PipelineCacheCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_cache_create_flags(
         v.flags,
         s,
@@ -5472,7 +5371,6 @@ pub(crate) fn check_pipeline_cache_header_version_one(
     v: &vk::PipelineCacheHeaderVersionOne,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_pipeline_cache_header_version(
         v.header_version,
         s,
@@ -5485,7 +5383,6 @@ pub(crate) fn check_pipeline_color_blend_attachment_state(
     v: &vk::PipelineColorBlendAttachmentState,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_blend_factor(
         v.src_color_blend_factor,
         s,
@@ -5528,7 +5425,6 @@ pub(crate) fn check_pipeline_color_blend_state_create_info(
     v: &vk::PipelineColorBlendStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_color_blend_state_create_flags(
         v.flags,
         s,
@@ -5549,7 +5445,6 @@ pub(crate) fn check_pipeline_depth_stencil_state_create_info(
     v: &vk::PipelineDepthStencilStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_depth_stencil_state_create_flags(
         v.flags,
         s,
@@ -5571,7 +5466,6 @@ pub(crate) fn check_pipeline_dynamic_state_create_info(
     v: &vk::PipelineDynamicStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5594,7 +5488,6 @@ pub(crate) fn check_pipeline_input_assembly_state_create_info(
     v: &vk::PipelineInputAssemblyStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5615,7 +5508,6 @@ pub(crate) fn check_pipeline_layout_create_info(
     v: &vk::PipelineLayoutCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_layout_create_flags(
         v.flags,
         s,
@@ -5631,7 +5523,6 @@ pub(crate) fn check_pipeline_multisample_state_create_info(
     v: &vk::PipelineMultisampleStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5657,7 +5548,6 @@ pub(crate) fn check_pipeline_rasterization_state_create_info(
     v: &vk::PipelineRasterizationStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5693,7 +5583,6 @@ pub(crate) fn check_pipeline_shader_stage_create_info(
     v: &vk::PipelineShaderStageCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_shader_stage_create_flags(
         v.flags,
         s,
@@ -5716,7 +5605,6 @@ pub(crate) fn check_pipeline_tessellation_domain_origin_state_create_info(
     v: &vk::PipelineTessellationDomainOriginStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_tessellation_domain_origin(
         v.domain_origin,
         s,
@@ -5729,7 +5617,6 @@ pub(crate) fn check_pipeline_tessellation_state_create_info(
     v: &vk::PipelineTessellationStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5750,7 +5637,6 @@ pub(crate) fn check_pipeline_vertex_input_state_create_info(
     v: &vk::PipelineVertexInputStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5781,7 +5667,6 @@ pub(crate) fn check_pipeline_viewport_state_create_info(
     v: &vk::PipelineViewportStateCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5803,7 +5688,6 @@ pub(crate) fn check_present_info_khr(
     v: &vk::PresentInfoKHR<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.swapchain_count == 0 {
         return Err(
             fail(
@@ -5840,9 +5724,8 @@ pub(crate) fn check_present_info_khr(
 ///The implicit rules of `VkPrivateDataSlotCreateInfo` that are checked at run time.
 pub(crate) fn check_private_data_slot_create_info(
     v: &vk::PrivateDataSlotCreateInfo<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5858,7 +5741,6 @@ pub(crate) fn check_push_constant_range(
     v: &vk::PushConstantRange,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_shader_stage_flags(
         v.stage_flags,
         s,
@@ -5879,7 +5761,6 @@ pub(crate) fn check_query_pool_create_info(
     v: &vk::QueryPoolCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -5901,7 +5782,6 @@ pub(crate) fn check_queue_family_properties2(
     v: &vk::QueueFamilyProperties2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(
         v.p_next,
         s,
@@ -5914,7 +5794,6 @@ pub(crate) fn check_render_pass_begin_info(
     v: &vk::RenderPassBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.render_pass != Default::default() && !s.owned_by_device(v.render_pass) {
         return Err(
             fail(
@@ -5941,7 +5820,6 @@ pub(crate) fn check_render_pass_create_info(
     v: &vk::RenderPassCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_render_pass_create_flags(
         v.flags,
         s,
@@ -5972,7 +5850,6 @@ pub(crate) fn check_render_pass_create_info2(
     v: &vk::RenderPassCreateInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_render_pass_create_flags(
         v.flags,
         s,
@@ -6007,7 +5884,6 @@ pub(crate) fn check_render_pass_input_attachment_aspect_create_info(
     v: &vk::RenderPassInputAttachmentAspectCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.aspect_reference_count == 0 {
         return Err(
             fail(
@@ -6026,7 +5902,6 @@ pub(crate) fn check_rendering_attachment_info(
     v: &vk::RenderingAttachmentInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.image_layout,
         s,
@@ -6079,7 +5954,6 @@ pub(crate) fn check_rendering_info(
     v: &vk::RenderingInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_rendering_flags(
         v.flags,
         s,
@@ -6108,7 +5982,6 @@ pub(crate) fn check_resolve_image_info2(
     v: &vk::ResolveImageInfo2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_image_layout(
         v.src_image_layout,
         s,
@@ -6155,7 +6028,6 @@ pub(crate) fn check_sampler_create_info(
     v: &vk::SamplerCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_sampler_create_flags(
         v.flags,
         s,
@@ -6199,7 +6071,6 @@ pub(crate) fn check_sampler_reduction_mode_create_info(
     v: &vk::SamplerReductionModeCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_sampler_reduction_mode(
         v.reduction_mode,
         s,
@@ -6212,7 +6083,6 @@ pub(crate) fn check_sampler_ycbcr_conversion_create_info(
     v: &vk::SamplerYcbcrConversionCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_format(
         v.format,
         s,
@@ -6257,7 +6127,6 @@ pub(crate) fn check_semaphore_create_info(
     v: &vk::SemaphoreCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -6274,7 +6143,6 @@ pub(crate) fn check_semaphore_submit_info(
     v: &vk::SemaphoreSubmitInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_stage_flags2(
         v.stage_mask,
         s,
@@ -6287,7 +6155,6 @@ pub(crate) fn check_semaphore_type_create_info(
     v: &vk::SemaphoreTypeCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_semaphore_type(
         v.semaphore_type,
         s,
@@ -6300,7 +6167,6 @@ pub(crate) fn check_semaphore_wait_info(
     v: &vk::SemaphoreWaitInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_semaphore_wait_flags(
         v.flags,
         s,
@@ -6319,9 +6185,8 @@ pub(crate) fn check_semaphore_wait_info(
 ///The implicit rules of `VkShaderModuleCreateInfo` that are checked at run time.
 pub(crate) fn check_shader_module_create_info(
     v: &vk::ShaderModuleCreateInfo<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -6337,7 +6202,6 @@ pub(crate) fn check_sparse_buffer_memory_bind_info(
     v: &vk::SparseBufferMemoryBindInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.bind_count == 0 {
         return Err(
             fail(
@@ -6356,7 +6220,6 @@ pub(crate) fn check_sparse_image_memory_bind(
     v: &vk::SparseImageMemoryBind,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::check_image_subresource(&v.subresource, s)?;
     crate::checks::flags_sparse_memory_bind_flags(
         v.flags,
@@ -6371,7 +6234,6 @@ pub(crate) fn check_sparse_image_memory_bind_info(
     v: &vk::SparseImageMemoryBindInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.bind_count == 0 {
         return Err(
             fail(
@@ -6390,7 +6252,6 @@ pub(crate) fn check_sparse_image_opaque_memory_bind_info(
     v: &vk::SparseImageOpaqueMemoryBindInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.bind_count == 0 {
         return Err(
             fail(
@@ -6409,7 +6270,6 @@ pub(crate) fn check_sparse_memory_bind(
     v: &vk::SparseMemoryBind,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_sparse_memory_bind_flags(
         v.flags,
         s,
@@ -6422,7 +6282,6 @@ pub(crate) fn check_stencil_op_state(
     v: &vk::StencilOpState,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_stencil_op(
         v.fail_op,
         s,
@@ -6447,7 +6306,6 @@ pub(crate) fn check_stencil_op_state(
 }
 ///The implicit rules of `VkSubmitInfo` that are checked at run time.
 pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     for e in unsafe { members(v.p_wait_dst_stage_mask, v.wait_semaphore_count) } {
         crate::checks::flags_pipeline_stage_flags(
             *e,
@@ -6493,7 +6351,6 @@ pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result
 }
 ///The implicit rules of `VkSubmitInfo2` that are checked at run time.
 pub(crate) fn check_submit_info2(v: &vk::SubmitInfo2<'_>, s: &Scope<'_>) -> Result<()> {
-    let _ = s;
     crate::checks::flags_submit_flags(v.flags, s, "VUID-VkSubmitInfo2-flags-parameter")?;
     for e in unsafe { members(v.p_wait_semaphore_infos, v.wait_semaphore_info_count) } {
         crate::checks::check_semaphore_submit_info(e, s)?;
@@ -6511,7 +6368,6 @@ pub(crate) fn check_subpass_begin_info(
     v: &vk::SubpassBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_subpass_contents(
         v.contents,
         s,
@@ -6524,7 +6380,6 @@ pub(crate) fn check_subpass_dependency(
     v: &vk::SubpassDependency,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_stage_flags(
         v.src_stage_mask,
         s,
@@ -6557,7 +6412,6 @@ pub(crate) fn check_subpass_dependency2(
     v: &vk::SubpassDependency2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_pipeline_stage_flags(
         v.src_stage_mask,
         s,
@@ -6591,7 +6445,6 @@ pub(crate) fn check_subpass_description(
     v: &vk::SubpassDescription<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_subpass_description_flags(
         v.flags,
         s,
@@ -6624,7 +6477,6 @@ pub(crate) fn check_subpass_description2(
     v: &vk::SubpassDescription2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_subpass_description_flags(
         v.flags,
         s,
@@ -6658,7 +6510,6 @@ pub(crate) fn check_subpass_description_depth_stencil_resolve(
     v: &vk::SubpassDescriptionDepthStencilResolve<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if !v.p_depth_stencil_resolve_attachment.is_null() {
         crate::checks::check_attachment_reference2(
             unsafe { &*v.p_depth_stencil_resolve_attachment },
@@ -6672,7 +6523,6 @@ pub(crate) fn check_subpass_end_info(
     v: &vk::SubpassEndInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::chain(v.p_next, s, Some("VUID-VkSubpassEndInfo-sType-unique"))?;
     Ok(())
 }
@@ -6682,7 +6532,6 @@ pub(crate) fn check_swapchain_create_info_khr(
     v: &vk::SwapchainCreateInfoKHR<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::flags_swapchain_create_flags_khr(
         v.flags,
         s,
@@ -6761,7 +6610,6 @@ pub(crate) fn check_vertex_input_attribute_description(
     v: &vk::VertexInputAttributeDescription,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_format(
         v.format,
         s,
@@ -6774,7 +6622,6 @@ pub(crate) fn check_vertex_input_binding_description(
     v: &vk::VertexInputBindingDescription,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_vertex_input_rate(
         v.input_rate,
         s,
@@ -6786,9 +6633,8 @@ pub(crate) fn check_vertex_input_binding_description(
 #[cfg(feature = "khr_wayland_surface")]
 pub(crate) fn check_wayland_surface_create_info_khr(
     v: &vk::WaylandSurfaceCreateInfoKHR<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -6803,9 +6649,8 @@ pub(crate) fn check_wayland_surface_create_info_khr(
 #[cfg(feature = "khr_win32_surface")]
 pub(crate) fn check_win32_surface_create_info_khr(
     v: &vk::Win32SurfaceCreateInfoKHR<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -6821,7 +6666,6 @@ pub(crate) fn check_write_descriptor_set(
     v: &vk::WriteDescriptorSet<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     crate::checks::enum_descriptor_type(
         v.descriptor_type,
         s,
@@ -6864,9 +6708,8 @@ pub(crate) fn check_write_descriptor_set(
 ///The implicit rules of `VkWriteDescriptorSetInlineUniformBlock` that are checked at run time.
 pub(crate) fn check_write_descriptor_set_inline_uniform_block(
     v: &vk::WriteDescriptorSetInlineUniformBlock<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.data_size == 0 {
         return Err(
             fail(
@@ -6881,9 +6724,8 @@ pub(crate) fn check_write_descriptor_set_inline_uniform_block(
 #[cfg(feature = "khr_xcb_surface")]
 pub(crate) fn check_xcb_surface_create_info_khr(
     v: &vk::XcbSurfaceCreateInfoKHR<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(
@@ -6898,9 +6740,8 @@ pub(crate) fn check_xcb_surface_create_info_khr(
 #[cfg(feature = "khr_xlib_surface")]
 pub(crate) fn check_xlib_surface_create_info_khr(
     v: &vk::XlibSurfaceCreateInfoKHR<'_>,
-    s: &Scope<'_>,
+    _s: &Scope<'_>,
 ) -> Result<()> {
-    let _ = s;
     if v.flags.as_raw() != 0 {
         return Err(
             fail(

@@ -40,7 +40,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_acquire_next_image_info_khr(acquire_info, s)?;
                 Ok(())
             })();
@@ -129,7 +128,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(swapchain.raw()) {
                     return Err(
                         fail(
@@ -247,7 +245,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if allocate_info.command_buffer_count == 0 {
                     return Err(
                         fail(
@@ -341,7 +338,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if allocate_info.descriptor_set_count == 0 {
                     return Err(
                         fail(
@@ -428,7 +424,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_memory_allocate_info(allocate_info, s)?;
                 Ok(())
             })();
@@ -519,7 +514,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(buffer.raw()) {
                     return Err(
                         fail(
@@ -595,7 +589,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if bind_infos.is_empty() {
                     return Err(
                         fail(
@@ -687,7 +680,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(image.raw()) {
                     return Err(
                         fail(
@@ -760,7 +752,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if bind_infos.is_empty() {
                     return Err(
                         fail(
@@ -823,8 +814,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -925,7 +914,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_query_control_flags(
                     flags,
                     s,
@@ -1020,7 +1008,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_subpass_contents(
                     contents,
                     s,
@@ -1133,7 +1120,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -1229,7 +1215,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -1328,7 +1313,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_pipeline_bind_point(
                     pipeline_bind_point,
                     s,
@@ -1460,7 +1444,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_index_type(
                     index_type,
                     s,
@@ -1560,7 +1543,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_pipeline_bind_point(
                     pipeline_bind_point,
                     s,
@@ -1648,7 +1630,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -1763,7 +1744,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -1929,7 +1909,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     src_image_layout,
                     s,
@@ -2059,7 +2038,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -2149,7 +2127,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -2259,7 +2236,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     image_layout,
                     s,
@@ -2384,7 +2360,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     image_layout,
                     s,
@@ -2506,7 +2481,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -2604,7 +2578,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -2734,7 +2707,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     dst_image_layout,
                     s,
@@ -2855,7 +2827,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -3024,7 +2995,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     src_image_layout,
                     s,
@@ -3147,7 +3117,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -3275,7 +3244,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     src_image_layout,
                     s,
@@ -3395,7 +3363,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -3503,7 +3470,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_query_result_flags(
                     flags,
                     s,
@@ -3675,8 +3641,6 @@ impl<'c> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::COMPUTE,
@@ -3809,8 +3773,6 @@ impl<'c> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::COMPUTE,
@@ -3951,7 +3913,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::COMPUTE,
@@ -4216,8 +4177,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -4490,8 +4449,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -4775,7 +4732,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -5069,7 +5025,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -5374,7 +5329,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -5658,7 +5612,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -5758,8 +5711,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -5821,7 +5772,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -5893,8 +5843,6 @@ impl<'c> Recorder<'c, InRenderPass> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -5961,7 +5909,6 @@ impl<'c> Recorder<'c, InRenderPass> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -6035,8 +5982,6 @@ impl<'c> Recorder<'c, InRendering> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -6143,7 +6088,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -6269,7 +6213,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -6343,8 +6286,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -6411,7 +6352,6 @@ impl<'c> Recorder<'c, InRenderPass> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_subpass_contents(
                     contents,
                     s,
@@ -6484,7 +6424,6 @@ impl<'c> Recorder<'c, InRenderPass> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -6608,7 +6547,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_pipeline_stage_flags(
                     src_stage_mask,
                     s,
@@ -6747,7 +6685,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -6837,7 +6774,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_shader_stage_flags(
                     stage_flags,
                     s,
@@ -6958,7 +6894,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_pipeline_stage_flags(
                     stage_mask,
                     s,
@@ -7054,7 +6989,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_pipeline_stage_flags2(
                     stage_mask,
                     s,
@@ -7138,7 +7072,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -7266,7 +7199,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_image_layout(
                     src_image_layout,
                     s,
@@ -7391,7 +7323,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7463,8 +7394,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7522,7 +7451,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_cull_mode_flags(
                     cull_mode,
                     s,
@@ -7581,8 +7509,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7651,8 +7577,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7715,8 +7639,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7778,8 +7700,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7839,7 +7759,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_compare_op(
                     depth_compare_op,
                     s,
@@ -7900,8 +7819,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -7957,8 +7874,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -8016,8 +7931,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE
@@ -8085,7 +7998,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_pipeline_stage_flags(
                     stage_mask,
                     s,
@@ -8169,7 +8081,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -8254,7 +8165,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_front_face(
                     front_face,
                     s,
@@ -8308,8 +8218,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -8361,8 +8269,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -8425,7 +8331,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_primitive_topology(
                     primitive_topology,
                     s,
@@ -8489,8 +8394,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -8559,8 +8462,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -8638,8 +8539,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -8713,7 +8612,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_stencil_face_flags(
                     face_mask,
                     s,
@@ -8797,7 +8695,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_stencil_face_flags(
                     face_mask,
                     s,
@@ -8911,7 +8808,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_stencil_face_flags(
                     face_mask,
                     s,
@@ -8981,8 +8877,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -9044,7 +8938,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_stencil_face_flags(
                     face_mask,
                     s,
@@ -9123,8 +9016,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -9199,8 +9090,6 @@ impl<'c, S: State> Recorder<'c, S> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS,
@@ -9287,7 +9176,6 @@ impl<'c> Recorder<'c, Outside> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
@@ -9422,7 +9310,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_pipeline_stage_flags(
                     src_stage_mask,
                     s,
@@ -9589,7 +9476,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.command_buffer().parent().queue_flags(),
                     vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -9717,7 +9603,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::enum_pipeline_stage_flag_bits(
                     pipeline_stage,
                     s,
@@ -9824,7 +9709,6 @@ impl<'c, S: State> Recorder<'c, S> {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_pipeline_stage_flags2(
                     stage,
                     s,
@@ -9903,7 +9787,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_buffer_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -9957,7 +9840,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_buffer_view_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10031,7 +9913,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_command_pool_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10101,7 +9982,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if create_infos.is_empty() {
                     return Err(
                         fail(
@@ -10205,7 +10085,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_debug_utils_messenger_create_info_ext(
                     create_info,
                     s,
@@ -10265,7 +10144,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_descriptor_pool_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10319,7 +10197,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10392,7 +10269,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_descriptor_update_template_create_info(
                     create_info,
                     s,
@@ -10488,7 +10364,6 @@ impl PhysicalDevice {
                         );
                     s
                 };
-                let _ = s;
                 crate::checks::check_device_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10547,7 +10422,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_event_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10598,7 +10472,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_fence_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10653,7 +10526,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_framebuffer_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10733,7 +10605,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if create_infos.is_empty() {
                     return Err(
                         fail(
@@ -10835,7 +10706,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_image_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10908,7 +10778,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_image_view_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -10988,7 +10857,6 @@ impl Entry {
                     instance: None,
                     device: None,
                 };
-                let _ = s;
                 crate::checks::check_instance_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11049,7 +10917,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_metal_surface_create_info_ext(create_info, s)?;
                 Ok(())
             })();
@@ -11106,7 +10973,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_pipeline_cache_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11160,7 +11026,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_pipeline_layout_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11234,7 +11099,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_private_data_slot_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11288,7 +11152,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_query_pool_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11342,7 +11205,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_render_pass_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11396,7 +11258,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_render_pass_create_info2(create_info, s)?;
                 Ok(())
             })();
@@ -11451,7 +11312,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_sampler_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11525,7 +11385,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_sampler_ycbcr_conversion_create_info(
                     create_info,
                     s,
@@ -11582,7 +11441,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_semaphore_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11644,7 +11502,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_shader_module_create_info(create_info, s)?;
                 Ok(())
             })();
@@ -11715,7 +11572,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_swapchain_create_info_khr(create_info, s)?;
                 Ok(())
             })();
@@ -11791,7 +11647,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_wayland_surface_create_info_khr(create_info, s)?;
                 Ok(())
             })();
@@ -11849,7 +11704,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_win32_surface_create_info_khr(create_info, s)?;
                 Ok(())
             })();
@@ -11907,7 +11761,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_xcb_surface_create_info_khr(create_info, s)?;
                 Ok(())
             })();
@@ -11965,7 +11818,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_xlib_surface_create_info_khr(create_info, s)?;
                 Ok(())
             })();
@@ -12377,8 +12229,6 @@ impl Device {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.scope();
-                let _ = s;
                 if memory_ranges.is_empty() {
                     return Err(
                         fail(
@@ -12465,7 +12315,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(buffer.raw()) {
                     return Err(
                         fail(
@@ -12518,7 +12367,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_memory_requirements2(memory_requirements, s)?;
                 Ok(())
             })();
@@ -12596,7 +12444,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
                 crate::checks::check_descriptor_set_layout_support(support, s)?;
                 Ok(())
@@ -12649,7 +12496,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_device_buffer_memory_requirements(info, s)?;
                 crate::checks::check_memory_requirements2(memory_requirements, s)?;
                 Ok(())
@@ -12779,7 +12625,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_instance(surface.raw()) {
                     return Err(
                         fail(
@@ -12849,7 +12694,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_device_image_memory_requirements(info, s)?;
                 crate::checks::check_memory_requirements2(memory_requirements, s)?;
                 Ok(())
@@ -12905,7 +12749,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_device_image_memory_requirements(info, s)?;
                 Ok(())
             })();
@@ -12977,7 +12820,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(memory.raw()) {
                     return Err(
                         fail(
@@ -13085,7 +12927,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_device_queue_info2(queue_info, s)?;
                 Ok(())
             })();
@@ -13140,7 +12981,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(event.raw()) {
                     return Err(
                         fail(
@@ -13188,7 +13028,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(fence.raw()) {
                     return Err(
                         fail(
@@ -13245,7 +13084,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(image.raw()) {
                     return Err(
                         fail(
@@ -13298,7 +13136,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_image_memory_requirements_info2(info, s)?;
                 crate::checks::check_memory_requirements2(memory_requirements, s)?;
                 Ok(())
@@ -13352,7 +13189,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(image.raw()) {
                     return Err(
                         fail(
@@ -13494,7 +13330,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(image.raw()) {
                     return Err(
                         fail(
@@ -13554,7 +13389,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_external_buffer_info(
                     external_buffer_info,
                     s,
@@ -13614,7 +13448,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_external_fence_info(
                     external_fence_info,
                     s,
@@ -13674,7 +13507,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_external_semaphore_info(
                     external_semaphore_info,
                     s,
@@ -13779,7 +13611,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::enum_format(
                     format,
                     s,
@@ -13830,7 +13661,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::enum_format(
                     format,
                     s,
@@ -13900,7 +13730,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::enum_format(
                     format,
                     s,
@@ -14003,7 +13832,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_image_format_info2(
                     image_format_info,
                     s,
@@ -14090,7 +13918,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_memory_properties2(
                     memory_properties,
                     s,
@@ -14154,7 +13981,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if !s.owned_by_instance(surface.raw()) {
                     return Err(
                         fail(
@@ -14266,7 +14092,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_properties2(properties, s)?;
                 Ok(())
             })();
@@ -14419,7 +14244,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::enum_format(
                     format,
                     s,
@@ -14544,7 +14368,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_physical_device_sparse_image_format_info2(
                     format_info,
                     s,
@@ -14629,7 +14452,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if !s.owned_by_instance(surface.raw()) {
                     return Err(
                         fail(
@@ -14700,7 +14522,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if let Some(h) = surface {
                     if !s.owned_by_instance(h.raw()) {
                         return Err(
@@ -14798,7 +14619,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if let Some(h) = surface {
                     if !s.owned_by_instance(h.raw()) {
                         return Err(
@@ -14891,7 +14711,6 @@ impl PhysicalDevice {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if !s.owned_by_instance(surface.raw()) {
                     return Err(
                         fail(
@@ -15051,7 +14870,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(pipeline_cache.raw()) {
                     return Err(
                         fail(
@@ -15140,7 +14958,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::enum_object_type(
                     object_type,
                     s,
@@ -15232,7 +15049,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::flags_query_result_flags(
                     flags,
                     s,
@@ -15323,7 +15139,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(render_pass.raw()) {
                     return Err(
                         fail(
@@ -15374,7 +15189,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(semaphore.raw()) {
                     return Err(
                         fail(
@@ -15439,7 +15253,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(swapchain.raw()) {
                     return Err(
                         fail(
@@ -15533,8 +15346,6 @@ impl Device {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r: Result<()> = (|| {
-                let s = &self.scope();
-                let _ = s;
                 if memory_ranges.is_empty() {
                     return Err(
                         fail(
@@ -15603,7 +15414,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if src_caches.is_empty() {
                     return Err(
                         fail(
@@ -15738,7 +15548,6 @@ impl Queue {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if !crate::validation::supports(
                     self.queue_flags(),
                     vk::QueueFlags::SPARSE_BINDING,
@@ -15953,7 +15762,6 @@ impl Queue {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 crate::checks::check_present_info_khr(present_info, s)?;
                 Ok(())
             })();
@@ -16095,7 +15903,6 @@ impl Queue {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if !s.owned_by_device(fence.raw()) {
                     return Err(
                         fail(
@@ -16246,7 +16053,6 @@ impl Queue {
         {
             let r: Result<()> = (|| {
                 let s = &self.parent().scope();
-                let _ = s;
                 if !s.owned_by_device(fence.raw()) {
                     return Err(
                         fail(
@@ -16391,7 +16197,6 @@ impl CommandBuffer {
         {
             let r: Result<()> = (|| {
                 let s = &self.device().scope();
-                let _ = s;
                 crate::checks::flags_command_buffer_reset_flags(
                     flags,
                     s,
@@ -16458,7 +16263,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::flags_command_pool_reset_flags(
                     flags,
                     s,
@@ -16537,7 +16341,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if flags.as_raw() != 0 {
                     return Err(
                         fail(
@@ -16620,7 +16423,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(event.raw()) {
                     return Err(
                         fail(
@@ -16679,7 +16481,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if fences.is_empty() {
                     return Err(
                         fail(
@@ -16768,7 +16569,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(query_pool.raw()) {
                     return Err(
                         fail(
@@ -16843,7 +16643,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_debug_utils_object_name_info_ext(name_info, s)?;
                 Ok(())
             })();
@@ -16922,7 +16721,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_debug_utils_object_tag_info_ext(tag_info, s)?;
                 Ok(())
             })();
@@ -16992,7 +16790,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(event.raw()) {
                     return Err(
                         fail(
@@ -17050,7 +16847,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::enum_object_type(
                     object_type,
                     s,
@@ -17176,7 +16972,6 @@ impl Instance {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::enum_debug_utils_message_severity_flag_bits_ext(
                     message_severity,
                     s,
@@ -17268,7 +17063,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if flags.as_raw() != 0 {
                     return Err(
                         fail(
@@ -17344,7 +17138,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if !s.owned_by_device(descriptor_update_template.raw()) {
                     return Err(
                         fail(
@@ -17431,7 +17224,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 for x in descriptor_writes.iter() {
                     crate::checks::check_write_descriptor_set(x, s)?;
                 }
@@ -17511,7 +17303,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 if fences.is_empty() {
                     return Err(
                         fail(
@@ -17601,7 +17392,6 @@ impl Device {
         {
             let r: Result<()> = (|| {
                 let s = &self.scope();
-                let _ = s;
                 crate::checks::check_semaphore_wait_info(wait_info, s)?;
                 Ok(())
             })();

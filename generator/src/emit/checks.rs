@@ -678,12 +678,17 @@ impl<'c, 'm> Checker<'c, 'm> {
             };
             let cfg = super::names::cfg_of(model, model.condition(name));
             let codes = checks.iter().map(|c| &c.code);
+            // Named `_s` when no check reads the scope, so no binding is left unused.
+            let scope_param = if checks.iter().any(|c| mentions(&c.code, "s")) {
+                quote!(s)
+            } else {
+                quote!(_s)
+            };
             let doc = format!("The implicit rules of `{name}` that are checked at run time.");
             fns.push(quote! {
                 #[doc = #doc]
                 #cfg
-                pub(crate) fn #f(v: &vk::#ty #lt, s: &Scope<'_>) -> Result<()> {
-                    let _ = s;
+                pub(crate) fn #f(v: &vk::#ty #lt, #scope_param: &Scope<'_>) -> Result<()> {
                     #(#codes)*
                     Ok(())
                 }
@@ -1067,4 +1072,13 @@ fn ranges(values: &[i64]) -> Vec<(i64, i64)> {
         }
     }
     out
+}
+
+/// Whether `code` names the identifier `name` anywhere, groups included.
+pub(crate) fn mentions(code: &TokenStream, name: &str) -> bool {
+    code.clone().into_iter().any(|t| match t {
+        proc_macro2::TokenTree::Ident(i) => i == name,
+        proc_macro2::TokenTree::Group(g) => mentions(&g.stream(), name),
+        _ => false,
+    })
 }

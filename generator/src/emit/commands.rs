@@ -1344,10 +1344,12 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 format!(": {}, and those of the structs it takes", owned.join(", "))
             }
         ) + &safety.replace("\n\n# Safety\n\n", " ");
+        // The scope is bound only when a check reads it.
+        let uses_scope = checks.iter().any(|c| super::checks::mentions(&c.code, "s"));
+        let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
         let run = quote! {
             let r: Result<()> = (|| {
-                let s = &#scope;
-                let _ = s;
+                #bind_scope
                 #(#codes)*
                 Ok(())
             })();
