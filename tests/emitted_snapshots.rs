@@ -2,7 +2,7 @@
 //! creation, drop and memory binding, a draw, a submission with its safe SubmitInfo,
 //! the beginning of a render pass, the typed pNext chain of
 //! VkPhysicalDeviceFeatures2 and an enumeration. The items are cut out of the
-//! committed `generated/src` files, which `generated_fresh` proves are exactly what
+//! committed `generated/src/generated` files, which `generated_fresh` proves are exactly what
 //! the generator writes; a change to an emitter shows up here as a readable diff.
 
 use quote::ToTokens;
@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 fn parse(file: &str) -> syn::File {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../generated/src")
+        .join("../generated/src/generated")
         .join(file);
     let text = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
@@ -164,9 +164,9 @@ fn enumeration() {
 /// binding is made only to be discarded (`let _ = s;`).
 #[test]
 fn emitted_code_has_no_generator_noise() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src/generated");
     let mut found = Vec::new();
-    for entry in std::fs::read_dir(&dir).expect("generated/src") {
+    for entry in std::fs::read_dir(&dir).expect("generated/src/generated") {
         let path = entry.expect("entry").path();
         let text = std::fs::read_to_string(&path).expect("a generated file");
         for (i, line) in text.lines().enumerate() {

@@ -1168,7 +1168,10 @@ fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
 fn every_count_that_two_setters_write_is_guarded() {
     use quote::ToTokens;
     use std::collections::BTreeMap;
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../generated/src/structs.rs");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../generated/src/generated/structs.rs"
+    );
     let text = std::fs::read_to_string(path).expect("generated structs");
     let file = syn::parse_file(&text).expect("structs.rs parses");
     let mut unguarded = Vec::new();

@@ -1,9 +1,9 @@
 //! tuff: safe Vulkan wrappers over `ash`, generated from the Khronos registry by
 //! `tuff-gen`.
 //!
-//! Everything under `src/` except this file is written by the generator; so are
-//! `Cargo.toml`, `VALIDATION.md`, `validation.json` and `validation.svg`, the
-//! coverage report that says, rule by rule, what the wrappers guarantee.
+//! `src/generated/` is written by the generator; so are `Cargo.toml`,
+//! `VALIDATION.md`, `validation.json` and `validation.svg`, the coverage report that
+//! says, rule by rule, what the wrappers guarantee. The other modules are hand-written.
 //!
 //! ```
 //! assert_eq!(tuff::api_info::API_VERSION, (1, 3));
@@ -12,48 +12,46 @@
 
 #![warn(missing_docs)]
 
+// The generator writes only `src/generated/` (and `Cargo.toml`); every other module
+// here is hand-written and edited where it lives. Generated modules keep their crate
+// paths (`crate::commands`, ...) so hand-written and generated code name each other
+// the same way, and are formatted by the generator (prettyplease), not rustfmt, so the
+// freshness test compares exactly what it writes.
+
 /// Which registry, core versions and extensions this crate was generated from.
+#[path = "generated/api_info.rs"]
 pub mod api_info;
-#[rustfmt::skip]
-mod allocation;
-// The generator formats its output with prettyplease; rustfmt leaves it as written,
-// so the freshness test compares exactly what the generator writes.
-#[rustfmt::skip]
 #[cfg(feature = "runtime_implicit_validations")]
+#[path = "generated/checks.rs"]
+#[rustfmt::skip]
 mod checks;
+#[path = "generated/commands.rs"]
 #[rustfmt::skip]
 mod commands;
-#[rustfmt::skip]
-mod frames;
+#[path = "generated/handles.rs"]
 #[rustfmt::skip]
 pub mod handles;
-#[rustfmt::skip]
-#[cfg(feature = "ext_debug_utils")]
-mod debug_log;
-#[rustfmt::skip]
-mod mapping;
-#[rustfmt::skip]
-mod physical;
-#[rustfmt::skip]
-mod presence;
-#[rustfmt::skip]
-pub mod recorder;
+#[path = "generated/reach.rs"]
 #[rustfmt::skip]
 mod reach;
-#[rustfmt::skip]
-mod retention;
+#[path = "generated/structs.rs"]
 #[rustfmt::skip]
 pub mod structs;
-#[rustfmt::skip]
+
+mod allocation;
+#[cfg(feature = "ext_debug_utils")]
+mod debug_log;
+mod frames;
+mod mapping;
+mod physical;
+mod presence;
+pub mod recorder;
+mod retention;
 mod spirv;
-#[rustfmt::skip]
 mod submission;
-#[rustfmt::skip]
 mod support;
-#[rustfmt::skip]
 #[cfg(feature = "khr_swapchain")]
 mod swapchain;
-#[rustfmt::skip]
 #[cfg(feature = "runtime_implicit_validations")]
 mod validation;
 

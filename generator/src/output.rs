@@ -1,6 +1,6 @@
 //! Writing the output without ever leaving it half-written, and `--check`.
 
-use crate::emit::OutputFile;
+use crate::emit::{OutputFile, GENERATED_DIR};
 use crate::error::{Error, Result};
 use std::path::Path;
 
@@ -31,17 +31,43 @@ pub fn write_all(out: &Path, files: &[OutputFile]) -> Result<()> {
             });
         }
     }
+    let retired = retire_stale(out, files, &old_dir)?;
     let mut swapped: Vec<(&OutputFile, bool)> = Vec::new();
     for f in files {
         if let Err(e) = swap_in(out, &new_dir, &old_dir, f) {
             for (done, had_old) in swapped.into_iter().rev() {
                 undo_swap(out, &old_dir, done, had_old);
             }
+            for path in retired {
+                let _ = std::fs::rename(old_dir.join(&path), out.join(&path));
+            }
             return Err(e);
         }
         swapped.push((f, old_dir.join(&f.path).exists()));
     }
     Ok(())
+}
+
+/// Move the generated folder's stale files aside (see [`check`]), so that a module the
+/// generator stopped writing cannot linger; undone with the swaps if a later step fails.
+fn retire_stale(
+    out: &Path,
+    files: &[OutputFile],
+    old_dir: &Path,
+) -> Result<Vec<std::path::PathBuf>> {
+    let stale = stale(out, files)?;
+    for (i, path) in stale.iter().enumerate() {
+        let aside = old_dir.join(path);
+        let moved = create_parent(&aside)
+            .and_then(|()| std::fs::rename(out.join(path), &aside).map_err(write_err(path)));
+        if let Err(e) = moved {
+            for done in &stale[..i] {
+                let _ = std::fs::rename(old_dir.join(done), out.join(done));
+            }
+            return Err(e);
+        }
+    }
+    Ok(stale)
 }
 
 fn write_err(path: &Path) -> impl FnOnce(std::io::Error) -> Error {
@@ -87,29 +113,31 @@ fn undo_swap(out: &Path, old_dir: &Path, f: &OutputFile, had_old: bool) {
     }
 }
 
-/// Regenerate into a temporary folder and compare with what `out` holds. Returns
-/// [`Error::OutOfDate`] with one line per differing file.
+/// Compare `files` in memory with what `out` holds, as the generator would write them.
+/// Returns [`Error::OutOfDate`] with one line per differing, missing or stale file; a
+/// stale file is one under the generated folder that the generator no longer writes.
+/// Reads only: the folder is left as it was.
 pub fn check(out: &Path, files: &[OutputFile]) -> Result<()> {
-    let scratch = tempfile::tempdir().map_err(|source| Error::Write {
-        path: std::env::temp_dir(),
-        source,
-    })?;
-    write_all(scratch.path(), files)?;
     let mut summary = Vec::new();
     for f in files {
-        let fresh = std::fs::read_to_string(scratch.path().join(&f.path)).unwrap_or_default();
         match std::fs::read_to_string(out.join(&f.path)) {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
                 summary.push(format!("  {}: missing", f.path.display()))
             }
             Err(e) => summary.push(format!("  {}: unreadable ({e})", f.path.display())),
-            Ok(committed) if committed != fresh => summary.push(format!(
+            Ok(committed) if committed != f.contents => summary.push(format!(
                 "  {}: {}",
                 f.path.display(),
-                first_difference(&committed, &fresh)
+                first_difference(&committed, &f.contents)
             )),
             Ok(_) => {}
         }
+    }
+    for path in stale(out, files)? {
+        summary.push(format!(
+            "  {}: stale (the generator no longer writes it)",
+            path.display()
+        ));
     }
     if summary.is_empty() {
         Ok(())
@@ -119,6 +147,26 @@ pub fn check(out: &Path, files: &[OutputFile]) -> Result<()> {
             summary: summary.join("\n"),
         })
     }
+}
+
+/// Files in the generated folder of `out` that are not among `files`, relative to `out`.
+fn stale(out: &Path, files: &[OutputFile]) -> Result<Vec<std::path::PathBuf>> {
+    let dir = out.join(GENERATED_DIR);
+    let entries = match std::fs::read_dir(&dir) {
+        Ok(entries) => entries,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(source) => return Err(Error::Write { path: dir, source }),
+    };
+    let mut found = Vec::new();
+    for entry in entries {
+        let entry = entry.map_err(write_err(&dir))?;
+        let rel = Path::new(GENERATED_DIR).join(entry.file_name());
+        if entry.path().is_file() && !files.iter().any(|f| f.path == rel) {
+            found.push(rel);
+        }
+    }
+    found.sort();
+    Ok(found)
 }
 
 fn first_difference(committed: &str, fresh: &str) -> String {
@@ -238,5 +286,26 @@ mod tests {
         let text = err.to_string();
         assert!(text.contains("a.txt: differs from line 2"), "{text}");
         assert!(text.contains("c.txt: missing"), "{text}");
+    }
+
+    #[test]
+    fn a_module_no_longer_generated_is_flagged_then_retired() {
+        let dir = tempfile::tempdir().unwrap();
+        let (old, kept) = (
+            file("src/generated/old.rs", "old\n"),
+            file("src/generated/kept.rs", "kept\n"),
+        );
+        let hand = file("src/lib.rs", "hand-written\n");
+        write_all(dir.path(), &[old, kept.clone(), hand]).unwrap();
+        let text = check(dir.path(), std::slice::from_ref(&kept))
+            .unwrap_err()
+            .to_string();
+        assert!(text.contains("src/generated/old.rs: stale"), "{text}");
+        // Outside the generated folder nothing is the generator's to judge.
+        assert!(!text.contains("lib.rs"), "{text}");
+        write_all(dir.path(), std::slice::from_ref(&kept)).unwrap();
+        assert!(!dir.path().join("src/generated/old.rs").exists());
+        assert!(dir.path().join("src/lib.rs").exists());
+        check(dir.path(), &[kept]).unwrap();
     }
 }
