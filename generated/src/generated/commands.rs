@@ -27,10 +27,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkAcquireNextImage2KHR-surface-07784`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkAcquireNextImage2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImage2KHR.html). Settled by the wrappers:
+
 - `VUID-vkAcquireNextImage2KHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAcquireNextImage2KHR-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn acquire_next_image2_khr<'a>(
         &self,
@@ -89,12 +92,8 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkAcquireNextImageKHR-swapchain-01285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAcquireNextImageKHR-semaphore-01286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAcquireNextImageKHR-semaphore-01779`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAcquireNextImageKHR-fence-01287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAcquireNextImageKHR-semaphore-01780`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAcquireNextImageKHR-surface-07783`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImageKHR.html). Settled by the wrappers:
+
 - `VUID-vkAcquireNextImageKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAcquireNextImageKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAcquireNextImageKHR-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -103,7 +102,8 @@ impl Device {
 - `VUID-vkAcquireNextImageKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkAcquireNextImageKHR-semaphore-03265`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn acquire_next_image_khr(
         &self,
@@ -225,6 +225,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateCommandBuffers.html). Settled by the wrappers:
+
 - `VUID-vkAllocateCommandBuffers-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -318,6 +320,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateDescriptorSets.html). Settled by the wrappers:
+
 - `VUID-vkAllocateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -407,14 +411,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkAllocateMemory-pAllocateInfo-01713`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAllocateMemory-pAllocateInfo-01714`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkAllocateMemory-maxMemoryAllocationCount-04101`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkAllocateMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateMemory.html). Settled by the wrappers:
+
 - `VUID-vkAllocateMemory-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAllocateMemory-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateMemory-pAllocator-parameter`: static (always NULL)
 - `VUID-vkAllocateMemory-pMemory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAllocateMemory-deviceCoherentMemory-02790`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn allocate_memory<'a>(
         &self,
@@ -473,30 +477,15 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkBindBufferMemory-buffer-07459`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-buffer-01030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memoryOffset-01031`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memory-01035`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memoryOffset-01036`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-size-01037`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory.html). Settled by the wrappers:
+
 - `VUID-vkBindBufferMemory-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindBufferMemory-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindBufferMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindBufferMemory-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindBufferMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindBufferMemory-buffer-01444`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memory-01508`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-None-01898`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-None-01899`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-buffer-01038`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-buffer-01039`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memory-02726`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memory-02727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memory-02985`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-memory-02986`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-buffer-06408`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindBufferMemory-descriptorBufferCaptureReplay-08112`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 19 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn bind_buffer_memory(
         &self,
@@ -577,6 +566,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory2.html). Settled by the wrappers:
+
 - `VUID-vkBindBufferMemory2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
@@ -637,32 +628,15 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkBindImageMemory-image-07460`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-image-01045`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memoryOffset-01046`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-01047`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memoryOffset-01048`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-size-01049`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory.html). Settled by the wrappers:
+
 - `VUID-vkBindImageMemory-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindImageMemory-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindImageMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindImageMemory-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindImageMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindImageMemory-image-01445`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-01509`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-02628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-02629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-None-01901`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-None-01902`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-image-01050`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-image-01051`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-02728`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-02729`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-02989`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-memory-02990`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-descriptorBufferCaptureReplay-08113`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-image-01608`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory-image-06392`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn bind_image_memory(
         &self,
@@ -738,11 +712,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkBindImageMemory2-pBindInfos-02858`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkBindImageMemory2-pBindInfos-04006`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkBindImageMemory2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory2.html). Settled by the wrappers:
+
 - `VUID-vkBindImageMemory2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindImageMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
+- `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn bind_image_memory2<'a>(
         &self,
@@ -800,6 +776,8 @@ impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBeginDebugUtilsLabelEXT`
 
 # Valid usage
+
+The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginDebugUtilsLabelEXT.html). Settled by the wrappers:
 
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -865,44 +843,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdBeginQuery-None-00807`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-02804`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-00800`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-query-00802`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-00803`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-00804`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-00805`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryPool-01922`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBeginQuery`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginQuery.html). Settled by the wrappers:
+
 - `VUID-vkCmdBeginQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBeginQuery-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBeginQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBeginQuery-queryType-04728`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-06741`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-04729`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-commandBuffer-01885`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-query-00808`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07126`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-None-07127`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07128`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-04862`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07129`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07130`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07131`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07132`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-07070`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-02327`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-02328`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-06687`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryType-06688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryPool-07289`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryPool-03223`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryPool-03224`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryPool-03225`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-queryPool-03226`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginQuery-None-02863`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 32 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_query(
         &mut self,
@@ -976,14 +926,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdBeginRenderPass-initialLayout-00895`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-00897`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-00898`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-00899`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-00900`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-srcStageMask-06451`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-dstStageMask-06452`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-framebuffer-02532`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass.html). Settled by the wrappers:
+
 - `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRenderPass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -992,12 +936,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBeginRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBeginRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdBeginRenderPass-initialLayout-00896`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-01758`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-02842`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-07000`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass-initialLayout-07001`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_render_pass<'a>(
         mut self,
@@ -1088,16 +1028,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdBeginRenderPass2-framebuffer-02779`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03098`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03099`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03100`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-framebuffer-02533`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass2.html). Settled by the wrappers:
+
 - `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -1106,10 +1038,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-02844`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-07002`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRenderPass2-initialLayout-07003`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_render_pass2<'a>(
         mut self,
@@ -1198,14 +1128,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdBeginRendering-dynamicRendering-06446`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBeginRendering-commandBuffer-06068`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRendering.html). Settled by the wrappers:
+
 - `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_rendering<'a>(
         mut self,
@@ -1278,14 +1210,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-firstSet-00360`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorSets.html). Settled by the wrappers:
+
 - `VUID-vkCmdBindDescriptorSets-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindDescriptorSets-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1296,10 +1222,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindDescriptorSets-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindDescriptorSets-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-04616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-graphicsPipelineLibrary-06754`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-08010`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_descriptor_sets<'a>(
         &mut self,
@@ -1420,10 +1344,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdBindIndexBuffer-offset-00431`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindIndexBuffer-offset-00432`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindIndexBuffer-buffer-00433`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindIndexBuffer-buffer-00434`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindIndexBuffer.html). Settled by the wrappers:
+
 - `VUID-vkCmdBindIndexBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindIndexBuffer-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindIndexBuffer-indexType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1431,8 +1353,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBindIndexBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindIndexBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBindIndexBuffer-indexType-02507`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindIndexBuffer-indexType-02765`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_index_buffer(
         &mut self,
@@ -1506,11 +1428,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipeline-00781`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBindPipeline`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindPipeline.html). Settled by the wrappers:
+
 - `VUID-vkCmdBindPipeline-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindPipeline-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1518,21 +1437,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBindPipeline-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindPipeline-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBindPipeline-variableSampleLocations-01525`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-None-02323`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-02391`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-02392`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-06721`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineProtectedAccess-07408`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineProtectedAccess-07409`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipeline-03382`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-commandBuffer-04808`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-commandBuffer-04809`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-04881`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-04949`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-04950`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipeline-06856`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-06653`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 20 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_pipeline(
         &mut self,
@@ -1604,12 +1510,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdBindVertexBuffers-firstBinding-00624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers-firstBinding-00625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers-pOffsets-00626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers-pBuffers-00627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers-pBuffers-00628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers-pBuffers-04001`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers.html). Settled by the wrappers:
+
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -1618,7 +1520,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindVertexBuffers-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBindVertexBuffers-pBuffers-04002`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_vertex_buffers<'a>(
         &mut self,
@@ -1711,15 +1614,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pSizes-03358`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers2.html). Settled by the wrappers:
+
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -1730,7 +1626,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdBindVertexBuffers2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBindVertexBuffers2-pBuffers-04112`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_vertex_buffers2<'a>(
         &mut self,
@@ -1835,44 +1732,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdBlitImage-commandBuffer-01834`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-commandBuffer-01835`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-commandBuffer-01836`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-pRegions-00215`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-pRegions-00216`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-pRegions-00217`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-01999`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00219`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00220`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImageLayout-00221`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-02000`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-00224`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-00225`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImageLayout-00226`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00229`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00230`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00231`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00232`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00233`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-00234`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-filter-02001`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcSubresource-01705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstSubresource-01706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcSubresource-01707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstSubresource-01708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00240`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-aspectMask-00241`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-aspectMask-00242`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcOffset-00243`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcOffset-00244`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00245`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcOffset-00246`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImage-00247`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstOffset-00248`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstOffset-00249`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-00250`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstOffset-00251`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-00252`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage.html). Settled by the wrappers:
+
 - `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBlitImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1886,15 +1747,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdBlitImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBlitImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBlitImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdBlitImage-srcImage-06421`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-06422`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImageLayout-00222`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImageLayout-00227`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-srcImageLayout-01398`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImageLayout-01399`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-filter-02002`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-filter-00237`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage-dstImage-02545`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 47 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image<'a>(
         &mut self,
@@ -2023,15 +1877,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdBlitImage2-commandBuffer-01834`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage2-commandBuffer-01835`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdBlitImage2-commandBuffer-01836`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage2.html). Settled by the wrappers:
+
 - `VUID-vkCmdBlitImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2098,13 +1953,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdClearAttachments-pAttachments-07270`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-aspectMask-07271`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-rect-02682`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-rect-02683`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-pRects-00016`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-pRects-06937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-layerCount-01934`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearAttachments.html). Settled by the wrappers:
+
 - `VUID-vkCmdClearAttachments-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -2114,9 +1964,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdClearAttachments-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdClearAttachments-commandBuffer-02504`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-commandBuffer-02505`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearAttachments-baseArrayLayer-00018`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_attachments<'a>(
         &mut self,
@@ -2198,17 +2047,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdClearColorImage-image-01993`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-image-00002`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-image-00003`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-imageLayout-00004`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-aspectMask-02498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-baseMipLevel-01470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-pRanges-01692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-baseArrayLayer-01472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-pRanges-01693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-image-00007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-pColor-04961`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearColorImage.html). Settled by the wrappers:
+
 - `VUID-vkCmdClearColorImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearColorImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdClearColorImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -2219,11 +2059,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdClearColorImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdClearColorImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdClearColorImage-image-01545`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-imageLayout-00005`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-imageLayout-01394`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-commandBuffer-01805`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearColorImage-commandBuffer-01806`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_color_image<'a>(
         &mut self,
@@ -2319,22 +2156,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdClearDepthStencilImage-image-01994`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-image-00009`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02658`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02659`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02660`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-image-00010`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-00012`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-aspectMask-02824`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-image-02825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-image-02826`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-pRanges-01694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-pRanges-01695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-image-00014`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearDepthStencilImage.html). Settled by the wrappers:
+
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -2346,8 +2169,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdClearDepthStencilImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 18 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_depth_stencil_image<'a>(
         &mut self,
@@ -2448,18 +2271,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyBuffer-commandBuffer-01822`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-commandBuffer-01823`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-commandBuffer-01824`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-srcOffset-00113`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-dstOffset-00114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-size-00115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-size-00116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-pRegions-00117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-srcBuffer-00118`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-srcBuffer-00119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-dstBuffer-00120`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer-dstBuffer-00121`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBuffer-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -2469,7 +2282,9 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer<'a>(
         &mut self,
@@ -2563,15 +2378,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01822`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01823`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01824`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer2.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2639,41 +2455,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageOffset-07738`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-srcImage-00199`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-srcImage-00201`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07274`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07275`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07276`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07277`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07273`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-srcImage-04053`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-00171`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-00173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImage-00177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImage-00178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImage-00179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-06217`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-06218`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-06219`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -2685,16 +2468,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyBufferToImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-pRegions-07741`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImage-01997`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImageLayout-01396`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-dstImage-02543`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage-None-00214`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 45 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image<'a>(
         &mut self,
@@ -2806,18 +2581,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage2.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBufferToImage2-pCopyBufferToImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
@@ -2894,45 +2667,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyImage-commandBuffer-01825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-commandBuffer-01826`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-commandBuffer-01827`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-00124`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImageLayout-00128`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImageLayout-00133`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-00136`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcSubresource-01696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstSubresource-01697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcSubresource-01698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstSubresource-01699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcOffset-01783`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstOffset-01784`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-aspectMask-00142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-aspectMask-00143`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcOffset-00144`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcOffset-00145`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-00146`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcOffset-00147`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01785`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01786`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01787`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01788`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstOffset-00150`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstOffset-00151`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-00152`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstOffset-00153`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-07278`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-07279`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-07280`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-07281`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-07282`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-pRegions-07283`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01728`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01729`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01730`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01732`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01733`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01734`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -2945,43 +2681,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdCopyImage-srcImage-01995`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-04443`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-04444`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-07743`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-07744`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01790`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01791`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01792`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-00127`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-00132`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-00135`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01546`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01547`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01548`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-None-01549`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01554`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01555`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01556`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-01557`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImageLayout-00129`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImageLayout-00134`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImageLayout-01917`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImageLayout-01395`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-02542`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-00139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-07742`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-01789`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-srcImage-00126`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-dstImage-00131`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-aspect-06662`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-aspect-06663`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-aspect-06664`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage-aspect-06665`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 76 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image<'a>(
         &mut self,
@@ -3102,15 +2803,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyImage2-commandBuffer-01825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage2-commandBuffer-01826`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImage2-commandBuffer-01827`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage2.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3178,40 +2880,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00199`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00201`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07274`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07275`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07276`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07277`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07273`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-04053`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-00183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-00184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-06220`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-06221`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-06222`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -3223,15 +2893,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyImageToBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07741`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-01998`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-01397`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-02544`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 43 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer<'a>(
         &mut self,
@@ -3343,17 +3006,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer2.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImageToBuffer2-pCopyImageToBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
@@ -3430,16 +3092,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-flags-00822`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-flags-00823`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-queryType-00827`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-None-07429`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyQueryPoolResults.html). Settled by the wrappers:
+
 - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -3449,12 +3103,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdCopyQueryPoolResults-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdCopyQueryPoolResults-queryType-03232`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-queryType-03233`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-queryType-03234`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-queryType-02734`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-queryType-06901`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdCopyQueryPoolResults-flags-06902`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_query_pool_results(
         &mut self,
@@ -3565,72 +3215,15 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdDispatch-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-groupCountX-00386`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-groupCountY-00387`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-groupCountZ-00388`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatch.html). Settled by the wrappers:
+
 - `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDispatch-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDispatch-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatch-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 61 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch(
         &mut self,
@@ -3690,76 +3283,15 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdDispatchBase-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-baseGroupX-00421`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-baseGroupX-00422`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-baseGroupZ-00423`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-groupCountX-00424`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-groupCountY-00425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-groupCountZ-00426`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-baseGroupX-00427`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchBase.html). Settled by the wrappers:
+
 - `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDispatchBase-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchBase-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 65 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_base(
         &mut self,
@@ -3840,25 +3372,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdDispatchIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-offset-00407`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchIndirect.html). Settled by the wrappers:
+
 - `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -3866,47 +3381,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdDispatchIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDispatchIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 60 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3969,203 +3445,15 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdDraw-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-subpass-02685`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07748`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06537`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06538`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06887`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04008`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02721`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDraw.html). Settled by the wrappers:
+
 - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDraw-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-06666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04877`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04879`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06172`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06175`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07749`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07751`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-imageView-06184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07619`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07620`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07621`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07622`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07623`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-samples-07472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-samples-07473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07630`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07631`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07632`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07633`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07634`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07635`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07636`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07637`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07638`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07639`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07640`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07641`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07642`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07643`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07644`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07645`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07646`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07647`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07648`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-07649`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-stage-07073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04914`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-None-04875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDraw-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 192 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw(
         &mut self,
@@ -4238,205 +3526,15 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdDrawIndexed-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-subpass-02685`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07748`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06537`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06538`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06887`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04008`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02721`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07312`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
+
 - `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDrawIndexed-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-commandBuffer-02712`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-commandBuffer-02713`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-06666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04877`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04879`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06172`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06175`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07749`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07751`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-imageView-06184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07619`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07620`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07621`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07622`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07623`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-samples-07472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-samples-07473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07630`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07631`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07632`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07633`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07634`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07635`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07636`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07637`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07638`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07639`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07640`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07641`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07642`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07643`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07644`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07645`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07646`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07647`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07648`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-07649`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-stage-07073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-commandBuffer-04617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04914`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-None-04875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexed-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 194 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indexed(
         &mut self,
@@ -4513,45 +3611,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07748`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06537`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06538`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06887`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04008`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02721`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07312`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-drawCount-00528`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-drawCount-00539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-drawCount-00540`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
+
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -4559,167 +3620,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdDrawIndexedIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-06666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04877`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04879`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06172`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06175`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07749`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07751`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-imageView-06184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07619`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07620`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07621`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07622`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07623`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-samples-07472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-samples-07473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07630`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07631`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07632`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07633`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07634`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07635`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07636`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07637`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07638`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07639`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07640`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07641`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07642`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07643`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07644`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07645`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07646`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07647`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07648`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-07649`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-stage-07073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04914`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-None-04875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirect-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 200 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indexed_indirect(
         &mut self,
@@ -4798,49 +3700,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07748`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06537`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06538`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06887`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04008`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-04129`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07312`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-robustBufferAccess2-07825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stride-03142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-maxDrawCount-03143`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03153`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03154`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirectCount.html). Settled by the wrappers:
+
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -4849,168 +3710,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdDrawIndexedIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-06666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04877`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04879`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06172`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06175`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07749`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07751`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-imageView-06184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07619`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07620`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07621`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07622`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07623`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-samples-07472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-samples-07473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07630`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07631`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07632`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07633`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07634`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07635`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07636`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07637`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07638`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07639`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07640`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07641`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07642`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07643`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07644`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07645`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07646`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07647`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07648`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-07649`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stage-07073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04914`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-stage-06481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04445`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 205 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -5112,43 +3813,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdDrawIndirect-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-subpass-02685`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07748`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06537`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06538`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06887`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04008`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02721`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-buffer-02708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-buffer-02709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-offset-02710`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-drawCount-02718`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-drawCount-02719`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-drawCount-00476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-drawCount-00487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-drawCount-00488`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
+
 - `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -5156,167 +3822,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdDrawIndirect-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-06666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04877`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04879`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06172`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06175`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07749`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07751`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-imageView-06184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07619`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07620`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07621`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07622`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07623`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-samples-07472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-samples-07473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07630`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07631`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07632`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07633`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07634`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07635`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07636`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07637`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07638`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07639`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07640`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07641`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07642`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07643`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07644`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07645`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07646`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07647`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07648`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-07649`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-stage-07073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04914`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-None-04875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirect-stage-06481`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 198 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indirect(
         &mut self,
@@ -5387,47 +3894,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdDrawIndirectCount-magFilter-04553`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02697`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02700`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02702`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02703`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02704`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewType-07752`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-format-07753`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageWrite-04469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07288`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-renderPass-02684`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-subpass-02685`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07748`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07468`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07469`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06537`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06538`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06539`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06887`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-blendEnable-04727`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04008`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02721`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-buffer-02708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-buffer-02709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-offset-02710`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBuffer-02714`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBuffer-02715`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBufferOffset-04129`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stride-03110`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-maxDrawCount-03111`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBuffer-03121`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-countBuffer-03122`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirectCount.html). Settled by the wrappers:
+
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -5436,168 +3904,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 - `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdDrawIndirectCount-aspectMask-06478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpTypeImage-07030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-filterCubic-02694`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-filterCubicMinmax-02695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-flags-02696`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02698`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-maintenance4-06425`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02699`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-08114`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-08115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-08116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-08117`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-08119`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02705`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-02706`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-uniformBuffers-06935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-storageBuffers-06936`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-02707`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-02711`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06550`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-ConstOffset-06551`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-SampledType-04470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-SampledType-04471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-SampledType-04472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-SampledType-04473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sparseImageInt64Atomics-04474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sparseImageInt64Atomics-04475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06971`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06972`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageBoxFilterQCOM-06973`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSSDQCOM-06974`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSADQCOM-06975`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageBlockMatchSADQCOM-06976`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06977`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-OpImageWeightedSampleQCOM-06978`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-maxMultiviewInstanceIndex-02688`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-02689`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-06666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-03417`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-scissorCount-03418`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-03419`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-04137`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-04138`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-04139`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-04140`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-VkPipelineVieportCreateInfo-04141`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-VkPipelineVieportCreateInfo-04142`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04876`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04877`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04879`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-logicOp-04878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-primitiveFragmentShadingRateWithMultipleViewports-04552`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07284`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-04740`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06172`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06173`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewMask-06178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06174`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06175`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06176`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06177`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07749`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-attachmentCount-07750`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07751`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06183`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-imageView-06184`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06185`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06187`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-renderPass-06198`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07287`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06188`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06189`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06190`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithRasterizerDiscard-06708`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-06709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07619`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07620`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07621`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07622`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07623`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07624`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07625`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07626`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07627`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07628`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07629`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pColorBlendEnables-07470`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07471`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-samples-07472`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-samples-07473`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-firstAttachment-07476`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-firstAttachment-07477`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-firstAttachment-07478`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07630`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-primitivesGeneratedQueryWithNonZeroStreams-07481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07631`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07632`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-conservativePointAndLineRasterization-07499`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07633`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07634`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsPerPixel-07482`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsPerPixel-07483`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07484`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07485`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07486`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-sampleLocationsEnable-07487`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07635`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-firstAttachment-07479`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-advancedBlendMaxColorAttachments-07480`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07636`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07637`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07638`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07495`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07496`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07497`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stippledLineEnable-07498`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07639`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07640`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07641`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-07492`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-viewportCount-07493`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07642`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07643`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-coverageToColorEnable-07490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07644`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07645`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07646`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-coverageModulationTableEnable-07488`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07494`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07647`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07648`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-07649`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-rasterizationSamples-07474`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-multisampledRenderToSingleSampled-07475`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-coverageReductionMode-07491`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stage-07073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-dynamicPrimitiveTopologyUnrestricted-07500`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pStrides-04913`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-pStrides-04884`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04914`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04875`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-stage-06481`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdDrawIndirectCount-None-04445`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 203 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indirect_count(
         &mut self,
@@ -5700,12 +4008,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01912`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01913`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -5753,19 +4063,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdEndQuery-None-01923`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndQuery-query-00810`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndQuery-None-07007`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndQuery-None-07008`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdEndQuery`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndQuery.html). Settled by the wrappers:
+
 - `VUID-vkCmdEndQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdEndQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdEndQuery-commandBuffer-01886`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndQuery-query-00812`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndQuery-queryPool-03227`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndQuery-queryPool-03228`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -5828,16 +4134,16 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 # Valid usage
 
-- `VUID-vkCmdEndRenderPass-None-00910`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndRenderPass-None-07004`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass.html). Settled by the wrappers:
+
 - `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdEndRenderPass-None-02351`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndRenderPass-None-06170`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -5889,8 +4195,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 # Valid usage
 
-- `VUID-vkCmdEndRenderPass2-None-03103`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndRenderPass2-None-07005`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass2.html). Settled by the wrappers:
+
 - `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -5898,8 +4204,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdEndRenderPass2-None-02352`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndRenderPass2-None-06171`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
@@ -5968,15 +4274,15 @@ impl<'c> Recorder<'c, InRendering> {
 
 # Valid usage
 
-- `VUID-vkCmdEndRendering-None-06161`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndRendering-commandBuffer-06162`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdEndRendering-None-06999`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
+
 - `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdEndRendering-None-06781`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6020,28 +4326,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00088`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00089`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00099`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-contents-06018`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-06019`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pBeginInfo-06020`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00100`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-00101`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-00102`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-00103`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-00104`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00105`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-07594`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-06533`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-06534`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-06535`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-06536`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdExecuteCommands`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdExecuteCommands.html). Settled by the wrappers:
+
 - `VUID-vkCmdExecuteCommands-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdExecuteCommands-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdExecuteCommands-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -6050,35 +4336,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdExecuteCommands-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdExecuteCommands-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdExecuteCommands-contents-00095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-00097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pInheritanceInfo-00098`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-02865`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-02866`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-02867`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-01820`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-commandBuffer-01821`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-None-02286`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-06021`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pCommandBuffers-06022`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-flags-06024`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pBeginInfo-06025`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-flags-06026`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-colorAttachmentCount-06027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-imageView-06028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-imageView-07606`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pDepthAttachment-06029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pStencilAttachment-06030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pDepthAttachment-06774`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pStencilAttachment-06775`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-variableSampleLocations-06023`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-viewMask-06031`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-06032`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-06033`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-06034`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-06035`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-06036`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdExecuteCommands-pNext-06037`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 51 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_execute_commands(
         &mut self,
@@ -6184,13 +4443,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdFillBuffer-dstOffset-00024`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-dstOffset-00025`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-size-00026`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-size-00027`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-size-00028`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-dstBuffer-00029`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-dstBuffer-00031`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdFillBuffer.html). Settled by the wrappers:
+
 - `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -6198,9 +4452,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdFillBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdFillBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdFillBuffer-commandBuffer-00030`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-commandBuffer-01811`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdFillBuffer-commandBuffer-01812`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_fill_buffer(
         &mut self,
@@ -6273,6 +4526,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
+The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
+
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -6337,7 +4592,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 # Valid usage
 
-- `VUID-vkCmdNextSubpass-None-00909`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass.html). Settled by the wrappers:
+
 - `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdNextSubpass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -6345,7 +4601,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdNextSubpass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdNextSubpass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdNextSubpass-None-02349`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6404,7 +4661,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 # Valid usage
 
-- `VUID-vkCmdNextSubpass2-None-03102`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass2.html). Settled by the wrappers:
+
 - `VUID-vkCmdNextSubpass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdNextSubpass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdNextSubpass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -6413,7 +4671,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 - `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdNextSubpass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdNextSubpass2-None-02350`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_next_subpass2<'a>(
         &mut self,
@@ -6485,23 +4744,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcAccessMask-02815`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstAccessMask-02816`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-pDependencies-02285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-image-04073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-oldLayout-01181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-06461`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-06462`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdPipelineBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier.html). Settled by the wrappers:
+
 - `VUID-vkCmdPipelineBarrier-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -6511,28 +4755,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier-None-06191`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 39 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_pipeline_barrier<'a>(
         &mut self,
@@ -6665,20 +4889,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-image-04073`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-oldLayout-01181`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-synchronization2-03848`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-srcStageMask-03849`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-dstStageMask-03850`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier2.html). Settled by the wrappers:
+
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPipelineBarrier2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPipelineBarrier2-None-06191`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6746,12 +4964,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdPushConstants-offset-01795`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPushConstants-offset-01796`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPushConstants-offset-00368`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPushConstants-size-00369`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPushConstants-offset-00370`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdPushConstants-size-00371`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushConstants.html). Settled by the wrappers:
+
 - `VUID-vkCmdPushConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPushConstants-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdPushConstants-stageFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -6761,7 +4975,9 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdPushConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdPushConstants-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdPushConstants-size-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_push_constants(
         &mut self,
@@ -6860,11 +5076,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdResetEvent-stageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-06458`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-01153`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-event-03834`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent.html). Settled by the wrappers:
+
 - `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -6872,18 +5085,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdResetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-event-03835`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent-commandBuffer-01157`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 17 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_event(
         &mut self,
@@ -6955,12 +5158,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdResetEvent2-stageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-synchronization2-03829`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-03830`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-event-03831`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-event-03832`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
+
 - `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -6968,17 +5167,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdResetEvent2-stageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-stageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetEvent2-commandBuffer-03833`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 17 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_event2(
         &mut self,
@@ -7050,9 +5240,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdResetQueryPool-firstQuery-00796`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetQueryPool-firstQuery-00797`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResetQueryPool-None-02841`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetQueryPool.html). Settled by the wrappers:
+
 - `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -7060,7 +5249,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResetQueryPool-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetQueryPool-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdResetQueryPool-firstQuery-02862`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_query_pool(
         &mut self,
@@ -7136,36 +5326,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdResolveImage-commandBuffer-01837`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-commandBuffer-01838`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-commandBuffer-01839`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-pRegions-00255`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-00256`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-00257`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-00258`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-00259`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImageLayout-00260`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImageLayout-00262`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-02003`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-01386`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcSubresource-01709`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstSubresource-01710`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcSubresource-01711`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstSubresource-01712`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-04446`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-04447`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcOffset-00269`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcOffset-00270`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-00271`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcOffset-00272`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-00273`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstOffset-00274`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstOffset-00275`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-00276`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstOffset-00277`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-00278`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-06762`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-06764`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage.html). Settled by the wrappers:
+
 - `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResolveImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -7178,14 +5340,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdResolveImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdResolveImage-srcImageLayout-00261`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImageLayout-00263`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImageLayout-01400`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImageLayout-01401`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-linearColorAttachment-06519`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-02546`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-srcImage-06763`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage-dstImage-06765`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 38 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_resolve_image<'a>(
         &mut self,
@@ -7305,15 +5461,16 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdResolveImage2-commandBuffer-01837`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage2-commandBuffer-01838`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdResolveImage2-commandBuffer-01839`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage2.html). Settled by the wrappers:
+
 - `VUID-vkCmdResolveImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_resolve_image2<'a>(
         &mut self,
@@ -7385,6 +5542,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
+The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetBlendConstants.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetBlendConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetBlendConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
@@ -7439,12 +5598,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetCullMode-None-03384`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCullMode.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetCullMode-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetCullMode-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCullMode-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetCullMode-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7494,11 +5656,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBias.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthBias-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBias-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bias(
         &mut self,
@@ -7567,11 +5732,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthBiasEnable-None-04872`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBiasEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7622,14 +5790,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthBounds-minDepthBounds-00600`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetDepthBounds-maxDepthBounds-00601`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetDepthBounds-minDepthBounds-02508`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthBounds`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBounds.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthBounds-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBounds-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBounds-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthBounds-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bounds(
         &mut self,
@@ -7687,11 +5855,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthBoundsTestEnable-None-03349`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBoundsTestEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bounds_test_enable(
         &mut self,
@@ -7747,12 +5918,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthCompareOp-None-03353`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthCompareOp.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthCompareOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthCompareOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7809,11 +5983,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthTestEnable-None-03352`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthTestEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7864,11 +6041,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDepthWriteEnable-None-03354`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthWriteEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7919,13 +6099,13 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetDeviceMask-deviceMask-00108`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetDeviceMask-deviceMask-00109`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetDeviceMask-deviceMask-00110`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetDeviceMask-deviceMask-00111`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDeviceMask.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetDeviceMask-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)*/
+- `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_device_mask(&mut self, device_mask: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7970,10 +6150,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdSetEvent-stageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-06457`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-01149`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdSetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -7981,17 +6159,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdSetEvent-stageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-stageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent-commandBuffer-01152`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 15 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8059,10 +6228,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdSetEvent2-synchronization2-03824`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent2-dependencyFlags-03825`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent2-srcStageMask-03827`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetEvent2-dstStageMask-03828`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -8070,7 +6237,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdSetEvent2-commandBuffer-03826`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_event2<'a>(
         &mut self,
@@ -8153,12 +6321,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetFrontFace-None-03383`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFrontFace.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetFrontFace-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetFrontFace-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetFrontFace-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetFrontFace-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8208,11 +6379,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetLineWidth-lineWidth-00788`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLineWidth.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetLineWidth-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetLineWidth-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8256,11 +6430,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetPrimitiveRestartEnable-None-04866`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPrimitiveRestartEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_primitive_restart_enable(
         &mut self,
@@ -8316,12 +6493,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetPrimitiveTopology-None-03347`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPrimitiveTopology.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_primitive_topology(
         &mut self,
@@ -8381,11 +6561,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetRasterizerDiscardEnable-None-04871`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizerDiscardEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
@@ -8444,19 +6627,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetScissor-firstScissor-00592`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissor-firstScissor-00593`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissor-scissorCount-00594`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissor-x-00595`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissor-offset-00596`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissor-offset-00597`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissor.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetScissor-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetScissor-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissor-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetScissor-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetScissor-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissor-scissorCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdSetScissor-viewportScissor2D-04789`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_scissor<'a>(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8521,19 +6701,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetScissorWithCount-None-03396`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissorWithCount-scissorCount-03397`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissorWithCount-scissorCount-03398`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissorWithCount-x-03399`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissorWithCount-offset-03400`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetScissorWithCount-offset-03401`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissorWithCount.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetScissorWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdSetScissorWithCount-commandBuffer-04820`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8595,6 +6772,8 @@ impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilCompareMask`
 
 # Valid usage
+
+The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilCompareMask.html). Settled by the wrappers:
 
 - `VUID-vkCmdSetStencilCompareMask-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -8671,7 +6850,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetStencilOp-None-03351`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilOp.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetStencilOp-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilOp-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
@@ -8681,7 +6861,9 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdSetStencilOp-compareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetStencilOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetStencilOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_stencil_op(
         &mut self,
@@ -8792,6 +6974,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
+The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilReference.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetStencilReference-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilReference-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
@@ -8867,11 +7051,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetStencilTestEnable-None-03350`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilTestEnable.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetStencilTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+- `VUID-vkCmdSetStencilTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8921,6 +7108,8 @@ impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilWriteMask`
 
 # Valid usage
+
+The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilWriteMask.html). Settled by the wrappers:
 
 - `VUID-vkCmdSetStencilWriteMask-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -8997,16 +7186,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetViewport-firstViewport-01223`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetViewport-firstViewport-01224`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetViewport-viewportCount-01225`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewport.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetViewport-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewport-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewport-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewport-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetViewport-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewport-viewportCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdSetViewport-commandBuffer-04821`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport<'a>(
         &mut self,
@@ -9075,16 +7264,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdSetViewportWithCount-None-03393`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetViewportWithCount-viewportCount-03394`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdSetViewportWithCount-viewportCount-03395`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWithCount.html). Settled by the wrappers:
+
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetViewportWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdSetViewportWithCount-commandBuffer-04819`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -9147,13 +7336,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-- `VUID-vkCmdUpdateBuffer-dstOffset-00032`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-dataSize-00033`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-dstBuffer-00034`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-dstBuffer-00035`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-dstOffset-00036`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-dataSize-00037`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-dataSize-00038`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdUpdateBuffer.html). Settled by the wrappers:
+
 - `VUID-vkCmdUpdateBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -9163,8 +7347,8 @@ impl<'c> Recorder<'c, Outside> {
 - `VUID-vkCmdUpdateBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdUpdateBuffer-commandBuffer-01813`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdUpdateBuffer-commandBuffer-01814`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_update_buffer(
         &mut self,
@@ -9248,21 +7432,8 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdWaitEvents-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcAccessMask-02815`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstAccessMask-02816`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-06459`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-06460`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-01158`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-07308`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdWaitEvents`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents.html). Settled by the wrappers:
+
 - `VUID-vkCmdWaitEvents-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWaitEvents-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWaitEvents-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -9274,28 +7445,8 @@ impl<'c, S: State> Recorder<'c, S> {
 - `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWaitEvents-eventCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWaitEvents-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-pEvents-03847`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents-commandBuffer-01167`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 37 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_wait_events<'a>(
         &mut self,
@@ -9449,23 +7600,17 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdWaitEvents2-synchronization2-03836`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-pEvents-03837`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-pEvents-03838`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-pEvents-03839`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-pEvents-03840`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-pEvents-03841`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-srcStageMask-03842`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-dstStageMask-03843`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-dependencyFlags-03844`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWaitEvents2-commandBuffer-03846`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents2.html). Settled by the wrappers:
+
 - `VUID-vkCmdWaitEvents2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWaitEvents2-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdWaitEvents2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWaitEvents2-eventCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_wait_events2<'a>(
         &mut self,
@@ -9567,31 +7712,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04074`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04075`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04076`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-queryPool-01416`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-queryPool-00828`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-timestampValidBits-00829`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-query-04904`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp.html). Settled by the wrappers:
+
 - `VUID-vkCmdWriteTimestamp-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWriteTimestamp-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWriteTimestamp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04077`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04078`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04079`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04080`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-07077`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04081`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-shadingRateImage-07314`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-fragmentShadingRate-07315`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-synchronization2-06489`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-pipelineStage-06490`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-None-00830`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp-query-00831`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 19 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_timestamp(
         &mut self,
@@ -9671,33 +7801,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-- `VUID-vkCmdWriteTimestamp2-stage-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-synchronization2-03858`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03859`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03860`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-queryPool-03861`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-queryPool-03862`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-query-04903`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp2.html). Settled by the wrappers:
+
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWriteTimestamp2-stage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWriteTimestamp2-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkCmdWriteTimestamp2-stage-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-stage-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-None-03864`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCmdWriteTimestamp2-query-03865`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_timestamp2(
         &mut self,
@@ -9772,12 +7885,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateBuffer-flags-00911`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBuffer.html). Settled by the wrappers:
+
 - `VUID-vkCreateBuffer-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateBuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateBuffer-pNext-06387`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_buffer<'a>(
         &self,
@@ -9826,6 +7941,8 @@ impl Device {
     /**`vkCreateBufferView`
 
 # Valid usage
+
+The rules are on [`vkCreateBufferView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html). Settled by the wrappers:
 
 - `VUID-vkCreateBufferView-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -9899,11 +8016,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html). Settled by the wrappers:
+
 - `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_command_pool<'a>(
         &self,
@@ -9962,8 +8082,8 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateComputePipelines-flags-00695`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCreateComputePipelines-flags-00696`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html). Settled by the wrappers:
+
 - `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -9971,7 +8091,8 @@ impl Device {
 - `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkCreateComputePipelines-pipelineCache-02873`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_compute_pipelines<'a>(
         &self,
@@ -10072,6 +8193,8 @@ impl Instance {
 
 # Valid usage
 
+The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDebugUtilsMessengerEXT.html). Settled by the wrappers:
+
 - `VUID-vkCreateDebugUtilsMessengerEXT-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDebugUtilsMessengerEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDebugUtilsMessengerEXT-pAllocator-parameter`: static (always NULL)
@@ -10131,6 +8254,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
+
 - `VUID-vkCreateDescriptorPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
@@ -10183,6 +8308,8 @@ impl Device {
     /**`vkCreateDescriptorSetLayout`
 
 # Valid usage
+
+The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
 
 - `VUID-vkCreateDescriptorSetLayout-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -10255,6 +8382,8 @@ impl Device {
     /**`vkCreateDescriptorUpdateTemplate`
 
 # Valid usage
+
+The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html). Settled by the wrappers:
 
 - `VUID-vkCreateDescriptorUpdateTemplate-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -10339,11 +8468,14 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDevice.html). Settled by the wrappers:
+
 - `VUID-vkCreateDevice-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDevice-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_device<'a>(
         &self,
@@ -10411,11 +8543,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateEvent-events-04468`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateEvent.html). Settled by the wrappers:
+
 - `VUID-vkCreateEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateEvent-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -10461,6 +8596,8 @@ impl Device {
     /**`vkCreateFence`
 
 # Valid usage
+
+The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFence.html). Settled by the wrappers:
 
 - `VUID-vkCreateFence-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -10512,11 +8649,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateFramebuffer-pCreateInfo-02777`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
+
 - `VUID-vkCreateFramebuffer-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateFramebuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_framebuffer<'a>(
         &self,
@@ -10585,8 +8725,8 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateGraphicsPipelines-flags-00720`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCreateGraphicsPipelines-flags-00721`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html). Settled by the wrappers:
+
 - `VUID-vkCreateGraphicsPipelines-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -10594,7 +8734,8 @@ impl Device {
 - `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_graphics_pipelines<'a>(
         &self,
@@ -10694,12 +8835,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateImage-flags-00939`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImage.html). Settled by the wrappers:
+
 - `VUID-vkCreateImage-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateImage-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateImage-pNext-06389`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -10764,6 +8907,8 @@ impl Device {
     /**`vkCreateImageView`
 
 # Valid usage
+
+The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
 
 - `VUID-vkCreateImageView-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -10837,10 +8982,13 @@ impl Entry {
 
 # Valid usage
 
-- `VUID-vkCreateInstance-ppEnabledExtensionNames-01388`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateInstance.html). Settled by the wrappers:
+
 - `VUID-vkCreateInstance-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateInstance-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_instance<'a>(
         &self,
@@ -10904,6 +9052,8 @@ impl Instance {
 
 # Valid usage
 
+The rules are on [`vkCreateMetalSurfaceEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMetalSurfaceEXT.html). Settled by the wrappers:
+
 - `VUID-vkCreateMetalSurfaceEXT-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateMetalSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateMetalSurfaceEXT-pAllocator-parameter`: static (always NULL)
@@ -10960,6 +9110,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html). Settled by the wrappers:
+
 - `VUID-vkCreatePipelineCache-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
@@ -11012,6 +9164,8 @@ impl Device {
     /**`vkCreatePipelineLayout`
 
 # Valid usage
+
+The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
 
 - `VUID-vkCreatePipelineLayout-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -11085,11 +9239,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreatePrivateDataSlot-privateData-04564`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
+
 - `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_private_data_slot<'a>(
         &self,
@@ -11138,6 +9295,8 @@ impl Device {
     /**`vkCreateQueryPool`
 
 # Valid usage
+
+The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateQueryPool.html). Settled by the wrappers:
 
 - `VUID-vkCreateQueryPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -11192,6 +9351,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html). Settled by the wrappers:
+
 - `VUID-vkCreateRenderPass-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
@@ -11244,6 +9405,8 @@ impl Device {
     /**`vkCreateRenderPass2`
 
 # Valid usage
+
+The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass2.html). Settled by the wrappers:
 
 - `VUID-vkCreateRenderPass2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -11298,11 +9461,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html). Settled by the wrappers:
+
 - `VUID-vkCreateSampler-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateSampler-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_sampler<'a>(
         &self,
@@ -11371,11 +9537,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateSamplerYcbcrConversion-None-01648`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html). Settled by the wrappers:
+
 - `VUID-vkCreateSamplerYcbcrConversion-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_sampler_ycbcr_conversion<'a>(
         &self,
@@ -11427,6 +9596,8 @@ impl Device {
     /**`vkCreateSemaphore`
 
 # Valid usage
+
+The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html). Settled by the wrappers:
 
 - `VUID-vkCreateSemaphore-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -11487,12 +9658,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkCreateShaderModule-pCreateInfo-06904`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkCreateShaderModule-pCreateInfo-06905`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateShaderModule.html). Settled by the wrappers:
+
 - `VUID-vkCreateShaderModule-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateShaderModule-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_shader_module<'a>(
         &self,
@@ -11542,6 +9715,8 @@ impl Device {
     /**`vkCreateSwapchainKHR`
 
 # Valid usage
+
+The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
 
 - `VUID-vkCreateSwapchainKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -11634,6 +9809,8 @@ impl Instance {
 
 # Valid usage
 
+The rules are on [`vkCreateWaylandSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWaylandSurfaceKHR.html). Settled by the wrappers:
+
 - `VUID-vkCreateWaylandSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateWaylandSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateWaylandSurfaceKHR-pAllocator-parameter`: static (always NULL)
@@ -11690,6 +9867,8 @@ impl Instance {
     /**`vkCreateWin32SurfaceKHR`
 
 # Valid usage
+
+The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWin32SurfaceKHR.html). Settled by the wrappers:
 
 - `VUID-vkCreateWin32SurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateWin32SurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -11748,6 +9927,8 @@ impl Instance {
 
 # Valid usage
 
+The rules are on [`vkCreateXcbSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateXcbSurfaceKHR.html). Settled by the wrappers:
+
 - `VUID-vkCreateXcbSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateXcbSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateXcbSurfaceKHR-pAllocator-parameter`: static (always NULL)
@@ -11805,6 +9986,8 @@ impl Instance {
 
 # Valid usage
 
+The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateXlibSurfaceKHR.html). Settled by the wrappers:
+
 - `VUID-vkCreateXlibSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateXlibSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter`: static (always NULL)
@@ -11861,6 +10044,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeviceWaitIdle.html). Settled by the wrappers:
+
 - `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn device_wait_idle(&self) -> Result<()> {
@@ -11882,6 +10067,8 @@ impl PhysicalDevice {
     /**`vkEnumerateDeviceExtensionProperties`
 
 # Valid usage
+
+The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceExtensionProperties.html). Settled by the wrappers:
 
 - `VUID-vkEnumerateDeviceExtensionProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
@@ -11943,6 +10130,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceLayerProperties.html). Settled by the wrappers:
+
 - `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
@@ -11994,6 +10183,8 @@ impl Entry {
     /**`vkEnumerateInstanceExtensionProperties`
 
 # Valid usage
+
+The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceExtensionProperties.html). Settled by the wrappers:
 
 - `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
 - `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
@@ -12050,6 +10241,8 @@ impl Entry {
 
 # Valid usage
 
+The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceLayerProperties.html). Settled by the wrappers:
+
 - `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
@@ -12093,6 +10286,8 @@ impl Entry {
 
 # Valid usage
 
+The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceVersion.html). Settled by the wrappers:
+
 - `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_instance_version(&self) -> Result<u32> {
@@ -12108,6 +10303,8 @@ impl Instance {
     /**`vkEnumeratePhysicalDeviceGroups`
 
 # Valid usage
+
+The rules are on [`vkEnumeratePhysicalDeviceGroups`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDeviceGroups.html). Settled by the wrappers:
 
 - `VUID-vkEnumeratePhysicalDeviceGroups-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupCount-parameter`: static (written into storage the wrapper provides)
@@ -12163,6 +10360,8 @@ impl Instance {
 
 # Valid usage
 
+The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDevices.html). Settled by the wrappers:
+
 - `VUID-vkEnumeratePhysicalDevices-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDeviceCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
@@ -12217,6 +10416,8 @@ impl Device {
     /**`vkFlushMappedMemoryRanges`
 
 # Valid usage
+
+The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html). Settled by the wrappers:
 
 - `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -12274,12 +10475,12 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetBufferDeviceAddress-bufferDeviceAddress-03324`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetBufferDeviceAddress-device-03325`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetBufferDeviceAddress-None-06542`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetBufferDeviceAddress-device-06543`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html). Settled by the wrappers:
+
 - `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_buffer_device_address<'a>(
         &self,
@@ -12301,6 +10502,8 @@ impl Device {
     /**`vkGetBufferMemoryRequirements`
 
 # Valid usage
+
+The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements.html). Settled by the wrappers:
 
 - `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -12354,6 +10557,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements2.html). Settled by the wrappers:
+
 - `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -12405,10 +10610,12 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureAddress.html). Settled by the wrappers:
+
 - `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_buffer_opaque_capture_address<'a>(
         &self,
@@ -12430,6 +10637,8 @@ impl Device {
     /**`vkGetDescriptorSetLayoutSupport`
 
 # Valid usage
+
+The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html). Settled by the wrappers:
 
 - `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -12482,6 +10691,8 @@ impl Device {
     /**`vkGetDeviceBufferMemoryRequirements`
 
 # Valid usage
+
+The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html). Settled by the wrappers:
 
 - `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -12538,12 +10749,12 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html). Settled by the wrappers:
+
 - `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_group_peer_memory_features(
         &self,
@@ -12572,6 +10783,8 @@ impl Device {
     /**`vkGetDeviceGroupPresentCapabilitiesKHR`
 
 # Valid usage
+
+The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPresentCapabilitiesKHR.html). Settled by the wrappers:
 
 - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -12605,11 +10818,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html). Settled by the wrappers:
+
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_group_surface_present_modes_khr(
         &self,
@@ -12681,6 +10897,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html). Settled by the wrappers:
+
 - `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -12735,6 +10953,8 @@ impl Device {
     /**`vkGetDeviceImageSparseMemoryRequirements`
 
 # Valid usage
+
+The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html). Settled by the wrappers:
 
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -12806,11 +11026,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetDeviceMemoryCommitment-memory-00690`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html). Settled by the wrappers:
+
 - `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_memory_commitment(
         &self,
@@ -12859,10 +11082,12 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryOpaqueCaptureAddress.html). Settled by the wrappers:
+
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_memory_opaque_capture_address<'a>(
         &self,
@@ -12885,11 +11110,12 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetDeviceQueue-queueIndex-00385`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetDeviceQueue-flags-01841`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html). Settled by the wrappers:
+
 - `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
         let mut out = vk::Queue::null();
@@ -12914,6 +11140,8 @@ impl Device {
     /**`vkGetDeviceQueue2`
 
 # Valid usage
+
+The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html). Settled by the wrappers:
 
 - `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -12971,10 +11199,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetEventStatus-event-03940`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html). Settled by the wrappers:
+
 - `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -13018,6 +11249,8 @@ impl Device {
     /**`vkGetFenceStatus`
 
 # Valid usage
+
+The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceStatus.html). Settled by the wrappers:
 
 - `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -13069,12 +11302,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetImageMemoryRequirements-image-01588`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageMemoryRequirements-image-04004`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements.html). Settled by the wrappers:
+
 - `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_image_memory_requirements(
         &self,
@@ -13122,6 +11357,8 @@ impl Device {
     /**`vkGetImageMemoryRequirements2`
 
 # Valid usage
+
+The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html). Settled by the wrappers:
 
 - `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -13174,6 +11411,8 @@ impl Device {
     /**`vkGetImageSparseMemoryRequirements`
 
 # Valid usage
+
+The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements.html). Settled by the wrappers:
 
 - `VUID-vkGetImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -13253,6 +11492,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements2.html). Settled by the wrappers:
+
 - `VUID-vkGetImageSparseMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
@@ -13302,24 +11543,15 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetImageSubresourceLayout-image-07789`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-image-07790`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-tiling-02271`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-aspectMask-00997`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-mipLevel-01716`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-format-04461`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-format-04462`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-format-04463`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-format-04464`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html). Settled by the wrappers:
+
 - `VUID-vkGetImageSubresourceLayout-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkGetImageSubresourceLayout-format-01581`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-format-01582`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetImageSubresourceLayout-image-01895`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_image_subresource_layout<'a>(
         &self,
@@ -13375,6 +11607,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceExternalBufferProperties`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalBufferProperties.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -13435,6 +11669,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalFenceProperties.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -13493,6 +11729,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceExternalSemaphoreProperties`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalSemaphoreProperties.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -13554,6 +11792,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
@@ -13573,6 +11813,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFeatures2`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -13598,6 +11840,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFormatProperties`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -13647,6 +11891,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceFormatProperties2`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties2.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -13708,7 +11954,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-02248`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -13716,7 +11963,9 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_image_format_properties(
         &self,
@@ -13818,10 +12067,13 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pNext-01868`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_image_format_properties2<'a>(
         &self,
@@ -13885,6 +12137,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
@@ -13906,6 +12160,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceMemoryProperties2`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -13959,13 +12215,15 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDevicePresentRectanglesKHR.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_present_rectangles_khr(
         &self,
@@ -14061,6 +12319,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
@@ -14080,6 +12340,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceProperties2`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties2.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -14126,6 +12388,8 @@ impl PhysicalDevice {
     /**`vkGetPhysicalDeviceQueueFamilyProperties`
 
 # Valid usage
+
+The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
@@ -14174,6 +12438,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties2.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
@@ -14221,7 +12487,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -14230,7 +12497,9 @@ impl PhysicalDevice {
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties(
         &self,
@@ -14355,6 +12624,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
@@ -14437,12 +12708,14 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilitiesKHR.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_capabilities_khr(
         &self,
@@ -14504,15 +12777,15 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06524`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06525`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormatsKHR.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_formats_khr(
         &self,
@@ -14601,15 +12874,15 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06524`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06525`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModesKHR.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_present_modes_khr(
         &self,
@@ -14696,11 +12969,14 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceSupportKHR.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_support_khr(
         &self,
@@ -14769,6 +13045,8 @@ impl PhysicalDevice {
 
 # Valid usage
 
+The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceToolProperties.html). Settled by the wrappers:
+
 - `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
@@ -14826,8 +13104,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-- `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)*/
+The rules are on [`vkGetPhysicalDeviceWin32PresentationSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceWin32PresentationSupportKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_win32_presentation_support_khr(
         &self,
@@ -14855,6 +13136,8 @@ impl Device {
     /**`vkGetPipelineCacheData`
 
 # Valid usage
+
+The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineCacheData.html). Settled by the wrappers:
 
 - `VUID-vkGetPipelineCacheData-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -14941,12 +13224,15 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetPrivateData-objectType-04018`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html). Settled by the wrappers:
+
 - `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_private_data(
         &self,
@@ -15016,25 +13302,16 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetQueryPoolResults-firstQuery-00813`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-flags-00815`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-firstQuery-00816`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-dataSize-00817`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-queryType-00818`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueryPoolResults.html). Settled by the wrappers:
+
 - `VUID-vkGetQueryPoolResults-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetQueryPoolResults-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkGetQueryPoolResults-flags-02827`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-flags-02828`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-queryType-03229`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-queryType-04519`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-queryType-03230`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-queryType-03231`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-queryType-04810`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkGetQueryPoolResults-flags-04811`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_query_pool_results(
         &self,
@@ -15126,6 +13403,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRenderAreaGranularity.html). Settled by the wrappers:
+
 - `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
@@ -15178,11 +13457,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkGetSemaphoreCounterValue-semaphore-03255`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreCounterValue.html). Settled by the wrappers:
+
 - `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -15238,6 +13520,8 @@ impl Device {
     /**`vkGetSwapchainImagesKHR`
 
 # Valid usage
+
+The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainImagesKHR.html). Settled by the wrappers:
 
 - `VUID-vkGetSwapchainImagesKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -15335,6 +13619,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html). Settled by the wrappers:
+
 - `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
@@ -15391,13 +13677,16 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkMergePipelineCaches-dstCache-00770`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergePipelineCaches.html). Settled by the wrappers:
+
 - `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn merge_pipeline_caches(
         &self,
@@ -15490,6 +13779,8 @@ impl Queue {
 
 # Valid usage
 
+The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBeginDebugUtilsLabelEXT.html). Settled by the wrappers:
+
 - `VUID-vkQueueBeginDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
@@ -15520,17 +13811,17 @@ impl Queue {
 
 # Valid usage
 
+The rules are on [`vkQueueBindSparse`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBindSparse.html). Settled by the wrappers:
+
 - `VUID-vkQueueBindSparse-fence-01113`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueBindSparse-fence-01114`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueBindSparse-pSignalSemaphores-01115`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueBindSparse-pWaitSemaphores-01116`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueBindSparse-pWaitSemaphores-01117`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueBindSparse-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueBindSparse-pBindInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueBindSparse-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueBindSparse-queuetype`: dynamic (checks the queue flags of the queue's family, recorded when the queue was retrieved)
 - `VUID-vkQueueBindSparse-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkQueueBindSparse-pWaitSemaphores-03245`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_bind_sparse<'a>(
         &self,
@@ -15655,8 +13946,11 @@ impl Queue {
 
 # Valid usage
 
-- `VUID-vkQueueEndDebugUtilsLabelEXT-None-01911`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)*/
+The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+
+- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
         let ext_table = self
@@ -15676,6 +13970,8 @@ impl Queue {
     /**`vkQueueInsertDebugUtilsLabelEXT`
 
 # Valid usage
+
+The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
 
 - `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -15708,14 +14004,12 @@ impl Queue {
 
 # Valid usage
 
-- `VUID-vkQueuePresentKHR-pSwapchains-01292`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueuePresentKHR.html). Settled by the wrappers:
+
 - `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueuePresentKHR-pSwapchains-01293`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_present_khr<'a>(
         &self,
@@ -15864,28 +14158,22 @@ impl Queue {
 
 # Valid usage
 
+The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html). Settled by the wrappers:
+
 - `VUID-vkQueueSubmit-fence-00063`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueSubmit-fence-00064`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit-pCommandBuffers-00065`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pWaitDstStageMask-00066`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pSignalSemaphores-00067`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pWaitSemaphores-00068`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-pCommandBuffers-00070`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit-pCommandBuffers-00071`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit-pCommandBuffers-00072`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-pCommandBuffers-00073`: user (checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet)
-- `VUID-vkQueueSubmit-pCommandBuffers-00074`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pSubmits-02207`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pSubmits-02808`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pSubmits-04626`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkQueueSubmit-pWaitSemaphores-00069`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pWaitSemaphores-03238`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-pCommandBuffers-03220`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit-queue-06448`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 13.
+
+- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
+- 12: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn queue_submit<'a>(
         &self,
@@ -16014,28 +14302,22 @@ impl Queue {
 
 # Valid usage
 
+The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html). Settled by the wrappers:
+
 - `VUID-vkQueueSubmit2-fence-04894`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueSubmit2-fence-04895`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit2-synchronization2-03866`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03867`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-semaphore-03868`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-stageMask-03869`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-stageMask-03870`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-semaphore-03871`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-semaphore-03872`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-commandBuffer-03874`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit2-commandBuffer-03875`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit2-commandBuffer-03876`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-commandBuffer-03877`: user (checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet)
-- `VUID-vkQueueSubmit2-commandBuffer-03878`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03879`: user (explicit rule; the wrappers do not check it)
 - `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkQueueSubmit2-semaphore-03873`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-commandBuffer-03880`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkQueueSubmit2-queue-06447`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 13.
+
+- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
+- 12: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn queue_submit2<'a>(
         &self,
@@ -16155,6 +14437,8 @@ impl Queue {
 
 # Valid usage
 
+The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueWaitIdle.html). Settled by the wrappers:
+
 - `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
     #[inline]
     pub fn queue_wait_idle(&self) -> Result<()> {
@@ -16177,10 +14461,13 @@ impl CommandBuffer {
 
 # Valid usage
 
-- `VUID-vkResetCommandBuffer-commandBuffer-00045`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandBuffer.html). Settled by the wrappers:
+
 - `VUID-vkResetCommandBuffer-commandBuffer-00046`: dynamic (refuses a buffer whose pool was created without RESET_COMMAND_BUFFER)
 - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_command_buffer(
         &mut self,
@@ -16242,11 +14529,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkResetCommandPool-commandPool-00040`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkResetCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandPool.html). Settled by the wrappers:
+
 - `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_command_pool(
         &self,
@@ -16320,11 +14610,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkResetDescriptorPool-descriptorPool-00313`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetDescriptorPool.html). Settled by the wrappers:
+
 - `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_descriptor_pool(
         &self,
@@ -16405,12 +14698,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkResetEvent-event-03821`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html). Settled by the wrappers:
+
 - `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkResetEvent-event-03822`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkResetEvent-event-03823`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -16461,6 +14755,8 @@ impl Device {
     /**`vkResetFences`
 
 # Valid usage
+
+The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetFences.html). Settled by the wrappers:
 
 - `VUID-vkResetFences-pFences-01123`: dynamic (refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled))
 - `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
@@ -16550,14 +14846,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkResetQueryPool-None-02665`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkResetQueryPool-firstQuery-02666`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkResetQueryPool-firstQuery-02667`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkResetQueryPool-firstQuery-02741`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkResetQueryPool-firstQuery-02742`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html). Settled by the wrappers:
+
 - `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_query_pool(
         &self,
@@ -16617,10 +14912,12 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkSetDebugUtilsObjectNameEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectNameEXT.html). Settled by the wrappers:
+
 - `VUID-vkSetDebugUtilsObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn set_debug_utils_object_name_ext<'a>(
         &self,
@@ -16696,6 +14993,8 @@ impl Device {
     /**`vkSetDebugUtilsObjectTagEXT`
 
 # Valid usage
+
+The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectTagEXT.html). Settled by the wrappers:
 
 - `VUID-vkSetDebugUtilsObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetDebugUtilsObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
@@ -16774,10 +15073,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkSetEvent-event-03941`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html). Settled by the wrappers:
+
 - `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -16829,12 +15131,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkSetPrivateData-objectHandle-04016`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkSetPrivateData-objectHandle-04017`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetPrivateData.html). Settled by the wrappers:
+
 - `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn set_private_data(
         &self,
@@ -16909,6 +15213,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html). Settled by the wrappers:
+
 - `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
@@ -16955,12 +15261,15 @@ impl Instance {
 
 # Valid usage
 
-- `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSubmitDebugUtilsMessageEXT.html). Settled by the wrappers:
+
 - `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn submit_debug_utils_message_ext<'a>(
         &self,
@@ -17043,6 +15352,8 @@ impl Device {
 
 # Valid usage
 
+The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkTrimCommandPool.html). Settled by the wrappers:
+
 - `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkTrimCommandPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
@@ -17120,13 +15431,14 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkUpdateDescriptorSetWithTemplate-pData-01685`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkUpdateDescriptorSetWithTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSetWithTemplate.html). Settled by the wrappers:
+
 - `VUID-vkUpdateDescriptorSetWithTemplate-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06994`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06995`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn update_descriptor_set_with_template(
         &self,
@@ -17198,22 +15510,13 @@ impl Device {
 
 # Valid usage
 
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: user (explicit rule; the wrappers do not check it)
+The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
+
 - `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06240`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06241`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06940`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06941`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-dstSet-00314`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06992`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-None-03047`: user (explicit rule; the wrappers do not check it)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn update_descriptor_sets<'a>(
         &self,
@@ -17287,6 +15590,8 @@ impl Device {
     /**`vkWaitForFences`
 
 # Valid usage
+
+The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForFences.html). Settled by the wrappers:
 
 - `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -17379,6 +15684,8 @@ impl Device {
     /**`vkWaitSemaphores`
 
 # Valid usage
+
+The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitSemaphores.html). Settled by the wrappers:
 
 - `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/

@@ -15,20 +15,16 @@ use core::marker::PhantomData;
 
 # Valid usage
 
-- `VUID-VkAcquireNextImageInfoKHR-swapchain-01675`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-01288`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-01781`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAcquireNextImageInfoKHR-fence-01289`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-01782`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01290`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01291`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkAcquireNextImageInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAcquireNextImageInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkAcquireNextImageInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAcquireNextImageInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAcquireNextImageInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 8 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -116,10 +112,9 @@ impl<'a> core::ops::Deref for AcquireNextImageInfoKHR<'a> {
 
 # Valid usage
 
-- `VUID-VkAllocationCallbacks-pfnAllocation-00632`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAllocationCallbacks-pfnReallocation-00633`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAllocationCallbacks-pfnFree-00634`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAllocationCallbacks-pfnInternalAllocation-00635`: user (explicit rule; the wrappers do not check it)*/
+The rules are on [`VkAllocationCallbacks`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAllocationCallbacks.html).
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AllocationCallbacks<'a> {
@@ -205,11 +200,14 @@ impl<'a> core::ops::Deref for AllocationCallbacks<'a> {
 
 # Valid usage
 
-- `VUID-VkApplicationInfo-apiVersion-04010`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkApplicationInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkApplicationInfo.html). Settled by the wrappers:
+
 - `VUID-VkApplicationInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkApplicationInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkApplicationInfo-pApplicationName-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkApplicationInfo-pEngineName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkApplicationInfo-pEngineName-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ApplicationInfo<'a> {
@@ -298,13 +296,8 @@ impl<'a> core::ops::Deref for ApplicationInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkAttachmentDescription2-format-06698`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06699`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-finalLayout-00843`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03280`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03281`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03282`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03283`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescription2.html). Settled by the wrappers:
+
 - `VUID-VkAttachmentDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAttachmentDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -317,27 +310,8 @@ impl<'a> core::ops::Deref for ApplicationInfo<'a> {
 - `VUID-VkAttachmentDescription2-stencilStoreOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-format-06487`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06488`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03286`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03287`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03290`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-03291`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-pNext-06704`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-pNext-06705`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06249`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06250`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06247`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06248`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-synchronization2-06908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-synchronization2-06909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-attachmentFeedbackLoopLayout-07309`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-attachmentFeedbackLoopLayout-07310`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescription2-format-06703`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 28 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -450,12 +424,13 @@ impl<'a> core::ops::Deref for AttachmentDescription2<'a> {
 
 # Valid usage
 
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkAttachmentDescriptionStencilLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescriptionStencilLayout.html). Settled by the wrappers:
+
 - `VUID-VkAttachmentDescriptionStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescriptionStencilLayout<'a> {
@@ -530,14 +505,14 @@ for AttachmentDescriptionStencilLayout<'a> {}
 
 # Valid usage
 
-- `VUID-VkAttachmentReference2-layout-03077`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkAttachmentReference2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReference2.html). Settled by the wrappers:
+
 - `VUID-VkAttachmentReference2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentReference2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentReference2-synchronization2-06910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkAttachmentReference2-attachmentFeedbackLoopLayout-07311`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReference2<'a> {
@@ -614,9 +589,12 @@ impl<'a> core::ops::Deref for AttachmentReference2<'a> {
 
 # Valid usage
 
-- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkAttachmentReferenceStencilLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReferenceStencilLayout.html). Settled by the wrappers:
+
 - `VUID-VkAttachmentReferenceStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReferenceStencilLayout<'a> {
@@ -685,8 +663,11 @@ for AttachmentReferenceStencilLayout<'a> {}
 
 # Valid usage
 
+The rules are on [`VkBaseInStructure`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBaseInStructure.html). Settled by the wrappers:
+
 - `VUID-VkBaseInStructure-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBaseInStructure-pNext-parameter`: user (not checked)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (not checked).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BaseInStructure<'a> {
@@ -751,8 +732,11 @@ impl<'a> core::ops::Deref for BaseInStructure<'a> {
 
 # Valid usage
 
+The rules are on [`VkBaseOutStructure`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBaseOutStructure.html). Settled by the wrappers:
+
 - `VUID-VkBaseOutStructure-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBaseOutStructure-pNext-parameter`: user (not checked)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (not checked).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BaseOutStructure<'a> {
@@ -817,10 +801,12 @@ impl<'a> core::ops::Deref for BaseOutStructure<'a> {
 
 # Valid usage
 
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindBufferMemoryDeviceGroupInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindBufferMemoryDeviceGroupInfo.html). Settled by the wrappers:
+
 - `VUID-VkBindBufferMemoryDeviceGroupInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryDeviceGroupInfo<'a> {
@@ -888,32 +874,16 @@ for BindBufferMemoryDeviceGroupInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkBindBufferMemoryInfo-buffer-07459`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-buffer-01030`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memory-01035`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-size-01037`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindBufferMemoryInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindBufferMemoryInfo.html). Settled by the wrappers:
+
 - `VUID-VkBindBufferMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindBufferMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBindBufferMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindBufferMemoryInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindBufferMemoryInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindBufferMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkBindBufferMemoryInfo-buffer-01444`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memory-01508`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-None-01898`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-None-01899`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-buffer-01038`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-buffer-01039`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memory-02726`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memory-02727`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memory-02985`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-memory-02986`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-buffer-06408`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-descriptorBufferCaptureReplay-08112`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindBufferMemoryInfo-pNext-01605`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 20 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryInfo<'a> {
@@ -987,18 +957,13 @@ impl<'a> core::ops::Deref for BindBufferMemoryInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-01637`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01638`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01639`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01640`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01641`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindImageMemoryDeviceGroupInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemoryDeviceGroupInfo.html). Settled by the wrappers:
+
 - `VUID-VkBindImageMemoryDeviceGroupInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryDeviceGroupInfo<'a> {
@@ -1072,46 +1037,15 @@ unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImageMemoryDeviceGroupI
 
 # Valid usage
 
-- `VUID-VkBindImageMemoryInfo-image-07460`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-image-01045`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memoryOffset-01046`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindImageMemoryInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemoryInfo.html). Settled by the wrappers:
+
 - `VUID-VkBindImageMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImageMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBindImageMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindImageMemoryInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindImageMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkBindImageMemoryInfo-image-01445`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-01509`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-02628`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-02629`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-None-01901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-None-01902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-image-01050`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-image-01051`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-02728`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-02729`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-02989`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-02990`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-descriptorBufferCaptureReplay-08113`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-01612`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memoryOffset-01613`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-01614`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01615`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01616`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01617`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01618`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-image-07736`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01619`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01620`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01621`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-memory-01625`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01626`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01627`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01628`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01629`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-image-01630`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01631`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindImageMemoryInfo-pNext-01632`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 35 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryInfo<'a> {
@@ -1185,10 +1119,12 @@ impl<'a> core::ops::Deref for BindImageMemoryInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindImageMemorySwapchainInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemorySwapchainInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1261,10 +1197,12 @@ for BindImageMemorySwapchainInfoKHR<'a> {}
 
 # Valid usage
 
-- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindImagePlaneMemoryInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImagePlaneMemoryInfo.html). Settled by the wrappers:
+
 - `VUID-VkBindImagePlaneMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImagePlaneMemoryInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02284`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImagePlaneMemoryInfo<'a> {
@@ -1330,12 +1268,8 @@ unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImagePlaneMemoryInfo<'a
 
 # Valid usage
 
-- `VUID-VkBindSparseInfo-pWaitSemaphores-03246`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindSparseInfo-pNext-03247`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindSparseInfo-pNext-03248`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindSparseInfo-pSignalSemaphores-03249`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindSparseInfo-pWaitSemaphores-03250`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBindSparseInfo-pSignalSemaphores-03251`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBindSparseInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindSparseInfo.html). Settled by the wrappers:
+
 - `VUID-VkBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindSparseInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBindSparseInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1344,7 +1278,9 @@ unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImagePlaneMemoryInfo<'a
 - `VUID-VkBindSparseInfo-pImageOpaqueBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkBindSparseInfo-pImageBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkBindSparseInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindSparseInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkBindSparseInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindSparseInfo<'a> {
@@ -1441,41 +1377,8 @@ impl<'a> core::ops::Deref for BindSparseInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkBlitImageInfo2-pRegions-00215`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-pRegions-00216`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-pRegions-00217`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-01999`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00219`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00220`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImageLayout-00221`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-02000`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-00224`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-00225`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImageLayout-00226`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00229`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00230`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00231`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00232`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00233`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-00234`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-filter-02001`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcSubresource-01705`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstSubresource-01706`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcSubresource-01707`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstSubresource-01708`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00240`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-aspectMask-00241`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-aspectMask-00242`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcOffset-00243`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcOffset-00244`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00245`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcOffset-00246`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImage-00247`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstOffset-00248`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstOffset-00249`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-00250`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstOffset-00251`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-00252`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBlitImageInfo2.html). Settled by the wrappers:
+
 - `VUID-VkBlitImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBlitImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBlitImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -1486,18 +1389,8 @@ impl<'a> core::ops::Deref for BindSparseInfo<'a> {
 - `VUID-VkBlitImageInfo2-filter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBlitImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkBlitImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkBlitImageInfo2-srcImage-06421`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-06422`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImageLayout-00222`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImageLayout-00227`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-srcImageLayout-01398`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImageLayout-01399`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-filter-02002`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-filter-00237`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-dstImage-02545`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2-pRegions-04561`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2KHR-pRegions-06207`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBlitImageInfo2KHR-pRegions-06208`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 47 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BlitImageInfo2<'a> {
@@ -1590,9 +1483,12 @@ impl<'a> core::ops::Deref for BlitImageInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkBufferCopy2-size-01988`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferCopy2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCopy2.html). Settled by the wrappers:
+
 - `VUID-VkBufferCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkBufferCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCopy2<'a> {
@@ -1669,13 +1565,8 @@ impl<'a> core::ops::Deref for BufferCopy2<'a> {
 
 # Valid usage
 
-- `VUID-VkBufferCreateInfo-size-00912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-sharingMode-00913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-sharingMode-00914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-00915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-00916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-00917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-00918`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1683,26 +1574,8 @@ impl<'a> core::ops::Deref for BufferCopy2<'a> {
 - `VUID-VkBufferCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferCreateInfo-sharingMode-01391`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-sharingMode-01419`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-pNext-00920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-01887`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-None-01888`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-pNext-01571`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-deviceAddress-02604`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-03338`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-06549`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-04813`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-04814`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-size-06409`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-08097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-08098`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-flags-08099`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-pNext-08100`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-08101`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-08102`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferCreateInfo-usage-08103`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 27 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -1792,11 +1665,13 @@ impl<'a> core::ops::Deref for BufferCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkBufferDeviceAddressInfo-buffer-02600`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferDeviceAddressInfo-buffer-02601`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferDeviceAddressInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferDeviceAddressInfo.html). Settled by the wrappers:
+
 - `VUID-VkBufferDeviceAddressInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferDeviceAddressInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferDeviceAddressInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkBufferDeviceAddressInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferDeviceAddressInfo<'a> {
@@ -1857,16 +1732,14 @@ impl<'a> core::ops::Deref for BufferDeviceAddressInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkBufferImageCopy2-bufferRowLength-00195`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferImageCopy2-bufferImageHeight-00196`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferImageCopy2-aspectMask-00212`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferImageCopy2-imageExtent-06659`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferImageCopy2-imageExtent-06660`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferImageCopy2-imageExtent-06661`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferImageCopy2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferImageCopy2.html). Settled by the wrappers:
+
 - `VUID-VkBufferImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)*/
+- `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferImageCopy2<'a> {
@@ -1961,19 +1834,13 @@ impl<'a> core::ops::Deref for BufferImageCopy2<'a> {
 
 # Valid usage
 
-- `VUID-VkBufferMemoryBarrier-offset-01187`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-size-01188`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-size-01189`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-buffer-01931`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryBarrier.html). Settled by the wrappers:
+
 - `VUID-VkBufferMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBufferMemoryBarrier-buffer-04086`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-synchronization2-03852`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-buffer-04088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-buffer-04089`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier-synchronization2-03853`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -2070,49 +1937,8 @@ impl<'a> core::ops::Deref for BufferMemoryBarrier<'a> {
 
 # Valid usage
 
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03903`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03911`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03903`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03911`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-offset-01187`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-size-01188`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-size-01189`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-buffer-01931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryBarrier2.html). Settled by the wrappers:
+
 - `VUID-VkBufferMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -2120,86 +1946,8 @@ impl<'a> core::ops::Deref for BufferMemoryBarrier<'a> {
 - `VUID-VkBufferMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferMemoryBarrier2-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-04747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-04747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-04994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstStageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-04994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-07454`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-07457`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-07458`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-07454`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-07457`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-07458`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-06254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-06254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-06255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-06255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-06256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-06256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-06257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-06257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-07272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-07272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-04858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-04859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-04858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-04859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-04860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-04861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-04860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-04861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-07455`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-07456`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-07455`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-07456`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcAccessMask-08118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-dstAccessMask-08118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-buffer-04086`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-buffer-04088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferMemoryBarrier2-buffer-04089`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 123 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -2308,6 +2056,8 @@ impl<'a> core::ops::Deref for BufferMemoryBarrier2<'a> {
 
 # Valid usage
 
+The rules are on [`VkBufferMemoryRequirementsInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryRequirementsInfo2.html). Settled by the wrappers:
+
 - `VUID-VkBufferMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryRequirementsInfo2-buffer-parameter`: static (set from wrappers, which always hold valid handles)*/
@@ -2370,6 +2120,8 @@ impl<'a> core::ops::Deref for BufferMemoryRequirementsInfo2<'a> {
 /**Safe counterpart of [`vk::BufferOpaqueCaptureAddressCreateInfo`].
 
 # Valid usage
+
+The rules are on [`VkBufferOpaqueCaptureAddressCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferOpaqueCaptureAddressCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkBufferOpaqueCaptureAddressCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -2440,27 +2192,16 @@ for BufferOpaqueCaptureAddressCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkBufferViewCreateInfo-offset-00925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-range-00928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-range-00929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-range-00930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-offset-00931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-range-04059`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-buffer-00932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-buffer-00933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-buffer-00934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-buffer-00935`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferViewCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkBufferViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBufferViewCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkBufferViewCreateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBufferViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferViewCreateInfo-offset-00926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-offset-02749`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-buffer-02750`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-buffer-02751`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkBufferViewCreateInfo-pNext-06782`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 15 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferViewCreateInfo<'a> {
@@ -2545,6 +2286,8 @@ impl<'a> core::ops::Deref for BufferViewCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkCommandBufferAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferAllocateInfo.html). Settled by the wrappers:
+
 - `VUID-VkCommandBufferAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferAllocateInfo-commandPool-parameter`: static (set from wrappers, which always hold valid handles)
@@ -2621,17 +2364,14 @@ impl<'a> core::ops::Deref for CommandBufferAllocateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkCommandBufferBeginInfo-flags-00053`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferBeginInfo-flags-00054`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferBeginInfo-flags-00055`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCommandBufferBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferBeginInfo.html). Settled by the wrappers:
+
 - `VUID-VkCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferBeginInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkCommandBufferBeginInfo-flags-06000`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferBeginInfo-flags-06001`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferBeginInfo-flags-06002`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferBeginInfo-flags-06003`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferBeginInfo<'a> {
@@ -2709,15 +2449,14 @@ impl<'a> core::ops::Deref for CommandBufferBeginInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceInfo-queryFlags-00057`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceInfo-queryFlags-02788`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-02789`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCommandBufferInheritanceInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceInfo.html). Settled by the wrappers:
+
 - `VUID-VkCommandBufferInheritanceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferInheritanceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferInheritanceInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceInfo<'a> {
@@ -2815,23 +2554,16 @@ impl<'a> core::ops::Deref for CommandBufferInheritanceInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkCommandBufferInheritanceRenderingInfo-colorAttachmentCount-06004`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-variableMultisampleRate-06005`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06540`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06007`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06541`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06199`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCommandBufferInheritanceRenderingInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceRenderingInfo.html). Settled by the wrappers:
+
 - `VUID-VkCommandBufferInheritanceRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfoKHR-pColorAttachmentFormats-06492`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 11 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceRenderingInfo<'a> {
@@ -2931,11 +2663,14 @@ for CommandBufferInheritanceRenderingInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkCommandBufferSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferSubmitInfo.html). Settled by the wrappers:
+
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-VkCommandBufferSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCommandBufferSubmitInfo-deviceMask-03891`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferSubmitInfo<'a> {
@@ -3002,10 +2737,13 @@ impl<'a> core::ops::Deref for CommandBufferSubmitInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkCommandPoolCreateInfo-flags-02860`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCommandPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandPoolCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkCommandPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCommandPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkCommandPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandPoolCreateInfo<'a> {
@@ -3076,14 +2814,8 @@ impl<'a> core::ops::Deref for CommandPoolCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkComputePipelineCreateInfo-flags-00697`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-00698`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-00699`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-00700`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-stage-00701`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-stage-00702`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-layout-00703`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-layout-01687`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkComputePipelineCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkComputePipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkComputePipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -3091,19 +2823,8 @@ impl<'a> core::ops::Deref for CommandPoolCreateInfo<'a> {
 - `VUID-VkComputePipelineCreateInfo-stage-parameter`: static (set from the safe counterpart, which the constructor requires)
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkComputePipelineCreateInfo-flags-03364`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03365`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03366`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03367`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03368`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03369`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03370`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-03576`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-04945`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-02874`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkComputePipelineCreateInfo-flags-07367`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -3192,22 +2913,17 @@ impl<'a> core::ops::Deref for ComputePipelineCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkCopyBufferInfo2-srcOffset-00113`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-dstOffset-00114`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-size-00115`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-size-00116`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-pRegions-00117`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-srcBuffer-00118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-srcBuffer-00119`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-dstBuffer-00120`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferInfo2-dstBuffer-00121`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferInfo2.html). Settled by the wrappers:
+
 - `VUID-VkCopyBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyBufferInfo2-dstBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyBufferInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferInfo2<'a> {
@@ -3282,40 +2998,8 @@ impl<'a> core::ops::Deref for CopyBufferInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkCopyBufferToImageInfo2-pRegions-00172`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-04565`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2KHR-pRegions-04554`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2KHR-pRegions-04555`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2KHR-pRegions-06203`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2KHR-pRegions-06204`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-00171`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-00173`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-srcBuffer-00174`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-srcBuffer-00176`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImage-00177`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImage-00178`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImage-00179`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-imageSubresource-01701`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-imageSubresource-01702`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-06223`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-06224`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-srcImage-00199`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-srcImage-00201`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07274`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07275`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07276`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07277`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07273`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-srcImage-04053`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferToImageInfo2.html). Settled by the wrappers:
+
 - `VUID-VkCopyBufferToImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -3324,16 +3008,8 @@ impl<'a> core::ops::Deref for CopyBufferInfo2<'a> {
 - `VUID-VkCopyBufferToImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkCopyBufferToImageInfo2-dstImage-01997`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-01396`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-dstImage-02543`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-None-00214`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07740`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-pRegions-07741`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyBufferToImageInfo2-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 44 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -3414,30 +3090,15 @@ impl<'a> core::ops::Deref for CopyBufferToImageInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkCopyDescriptorSet-srcBinding-00345`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcArrayElement-00346`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstBinding-00347`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstArrayElement-00348`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstBinding-02632`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-00349`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstBinding-02753`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCopyDescriptorSet`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyDescriptorSet.html). Settled by the wrappers:
+
 - `VUID-VkCopyDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyDescriptorSet-srcSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-dstSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkCopyDescriptorSet-srcBinding-02223`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstBinding-02224`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcBinding-02225`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-01918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-01920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-04885`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-04887`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-04886`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-04888`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstSet-04612`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-srcSet-04613`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyDescriptorSet-dstSet-04614`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 19 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyDescriptorSet<'a> {
@@ -3535,42 +3196,8 @@ impl<'a> core::ops::Deref for CopyDescriptorSet<'a> {
 
 # Valid usage
 
-- `VUID-VkCopyImageInfo2-pRegions-00124`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImageLayout-00128`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImageLayout-00133`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-00136`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcSubresource-01696`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstSubresource-01697`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcSubresource-01698`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstSubresource-01699`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcOffset-01783`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstOffset-01784`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-aspectMask-00142`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-aspectMask-00143`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcOffset-00144`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcOffset-00145`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-00146`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcOffset-00147`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01785`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01786`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01787`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01788`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstOffset-00150`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstOffset-00151`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-00152`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstOffset-00153`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-pRegions-07278`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-pRegions-07279`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-pRegions-07280`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-pRegions-07281`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-pRegions-07282`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-pRegions-07283`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01728`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01729`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01730`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01732`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01733`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01734`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyImageInfo2.html). Settled by the wrappers:
+
 - `VUID-VkCopyImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -3580,43 +3207,8 @@ impl<'a> core::ops::Deref for CopyDescriptorSet<'a> {
 - `VUID-VkCopyImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkCopyImageInfo2-srcImage-01995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01996`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-04443`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-04444`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-07743`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-07744`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01790`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01791`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01792`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-00127`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-00132`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-00135`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01546`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01547`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01548`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-None-01549`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01551`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01552`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01553`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01554`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01555`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01556`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-01557`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImageLayout-00129`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImageLayout-00134`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImageLayout-01917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImageLayout-01395`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-02542`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-00139`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-07742`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-01789`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-srcImage-00126`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-dstImage-00131`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-aspect-06662`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-aspect-06663`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-aspect-06664`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageInfo2-aspect-06665`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 73 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {
@@ -3703,40 +3295,8 @@ impl<'a> core::ops::Deref for CopyImageInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkCopyImageToBufferInfo2-pRegions-00182`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-04566`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2KHR-pRegions-04557`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2KHR-pRegions-04558`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2KHR-pRegions-06205`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2KHR-pRegions-06206`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-00183`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-00184`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-00186`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-00187`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-dstBuffer-00191`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-dstBuffer-00192`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-00188`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageSubresource-01703`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageSubresource-01704`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageOffset-00197`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageOffset-00198`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-00199`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageOffset-00200`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-00201`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-bufferRowLength-00203`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-bufferImageHeight-00204`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07274`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07275`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07276`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageExtent-00207`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageExtent-00208`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-imageExtent-00209`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-aspectMask-00211`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-baseArrayLayer-00213`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07277`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07273`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-04053`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyImageToBufferInfo2.html). Settled by the wrappers:
+
 - `VUID-VkCopyImageToBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageToBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -3745,15 +3305,8 @@ impl<'a> core::ops::Deref for CopyImageInfo2<'a> {
 - `VUID-VkCopyImageToBufferInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-01998`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-01397`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-srcImage-02544`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07740`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-pRegions-07741`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-bufferOffset-01558`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-bufferOffset-01559`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkCopyImageToBufferInfo2-bufferOffset-00193`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 43 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
@@ -3834,6 +3387,8 @@ impl<'a> core::ops::Deref for CopyImageToBufferInfo2<'a> {
 
 # Valid usage
 
+The rules are on [`VkDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsLabelEXT.html). Settled by the wrappers:
+
 - `VUID-VkDebugUtilsLabelEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsLabelEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDebugUtilsLabelEXT-pLabelName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
@@ -3905,6 +3460,8 @@ impl<'a> core::ops::Deref for DebugUtilsLabelEXT<'a> {
 /**Safe counterpart of [`vk::DebugUtilsMessengerCallbackDataEXT`].
 
 # Valid usage
+
+The rules are on [`VkDebugUtilsMessengerCallbackDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCallbackDataEXT.html). Settled by the wrappers:
 
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -4019,14 +3576,17 @@ impl<'a> core::ops::Deref for DebugUtilsMessengerCallbackDataEXT<'a> {
 
 # Valid usage
 
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-01914`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDebugUtilsMessengerCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCreateInfoEXT.html). Settled by the wrappers:
+
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)*/
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -4130,11 +3690,13 @@ for DebugUtilsMessengerCreateInfoEXT<'a> {}
 
 # Valid usage
 
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDebugUtilsObjectNameInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectNameInfoEXT.html). Settled by the wrappers:
+
 - `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -4218,13 +3780,15 @@ for DebugUtilsObjectNameInfoEXT<'a> {}
 
 # Valid usage
 
-- `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-01908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDebugUtilsObjectTagInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectTagInfoEXT.html). Settled by the wrappers:
+
 - `VUID-VkDebugUtilsObjectTagInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -4311,6 +3875,8 @@ impl<'a> core::ops::Deref for DebugUtilsObjectTagInfoEXT<'a> {
 /**Safe counterpart of [`vk::DependencyInfo`].
 
 # Valid usage
+
+The rules are on [`VkDependencyInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDependencyInfo.html). Settled by the wrappers:
 
 - `VUID-VkDependencyInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDependencyInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -4409,12 +3975,11 @@ impl<'a> core::ops::Deref for DependencyInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkDescriptorBufferInfo-offset-00340`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorBufferInfo-range-00341`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorBufferInfo-range-00342`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorBufferInfo-buffer-02998`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorBufferInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkDescriptorBufferInfo-buffer-02999`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {
@@ -4476,17 +4041,11 @@ impl<'a> core::ops::Deref for DescriptorBufferInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkDescriptorImageInfo-imageView-06711`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-imageView-06712`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-imageView-07795`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-imageView-07796`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-descriptorType-06713`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-descriptorType-06714`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-imageView-01976`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-imageLayout-00344`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorImageInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorImageInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorImageInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkDescriptorImageInfo-sampler-01564`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorImageInfo-mutableComparisonSamplers-04450`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorImageInfo<'a> {
@@ -4545,16 +4104,15 @@ impl<'a> core::ops::Deref for DescriptorImageInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkDescriptorPoolCreateInfo-maxSets-00301`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorPoolCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDescriptorPoolCreateInfo-flags-04607`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorPoolCreateInfo-mutableDescriptorType-04608`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorPoolCreateInfo-flags-04609`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-04787`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorPoolCreateInfo<'a> {
@@ -4632,6 +4190,8 @@ impl<'a> core::ops::Deref for DescriptorPoolCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkDescriptorPoolInlineUniformBlockCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorPoolInlineUniformBlockCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorPoolInlineUniformBlockCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -4701,19 +4261,17 @@ for DescriptorPoolInlineUniformBlockCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-00306`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetAllocateInfo-descriptorPool-00307`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-00308`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-04610`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-08009`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorSetAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetAllocateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorSetAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorSetAllocateInfo-descriptorPool-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkDescriptorSetAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkDescriptorSetAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetAllocateInfo<'a> {
@@ -4784,19 +4342,11 @@ impl<'a> core::ops::Deref for DescriptorSetAllocateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorSetLayoutBinding`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBinding.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-04604`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02209`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-08004`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-flags-08005`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-flags-08006`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-flags-08007`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-pImmutableSamplers-04009`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-04605`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 12 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBinding<'a> {
@@ -4875,24 +4425,12 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutBinding<'a> {
 
 # Valid usage
 
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorSetLayoutBindingFlagsCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBindingFlagsCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-flags-03003`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingAccelerationStructureUpdateAfterBind-03570`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
@@ -4962,28 +4500,15 @@ for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorSetLayoutCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pBindings-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-00280`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-00281`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-02208`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-04590`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-04591`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-04592`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-pBindings-07303`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-04594`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-mutableDescriptorType-04595`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-04596`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-08000`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-08001`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-08002`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-08003`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 17 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutCreateInfo<'a> {
@@ -5055,6 +4580,8 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutSupport.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetLayoutSupport-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutSupport-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorSetLayoutSupport-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -5116,10 +4643,12 @@ impl<'a> core::ops::Deref for DescriptorSetLayoutSupport<'a> {
 
 # Valid usage
 
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorSetVariableDescriptorCountAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountAllocateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pDescriptorCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pDescriptorCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
@@ -5189,6 +4718,8 @@ for DescriptorSetVariableDescriptorCountAllocateInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkDescriptorSetVariableDescriptorCountLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountLayoutSupport.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorSetVariableDescriptorCountLayoutSupport-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -5252,7 +4783,8 @@ for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 
 # Valid usage
 
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDescriptorUpdateTemplateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorUpdateTemplateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
@@ -5260,10 +4792,8 @@ for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00351`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00352`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00353`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-04615`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorUpdateTemplateCreateInfo<'a> {
@@ -5370,6 +4900,8 @@ impl<'a> core::ops::Deref for DescriptorUpdateTemplateCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceBufferMemoryRequirements.html). Settled by the wrappers:
+
 - `VUID-VkDeviceBufferMemoryRequirements-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceBufferMemoryRequirements-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceBufferMemoryRequirements-pCreateInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
@@ -5436,45 +4968,21 @@ impl<'a> core::ops::Deref for DeviceBufferMemoryRequirements<'a> {
 
 # Valid usage
 
-- `VUID-VkDeviceCreateInfo-queueFamilyIndex-00372`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06654`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pNext-00373`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-01840`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-00374`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-03328`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pNext-04748`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pNext-02829`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pNext-02830`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-04476`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-02831`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-02832`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-02833`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-02834`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-02835`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pNext-06532`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-pProperties-04451`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-shadingRateImage-04478`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-shadingRateImage-04479`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-shadingRateImage-04480`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-fragmentDensityMap-04481`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-fragmentDensityMap-04482`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-fragmentDensityMap-04483`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-None-04896`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-None-04897`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-None-04898`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-sparseImageFloat32AtomicMinMax-04975`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceCreateInfo-None-08095`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDeviceCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDeviceCreateInfo-pQueueCreateInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceCreateInfo-ppEnabledLayerNames-parameter`: user (not settable safely (deprecated by the specification))
 - `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-pEnabledFeatures-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: dynamic (checks the count is not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 31.
+
+- 30: explicit rule; the wrappers do not check it
+- 1: not settable safely (deprecated by the specification)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceCreateInfo<'a> {
@@ -5566,9 +5074,11 @@ impl<'a> core::ops::Deref for DeviceCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkDeviceGroupBindSparseInfo-resourceDeviceIndex-01118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupBindSparseInfo-memoryDeviceIndex-01119`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+The rules are on [`VkDeviceGroupBindSparseInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupBindSparseInfo.html). Settled by the wrappers:
+
+- `VUID-VkDeviceGroupBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupBindSparseInfo<'a> {
@@ -5640,9 +5150,11 @@ unsafe impl<'a> Extends<BindSparseInfo<'a>> for DeviceGroupBindSparseInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00106`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+The rules are on [`VkDeviceGroupCommandBufferBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupCommandBufferBeginInfo.html). Settled by the wrappers:
+
+- `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupCommandBufferBeginInfo<'a> {
@@ -5711,11 +5223,12 @@ for DeviceGroupCommandBufferBeginInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceGroupDeviceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupDeviceCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDeviceGroupDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupDeviceCreateInfo<'a> {
@@ -5785,6 +5298,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DeviceGroupDeviceCreateInfo<'a
 
 # Valid usage
 
+The rules are on [`VkDeviceGroupPresentCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupPresentCapabilitiesKHR.html). Settled by the wrappers:
+
 - `VUID-VkDeviceGroupPresentCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupPresentCapabilitiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
 #[cfg(feature = "khr_swapchain")]
@@ -5851,16 +5366,13 @@ impl<'a> core::ops::Deref for DeviceGroupPresentCapabilitiesKHR<'a> {
 
 # Valid usage
 
-- `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01298`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01299`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01300`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01301`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceGroupPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupPresentInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkDeviceGroupPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -5939,16 +5451,12 @@ unsafe impl<'a> Extends<PresentInfoKHR<'a>> for DeviceGroupPresentInfoKHR<'a> {}
 
 # Valid usage
 
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceGroupRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupRenderPassBeginInfo.html). Settled by the wrappers:
+
 - `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 8 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupRenderPassBeginInfo<'a> {
@@ -6022,15 +5530,14 @@ unsafe impl<'a> Extends<RenderingInfo<'a>> for DeviceGroupRenderPassBeginInfo<'a
 
 # Valid usage
 
-- `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceGroupSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSubmitInfo.html). Settled by the wrappers:
+
 - `VUID-VkDeviceGroupSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupSubmitInfo<'a> {
@@ -6111,6 +5618,8 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for DeviceGroupSubmitInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkDeviceGroupSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSwapchainCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask`: dynamic (checks the flags are not 0)*/
@@ -6188,16 +5697,14 @@ for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 
 # Valid usage
 
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceImageMemoryRequirements.html). Settled by the wrappers:
+
 - `VUID-VkDeviceImageMemoryRequirements-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceImageMemoryRequirements-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceImageMemoryRequirements-pCreateInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceImageMemoryRequirements-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDeviceImageMemoryRequirements-pCreateInfo-06776`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06420`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceImageMemoryRequirements-pNext-06996`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceImageMemoryRequirements<'a> {
@@ -6267,10 +5774,13 @@ impl<'a> core::ops::Deref for DeviceImageMemoryRequirements<'a> {
 
 # Valid usage
 
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceMemoryOpaqueCaptureAddressInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOpaqueCaptureAddressInfo.html). Settled by the wrappers:
+
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceMemoryOpaqueCaptureAddressInfo<'a> {
@@ -6332,6 +5842,8 @@ impl<'a> core::ops::Deref for DeviceMemoryOpaqueCaptureAddressInfo<'a> {
 /**Safe counterpart of [`vk::DevicePrivateDataCreateInfo`].
 
 # Valid usage
+
+The rules are on [`VkDevicePrivateDataCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDevicePrivateDataCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkDevicePrivateDataCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -6399,17 +5911,16 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DevicePrivateDataCreateInfo<'a
 
 # Valid usage
 
-- `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceQueueCreateInfo-queueCount-00382`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceQueueCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkDeviceQueueCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceQueueCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDeviceQueueCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceQueueCreateInfo-queueCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkDeviceQueueCreateInfo-flags-02861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceQueueCreateInfo-flags-06449`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueCreateInfo<'a> {
@@ -6487,12 +5998,13 @@ impl<'a> core::ops::Deref for DeviceQueueCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceQueueInfo2-flags-06225`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkDeviceQueueInfo2-queueIndex-01843`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkDeviceQueueInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueInfo2.html). Settled by the wrappers:
+
 - `VUID-VkDeviceQueueInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueInfo2<'a> {
@@ -6569,11 +6081,14 @@ impl<'a> core::ops::Deref for DeviceQueueInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkEventCreateInfo-pNext-06790`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkEventCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkEventCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkEventCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkEventCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkEventCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkEventCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkEventCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct EventCreateInfo<'a> {
@@ -6638,9 +6153,12 @@ impl<'a> core::ops::Deref for EventCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkExportFenceCreateInfo-handleTypes-01446`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkExportFenceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportFenceCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkExportFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportFenceCreateInfo<'a> {
@@ -6706,9 +6224,12 @@ unsafe impl<'a> Extends<FenceCreateInfo<'a>> for ExportFenceCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkExportMemoryAllocateInfo-handleTypes-00656`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkExportMemoryAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryAllocateInfo.html). Settled by the wrappers:
+
 - `VUID-VkExportMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportMemoryAllocateInfo<'a> {
@@ -6774,9 +6295,12 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryAllocateInfo<'a>
 
 # Valid usage
 
-- `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkExportSemaphoreCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportSemaphoreCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkExportSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportSemaphoreCreateInfo<'a> {
@@ -6842,6 +6366,8 @@ unsafe impl<'a> Extends<SemaphoreCreateInfo<'a>> for ExportSemaphoreCreateInfo<'
 
 # Valid usage
 
+The rules are on [`VkExternalBufferProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalBufferProperties.html). Settled by the wrappers:
+
 - `VUID-VkExternalBufferProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExternalBufferProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
 #[repr(transparent)]
@@ -6901,6 +6427,8 @@ impl<'a> core::ops::Deref for ExternalBufferProperties<'a> {
 /**Safe counterpart of [`vk::ExternalFenceProperties`].
 
 # Valid usage
+
+The rules are on [`VkExternalFenceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalFenceProperties.html). Settled by the wrappers:
 
 - `VUID-VkExternalFenceProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExternalFenceProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
@@ -6962,6 +6490,8 @@ impl<'a> core::ops::Deref for ExternalFenceProperties<'a> {
 
 # Valid usage
 
+The rules are on [`VkExternalImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalImageFormatProperties.html). Settled by the wrappers:
+
 - `VUID-VkExternalImageFormatProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -7022,6 +6552,8 @@ for ExternalImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::ExternalMemoryBufferCreateInfo`].
 
 # Valid usage
+
+The rules are on [`VkExternalMemoryBufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryBufferCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkExternalMemoryBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExternalMemoryBufferCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
@@ -7090,6 +6622,8 @@ unsafe impl<'a> Extends<BufferCreateInfo<'a>> for ExternalMemoryBufferCreateInfo
 
 # Valid usage
 
+The rules are on [`VkExternalMemoryImageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryImageCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkExternalMemoryImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExternalMemoryImageCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
@@ -7157,6 +6691,8 @@ unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ExternalMemoryImageCreateInfo<'
 
 # Valid usage
 
+The rules are on [`VkExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalSemaphoreProperties.html). Settled by the wrappers:
+
 - `VUID-VkExternalSemaphoreProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExternalSemaphoreProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
 #[repr(transparent)]
@@ -7216,6 +6752,8 @@ impl<'a> core::ops::Deref for ExternalSemaphoreProperties<'a> {
 /**Safe counterpart of [`vk::FenceCreateInfo`].
 
 # Valid usage
+
+The rules are on [`VkFenceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFenceCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFenceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -7285,6 +6823,8 @@ impl<'a> core::ops::Deref for FenceCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFormatProperties2.html). Settled by the wrappers:
+
 - `VUID-VkFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -7346,6 +6886,8 @@ impl<'a> core::ops::Deref for FormatProperties2<'a> {
 
 # Valid usage
 
+The rules are on [`VkFormatProperties3`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFormatProperties3.html). Settled by the wrappers:
+
 - `VUID-VkFormatProperties3-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -7405,6 +6947,8 @@ unsafe impl<'a> Extends<FormatProperties2<'a>> for FormatProperties3<'a> {}
 /**Safe counterpart of [`vk::FramebufferAttachmentImageInfo`].
 
 # Valid usage
+
+The rules are on [`VkFramebufferAttachmentImageInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferAttachmentImageInfo.html). Settled by the wrappers:
 
 - `VUID-VkFramebufferAttachmentImageInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFramebufferAttachmentImageInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -7507,6 +7051,8 @@ impl<'a> core::ops::Deref for FramebufferAttachmentImageInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkFramebufferAttachmentsCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferAttachmentsCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkFramebufferAttachmentsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFramebufferAttachmentsCreateInfo-pAttachmentImageInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[repr(transparent)]
@@ -7581,70 +7127,16 @@ for FramebufferAttachmentsCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkFramebufferCreateInfo-attachmentCount-00876`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-02778`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00877`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-02633`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00879`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00880`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00881`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04533`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04534`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04535`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00883`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00884`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-width-00885`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-width-00886`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-height-00887`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-height-00888`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-layers-00889`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-layers-00890`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04113`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkFramebufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFramebufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkFramebufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkFramebufferCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkFramebufferCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-02634`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-02552`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-02553`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-02555`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-02556`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-06502`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-04536`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-02531`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-02744`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-02746`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-02747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04537`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04538`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04539`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04540`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04548`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-pAttachments-00891`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03189`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03190`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03191`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04541`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04542`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03201`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03202`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03204`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03205`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03196`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03197`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04543`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04544`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04545`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04587`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-03198`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-renderPass-04546`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04547`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-03203`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-flags-04549`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-samples-06881`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkFramebufferCreateInfo-samples-07009`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 58 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferCreateInfo<'a> {
@@ -7736,305 +7228,16 @@ impl<'a> core::ops::Deref for FramebufferCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkGraphicsPipelineCreateInfo-flags-00722`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-00723`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-00724`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-00725`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00729`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00730`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00732`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00733`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00734`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00735`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-topology-00737`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-Vertex-07722`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-Geometry-07725`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-Geometry-07726`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00738`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00739`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00740`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06038`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-00742`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-None-04889`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06043`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06044`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-layout-00756`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-subpass-00758`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06046`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-layout-01688`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-02098`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-06894`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-06895`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-06896`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-stage-06897`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsPipelineCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkGraphicsPipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkGraphicsPipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkGraphicsPipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkGraphicsPipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkGraphicsPipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkGraphicsPipelineCreateInfo-stage-00727`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-02095`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-stage-02096`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-PrimitiveId-06264`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-TaskNV-07063`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06042`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07609`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3TessellationDomainOrigin-07370`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3DepthClampEnable-07371`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3PolygonMode-07372`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3RasterizationSamples-07373`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3SampleMask-07374`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3AlphaToCoverageEnable-07375`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3AlphaToOneEnable-07376`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3LogicOpEnable-07377`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ColorBlendEnable-07378`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ColorBlendEquation-07379`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ColorWriteMask-07380`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3RasterizationStream-07381`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ConservativeRasterizationMode-07382`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ExtraPrimitiveOverestimationSize-07383`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3DepthClipEnable-07384`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3SampleLocationsEnable-07385`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ColorBlendAdvanced-07386`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ProvokingVertexMode-07387`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3LineRasterizationMode-07388`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3LineStippleEnable-07389`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3DepthClipNegativeOneToOne-07390`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ViewportWScalingEnable-07391`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ViewportSwizzle-07392`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3CoverageToColorEnable-07393`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3CoverageToColorLocation-07394`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3CoverageModulationMode-07395`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3CoverageModulationTableEnable-07396`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3CoverageModulationTable-07397`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3CoverageReductionMode-07398`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3RepresentativeFragmentTestEnable-07399`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-extendedDynamicState3ShadingRateImageEnable-07400`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00748`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pViewportState-04892`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04870`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-02510`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-01521`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-01522`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-01523`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07610`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07611`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07612`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07613`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07614`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07615`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-sampleLocationsEnable-01524`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-multisampledRenderToSingleSampled-06853`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06854`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-subpass-01505`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-subpass-01411`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-subpass-01412`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-coverageReductionMode-02722`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06047`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06048`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06049`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06050`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07717`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07064`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-00764`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-01565`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-01715`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04056`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04057`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04058`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-02097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pVertexInputState-04910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04807`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-02317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-02318`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-rasterizationStream-02319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-rasterizationStream-02320`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-geometryStreams-02321`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-None-02322`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-lineRasterizationMode-02766`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-stippledLineEnable-02767`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03371`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03372`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03373`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03374`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03375`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03376`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03377`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-03577`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03578`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-04947`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03378`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07065`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04868`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07066`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-02877`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-02966`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pipelineCreationCacheControl-02878`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pipelineProtectedAccess-07368`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-07369`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04494`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04495`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04496`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04497`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04498`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04499`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04500`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-06567`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-06568`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04501`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04502`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-primitiveFragmentShadingRateWithMultipleViewports-04504`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-fragmentShadingRateNonTrivialCombinerOps-04506`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-primitiveFragmentShadingRateWithMultipleViewports-04503`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-primitiveFragmentShadingRateWithMultipleViewports-04505`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-None-06569`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-06570`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-06571`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-06572`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04569`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04570`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04571`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-04572`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-fragmentShadingRateNonTrivialCombinerOps-04573`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-None-04574`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-None-04575`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07067`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-None-06573`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-layout-06602`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06603`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-stageCount-06604`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04800`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-rasterizationSamples-04899`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-sampleShadingEnable-04900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-04901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-04902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06574`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06575`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-multiview-06577`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06578`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06579`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06580`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06583`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06584`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06585`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06586`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06587`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06588`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06589`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06053`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06054`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06055`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06056`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06582`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06590`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06057`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06058`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07718`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06059`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07719`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06061`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07720`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06063`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06591`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06484`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06485`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06486`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06482`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06483`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pColorAttachmentSamples-06592`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-depthStencilAttachmentSamples-06593`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06595`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06596`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06597`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06598`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06599`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pNext-06605`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-graphicsPipelineLibrary-06606`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-graphicsPipelineLibrary-06607`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06608`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06609`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06610`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06611`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06612`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06613`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06614`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06615`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06616`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06617`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06618`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06619`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06620`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06621`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06679`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06680`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06681`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06756`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06757`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06758`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06682`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06683`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06684`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06623`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderpass-06624`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06628`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pMultisampleState-06629`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06633`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06634`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06635`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06636`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06637`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06640`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06641`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06642`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06643`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06644`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-07814`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06729`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06730`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderpass-06625`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06626`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06627`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-renderpass-06631`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-Input-06632`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pMultisampleState-06630`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06638`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06639`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-06645`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06646`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pLibraries-06647`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-libraryCount-06648`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-libraryCount-06649`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-conservativePointAndLineRasterization-06759`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-conservativePointAndLineRasterization-06760`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-conservativePointAndLineRasterization-06761`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-flags-07401`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07730`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-07731`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 293 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
@@ -8275,13 +7478,15 @@ impl<'a> core::ops::Deref for GraphicsPipelineCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkImageBlit2-aspectMask-00238`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageBlit2-layerCount-00239`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageBlit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageBlit2.html). Settled by the wrappers:
+
 - `VUID-VkImageBlit2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageBlit2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageBlit2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageBlit2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkImageBlit2-dstSubresource-parameter`: dynamic (checks the struct's own rules)*/
+- `VUID-VkImageBlit2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageBlit2<'a> {
@@ -8364,15 +7569,14 @@ impl<'a> core::ops::Deref for ImageBlit2<'a> {
 
 # Valid usage
 
-- `VUID-VkImageCopy2-aspectMask-00137`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCopy2-layerCount-00138`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCopy2-extent-06668`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCopy2-extent-06669`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCopy2-extent-06670`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageCopy2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCopy2.html). Settled by the wrappers:
+
 - `VUID-VkImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageCopy2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkImageCopy2-dstSubresource-parameter`: dynamic (checks the struct's own rules)*/
+- `VUID-VkImageCopy2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCopy2<'a> {
@@ -8461,45 +7665,8 @@ impl<'a> core::ops::Deref for ImageCopy2<'a> {
 
 # Valid usage
 
-- `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-sharingMode-00941`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-sharingMode-00942`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-extent-00944`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-extent-00945`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-extent-00946`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-mipLevels-00947`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-arrayLayers-00948`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-00949`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-extent-02252`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-extent-02253`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-extent-02254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00954`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-mipLevels-00958`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-mipLevels-02255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-arrayLayers-02256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00961`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-samples-02257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-00963`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-00964`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-00965`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-00966`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-samples-02258`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-00968`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-00969`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-01924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-tiling-04121`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00970`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00971`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00972`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00973`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00974`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00975`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-00976`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-00987`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-None-01925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-initialLayout-00993`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -8512,84 +7679,8 @@ impl<'a> core::ops::Deref for ImageCopy2<'a> {
 - `VUID-VkImageCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkImageCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageCreateInfo-sharingMode-01392`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-sharingMode-01420`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-00943`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-01974`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-01975`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-02393`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-02394`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-02396`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-02397`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-02398`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02557`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-samples-02558`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02565`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02566`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02567`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02568`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-00950`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-07755`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-02559`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-02560`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-fragmentDensityMapOffset-06514`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-fragmentDensityMapOffset-06515`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-01890`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-None-01891`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-00988`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-00990`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-00991`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02259`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-01572`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-01573`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-01443`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-06410`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-06411`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-06412`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-01577`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-04712`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-04713`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-tiling-02261`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-02262`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-tiling-02353`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-01533`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-02795`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-02796`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-02797`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-02798`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-Format-02536`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-02537`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-format-02538`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02050`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02051`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02052`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-02053`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageType-02082`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-samples-02083`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-shadingRateImage-07727`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-04992`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-imageView2DOn3DImage-04459`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-multisampleArrayImage-04460`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06722`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-04738`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-04815`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-usage-04816`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06811`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06390`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-multisampledRenderToSingleSampled-06882`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-06883`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06743`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06744`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06745`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06746`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-flags-08104`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-08105`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06783`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06784`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06785`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageCreateInfo-pNext-06786`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 117 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {
@@ -8721,6 +7812,8 @@ impl<'a> core::ops::Deref for ImageCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkImageFormatListCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatListCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkImageFormatListCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageFormatListCreateInfo-pViewFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
 #[repr(transparent)]
@@ -8793,6 +7886,8 @@ for ImageFormatListCreateInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatProperties2.html). Settled by the wrappers:
+
 - `VUID-VkImageFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -8854,19 +7949,8 @@ impl<'a> core::ops::Deref for ImageFormatProperties2<'a> {
 
 # Valid usage
 
-- `VUID-VkImageMemoryBarrier-oldLayout-01208`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01209`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01210`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01211`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01212`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01213`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01197`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-newLayout-01198`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-subresourceRange-01486`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-subresourceRange-01724`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-subresourceRange-01488`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-subresourceRange-01725`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-01932`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryBarrier.html). Settled by the wrappers:
+
 - `VUID-VkImageMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageMemoryBarrier-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -8874,38 +7958,8 @@ impl<'a> core::ops::Deref for ImageFormatProperties2<'a> {
 - `VUID-VkImageMemoryBarrier-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkImageMemoryBarrier-oldLayout-01658`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-01659`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-synchronization2-07793`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-synchronization2-07794`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-oldLayout-02088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-04069`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-synchronization2-03856`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-04071`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-04072`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-synchronization2-03857`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07120`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07121`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07122`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07123`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07124`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07125`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-07006`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-attachmentFeedbackLoopLayout-07313`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-02902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-01671`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-01672`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-01673`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-01207`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-03319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier-image-03320`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 45 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {
@@ -9008,59 +8062,8 @@ impl<'a> core::ops::Deref for ImageMemoryBarrier<'a> {
 
 # Valid usage
 
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03903`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03911`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03903`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03911`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-newLayout-01198`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-subresourceRange-01486`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-subresourceRange-01724`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-subresourceRange-01488`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-subresourceRange-01725`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-01932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryBarrier2.html). Settled by the wrappers:
+
 - `VUID-VkImageMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageMemoryBarrier2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -9072,112 +8075,8 @@ impl<'a> core::ops::Deref for ImageMemoryBarrier<'a> {
 - `VUID-VkImageMemoryBarrier2-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier2-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier2-subresourceRange-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-04747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-04747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcStageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-04994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstStageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-04994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-07454`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-07457`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-07458`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-07454`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-07457`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-07458`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-03928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-03928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-06254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-06254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-06255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-06255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-06256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-06256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-06257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-06257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-07272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-07272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-04858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-04859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-04858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-04859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07120`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07121`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07122`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-04860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-04861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-04860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-04861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07123`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07124`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07125`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-07455`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-07456`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-07455`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-07456`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcAccessMask-08118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-dstAccessMask-08118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-synchronization2-07793`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-synchronization2-07794`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-oldLayout-02088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-04069`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-04071`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-04072`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-07006`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-attachmentFeedbackLoopLayout-07313`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-02902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-01671`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-01672`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-01673`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-01207`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-03319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryBarrier2-image-03320`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 159 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -9292,16 +8191,14 @@ impl<'a> core::ops::Deref for ImageMemoryBarrier2<'a> {
 
 # Valid usage
 
-- `VUID-VkImageMemoryRequirementsInfo2-image-01589`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryRequirementsInfo2-image-01590`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryRequirementsInfo2-image-02279`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryRequirementsInfo2-image-02280`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryRequirementsInfo2-image-01591`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageMemoryRequirementsInfo2-image-01897`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageMemoryRequirementsInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryRequirementsInfo2.html). Settled by the wrappers:
+
 - `VUID-VkImageMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageMemoryRequirementsInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkImageMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkImageMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryRequirementsInfo2<'a> {
@@ -9362,10 +8259,12 @@ impl<'a> core::ops::Deref for ImageMemoryRequirementsInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImagePlaneMemoryRequirementsInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImagePlaneMemoryRequirementsInfo.html). Settled by the wrappers:
+
 - `VUID-VkImagePlaneMemoryRequirementsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02282`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImagePlaneMemoryRequirementsInfo<'a> {
@@ -9434,12 +8333,14 @@ for ImagePlaneMemoryRequirementsInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkImageResolve2-aspectMask-00266`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageResolve2-layerCount-00267`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageResolve2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageResolve2.html). Settled by the wrappers:
+
 - `VUID-VkImageResolve2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageResolve2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageResolve2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkImageResolve2-dstSubresource-parameter`: dynamic (checks the struct's own rules)*/
+- `VUID-VkImageResolve2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageResolve2<'a> {
@@ -9528,6 +8429,8 @@ impl<'a> core::ops::Deref for ImageResolve2<'a> {
 
 # Valid usage
 
+The rules are on [`VkImageSparseMemoryRequirementsInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSparseMemoryRequirementsInfo2.html). Settled by the wrappers:
+
 - `VUID-VkImageSparseMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageSparseMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageSparseMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)*/
@@ -9593,10 +8496,13 @@ impl<'a> core::ops::Deref for ImageSparseMemoryRequirementsInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageStencilUsageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageStencilUsageCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkImageStencilUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageStencilUsageCreateInfo<'a> {
@@ -9664,9 +8570,12 @@ for ImageStencilUsageCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSwapchainCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkImageSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -9737,25 +8646,8 @@ unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageSwapchainCreateInfoKHR<'a>
 
 # Valid usage
 
-- `VUID-VkImageViewCreateInfo-image-01003`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-viewType-01004`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-04441`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-None-02273`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-02274`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-02275`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-02276`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-02277`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-02652`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-01478`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-01718`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01020`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subResourceRange-01021`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-imageViewType-04973`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-imageViewType-04974`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-viewType-02960`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-viewType-02961`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-viewType-02962`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-viewType-02963`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkImageViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -9765,77 +8657,8 @@ unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageSwapchainCreateInfoKHR<'a>
 - `VUID-VkImageViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkImageViewCreateInfo-image-06723`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-04970`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-04971`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-04972`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02724`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-02725`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-06727`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01482`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-01483`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-06728`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-06724`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-06725`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-06516`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-06517`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02571`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-flags-02572`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-flags-04116`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-01480`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-01719`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01018`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01759`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01760`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01761`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01583`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-07072`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-01585`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01586`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-subresourceRange-07818`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01762`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-format-06415`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-format-04714`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-format-04715`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-01970`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06658`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-01019`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02399`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02400`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02401`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02086`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-02087`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-04550`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-usage-04551`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-flags-03567`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-flags-03568`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-03569`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-invocationMask-04993`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-02661`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-02662`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-02663`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-02664`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-imageViewFormatSwizzle-04465`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-imageViewFormatReinterpretation-04466`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-04817`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-image-04818`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-flags-08106`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-08107`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06787`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06944`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06945`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06946`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06947`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06948`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06949`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06950`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06951`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06952`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06953`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06954`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06955`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkImageViewCreateInfo-pNext-06957`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 90 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {
@@ -9926,6 +8749,8 @@ impl<'a> core::ops::Deref for ImageViewCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkImageViewUsageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewUsageCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkImageViewUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageViewUsageCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)*/
@@ -9994,18 +8819,17 @@ unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for ImageViewUsageCreateInfo<'a
 
 # Valid usage
 
-- `VUID-VkInstanceCreateInfo-pNext-04925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkInstanceCreateInfo-pNext-04926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkInstanceCreateInfo-pNext-06779`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkInstanceCreateInfo-flags-06559`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkInstanceCreateInfo-pNext`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkInstanceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkInstanceCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkInstanceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkInstanceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkInstanceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkInstanceCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkInstanceCreateInfo-pApplicationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkInstanceCreateInfo-ppEnabledLayerNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkInstanceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkInstanceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct InstanceCreateInfo<'a> {
@@ -10094,15 +8918,13 @@ impl<'a> core::ops::Deref for InstanceCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkMappedMemoryRange-memory-00684`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMappedMemoryRange-size-00685`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMappedMemoryRange-size-00686`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMappedMemoryRange-offset-00687`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMappedMemoryRange-size-01389`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMappedMemoryRange-size-01390`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkMappedMemoryRange`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMappedMemoryRange.html). Settled by the wrappers:
+
 - `VUID-VkMappedMemoryRange-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMappedMemoryRange-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMappedMemoryRange-memory-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkMappedMemoryRange-memory-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MappedMemoryRange<'a> {
@@ -10175,10 +8997,12 @@ impl<'a> core::ops::Deref for MappedMemoryRange<'a> {
 
 # Valid usage
 
-- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkMemoryAllocateFlagsInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryAllocateFlagsInfo.html). Settled by the wrappers:
+
 - `VUID-VkMemoryAllocateFlagsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryAllocateFlagsInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkMemoryAllocateFlagsInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateFlagsInfo<'a> {
@@ -10250,51 +9074,13 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryAllocateFlagsInfo<'a> 
 
 # Valid usage
 
-- `VUID-VkMemoryAllocateInfo-None-06657`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryAllocateInfo.html). Settled by the wrappers:
+
 - `VUID-VkMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkMemoryAllocateInfo-allocationSize-00638`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-buffer-06380`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-image-06381`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-06382`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-06383`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-image-06384`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-buffer-06385`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-06386`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-00639`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-00640`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-00641`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-01742`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-00648`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-None-00643`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-None-00644`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-00645`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-01743`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-00647`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-01872`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-01744`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-01745`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02805`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02806`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-02383`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02384`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-02385`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-01874`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02386`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02387`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02388`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02389`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02586`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-02390`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-flags-03330`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-flags-03331`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-03332`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-None-04749`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-allocationSize-04750`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryAllocateInfo-pNext-06780`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 42 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateInfo<'a> {
@@ -10364,6 +9150,8 @@ impl<'a> core::ops::Deref for MemoryAllocateInfo<'a> {
 /**Safe counterpart of [`vk::MemoryBarrier`].
 
 # Valid usage
+
+The rules are on [`VkMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryBarrier.html). Settled by the wrappers:
 
 - `VUID-VkMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -10439,125 +9227,15 @@ impl<'a> core::ops::Deref for MemoryBarrier<'a> {
 
 # Valid usage
 
-- `VUID-VkMemoryBarrier2-srcStageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03903`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03911`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03901`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03903`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03910`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03911`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03917`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkMemoryBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryBarrier2.html). Settled by the wrappers:
+
 - `VUID-VkMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkMemoryBarrier2-srcStageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-04747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-04747`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcStageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-04994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstStageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-04994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-07454`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-07457`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-07458`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-07454`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-07457`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-07458`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03924`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03925`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-03928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-03928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-06254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-06254`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-06255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-06255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-06256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-06256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-06257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-06257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-07272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-07272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-04858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-04859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-04858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-04859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-04860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-04861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-04860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-04861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-07455`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-07456`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-07455`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-07456`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-srcAccessMask-08118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryBarrier2-dstAccessMask-08118`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 114 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryBarrier2<'a> {
@@ -10641,24 +9319,14 @@ unsafe impl<'a> Extends<SubpassDependency2<'a>> for MemoryBarrier2<'a> {}
 
 # Valid usage
 
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01432`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01434`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01436`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkMemoryDedicatedAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryDedicatedAllocateInfo.html). Settled by the wrappers:
+
 - `VUID-VkMemoryDedicatedAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryDedicatedAllocateInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkMemoryDedicatedAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01433`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01435`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-02964`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-02965`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01876`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01877`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01878`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01879`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01797`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-04751`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-04752`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryDedicatedAllocateInfo<'a> {
@@ -10730,6 +9398,8 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryDedicatedAllocateInfo<
 
 # Valid usage
 
+The rules are on [`VkMemoryDedicatedRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryDedicatedRequirements.html). Settled by the wrappers:
+
 - `VUID-VkMemoryDedicatedRequirements-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -10789,6 +9459,8 @@ unsafe impl<'a> Extends<MemoryRequirements2<'a>> for MemoryDedicatedRequirements
 /**Safe counterpart of [`vk::MemoryOpaqueCaptureAddressAllocateInfo`].
 
 # Valid usage
+
+The rules are on [`VkMemoryOpaqueCaptureAddressAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryOpaqueCaptureAddressAllocateInfo.html). Settled by the wrappers:
 
 - `VUID-VkMemoryOpaqueCaptureAddressAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -10859,6 +9531,8 @@ for MemoryOpaqueCaptureAddressAllocateInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryRequirements2.html). Settled by the wrappers:
+
 - `VUID-VkMemoryRequirements2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryRequirements2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -10919,6 +9593,8 @@ impl<'a> core::ops::Deref for MemoryRequirements2<'a> {
 /**Safe counterpart of [`vk::MetalSurfaceCreateInfoEXT`].
 
 # Valid usage
+
+The rules are on [`VkMetalSurfaceCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMetalSurfaceCreateInfoEXT.html). Settled by the wrappers:
 
 - `VUID-VkMetalSurfaceCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMetalSurfaceCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -10990,6 +9666,8 @@ impl<'a> core::ops::Deref for MetalSurfaceCreateInfoEXT<'a> {
 /**Safe counterpart of [`vk::PhysicalDevice16BitStorageFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDevice16BitStorageFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevice16BitStorageFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDevice16BitStorageFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -11080,6 +9758,8 @@ for PhysicalDevice16BitStorageFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDevice8BitStorageFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevice8BitStorageFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDevice8BitStorageFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -11161,6 +9841,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDevice8BitStorageFeatu
 /**Safe counterpart of [`vk::PhysicalDeviceBufferDeviceAddressFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceBufferDeviceAddressFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBufferDeviceAddressFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceBufferDeviceAddressFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -11245,6 +9927,8 @@ for PhysicalDeviceBufferDeviceAddressFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceDepthStencilResolveProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthStencilResolveProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceDepthStencilResolveProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -11307,6 +9991,8 @@ for PhysicalDeviceDepthStencilResolveProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDescriptorIndexingFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceDescriptorIndexingFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorIndexingFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceDescriptorIndexingFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -11547,6 +10233,8 @@ for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceDescriptorIndexingProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorIndexingProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceDescriptorIndexingProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -11610,6 +10298,8 @@ for PhysicalDeviceDescriptorIndexingProperties<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceDriverProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDriverProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceDriverProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -11670,6 +10360,8 @@ for PhysicalDeviceDriverProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDynamicRenderingFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceDynamicRenderingFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDynamicRenderingFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceDynamicRenderingFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -11741,6 +10433,8 @@ for PhysicalDeviceDynamicRenderingFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceExternalBufferInfo`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceExternalBufferInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalBufferInfo.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceExternalBufferInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalBufferInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -11826,6 +10520,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalBufferInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceExternalFenceInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalFenceInfo.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceExternalFenceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalFenceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPhysicalDeviceExternalFenceInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
@@ -11892,6 +10588,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalFenceInfo<'a> {
 /**Safe counterpart of [`vk::PhysicalDeviceExternalImageFormatInfo`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceExternalImageFormatInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalImageFormatInfo.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceExternalImageFormatInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalImageFormatInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
@@ -11963,6 +10661,8 @@ for PhysicalDeviceExternalImageFormatInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceExternalSemaphoreInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalSemaphoreInfo.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -12033,6 +10733,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceExternalSemaphoreInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFeatures2.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceFeatures2-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12099,6 +10801,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceFeatures2<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceFloatControlsProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFloatControlsProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceFloatControlsProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12162,6 +10866,8 @@ for PhysicalDeviceFloatControlsProperties<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceGroupProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGroupProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceGroupProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceGroupProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
 #[repr(transparent)]
@@ -12221,6 +10927,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceGroupProperties<'a> {
 /**Safe counterpart of [`vk::PhysicalDeviceHostQueryResetFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceHostQueryResetFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceHostQueryResetFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceHostQueryResetFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -12293,6 +11001,8 @@ for PhysicalDeviceHostQueryResetFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceIDProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceIDProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceIDProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12354,8 +11064,8 @@ for PhysicalDeviceIDProperties<'a> {}
 
 # Valid usage
 
-- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-02249`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-02313`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPhysicalDeviceImageFormatInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageFormatInfo2.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -12364,7 +11074,9 @@ for PhysicalDeviceIDProperties<'a> {}
 - `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceImageFormatInfo2<'a> {
@@ -12453,6 +11165,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceImageFormatInfo2<'a> {
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceImageRobustnessFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageRobustnessFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceImageRobustnessFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12524,6 +11238,8 @@ for PhysicalDeviceImageRobustnessFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceImagelessFramebufferFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImagelessFramebufferFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceImagelessFramebufferFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12594,6 +11310,8 @@ for PhysicalDeviceImagelessFramebufferFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceInlineUniformBlockFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceInlineUniformBlockFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceInlineUniformBlockFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceInlineUniformBlockFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -12675,6 +11393,8 @@ for PhysicalDeviceInlineUniformBlockFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceInlineUniformBlockProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceInlineUniformBlockProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceInlineUniformBlockProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12738,6 +11458,8 @@ for PhysicalDeviceInlineUniformBlockProperties<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceMaintenance3Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMaintenance3Properties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceMaintenance3Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12800,6 +11522,8 @@ for PhysicalDeviceMaintenance3Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance4Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceMaintenance4Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMaintenance4Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceMaintenance4Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -12872,6 +11596,8 @@ for PhysicalDeviceMaintenance4Features<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceMaintenance4Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMaintenance4Properties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceMaintenance4Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -12935,6 +11661,8 @@ for PhysicalDeviceMaintenance4Properties<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceMemoryProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPhysicalDeviceMemoryProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -12996,9 +11724,11 @@ impl<'a> core::ops::Deref for PhysicalDeviceMemoryProperties2<'a> {
 
 # Valid usage
 
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPhysicalDeviceMultiviewFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+The rules are on [`VkPhysicalDeviceMultiviewFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewFeatures.html). Settled by the wrappers:
+
+- `VUID-VkPhysicalDeviceMultiviewFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMultiviewFeatures<'a> {
@@ -13078,6 +11808,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceMultiviewFeature
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceMultiviewProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceMultiviewProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13140,6 +11872,8 @@ for PhysicalDeviceMultiviewProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePipelineCreationCacheControlFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDevicePipelineCreationCacheControlFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineCreationCacheControlFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDevicePipelineCreationCacheControlFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -13212,6 +11946,8 @@ for PhysicalDevicePipelineCreationCacheControlFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDevicePointClippingProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePointClippingProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDevicePointClippingProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13274,6 +12010,8 @@ for PhysicalDevicePointClippingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePrivateDataFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDevicePrivateDataFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePrivateDataFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDevicePrivateDataFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -13345,6 +12083,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDevicePrivateDataFeatu
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProperties2.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPhysicalDeviceProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -13405,6 +12145,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceProperties2<'a> {
 /**Safe counterpart of [`vk::PhysicalDeviceProtectedMemoryFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceProtectedMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProtectedMemoryFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceProtectedMemoryFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -13477,6 +12219,8 @@ for PhysicalDeviceProtectedMemoryFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceProtectedMemoryProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProtectedMemoryProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceProtectedMemoryProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13540,6 +12284,8 @@ for PhysicalDeviceProtectedMemoryProperties<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceSamplerFilterMinmaxProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSamplerFilterMinmaxProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceSamplerFilterMinmaxProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13602,6 +12348,8 @@ for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerYcbcrConversionFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceSamplerYcbcrConversionFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSamplerYcbcrConversionFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceSamplerYcbcrConversionFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -13674,6 +12422,8 @@ for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceScalarBlockLayoutFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceScalarBlockLayoutFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceScalarBlockLayoutFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13745,6 +12495,8 @@ for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13815,6 +12567,8 @@ for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderAtomicInt64Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceShaderAtomicInt64Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderAtomicInt64Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceShaderAtomicInt64Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -13893,6 +12647,8 @@ for PhysicalDeviceShaderAtomicInt64Features<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceShaderDemoteToHelperInvocationFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderDemoteToHelperInvocationFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceShaderDemoteToHelperInvocationFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -13966,6 +12722,8 @@ for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceShaderDrawParametersFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderDrawParametersFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceShaderDrawParametersFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14036,6 +12794,8 @@ for PhysicalDeviceShaderDrawParametersFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderFloat16Int8Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceShaderFloat16Int8Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderFloat16Int8Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceShaderFloat16Int8Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -14114,6 +12874,8 @@ for PhysicalDeviceShaderFloat16Int8Features<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceShaderIntegerDotProductFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderIntegerDotProductFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceShaderIntegerDotProductFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14185,6 +12947,8 @@ for PhysicalDeviceShaderIntegerDotProductFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceShaderIntegerDotProductProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderIntegerDotProductProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceShaderIntegerDotProductProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14247,6 +13011,8 @@ for PhysicalDeviceShaderIntegerDotProductProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -14319,6 +13085,8 @@ for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceShaderTerminateInvocationFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderTerminateInvocationFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceShaderTerminateInvocationFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14390,7 +13158,8 @@ for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
 
 # Valid usage
 
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPhysicalDeviceSparseImageFormatInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSparseImageFormatInfo2.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -14398,7 +13167,9 @@ for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {}
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSparseImageFormatInfo2<'a> {
@@ -14489,6 +13260,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceSparseImageFormatInfo2<'a> {
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceSubgroupProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubgroupProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceSubgroupProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14551,6 +13324,8 @@ for PhysicalDeviceSubgroupProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupSizeControlFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceSubgroupSizeControlFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubgroupSizeControlFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceSubgroupSizeControlFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -14629,6 +13404,8 @@ for PhysicalDeviceSubgroupSizeControlFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceSubgroupSizeControlProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubgroupSizeControlProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceSubgroupSizeControlProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14691,6 +13468,8 @@ for PhysicalDeviceSubgroupSizeControlProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSynchronization2Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceSynchronization2Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSynchronization2Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceSynchronization2Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -14763,6 +13542,8 @@ for PhysicalDeviceSynchronization2Features<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceTexelBufferAlignmentProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTexelBufferAlignmentProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceTexelBufferAlignmentProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14825,6 +13606,8 @@ for PhysicalDeviceTexelBufferAlignmentProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTextureCompressionASTCHDRFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceTextureCompressionASTCHDRFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTextureCompressionASTCHDRFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceTextureCompressionASTCHDRFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -14897,6 +13680,8 @@ for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceTimelineSemaphoreFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTimelineSemaphoreFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceTimelineSemaphoreFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -14968,6 +13753,8 @@ for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceTimelineSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTimelineSemaphoreProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceTimelineSemaphoreProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -15031,6 +13818,8 @@ for PhysicalDeviceTimelineSemaphoreProperties<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceToolProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceToolProperties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceToolProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPhysicalDeviceToolProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
 #[repr(transparent)]
@@ -15090,6 +13879,8 @@ impl<'a> core::ops::Deref for PhysicalDeviceToolProperties<'a> {
 /**Safe counterpart of [`vk::PhysicalDeviceUniformBufferStandardLayoutFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceUniformBufferStandardLayoutFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceUniformBufferStandardLayoutFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceUniformBufferStandardLayoutFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -15162,8 +13953,11 @@ for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {}
 
 # Valid usage
 
-- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPhysicalDeviceVariablePointersFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+The rules are on [`VkPhysicalDeviceVariablePointersFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVariablePointersFeatures.html). Settled by the wrappers:
+
+- `VUID-VkPhysicalDeviceVariablePointersFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVariablePointersFeatures<'a> {
@@ -15239,6 +14033,8 @@ for PhysicalDeviceVariablePointersFeatures<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan11Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceVulkan11Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan11Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceVulkan11Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -15374,6 +14170,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan11Features
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceVulkan11Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan11Properties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceVulkan11Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -15436,6 +14234,8 @@ for PhysicalDeviceVulkan11Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan12Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceVulkan12Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan12Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceVulkan12Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -15838,6 +14638,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan12Features
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceVulkan12Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan12Properties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceVulkan12Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -15900,6 +14702,8 @@ for PhysicalDeviceVulkan12Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan13Features`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceVulkan13Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan13Features.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceVulkan13Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -16056,6 +14860,8 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan13Features
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceVulkan13Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan13Properties.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceVulkan13Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -16118,6 +14924,8 @@ for PhysicalDeviceVulkan13Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkanMemoryModelFeatures`].
 
 # Valid usage
+
+The rules are on [`VkPhysicalDeviceVulkanMemoryModelFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkanMemoryModelFeatures.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceVulkanMemoryModelFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
@@ -16205,6 +15013,8 @@ for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
 
 # Valid usage
 
+The rules are on [`VkPhysicalDeviceZeroInitializeWorkgroupMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceZeroInitializeWorkgroupMemoryFeatures.html). Settled by the wrappers:
+
 - `VUID-VkPhysicalDeviceZeroInitializeWorkgroupMemoryFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -16278,13 +15088,14 @@ for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 
 # Valid usage
 
-- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00768`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineCacheCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCacheCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineCacheCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineCacheCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineCacheCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineCacheCreateInfo-pInitialData-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCacheCreateInfo<'a> {
@@ -16356,17 +15167,15 @@ impl<'a> core::ops::Deref for PipelineCacheCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorBlendStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineColorBlendStateCreateInfo-rasterizationOrderColorAttachmentAccess-06465`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07353`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineColorBlendStateCreateInfo<'a> {
@@ -16471,9 +15280,11 @@ impl<'a> core::ops::Deref for PipelineColorBlendStateCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkPipelineCreationFeedbackCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCreationFeedbackCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineCreationFeedbackCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: user (not settable safely (a pointer Vulkan writes through))
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: user (not settable safely (a pointer Vulkan writes through))*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (not settable safely (a pointer Vulkan writes through)).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCreationFeedbackCreateInfo<'a> {
@@ -16538,16 +15349,16 @@ for PipelineCreationFeedbackCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineDepthStencilStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineDepthStencilStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineDepthStencilStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-front-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-back-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-separateStencilMaskRef-04453`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-rasterizationOrderDepthAttachmentAccess-06463`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineDepthStencilStateCreateInfo-rasterizationOrderStencilAttachmentAccess-06464`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDepthStencilStateCreateInfo<'a> {
@@ -16668,11 +15479,14 @@ impl<'a> core::ops::Deref for PipelineDepthStencilStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineDynamicStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineDynamicStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineDynamicStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineDynamicStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
+- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDynamicStateCreateInfo<'a> {
@@ -16744,16 +15558,14 @@ impl<'a> core::ops::Deref for PipelineDynamicStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-06252`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-06253`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineInputAssemblyStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineInputAssemblyStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineInputAssemblyStateCreateInfo-triangleFans-04452`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineInputAssemblyStateCreateInfo<'a> {
@@ -16832,75 +15644,15 @@ impl<'a> core::ops::Deref for PipelineInputAssemblyStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineLayoutCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineLayoutCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineLayoutCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00287`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00288`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00289`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00291`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01676`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01677`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01678`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01679`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01680`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01681`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01682`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01683`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-01684`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00290`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06938`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02212`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02213`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-06531`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03020`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03021`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03022`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03023`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03024`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03025`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03026`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03027`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03028`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03029`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03030`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03031`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03032`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03033`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03034`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03035`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03036`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03037`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03039`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03041`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03042`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03043`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-06939`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02214`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02215`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02216`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02217`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-00293`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03571`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03572`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03573`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-03574`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02381`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pImmutableSamplers-03566`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-04606`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-graphicsPipelineLibrary-06753`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-08008`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 64 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineLayoutCreateInfo<'a> {
@@ -16982,16 +15734,18 @@ impl<'a> core::ops::Deref for PipelineLayoutCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineMultisampleStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineMultisampleStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineMultisampleStateCreateInfo-pSampleMask-parameter`: user (not settable safely (a pointer whose length the registry gives as an expression))
-- `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-01415`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5.
+
+- 4: explicit rule; the wrappers do not check it
+- 1: not settable safely (a pointer whose length the registry gives as an expression)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineMultisampleStateCreateInfo<'a> {
@@ -17088,7 +15842,8 @@ impl<'a> core::ops::Deref for PipelineMultisampleStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineRasterizationStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineRasterizationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineRasterizationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineRasterizationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -17096,10 +15851,8 @@ impl<'a> core::ops::Deref for PipelineMultisampleStateCreateInfo<'a> {
 - `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01507`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01414`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineRasterizationStateCreateInfo-pointPolygons-04458`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineRasterizationStateCreateInfo<'a> {
@@ -17226,6 +15979,8 @@ impl<'a> core::ops::Deref for PipelineRasterizationStateCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkPipelineRenderingCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRenderingCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineRenderingCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -17312,22 +16067,8 @@ for PipelineRenderingCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00704`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00705`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00706`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00712`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00713`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00714`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00715`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-02596`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-02597`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineShaderStageCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineShaderStageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineShaderStageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineShaderStageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -17336,28 +16077,8 @@ for PipelineRenderingCreateInfo<'a> {}
 - `VUID-VkPipelineShaderStageCreateInfo-module-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-02091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-02092`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-clustercullingShader-07813`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06686`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02784`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02785`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02758`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02759`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-module-06716`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06844`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06845`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06846`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06847`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-stage-06848`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06849`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-graphicsPipelineLibrary-06717`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-module-06718`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 38 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
@@ -17449,10 +16170,11 @@ impl<'a> core::ops::Deref for PipelineShaderStageCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+The rules are on [`VkPipelineShaderStageRequiredSubgroupSizeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineShaderStageRequiredSubgroupSizeCreateInfo.html). Settled by the wrappers:
+
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
@@ -17514,6 +16236,8 @@ for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineTessellationDomainOriginStateCreateInfo`].
 
 # Valid usage
+
+The rules are on [`VkPipelineTessellationDomainOriginStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineTessellationDomainOriginStateCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-domainOrigin-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
@@ -17585,11 +16309,14 @@ for PipelineTessellationDomainOriginStateCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineTessellationStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineTessellationStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineTessellationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineTessellationStateCreateInfo<'a> {
@@ -17662,17 +16389,16 @@ impl<'a> core::ops::Deref for PipelineTessellationStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineVertexInputStateCreateInfo-vertexBindingDescriptionCount-00613`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineVertexInputStateCreateInfo-vertexAttributeDescriptionCount-00614`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineVertexInputStateCreateInfo-binding-00615`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineVertexInputStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineVertexInputStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineVertexInputStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineVertexInputStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineVertexInputStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineVertexInputStateCreateInfo<'a> {
@@ -17759,24 +16485,17 @@ impl<'a> core::ops::Deref for PipelineVertexInputStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-x-02821`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-offset-02822`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-offset-02823`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPipelineViewportStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportStateCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPipelineViewportStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineViewportStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineViewportStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01220`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength`: user (written by hand in the specification; not derived, so not checked)
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength`: user (written by hand in the specification; not derived, so not checked)
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPipelineViewportStateCreateInfo-viewportWScalingEnable-01726`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 14.
+
+- 12: explicit rule; the wrappers do not check it
+- 2: written by hand in the specification; not derived, so not checked*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineViewportStateCreateInfo<'a> {
@@ -17875,18 +16594,21 @@ impl<'a> core::ops::Deref for PipelineViewportStateCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkPresentInfoKHR-pImageIndices-01296`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPresentInfoKHR-pImageIndices-01430`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkPresentInfoKHR-pNext-06235`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPresentInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPresentInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pSwapchains-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pImageIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPresentInfoKHR-pResults-parameter`: user (not settable safely (a pointer Vulkan writes through))
 - `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4.
+
+- 3: explicit rule; the wrappers do not check it
+- 1: not settable safely (a pointer Vulkan writes through)*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -17982,6 +16704,8 @@ impl<'a> core::ops::Deref for PresentInfoKHR<'a> {
 
 # Valid usage
 
+The rules are on [`VkPrivateDataSlotCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPrivateDataSlotCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkPrivateDataSlotCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPrivateDataSlotCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPrivateDataSlotCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
@@ -18049,6 +16773,8 @@ impl<'a> core::ops::Deref for PrivateDataSlotCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkProtectedSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkProtectedSubmitInfo.html). Settled by the wrappers:
+
 - `VUID-VkProtectedSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -18115,18 +16841,15 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for ProtectedSubmitInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkQueryPoolCreateInfo-queryType-00791`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkQueryPoolCreateInfo-queryType-00792`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkQueryPoolCreateInfo-queryCount-02763`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkQueryPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueryPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkQueryPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkQueryPoolCreateInfo-meshShaderQueries-07068`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkQueryPoolCreateInfo-meshShaderQueries-07069`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkQueryPoolCreateInfo-queryType-03222`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkQueryPoolCreateInfo-queryType-07133`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueryPoolCreateInfo<'a> {
@@ -18212,6 +16935,8 @@ impl<'a> core::ops::Deref for QueryPoolCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyProperties2.html). Settled by the wrappers:
+
 - `VUID-VkQueueFamilyProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueueFamilyProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkQueueFamilyProperties2-sType-unique`: static (the wrappers create it themselves, with an empty `pNext` chain)*/
@@ -18273,12 +16998,12 @@ impl<'a> core::ops::Deref for QueueFamilyProperties2<'a> {
 
 # Valid usage
 
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderPassAttachmentBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassAttachmentBeginInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderPassAttachmentBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-07010`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassAttachmentBeginInfo<'a> {
@@ -18345,39 +17070,16 @@ unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for RenderPassAttachmentBeginIn
 
 # Valid usage
 
-- `VUID-VkRenderPassBeginInfo-clearValueCount-00902`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-clearValueCount-04962`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-renderPass-00904`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassBeginInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderPassBeginInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-framebuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkRenderPassBeginInfo-renderArea-02846`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-renderArea-02847`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-renderArea-02848`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-renderArea-02849`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02850`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02851`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02852`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02853`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02856`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02857`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03207`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03208`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-02780`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03209`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-04627`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03211`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03212`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03213`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03214`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03215`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03216`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-framebuffer-03217`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02869`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassBeginInfo-pNext-02870`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 27 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassBeginInfo<'a> {
@@ -18458,13 +17160,8 @@ impl<'a> core::ops::Deref for RenderPassBeginInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkRenderPassCreateInfo-attachment-00834`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pAttachments-00836`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pAttachments-02511`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pDependencies-00837`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pDependencies-00838`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pDependencies-06866`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pDependencies-06867`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderPassCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -18473,19 +17170,8 @@ impl<'a> core::ops::Deref for RenderPassBeginInfo<'a> {
 - `VUID-VkRenderPassCreateInfo-pSubpasses-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-subpassCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkRenderPassCreateInfo-fragmentDensityMapAttachment-06471`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pAttachments-01566`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pAttachments-01567`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-01926`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-01927`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-01963`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-01928`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-01929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-01930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-02512`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-02513`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-02514`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo-pNext-02515`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 20 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo<'a> {
@@ -18571,21 +17257,8 @@ impl<'a> core::ops::Deref for RenderPassCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkRenderPassCreateInfo2-None-03049`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-attachment-03050`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-attachment-03051`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pAttachments-02522`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pAttachments-02523`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pDependencies-03054`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pDependencies-03055`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-viewMask-03057`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-viewMask-03058`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-viewMask-03059`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pDependencies-03060`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-attachment-02525`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-srcSubpass-02526`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-dstSubpass-02527`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderPassCreateInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo2.html). Settled by the wrappers:
+
 - `VUID-VkRenderPassCreateInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassCreateInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassCreateInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -18595,19 +17268,8 @@ impl<'a> core::ops::Deref for RenderPassCreateInfo<'a> {
 - `VUID-VkRenderPassCreateInfo2-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkRenderPassCreateInfo2-fragmentDensityMapAttachment-06472`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pSubpasses-06473`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pAttachments-04585`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-pAttachments-04586`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-flags-04521`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-rasterizationSamples-04905`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-sampleShadingEnable-04906`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-flags-04907`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-flags-04908`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-flags-04909`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-attachment-06244`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-attachment-06245`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassCreateInfo2-attachment-06246`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 28 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo2<'a> {
@@ -18700,6 +17362,8 @@ impl<'a> core::ops::Deref for RenderPassCreateInfo2<'a> {
 
 # Valid usage
 
+The rules are on [`VkRenderPassInputAttachmentAspectCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassInputAttachmentAspectCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderPassInputAttachmentAspectCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassInputAttachmentAspectCreateInfo-pAspectReferences-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength`: dynamic (checks the count is not 0)*/
@@ -18775,13 +17439,14 @@ for RenderPassInputAttachmentAspectCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassMultiviewCreateInfo-multiview-06555`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderPassMultiviewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassMultiviewCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderPassMultiviewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassMultiviewCreateInfo-pViewOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassMultiviewCreateInfo<'a> {
@@ -18862,12 +17527,8 @@ unsafe impl<'a> Extends<RenderPassCreateInfo<'a>> for RenderPassMultiviewCreateI
 
 # Valid usage
 
-- `VUID-VkRenderingAttachmentInfo-imageView-06129`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06130`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06864`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06865`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06135`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06136`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderingAttachmentInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingAttachmentInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderingAttachmentInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderingAttachmentInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderingAttachmentInfo-imageView-parameter`: static (set from wrappers, which always hold valid handles)
@@ -18879,21 +17540,8 @@ unsafe impl<'a> Extends<RenderPassCreateInfo<'a>> for RenderPassMultiviewCreateI
 - `VUID-VkRenderingAttachmentInfo-storeOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderingAttachmentInfo-clearValue-parameter`: static (a union of plain numbers: every value is valid)
 - `VUID-VkRenderingAttachmentInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06132`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06860`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06861`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06862`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06863`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06137`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06138`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06139`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06140`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06141`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06142`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06143`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06144`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06145`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingAttachmentInfo-imageView-06146`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingAttachmentInfo<'a> {
@@ -19000,25 +17648,8 @@ impl<'a> core::ops::Deref for RenderingAttachmentInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkRenderingInfo-viewMask-06069`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-multisampledRenderToSingleSampled-06857`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06087`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06547`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-06548`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-06089`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06090`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06092`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06093`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-06094`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-06095`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06102`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-06103`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06104`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06105`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06106`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-multiview-06127`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingInfo.html). Settled by the wrappers:
+
 - `VUID-VkRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderingInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderingInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -19026,56 +17657,8 @@ impl<'a> core::ops::Deref for RenderingAttachmentInfo<'a> {
 - `VUID-VkRenderingInfo-pColorAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pDepthAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderingInfo-imageView-06858`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06859`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-renderArea-06071`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-renderArea-06072`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-renderArea-06073`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-renderArea-06074`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06075`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06076`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06077`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06078`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-07815`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-07816`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06079`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06080`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06083`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06084`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06085`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06086`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06096`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-06098`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-06099`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06100`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-colorAttachmentCount-06101`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-07732`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pDepthAttachment-07733`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-07734`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pStencilAttachment-07735`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06107`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06116`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06108`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06109`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06110`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06111`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06112`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06113`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06114`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06115`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06117`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06118`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06119`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06120`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06121`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-pNext-06122`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-layerCount-07817`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06123`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06124`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06125`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-imageView-06126`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkRenderingInfo-viewMask-06128`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 69 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingInfo<'a> {
@@ -19194,33 +17777,8 @@ impl<'a> core::ops::Deref for RenderingInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkResolveImageInfo2-pRegions-00255`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-00256`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-00257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-00258`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-00259`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImageLayout-00260`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImageLayout-00262`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-02003`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-01386`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcSubresource-01709`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstSubresource-01710`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcSubresource-01711`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstSubresource-01712`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-04446`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-04447`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcOffset-00269`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcOffset-00270`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-00271`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcOffset-00272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-00273`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstOffset-00274`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstOffset-00275`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-00276`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstOffset-00277`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-00278`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-06762`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-06764`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkResolveImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkResolveImageInfo2.html). Settled by the wrappers:
+
 - `VUID-VkResolveImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkResolveImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkResolveImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -19230,14 +17788,8 @@ impl<'a> core::ops::Deref for RenderingInfo<'a> {
 - `VUID-VkResolveImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkResolveImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkResolveImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkResolveImageInfo2-srcImageLayout-00261`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImageLayout-00263`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImageLayout-01400`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImageLayout-01401`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-linearColorAttachment-06519`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-02546`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-srcImage-06763`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkResolveImageInfo2-dstImage-06765`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 35 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ResolveImageInfo2<'a> {
@@ -19324,19 +17876,8 @@ impl<'a> core::ops::Deref for ResolveImageInfo2<'a> {
 
 # Valid usage
 
-- `VUID-VkSamplerCreateInfo-mipLodBias-01069`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-maxLod-01973`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-anisotropyEnable-01070`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-anisotropyEnable-01071`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-addressModeU-01078`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-addressModeU-01079`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-compareEnable-01080`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSamplerCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -19347,35 +17888,8 @@ impl<'a> core::ops::Deref for ResolveImageInfo2<'a> {
 - `VUID-VkSamplerCreateInfo-addressModeU-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerCreateInfo-samplerMipLodBias-04467`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-minFilter-01645`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-addressModeU-01646`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-None-01647`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-pNext-06726`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-magFilter-01081`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-magFilter-01422`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-compareEnable-01423`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02574`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02575`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02576`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02577`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02578`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02579`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-02580`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-nonSeamlessCubeMap-06788`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-borderColor-04011`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-customBorderColors-04085`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-borderColor-04442`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-None-04012`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-08110`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-pNext-08111`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06964`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06965`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06966`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06967`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06968`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06969`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerCreateInfo-flags-06970`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 42 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {
@@ -19530,6 +18044,8 @@ impl<'a> core::ops::Deref for SamplerCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkSamplerReductionModeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerReductionModeCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkSamplerReductionModeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerReductionModeCreateInfo-reductionMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
@@ -19597,21 +18113,8 @@ unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInf
 
 # Valid usage
 
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-04060`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-01904`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-04061`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-01650`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02581`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02582`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02583`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02584`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02585`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSamplerYcbcrConversionCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkSamplerYcbcrConversionCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -19621,7 +18124,9 @@ unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInf
 - `VUID-VkSamplerYcbcrConversionCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-yChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 15 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionCreateInfo<'a> {
@@ -19730,6 +18235,8 @@ impl<'a> core::ops::Deref for SamplerYcbcrConversionCreateInfo<'a> {
 
 # Valid usage
 
+The rules are on [`VkSamplerYcbcrConversionImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionImageFormatProperties.html). Settled by the wrappers:
+
 - `VUID-VkSamplerYcbcrConversionImageFormatProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -19792,6 +18299,8 @@ for SamplerYcbcrConversionImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::SamplerYcbcrConversionInfo`].
 
 # Valid usage
+
+The rules are on [`VkSamplerYcbcrConversionInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionInfo.html). Settled by the wrappers:
 
 - `VUID-VkSamplerYcbcrConversionInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerYcbcrConversionInfo-conversion-parameter`: static (set from wrappers, which always hold valid handles)*/
@@ -19857,11 +18366,14 @@ unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for SamplerYcbcrConversionInfo<
 
 # Valid usage
 
-- `VUID-VkSemaphoreCreateInfo-pNext-06789`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSemaphoreCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkSemaphoreCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkSemaphoreCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreCreateInfo<'a> {
@@ -19926,13 +18438,13 @@ impl<'a> core::ops::Deref for SemaphoreCreateInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSemaphoreSignalInfo-semaphore-03257`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSignalInfo-value-03258`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSignalInfo-value-03259`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSignalInfo-value-03260`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSemaphoreSignalInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSignalInfo.html). Settled by the wrappers:
+
 - `VUID-VkSemaphoreSignalInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreSignalInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreSignalInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkSemaphoreSignalInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSignalInfo<'a> {
@@ -19999,24 +18511,14 @@ impl<'a> core::ops::Deref for SemaphoreSignalInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03929`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03930`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-device-03888`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSemaphoreSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSubmitInfo.html). Settled by the wrappers:
+
 - `VUID-VkSemaphoreSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreSubmitInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03931`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03932`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03934`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-03935`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-04956`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-07316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-07317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-04957`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-stageMask-04995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreSubmitInfo-device-03889`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSubmitInfo<'a> {
@@ -20095,10 +18597,12 @@ impl<'a> core::ops::Deref for SemaphoreSubmitInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSemaphoreTypeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreTypeCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkSemaphoreTypeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreTypeCreateInfo<'a> {
@@ -20172,13 +18676,16 @@ for SemaphoreTypeCreateInfo<'a> {}
 
 # Valid usage
 
-- `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSemaphoreWaitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreWaitInfo.html). Settled by the wrappers:
+
 - `VUID-VkSemaphoreWaitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreWaitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreWaitInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreWaitInfo-pValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreWaitInfo<'a> {
@@ -20269,22 +18776,13 @@ impl<'a> core::ops::Deref for SemaphoreWaitInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01089`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01090`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-04146`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-04147`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkShaderModuleCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleCreateInfo.html). Settled by the wrappers:
+
 - `VUID-VkShaderModuleCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkShaderModuleCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkShaderModuleCreateInfo-pCode-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkShaderModuleCreateInfo-codeSize-01086`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01087`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01376`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01377`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01378`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkShaderModuleCreateInfo-pCode-01379`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ShaderModuleCreateInfo<'a> {
@@ -20358,6 +18856,8 @@ for ShaderModuleCreateInfo<'a> {}
 
 # Valid usage
 
+The rules are on [`VkSparseBufferMemoryBindInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseBufferMemoryBindInfo.html). Settled by the wrappers:
+
 - `VUID-VkSparseBufferMemoryBindInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseBufferMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSparseBufferMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)*/
@@ -20412,6 +18912,8 @@ impl<'a> core::ops::Deref for SparseBufferMemoryBindInfo<'a> {
 /**Safe counterpart of [`vk::SparseImageFormatProperties2`].
 
 # Valid usage
+
+The rules are on [`VkSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageFormatProperties2.html). Settled by the wrappers:
 
 - `VUID-VkSparseImageFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSparseImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
@@ -20473,20 +18975,13 @@ impl<'a> core::ops::Deref for SparseImageFormatProperties2<'a> {
 
 # Valid usage
 
-- `VUID-VkSparseImageMemoryBind-memory-01104`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-memory-01105`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-subresource-01106`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-offset-01107`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-extent-01108`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-offset-01109`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-extent-01110`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-offset-01111`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-extent-01112`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSparseImageMemoryBind`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageMemoryBind.html). Settled by the wrappers:
+
 - `VUID-VkSparseImageMemoryBind-subresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkSparseImageMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseImageMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSparseImageMemoryBind-memory-02732`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBind-memory-02733`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 11 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBind<'a> {
@@ -20566,12 +19061,13 @@ impl<'a> core::ops::Deref for SparseImageMemoryBind<'a> {
 
 # Valid usage
 
-- `VUID-VkSparseImageMemoryBindInfo-subresource-01722`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBindInfo-subresource-01723`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseImageMemoryBindInfo-image-02901`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSparseImageMemoryBindInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageMemoryBindInfo.html). Settled by the wrappers:
+
 - `VUID-VkSparseImageMemoryBindInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseImageMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBindInfo<'a> {
@@ -20623,6 +19119,8 @@ impl<'a> core::ops::Deref for SparseImageMemoryBindInfo<'a> {
 /**Safe counterpart of [`vk::SparseImageMemoryRequirements2`].
 
 # Valid usage
+
+The rules are on [`VkSparseImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageMemoryRequirements2.html). Settled by the wrappers:
 
 - `VUID-VkSparseImageMemoryRequirements2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSparseImageMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
@@ -20684,10 +19182,13 @@ impl<'a> core::ops::Deref for SparseImageMemoryRequirements2<'a> {
 
 # Valid usage
 
-- `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-01103`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSparseImageOpaqueMemoryBindInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageOpaqueMemoryBindInfo.html). Settled by the wrappers:
+
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageOpaqueMemoryBindInfo<'a> {
@@ -20740,17 +19241,12 @@ impl<'a> core::ops::Deref for SparseImageOpaqueMemoryBindInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSparseMemoryBind-memory-01096`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-memory-01097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-size-01098`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-resourceOffset-01099`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-size-01100`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-memoryOffset-01101`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-size-01102`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSparseMemoryBind`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseMemoryBind.html). Settled by the wrappers:
+
 - `VUID-VkSparseMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSparseMemoryBind-memory-02730`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSparseMemoryBind-memory-02731`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseMemoryBind<'a> {
@@ -20824,11 +19320,12 @@ impl<'a> core::ops::Deref for SparseMemoryBind<'a> {
 
 # Valid usage
 
-- `VUID-VkSpecializationInfo-offset-00773`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSpecializationInfo-pMapEntries-00774`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSpecializationInfo-constantID-04911`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSpecializationInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSpecializationInfo.html). Settled by the wrappers:
+
 - `VUID-VkSpecializationInfo-pMapEntries-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSpecializationInfo-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkSpecializationInfo-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SpecializationInfo<'a> {
@@ -20886,10 +19383,9 @@ impl<'a> core::ops::Deref for SpecializationInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04091`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubmitInfo.html). Settled by the wrappers:
+
 - `VUID-VkSubmitInfo-pCommandBuffers-00075`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-00078`: user (explicit rule; the wrappers do not check it)
 - `VUID-VkSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubmitInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -20898,29 +19394,8 @@ impl<'a> core::ops::Deref for SpecializationInfo<'a> {
 - `VUID-VkSubmitInfo-pCommandBuffers-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitDstStageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitSemaphores-03239`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pNext-03240`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pNext-03241`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pSignalSemaphores-03242`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pWaitSemaphores-03243`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pSignalSemaphores-03244`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pNext-04120`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pNext-04148`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pCommandBuffers-06193`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pCommandBuffers-06014`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pCommandBuffers-06015`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-pCommandBuffers-06016`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo-variableSampleLocations-06017`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 26 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo<'a> {
@@ -21019,24 +19494,17 @@ impl<'a> core::ops::Deref for SubmitInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSubmitInfo2-semaphore-03881`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2-semaphore-03882`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2-semaphore-03883`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2-semaphore-03884`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2-flags-03886`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2-flags-03887`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06192`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06010`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06011`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06012`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubmitInfo2KHR-variableSampleLocations-06013`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSubmitInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubmitInfo2.html). Settled by the wrappers:
+
 - `VUID-VkSubmitInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubmitInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubmitInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSubmitInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubmitInfo2-pWaitSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubmitInfo2-pCommandBufferInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubmitInfo2-pSignalSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkSubmitInfo2-pSignalSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 11 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo2<'a> {
@@ -21128,6 +19596,8 @@ impl<'a> core::ops::Deref for SubmitInfo2<'a> {
 
 # Valid usage
 
+The rules are on [`VkSubpassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassBeginInfo.html). Settled by the wrappers:
+
 - `VUID-VkSubpassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassBeginInfo-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
@@ -21195,20 +19665,8 @@ impl<'a> core::ops::Deref for SubpassBeginInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSubpassDependency2-srcStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04090`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcSubpass-03084`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcSubpass-03085`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcSubpass-06810`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcAccessMask-03088`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstAccessMask-03089`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dependencyFlags-03090`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dependencyFlags-03091`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcSubpass-02245`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-viewOffset-02530`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dependencyFlags-03092`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDependency2.html). Settled by the wrappers:
+
 - `VUID-VkSubpassDependency2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDependency2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassDependency2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -21217,26 +19675,8 @@ impl<'a> core::ops::Deref for SubpassBeginInfo<'a> {
 - `VUID-VkSubpassDependency2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDependency2-srcStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04092`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04093`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04094`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04095`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04096`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04097`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-07318`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-07319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-03937`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-srcStageMask-04996`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDependency2-dstStageMask-04996`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 34 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {
@@ -21343,26 +19783,8 @@ impl<'a> core::ops::Deref for SubpassDependency2<'a> {
 
 # Valid usage
 
-- `VUID-VkSubpassDescription-attachment-06912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-colorAttachmentCount-00845`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-loadOp-00846`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pResolveAttachments-00847`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pResolveAttachments-00848`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pResolveAttachments-00849`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pResolveAttachments-00850`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pColorAttachments-06868`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pInputAttachments-02647`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pColorAttachments-02648`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pResolveAttachments-02649`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pDepthStencilAttachment-02650`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pDepthStencilAttachment-01418`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-00853`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pPreserveAttachments-00854`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-layout-02519`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pDepthStencilAttachment-04438`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSubpassDescription`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription.html). Settled by the wrappers:
+
 - `VUID-VkSubpassDescription-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDescription-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDescription-pInputAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -21370,24 +19792,8 @@ impl<'a> core::ops::Deref for SubpassDependency2<'a> {
 - `VUID-VkSubpassDescription-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription-attachment-06916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06921`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-attachment-06923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pipelineBindPoint-00844`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pipelineBindPoint-04952`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-linearColorAttachment-06496`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-linearColorAttachment-06497`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-linearColorAttachment-06498`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pColorAttachments-01506`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-flags-00856`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-flags-03341`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-flags-03343`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription-pInputAttachments-02868`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 38 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription<'a> {
@@ -21503,28 +19909,8 @@ impl<'a> core::ops::Deref for SubpassDescription<'a> {
 
 # Valid usage
 
-- `VUID-VkSubpassDescription2-attachment-06912`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06913`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06914`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06915`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-colorAttachmentCount-03063`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-loadOp-03064`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pResolveAttachments-03065`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pResolveAttachments-03066`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pResolveAttachments-03067`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pResolveAttachments-03068`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pInputAttachments-02897`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pColorAttachments-02898`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pResolveAttachments-02899`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-03073`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pPreserveAttachments-03074`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-layout-02528`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-02799`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-02800`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-02801`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription2.html). Settled by the wrappers:
+
 - `VUID-VkSubpassDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -21535,28 +19921,8 @@ impl<'a> core::ops::Deref for SubpassDescription<'a> {
 - `VUID-VkSubpassDescription2-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription2-attachment-06916`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06917`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06918`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06919`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06920`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06251`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06921`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06922`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-06923`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pipelineBindPoint-04953`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06869`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pNext-06870`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pNext-06871`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-linearColorAttachment-06499`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-linearColorAttachment-06500`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-linearColorAttachment-06501`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-pColorAttachments-03070`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-flags-03076`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-attachment-04563`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-multiview-06558`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescription2-viewMask-06706`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 44 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {
@@ -21693,24 +20059,12 @@ impl<'a> core::ops::Deref for SubpassDescription2<'a> {
 
 # Valid usage
 
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03178`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-depthResolveMode-03183`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-stencilResolveMode-03184`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03185`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03186`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSubpassDescriptionDepthStencilResolve`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescriptionDepthStencilResolve.html). Settled by the wrappers:
+
 - `VUID-VkSubpassDescriptionDepthStencilResolve-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06873`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06874`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06875`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06876`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06877`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescriptionDepthStencilResolve<'a> {
@@ -21798,6 +20152,8 @@ for SubpassDescriptionDepthStencilResolve<'a> {}
 
 # Valid usage
 
+The rules are on [`VkSubpassEndInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassEndInfo.html). Settled by the wrappers:
+
 - `VUID-VkSubpassEndInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassEndInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassEndInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
@@ -21859,19 +20215,8 @@ impl<'a> core::ops::Deref for SubpassEndInfo<'a> {
 
 # Valid usage
 
-- `VUID-VkSwapchainCreateInfoKHR-surface-01270`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01272`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01278`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-01281`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01778`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSwapchainCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -21887,23 +20232,8 @@ impl<'a> core::ops::Deref for SubpassEndInfo<'a> {
 - `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-02839`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01383`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageUsage-01384`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-07781`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-07782`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01393`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-flags-03168`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-04099`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-flags-04100`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-flags-03187`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-02679`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-06751`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-06752`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 30 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22052,6 +20382,8 @@ impl<'a> core::ops::Deref for SwapchainCreateInfoKHR<'a> {
 
 # Valid usage
 
+The rules are on [`VkTimelineSemaphoreSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTimelineSemaphoreSubmitInfo.html). Settled by the wrappers:
+
 - `VUID-VkTimelineSemaphoreSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkTimelineSemaphoreSubmitInfo-pWaitSemaphoreValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkTimelineSemaphoreSubmitInfo-pSignalSemaphoreValues-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
@@ -22149,11 +20481,13 @@ unsafe impl<'a> Extends<BindSparseInfo<'a>> for TimelineSemaphoreSubmitInfo<'a> 
 
 # Valid usage
 
-- `VUID-VkWaylandSurfaceCreateInfoKHR-display-01304`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWaylandSurfaceCreateInfoKHR-surface-01305`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkWaylandSurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWaylandSurfaceCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkWaylandSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWaylandSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkWaylandSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkWaylandSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_wayland_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22242,11 +20576,13 @@ impl<'a> core::ops::Deref for WaylandSurfaceCreateInfoKHR<'a> {
 
 # Valid usage
 
-- `VUID-VkWin32SurfaceCreateInfoKHR-hinstance-01307`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWin32SurfaceCreateInfoKHR-hwnd-01308`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkWin32SurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWin32SurfaceCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkWin32SurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWin32SurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_win32_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22335,57 +20671,16 @@ impl<'a> core::ops::Deref for Win32SurfaceCreateInfoKHR<'a> {
 
 # Valid usage
 
-- `VUID-VkWriteDescriptorSet-dstBinding-00315`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-dstBinding-00316`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorCount-00317`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorCount-00318`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00319`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-dstSet-00320`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-dstArrayElement-00321`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02994`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02995`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00324`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00325`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02996`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02997`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-07683`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00327`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00328`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00329`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00330`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00331`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00332`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00333`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00334`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00335`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00336`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-07729`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00337`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-04149`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-04150`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-04151`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-04152`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00338`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-00339`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02752`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSet.html). Settled by the wrappers:
+
 - `VUID-VkWriteDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWriteDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkWriteDescriptorSet-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkWriteDescriptorSet-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02219`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02220`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02221`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02382`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-03817`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-01946`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-02738`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-01948`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-dstSet-04611`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-06450`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-06942`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkWriteDescriptorSet-descriptorType-06943`: user (explicit rule; the wrappers do not check it)*/
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 45 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSet<'a> {
@@ -22500,10 +20795,13 @@ impl<'a> core::ops::Deref for WriteDescriptorSet<'a> {
 
 # Valid usage
 
-- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkWriteDescriptorSetInlineUniformBlock`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSetInlineUniformBlock.html). Settled by the wrappers:
+
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength`: dynamic (checks the count is not 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSetInlineUniformBlock<'a> {
@@ -22573,11 +20871,13 @@ for WriteDescriptorSetInlineUniformBlock<'a> {}
 
 # Valid usage
 
-- `VUID-VkXcbSurfaceCreateInfoKHR-connection-01310`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkXcbSurfaceCreateInfoKHR-window-01311`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkXcbSurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkXcbSurfaceCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkXcbSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkXcbSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_xcb_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -22666,11 +20966,13 @@ impl<'a> core::ops::Deref for XcbSurfaceCreateInfoKHR<'a> {
 
 # Valid usage
 
-- `VUID-VkXlibSurfaceCreateInfoKHR-dpy-01313`: user (explicit rule; the wrappers do not check it)
-- `VUID-VkXlibSurfaceCreateInfoKHR-window-01314`: user (explicit rule; the wrappers do not check it)
+The rules are on [`VkXlibSurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkXlibSurfaceCreateInfoKHR.html). Settled by the wrappers:
+
 - `VUID-VkXlibSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkXlibSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkXlibSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkXlibSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+
+Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_xlib_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -91,21 +91,57 @@ pub struct Context<'m> {
     pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
 }
 
-/// The rules of an item and how each is settled, as a doc section.
+/// The rules of an item as a doc section: a link to the specification's reference
+/// page, each rule the wrappers settle with how, and a count of those left to the
+/// caller by reason (the report lists them one by one).
 pub(crate) fn doc_rules(cx: &Context, item: &str) -> String {
     let Some(rules) = cx.by_item.get(item) else {
         return String::new();
     };
-    let mut s = String::from("\n\n# Valid usage\n");
-    for (vuid, settlement) in rules {
-        s.push_str(&format!(
-            "\n- `{vuid}`: {} ({})",
-            settlement.status(),
-            settlement.mechanism()
-        ));
+    let mut s = format!(
+        "\n\n# Valid usage\n\nThe rules are on [`{item}`'s reference page]({REFERENCE_PAGES}{item}.html)."
+    );
+    let settled: Vec<_> = rules
+        .iter()
+        .filter(|(_, r)| !matches!(r, Settlement::User(_)))
+        .collect();
+    if !settled.is_empty() {
+        s.push_str(" Settled by the wrappers:\n");
+        for (vuid, settlement) in settled {
+            s.push_str(&format!(
+                "\n- `{vuid}`: {} ({})",
+                settlement.status(),
+                settlement.mechanism()
+            ));
+        }
+    }
+    let mut left: BTreeMap<&str, usize> = BTreeMap::new();
+    for (_, r) in rules {
+        if let Settlement::User(why) = r {
+            *left.entry(why.as_str()).or_default() += 1;
+        }
+    }
+    let total: usize = left.values().sum();
+    match left.len() {
+        0 => {}
+        1 => s.push_str(&format!(
+            "\n\nLeft to the caller (listed in the crate's `VALIDATION.md`): {total} ({}).",
+            left.keys().next().copied().unwrap_or_default()
+        )),
+        _ => {
+            s.push_str(&format!(
+                "\n\nLeft to the caller (listed in the crate's `VALIDATION.md`): {total}.\n"
+            ));
+            for (why, n) in left {
+                s.push_str(&format!("\n- {n}: {why}"));
+            }
+        }
     }
     s
 }
+
+/// Where the specification's reference pages are, one per command and struct.
+const REFERENCE_PAGES: &str = "https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/";
 
 /// The first line of every generated file: where it comes from and how to remake it.
 pub const HEADER: &str =
