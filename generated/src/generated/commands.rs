@@ -33,7 +33,7 @@ The rules are on [`vkAcquireNextImage2KHR`'s reference page](https://registry.kh
 - `VUID-vkAcquireNextImage2KHR-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn acquire_next_image2_khr<'a>(
         &self,
@@ -103,7 +103,7 @@ The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khr
 - `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn acquire_next_image_khr(
         &self,
@@ -418,7 +418,7 @@ The rules are on [`vkAllocateMemory`'s reference page](https://registry.khronos.
 - `VUID-vkAllocateMemory-pAllocator-parameter`: static (always NULL)
 - `VUID-vkAllocateMemory-pMemory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn allocate_memory<'a>(
         &self,
@@ -485,7 +485,7 @@ The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khrono
 - `VUID-vkBindBufferMemory-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindBufferMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn bind_buffer_memory(
         &self,
@@ -636,7 +636,7 @@ The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos
 - `VUID-vkBindImageMemory-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindImageMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 21 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn bind_image_memory(
         &self,
@@ -718,7 +718,7 @@ The rules are on [`vkBindImageMemory2`'s reference page](https://registry.khrono
 - `VUID-vkBindImageMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn bind_image_memory2<'a>(
         &self,
@@ -852,7 +852,7 @@ The rules are on [`vkCmdBeginQuery`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 32 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_query(
         &mut self,
@@ -937,7 +937,7 @@ The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khro
 - `VUID-vkCmdBeginRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_render_pass<'a>(
         mut self,
@@ -1039,7 +1039,7 @@ The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khr
 - `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_render_pass2<'a>(
         mut self,
@@ -1137,7 +1137,7 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_rendering<'a>(
         mut self,
@@ -1223,7 +1223,7 @@ The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.k
 - `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindDescriptorSets-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 12 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_descriptor_sets<'a>(
         &mut self,
@@ -1354,7 +1354,7 @@ The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khro
 - `VUID-vkCmdBindIndexBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindIndexBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_index_buffer(
         &mut self,
@@ -1438,7 +1438,7 @@ The rules are on [`vkCmdBindPipeline`'s reference page](https://registry.khronos
 - `VUID-vkCmdBindPipeline-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindPipeline-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 20 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_pipeline(
         &mut self,
@@ -1521,7 +1521,7 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_vertex_buffers<'a>(
         &mut self,
@@ -1627,7 +1627,7 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_vertex_buffers2<'a>(
         &mut self,
@@ -1748,7 +1748,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBlitImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 47 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image<'a>(
         &mut self,
@@ -1886,7 +1886,7 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1965,7 +1965,7 @@ The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khr
 - `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_attachments<'a>(
         &mut self,
@@ -2060,7 +2060,7 @@ The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khro
 - `VUID-vkCmdClearColorImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_color_image<'a>(
         &mut self,
@@ -2170,7 +2170,7 @@ The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://regist
 - `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 18 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 18 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_depth_stencil_image<'a>(
         &mut self,
@@ -2284,7 +2284,7 @@ The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 12 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer<'a>(
         &mut self,
@@ -2387,7 +2387,7 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2469,7 +2469,7 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 45 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image<'a>(
         &mut self,
@@ -2590,7 +2590,7 @@ The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.k
 - `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
@@ -2682,7 +2682,7 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 76 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 76 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image<'a>(
         &mut self,
@@ -2812,7 +2812,7 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2894,7 +2894,7 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 43 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer<'a>(
         &mut self,
@@ -3015,7 +3015,7 @@ The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.k
 - `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
@@ -3104,7 +3104,7 @@ The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry
 - `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_query_pool_results(
         &mut self,
@@ -3223,7 +3223,7 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 61 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 61 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch(
         &mut self,
@@ -3291,7 +3291,7 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 65 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 65 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_base(
         &mut self,
@@ -3382,7 +3382,7 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 60 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 60 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3453,7 +3453,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 192 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 192 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw(
         &mut self,
@@ -3534,7 +3534,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 194 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indexed(
         &mut self,
@@ -3621,7 +3621,7 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 200 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 200 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3711,7 +3711,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 205 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 205 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -3823,7 +3823,7 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 198 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 198 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indirect(
         &mut self,
@@ -3905,7 +3905,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 203 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 203 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indirect_count(
         &mut self,
@@ -4015,7 +4015,7 @@ The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registr
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -4071,7 +4071,7 @@ The rules are on [`vkCmdEndQuery`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 8 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -4143,7 +4143,7 @@ The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khrono
 - `VUID-vkCmdEndRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -4205,7 +4205,7 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCmdEndRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
@@ -4282,7 +4282,7 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -4337,7 +4337,7 @@ The rules are on [`vkCmdExecuteCommands`'s reference page](https://registry.khro
 - `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdExecuteCommands-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 51 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 51 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_execute_commands(
         &mut self,
@@ -4453,7 +4453,7 @@ The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdFillBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_fill_buffer(
         &mut self,
@@ -4602,7 +4602,7 @@ The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.
 - `VUID-vkCmdNextSubpass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -4672,7 +4672,7 @@ The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos
 - `VUID-vkCmdNextSubpass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_next_subpass2<'a>(
         &mut self,
@@ -4756,7 +4756,7 @@ The rules are on [`vkCmdPipelineBarrier`'s reference page](https://registry.khro
 - `VUID-vkCmdPipelineBarrier-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 39 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 39 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_pipeline_barrier<'a>(
         &mut self,
@@ -4896,7 +4896,7 @@ The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khr
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -4977,7 +4977,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
 - `VUID-vkCmdPushConstants-size-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_push_constants(
         &mut self,
@@ -5086,7 +5086,7 @@ The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_event(
         &mut self,
@@ -5168,7 +5168,7 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_event2(
         &mut self,
@@ -5250,7 +5250,7 @@ The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khron
 - `VUID-vkCmdResetQueryPool-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_query_pool(
         &mut self,
@@ -5341,7 +5341,7 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 - `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_resolve_image<'a>(
         &mut self,
@@ -5470,7 +5470,7 @@ The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khrono
 - `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_resolve_image2<'a>(
         &mut self,
@@ -5606,7 +5606,7 @@ The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.
 - `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetCullMode-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -5663,7 +5663,7 @@ The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bias(
         &mut self,
@@ -5739,7 +5739,7 @@ The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.k
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -5797,7 +5797,7 @@ The rules are on [`vkCmdSetDepthBounds`'s reference page](https://registry.khron
 - `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBounds-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bounds(
         &mut self,
@@ -5862,7 +5862,7 @@ The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://regi
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bounds_test_enable(
         &mut self,
@@ -5926,7 +5926,7 @@ The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.kh
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthCompareOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -5990,7 +5990,7 @@ The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.k
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6048,7 +6048,7 @@ The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6105,7 +6105,7 @@ The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khrono
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_device_mask(&mut self, device_mask: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6160,7 +6160,7 @@ The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 15 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6238,7 +6238,7 @@ The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_event2<'a>(
         &mut self,
@@ -6329,7 +6329,7 @@ The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetFrontFace-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6386,7 +6386,7 @@ The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6437,7 +6437,7 @@ The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://reg
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_primitive_restart_enable(
         &mut self,
@@ -6501,7 +6501,7 @@ The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_primitive_topology(
         &mut self,
@@ -6568,7 +6568,7 @@ The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://re
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
@@ -6636,7 +6636,7 @@ The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdSetScissor-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissor-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_scissor<'a>(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6710,7 +6710,7 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 - `VUID-vkCmdSetScissorWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -6863,7 +6863,7 @@ The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetStencilOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_stencil_op(
         &mut self,
@@ -7058,7 +7058,7 @@ The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetStencilTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7195,7 +7195,7 @@ The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.
 - `VUID-vkCmdSetViewport-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewport-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport<'a>(
         &mut self,
@@ -7273,7 +7273,7 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 - `VUID-vkCmdSetViewportWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -7348,7 +7348,7 @@ The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos
 - `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_update_buffer(
         &mut self,
@@ -7446,7 +7446,7 @@ The rules are on [`vkCmdWaitEvents`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdWaitEvents-eventCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWaitEvents-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 37 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 37 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_wait_events<'a>(
         &mut self,
@@ -7610,7 +7610,7 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdWaitEvents2-eventCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_wait_events2<'a>(
         &mut self,
@@ -7721,7 +7721,7 @@ The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khron
 - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_timestamp(
         &mut self,
@@ -7810,7 +7810,7 @@ The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khro
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 21 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_timestamp2(
         &mut self,
@@ -7892,7 +7892,7 @@ The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.or
 - `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_buffer<'a>(
         &self,
@@ -8023,7 +8023,7 @@ The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khron
 - `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_command_pool<'a>(
         &self,
@@ -8092,7 +8092,7 @@ The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.
 - `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_compute_pipelines<'a>(
         &self,
@@ -8475,7 +8475,7 @@ The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.or
 - `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_device<'a>(
         &self,
@@ -8550,7 +8550,7 @@ The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org
 - `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8656,7 +8656,7 @@ The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khron
 - `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_framebuffer<'a>(
         &self,
@@ -8735,7 +8735,7 @@ The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry
 - `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_graphics_pipelines<'a>(
         &self,
@@ -8842,7 +8842,7 @@ The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org
 - `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -8988,7 +8988,7 @@ The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.
 - `VUID-vkCreateInstance-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_instance<'a>(
         &self,
@@ -9246,7 +9246,7 @@ The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.k
 - `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_private_data_slot<'a>(
         &self,
@@ -9468,7 +9468,7 @@ The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.o
 - `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_sampler<'a>(
         &self,
@@ -9544,7 +9544,7 @@ The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://reg
 - `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_sampler_ycbcr_conversion<'a>(
         &self,
@@ -9665,7 +9665,7 @@ The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khro
 - `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_shader_module<'a>(
         &self,
@@ -10480,7 +10480,7 @@ The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.
 - `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_buffer_device_address<'a>(
         &self,
@@ -10615,7 +10615,7 @@ The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://re
 - `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_buffer_opaque_capture_address<'a>(
         &self,
@@ -10754,7 +10754,7 @@ The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https:/
 - `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_group_peer_memory_features(
         &self,
@@ -10825,7 +10825,7 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](htt
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_group_surface_present_modes_khr(
         &self,
@@ -11033,7 +11033,7 @@ The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://regist
 - `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_memory_commitment(
         &self,
@@ -11087,7 +11087,7 @@ The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](http
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_memory_opaque_capture_address<'a>(
         &self,
@@ -11115,7 +11115,7 @@ The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.
 - `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
         let mut out = vk::Queue::null();
@@ -11205,7 +11205,7 @@ The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.
 - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -11309,7 +11309,7 @@ The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://regis
 - `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_image_memory_requirements(
         &self,
@@ -11551,7 +11551,7 @@ The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://regist
 - `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_image_subresource_layout<'a>(
         &self,
@@ -11965,7 +11965,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](h
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_image_format_properties(
         &self,
@@ -12073,7 +12073,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](
 - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_image_format_properties2<'a>(
         &self,
@@ -12223,7 +12223,7 @@ The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](ht
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_present_rectangles_khr(
         &self,
@@ -12499,7 +12499,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties(
         &self,
@@ -12715,7 +12715,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_capabilities_khr(
         &self,
@@ -12785,7 +12785,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_formats_khr(
         &self,
@@ -12882,7 +12882,7 @@ The rules are on [`vkGetPhysicalDeviceSurfacePresentModesKHR`'s reference page](
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_present_modes_khr(
         &self,
@@ -12976,7 +12976,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_surface_support_khr(
         &self,
@@ -13108,7 +13108,7 @@ The rules are on [`vkGetPhysicalDeviceWin32PresentationSupportKHR`'s reference p
 
 - `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_physical_device_win32_presentation_support_khr(
         &self,
@@ -13232,7 +13232,7 @@ The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.
 - `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_private_data(
         &self,
@@ -13311,7 +13311,7 @@ The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khr
 - `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_query_pool_results(
         &self,
@@ -13464,7 +13464,7 @@ The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registr
 - `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -13686,7 +13686,7 @@ The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khr
 - `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn merge_pipeline_caches(
         &self,
@@ -13821,7 +13821,7 @@ The rules are on [`vkQueueBindSparse`'s reference page](https://registry.khronos
 - `VUID-vkQueueBindSparse-queuetype`: dynamic (checks the queue flags of the queue's family, recorded when the queue was retrieved)
 - `VUID-vkQueueBindSparse-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_bind_sparse<'a>(
         &self,
@@ -13950,7 +13950,7 @@ The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://regis
 
 - `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
         let ext_table = self
@@ -14009,7 +14009,7 @@ The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos
 - `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_present_khr<'a>(
         &self,
@@ -14170,7 +14170,7 @@ The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org
 - `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 13.
+Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
 - 12: explicit rule; the wrappers do not check it*/
@@ -14314,7 +14314,7 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 - `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 13.
+Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
 - 12: explicit rule; the wrappers do not check it*/
@@ -14467,7 +14467,7 @@ The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khro
 - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_command_buffer(
         &mut self,
@@ -14536,7 +14536,7 @@ The rules are on [`vkResetCommandPool`'s reference page](https://registry.khrono
 - `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_command_pool(
         &self,
@@ -14617,7 +14617,7 @@ The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khr
 - `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_descriptor_pool(
         &self,
@@ -14704,7 +14704,7 @@ The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/
 - `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -14852,7 +14852,7 @@ The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.
 - `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn reset_query_pool(
         &self,
@@ -14917,7 +14917,7 @@ The rules are on [`vkSetDebugUtilsObjectNameEXT`'s reference page](https://regis
 - `VUID-vkSetDebugUtilsObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn set_debug_utils_object_name_ext<'a>(
         &self,
@@ -15079,7 +15079,7 @@ The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vu
 - `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -15138,7 +15138,7 @@ The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.
 - `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn set_private_data(
         &self,
@@ -15269,7 +15269,7 @@ The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://regis
 - `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn submit_debug_utils_message_ext<'a>(
         &self,
@@ -15438,7 +15438,7 @@ The rules are on [`vkUpdateDescriptorSetWithTemplate`'s reference page](https://
 - `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn update_descriptor_set_with_template(
         &self,
@@ -15516,7 +15516,7 @@ The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.kh
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn update_descriptor_sets<'a>(
         &self,

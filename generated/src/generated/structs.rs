@@ -24,7 +24,7 @@ The rules are on [`VkAcquireNextImageInfoKHR`'s reference page](https://registry
 - `VUID-VkAcquireNextImageInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAcquireNextImageInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 8 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -114,7 +114,7 @@ impl<'a> core::ops::Deref for AcquireNextImageInfoKHR<'a> {
 
 The rules are on [`VkAllocationCallbacks`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAllocationCallbacks.html).
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AllocationCallbacks<'a> {
@@ -207,7 +207,7 @@ The rules are on [`VkApplicationInfo`'s reference page](https://registry.khronos
 - `VUID-VkApplicationInfo-pApplicationName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkApplicationInfo-pEngineName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ApplicationInfo<'a> {
@@ -311,7 +311,7 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 28 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 28 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -430,7 +430,7 @@ The rules are on [`VkAttachmentDescriptionStencilLayout`'s reference page](https
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescriptionStencilLayout<'a> {
@@ -512,7 +512,7 @@ The rules are on [`VkAttachmentReference2`'s reference page](https://registry.kh
 - `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReference2<'a> {
@@ -594,7 +594,7 @@ The rules are on [`VkAttachmentReferenceStencilLayout`'s reference page](https:/
 - `VUID-VkAttachmentReferenceStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReferenceStencilLayout<'a> {
@@ -667,7 +667,7 @@ The rules are on [`VkBaseInStructure`'s reference page](https://registry.khronos
 
 - `VUID-VkBaseInStructure-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (not checked).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (not checked).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BaseInStructure<'a> {
@@ -736,7 +736,7 @@ The rules are on [`VkBaseOutStructure`'s reference page](https://registry.khrono
 
 - `VUID-VkBaseOutStructure-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (not checked).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (not checked).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BaseOutStructure<'a> {
@@ -806,7 +806,7 @@ The rules are on [`VkBindBufferMemoryDeviceGroupInfo`'s reference page](https://
 - `VUID-VkBindBufferMemoryDeviceGroupInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryDeviceGroupInfo<'a> {
@@ -883,7 +883,7 @@ The rules are on [`VkBindBufferMemoryInfo`'s reference page](https://registry.kh
 - `VUID-VkBindBufferMemoryInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindBufferMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 20 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryInfo<'a> {
@@ -963,7 +963,7 @@ The rules are on [`VkBindImageMemoryDeviceGroupInfo`'s reference page](https://r
 - `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryDeviceGroupInfo<'a> {
@@ -1045,7 +1045,7 @@ The rules are on [`VkBindImageMemoryInfo`'s reference page](https://registry.khr
 - `VUID-VkBindImageMemoryInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindImageMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 35 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryInfo<'a> {
@@ -1124,7 +1124,7 @@ The rules are on [`VkBindImageMemorySwapchainInfoKHR`'s reference page](https://
 - `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1202,7 +1202,7 @@ The rules are on [`VkBindImagePlaneMemoryInfo`'s reference page](https://registr
 - `VUID-VkBindImagePlaneMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBindImagePlaneMemoryInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImagePlaneMemoryInfo<'a> {
@@ -1280,7 +1280,7 @@ The rules are on [`VkBindSparseInfo`'s reference page](https://registry.khronos.
 - `VUID-VkBindSparseInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindSparseInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindSparseInfo<'a> {
@@ -1390,7 +1390,7 @@ The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkBlitImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkBlitImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 47 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BlitImageInfo2<'a> {
@@ -1488,7 +1488,7 @@ The rules are on [`VkBufferCopy2`'s reference page](https://registry.khronos.org
 - `VUID-VkBufferCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCopy2<'a> {
@@ -1575,7 +1575,7 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 27 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -1671,7 +1671,7 @@ The rules are on [`VkBufferDeviceAddressInfo`'s reference page](https://registry
 - `VUID-VkBufferDeviceAddressInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferDeviceAddressInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferDeviceAddressInfo<'a> {
@@ -1739,7 +1739,7 @@ The rules are on [`VkBufferImageCopy2`'s reference page](https://registry.khrono
 - `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferImageCopy2<'a> {
@@ -1840,7 +1840,7 @@ The rules are on [`VkBufferMemoryBarrier`'s reference page](https://registry.khr
 - `VUID-VkBufferMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -1947,7 +1947,7 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferMemoryBarrier2-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 123 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 123 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -2201,7 +2201,7 @@ The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkBufferViewCreateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBufferViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 15 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferViewCreateInfo<'a> {
@@ -2371,7 +2371,7 @@ The rules are on [`VkCommandBufferBeginInfo`'s reference page](https://registry.
 - `VUID-VkCommandBufferBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferBeginInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferBeginInfo<'a> {
@@ -2456,7 +2456,7 @@ The rules are on [`VkCommandBufferInheritanceInfo`'s reference page](https://reg
 - `VUID-VkCommandBufferInheritanceInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceInfo<'a> {
@@ -2563,7 +2563,7 @@ The rules are on [`VkCommandBufferInheritanceRenderingInfo`'s reference page](ht
 - `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 11 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceRenderingInfo<'a> {
@@ -2670,7 +2670,7 @@ The rules are on [`VkCommandBufferSubmitInfo`'s reference page](https://registry
 - `VUID-VkCommandBufferSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferSubmitInfo<'a> {
@@ -2743,7 +2743,7 @@ The rules are on [`VkCommandPoolCreateInfo`'s reference page](https://registry.k
 - `VUID-VkCommandPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandPoolCreateInfo<'a> {
@@ -2824,7 +2824,7 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 21 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -2923,7 +2923,7 @@ The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos
 - `VUID-VkCopyBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferInfo2<'a> {
@@ -3009,7 +3009,7 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 44 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 44 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -3098,7 +3098,7 @@ The rules are on [`VkCopyDescriptorSet`'s reference page](https://registry.khron
 - `VUID-VkCopyDescriptorSet-dstSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyDescriptorSet<'a> {
@@ -3208,7 +3208,7 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 73 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 73 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {
@@ -3306,7 +3306,7 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 43 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
@@ -3586,7 +3586,7 @@ The rules are on [`VkDebugUtilsMessengerCreateInfoEXT`'s reference page](https:/
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -3696,7 +3696,7 @@ The rules are on [`VkDebugUtilsObjectNameInfoEXT`'s reference page](https://regi
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -3788,7 +3788,7 @@ The rules are on [`VkDebugUtilsObjectTagInfoEXT`'s reference page](https://regis
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -3979,7 +3979,7 @@ The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.kh
 
 - `VUID-VkDescriptorBufferInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {
@@ -4045,7 +4045,7 @@ The rules are on [`VkDescriptorImageInfo`'s reference page](https://registry.khr
 
 - `VUID-VkDescriptorImageInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorImageInfo<'a> {
@@ -4112,7 +4112,7 @@ The rules are on [`VkDescriptorPoolCreateInfo`'s reference page](https://registr
 - `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorPoolCreateInfo<'a> {
@@ -4271,7 +4271,7 @@ The rules are on [`VkDescriptorSetAllocateInfo`'s reference page](https://regist
 - `VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkDescriptorSetAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetAllocateInfo<'a> {
@@ -4346,7 +4346,7 @@ The rules are on [`VkDescriptorSetLayoutBinding`'s reference page](https://regis
 
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 12 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBinding<'a> {
@@ -4430,7 +4430,7 @@ The rules are on [`VkDescriptorSetLayoutBindingFlagsCreateInfo`'s reference page
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
@@ -4508,7 +4508,7 @@ The rules are on [`VkDescriptorSetLayoutCreateInfo`'s reference page](https://re
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pBindings-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutCreateInfo<'a> {
@@ -4648,7 +4648,7 @@ The rules are on [`VkDescriptorSetVariableDescriptorCountAllocateInfo`'s referen
 - `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pDescriptorCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
@@ -4793,7 +4793,7 @@ The rules are on [`VkDescriptorUpdateTemplateCreateInfo`'s reference page](https
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorUpdateTemplateCreateInfo<'a> {
@@ -4979,7 +4979,7 @@ The rules are on [`VkDeviceCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkDeviceCreateInfo-pEnabledFeatures-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 31.
+Left to the caller (listed one by one in the crate's `validation.json`): 31.
 
 - 30: explicit rule; the wrappers do not check it
 - 1: not settable safely (deprecated by the specification)*/
@@ -5078,7 +5078,7 @@ The rules are on [`VkDeviceGroupBindSparseInfo`'s reference page](https://regist
 
 - `VUID-VkDeviceGroupBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupBindSparseInfo<'a> {
@@ -5154,7 +5154,7 @@ The rules are on [`VkDeviceGroupCommandBufferBeginInfo`'s reference page](https:
 
 - `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupCommandBufferBeginInfo<'a> {
@@ -5228,7 +5228,7 @@ The rules are on [`VkDeviceGroupDeviceCreateInfo`'s reference page](https://regi
 - `VUID-VkDeviceGroupDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupDeviceCreateInfo<'a> {
@@ -5372,7 +5372,7 @@ The rules are on [`VkDeviceGroupPresentInfoKHR`'s reference page](https://regist
 - `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -5456,7 +5456,7 @@ The rules are on [`VkDeviceGroupRenderPassBeginInfo`'s reference page](https://r
 - `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 8 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupRenderPassBeginInfo<'a> {
@@ -5537,7 +5537,7 @@ The rules are on [`VkDeviceGroupSubmitInfo`'s reference page](https://registry.k
 - `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupSubmitInfo<'a> {
@@ -5704,7 +5704,7 @@ The rules are on [`VkDeviceImageMemoryRequirements`'s reference page](https://re
 - `VUID-VkDeviceImageMemoryRequirements-pCreateInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceImageMemoryRequirements-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceImageMemoryRequirements<'a> {
@@ -5780,7 +5780,7 @@ The rules are on [`VkDeviceMemoryOpaqueCaptureAddressInfo`'s reference page](htt
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceMemoryOpaqueCaptureAddressInfo<'a> {
@@ -5920,7 +5920,7 @@ The rules are on [`VkDeviceQueueCreateInfo`'s reference page](https://registry.k
 - `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceQueueCreateInfo-queueCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueCreateInfo<'a> {
@@ -6004,7 +6004,7 @@ The rules are on [`VkDeviceQueueInfo2`'s reference page](https://registry.khrono
 - `VUID-VkDeviceQueueInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueInfo2<'a> {
@@ -6088,7 +6088,7 @@ The rules are on [`VkEventCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkEventCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkEventCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct EventCreateInfo<'a> {
@@ -6158,7 +6158,7 @@ The rules are on [`VkExportFenceCreateInfo`'s reference page](https://registry.k
 - `VUID-VkExportFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportFenceCreateInfo<'a> {
@@ -6229,7 +6229,7 @@ The rules are on [`VkExportMemoryAllocateInfo`'s reference page](https://registr
 - `VUID-VkExportMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportMemoryAllocateInfo<'a> {
@@ -6300,7 +6300,7 @@ The rules are on [`VkExportSemaphoreCreateInfo`'s reference page](https://regist
 - `VUID-VkExportSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportSemaphoreCreateInfo<'a> {
@@ -7136,7 +7136,7 @@ The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.k
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkFramebufferCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 58 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 58 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferCreateInfo<'a> {
@@ -7237,7 +7237,7 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkGraphicsPipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 293 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 293 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
@@ -7486,7 +7486,7 @@ The rules are on [`VkImageBlit2`'s reference page](https://registry.khronos.org/
 - `VUID-VkImageBlit2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageBlit2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageBlit2<'a> {
@@ -7576,7 +7576,7 @@ The rules are on [`VkImageCopy2`'s reference page](https://registry.khronos.org/
 - `VUID-VkImageCopy2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageCopy2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCopy2<'a> {
@@ -7680,7 +7680,7 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 117 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 117 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {
@@ -7959,7 +7959,7 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 45 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {
@@ -8076,7 +8076,7 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier2-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 159 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 159 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -8198,7 +8198,7 @@ The rules are on [`VkImageMemoryRequirementsInfo2`'s reference page](https://reg
 - `VUID-VkImageMemoryRequirementsInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryRequirementsInfo2<'a> {
@@ -8264,7 +8264,7 @@ The rules are on [`VkImagePlaneMemoryRequirementsInfo`'s reference page](https:/
 - `VUID-VkImagePlaneMemoryRequirementsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImagePlaneMemoryRequirementsInfo<'a> {
@@ -8340,7 +8340,7 @@ The rules are on [`VkImageResolve2`'s reference page](https://registry.khronos.o
 - `VUID-VkImageResolve2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageResolve2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageResolve2<'a> {
@@ -8502,7 +8502,7 @@ The rules are on [`VkImageStencilUsageCreateInfo`'s reference page](https://regi
 - `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageStencilUsageCreateInfo<'a> {
@@ -8575,7 +8575,7 @@ The rules are on [`VkImageSwapchainCreateInfoKHR`'s reference page](https://regi
 - `VUID-VkImageSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -8658,7 +8658,7 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 90 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 90 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {
@@ -8829,7 +8829,7 @@ The rules are on [`VkInstanceCreateInfo`'s reference page](https://registry.khro
 - `VUID-VkInstanceCreateInfo-ppEnabledLayerNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkInstanceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct InstanceCreateInfo<'a> {
@@ -8924,7 +8924,7 @@ The rules are on [`VkMappedMemoryRange`'s reference page](https://registry.khron
 - `VUID-VkMappedMemoryRange-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMappedMemoryRange-memory-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MappedMemoryRange<'a> {
@@ -9002,7 +9002,7 @@ The rules are on [`VkMemoryAllocateFlagsInfo`'s reference page](https://registry
 - `VUID-VkMemoryAllocateFlagsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryAllocateFlagsInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateFlagsInfo<'a> {
@@ -9080,7 +9080,7 @@ The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khro
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 42 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 42 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateInfo<'a> {
@@ -9235,7 +9235,7 @@ The rules are on [`VkMemoryBarrier2`'s reference page](https://registry.khronos.
 - `VUID-VkMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 114 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 114 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryBarrier2<'a> {
@@ -9326,7 +9326,7 @@ The rules are on [`VkMemoryDedicatedAllocateInfo`'s reference page](https://regi
 - `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkMemoryDedicatedAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryDedicatedAllocateInfo<'a> {
@@ -11076,7 +11076,7 @@ The rules are on [`VkPhysicalDeviceImageFormatInfo2`'s reference page](https://r
 - `VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceImageFormatInfo2<'a> {
@@ -11728,7 +11728,7 @@ The rules are on [`VkPhysicalDeviceMultiviewFeatures`'s reference page](https://
 
 - `VUID-VkPhysicalDeviceMultiviewFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMultiviewFeatures<'a> {
@@ -13169,7 +13169,7 @@ The rules are on [`VkPhysicalDeviceSparseImageFormatInfo2`'s reference page](htt
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSparseImageFormatInfo2<'a> {
@@ -13957,7 +13957,7 @@ The rules are on [`VkPhysicalDeviceVariablePointersFeatures`'s reference page](h
 
 - `VUID-VkPhysicalDeviceVariablePointersFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVariablePointersFeatures<'a> {
@@ -15095,7 +15095,7 @@ The rules are on [`VkPipelineCacheCreateInfo`'s reference page](https://registry
 - `VUID-VkPipelineCacheCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineCacheCreateInfo-pInitialData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCacheCreateInfo<'a> {
@@ -15175,7 +15175,7 @@ The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https:
 - `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineColorBlendStateCreateInfo<'a> {
@@ -15284,7 +15284,7 @@ The rules are on [`VkPipelineCreationFeedbackCreateInfo`'s reference page](https
 
 - `VUID-VkPipelineCreationFeedbackCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (not settable safely (a pointer Vulkan writes through)).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (not settable safely (a pointer Vulkan writes through)).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCreationFeedbackCreateInfo<'a> {
@@ -15358,7 +15358,7 @@ The rules are on [`VkPipelineDepthStencilStateCreateInfo`'s reference page](http
 - `VUID-VkPipelineDepthStencilStateCreateInfo-front-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-back-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDepthStencilStateCreateInfo<'a> {
@@ -15486,7 +15486,7 @@ The rules are on [`VkPipelineDynamicStateCreateInfo`'s reference page](https://r
 - `VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDynamicStateCreateInfo<'a> {
@@ -15565,7 +15565,7 @@ The rules are on [`VkPipelineInputAssemblyStateCreateInfo`'s reference page](htt
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineInputAssemblyStateCreateInfo<'a> {
@@ -15652,7 +15652,7 @@ The rules are on [`VkPipelineLayoutCreateInfo`'s reference page](https://registr
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 64 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 64 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineLayoutCreateInfo<'a> {
@@ -15742,7 +15742,7 @@ The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https
 - `VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5.
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
 - 4: explicit rule; the wrappers do not check it
 - 1: not settable safely (a pointer whose length the registry gives as an expression)*/
@@ -15852,7 +15852,7 @@ The rules are on [`VkPipelineRasterizationStateCreateInfo`'s reference page](htt
 - `VUID-VkPipelineRasterizationStateCreateInfo-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineRasterizationStateCreateInfo<'a> {
@@ -16078,7 +16078,7 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
@@ -16174,7 +16174,7 @@ The rules are on [`VkPipelineShaderStageRequiredSubgroupSizeCreateInfo`'s refere
 
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
@@ -16316,7 +16316,7 @@ The rules are on [`VkPipelineTessellationStateCreateInfo`'s reference page](http
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineTessellationStateCreateInfo<'a> {
@@ -16398,7 +16398,7 @@ The rules are on [`VkPipelineVertexInputStateCreateInfo`'s reference page](https
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineVertexInputStateCreateInfo<'a> {
@@ -16492,7 +16492,7 @@ The rules are on [`VkPipelineViewportStateCreateInfo`'s reference page](https://
 - `VUID-VkPipelineViewportStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 14.
+Left to the caller (listed one by one in the crate's `validation.json`): 14.
 
 - 12: explicit rule; the wrappers do not check it
 - 2: written by hand in the specification; not derived, so not checked*/
@@ -16605,7 +16605,7 @@ The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.
 - `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4.
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: explicit rule; the wrappers do not check it
 - 1: not settable safely (a pointer Vulkan writes through)*/
@@ -16849,7 +16849,7 @@ The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueryPoolCreateInfo<'a> {
@@ -17003,7 +17003,7 @@ The rules are on [`VkRenderPassAttachmentBeginInfo`'s reference page](https://re
 - `VUID-VkRenderPassAttachmentBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassAttachmentBeginInfo<'a> {
@@ -17079,7 +17079,7 @@ The rules are on [`VkRenderPassBeginInfo`'s reference page](https://registry.khr
 - `VUID-VkRenderPassBeginInfo-framebuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 27 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassBeginInfo<'a> {
@@ -17171,7 +17171,7 @@ The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkRenderPassCreateInfo-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-subpassCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 20 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo<'a> {
@@ -17269,7 +17269,7 @@ The rules are on [`VkRenderPassCreateInfo2`'s reference page](https://registry.k
 - `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 28 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 28 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo2<'a> {
@@ -17446,7 +17446,7 @@ The rules are on [`VkRenderPassMultiviewCreateInfo`'s reference page](https://re
 - `VUID-VkRenderPassMultiviewCreateInfo-pViewOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassMultiviewCreateInfo<'a> {
@@ -17541,7 +17541,7 @@ The rules are on [`VkRenderingAttachmentInfo`'s reference page](https://registry
 - `VUID-VkRenderingAttachmentInfo-clearValue-parameter`: static (a union of plain numbers: every value is valid)
 - `VUID-VkRenderingAttachmentInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 21 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 21 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingAttachmentInfo<'a> {
@@ -17658,7 +17658,7 @@ The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.o
 - `VUID-VkRenderingInfo-pDepthAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 69 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 69 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingInfo<'a> {
@@ -17789,7 +17789,7 @@ The rules are on [`VkResolveImageInfo2`'s reference page](https://registry.khron
 - `VUID-VkResolveImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkResolveImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 35 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ResolveImageInfo2<'a> {
@@ -17889,7 +17889,7 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 42 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 42 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {
@@ -18126,7 +18126,7 @@ The rules are on [`VkSamplerYcbcrConversionCreateInfo`'s reference page](https:/
 - `VUID-VkSamplerYcbcrConversionCreateInfo-yChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 15 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionCreateInfo<'a> {
@@ -18373,7 +18373,7 @@ The rules are on [`VkSemaphoreCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkSemaphoreCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSemaphoreCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreCreateInfo<'a> {
@@ -18444,7 +18444,7 @@ The rules are on [`VkSemaphoreSignalInfo`'s reference page](https://registry.khr
 - `VUID-VkSemaphoreSignalInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreSignalInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSignalInfo<'a> {
@@ -18518,7 +18518,7 @@ The rules are on [`VkSemaphoreSubmitInfo`'s reference page](https://registry.khr
 - `VUID-VkSemaphoreSubmitInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSubmitInfo<'a> {
@@ -18602,7 +18602,7 @@ The rules are on [`VkSemaphoreTypeCreateInfo`'s reference page](https://registry
 - `VUID-VkSemaphoreTypeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreTypeCreateInfo<'a> {
@@ -18685,7 +18685,7 @@ The rules are on [`VkSemaphoreWaitInfo`'s reference page](https://registry.khron
 - `VUID-VkSemaphoreWaitInfo-pValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreWaitInfo<'a> {
@@ -18782,7 +18782,7 @@ The rules are on [`VkShaderModuleCreateInfo`'s reference page](https://registry.
 - `VUID-VkShaderModuleCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkShaderModuleCreateInfo-pCode-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ShaderModuleCreateInfo<'a> {
@@ -18981,7 +18981,7 @@ The rules are on [`VkSparseImageMemoryBind`'s reference page](https://registry.k
 - `VUID-VkSparseImageMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseImageMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 11 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBind<'a> {
@@ -19067,7 +19067,7 @@ The rules are on [`VkSparseImageMemoryBindInfo`'s reference page](https://regist
 - `VUID-VkSparseImageMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBindInfo<'a> {
@@ -19188,7 +19188,7 @@ The rules are on [`VkSparseImageOpaqueMemoryBindInfo`'s reference page](https://
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageOpaqueMemoryBindInfo<'a> {
@@ -19246,7 +19246,7 @@ The rules are on [`VkSparseMemoryBind`'s reference page](https://registry.khrono
 - `VUID-VkSparseMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseMemoryBind<'a> {
@@ -19325,7 +19325,7 @@ The rules are on [`VkSpecializationInfo`'s reference page](https://registry.khro
 - `VUID-VkSpecializationInfo-pMapEntries-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSpecializationInfo-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SpecializationInfo<'a> {
@@ -19395,7 +19395,7 @@ The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/
 - `VUID-VkSubmitInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 26 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 26 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo<'a> {
@@ -19504,7 +19504,7 @@ The rules are on [`VkSubmitInfo2`'s reference page](https://registry.khronos.org
 - `VUID-VkSubmitInfo2-pCommandBufferInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubmitInfo2-pSignalSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 11 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo2<'a> {
@@ -19676,7 +19676,7 @@ The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khro
 - `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 34 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {
@@ -19793,7 +19793,7 @@ The rules are on [`VkSubpassDescription`'s reference page](https://registry.khro
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription<'a> {
@@ -19922,7 +19922,7 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 44 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 44 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {
@@ -20064,7 +20064,7 @@ The rules are on [`VkSubpassDescriptionDepthStencilResolve`'s reference page](ht
 - `VUID-VkSubpassDescriptionDepthStencilResolve-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 16 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescriptionDepthStencilResolve<'a> {
@@ -20233,7 +20233,7 @@ The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 30 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 30 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -20487,7 +20487,7 @@ The rules are on [`VkWaylandSurfaceCreateInfoKHR`'s reference page](https://regi
 - `VUID-VkWaylandSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkWaylandSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_wayland_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -20582,7 +20582,7 @@ The rules are on [`VkWin32SurfaceCreateInfoKHR`'s reference page](https://regist
 - `VUID-VkWin32SurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_win32_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -20680,7 +20680,7 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 45 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSet<'a> {
@@ -20801,7 +20801,7 @@ The rules are on [`VkWriteDescriptorSetInlineUniformBlock`'s reference page](htt
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSetInlineUniformBlock<'a> {
@@ -20877,7 +20877,7 @@ The rules are on [`VkXcbSurfaceCreateInfoKHR`'s reference page](https://registry
 - `VUID-VkXcbSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_xcb_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -20972,7 +20972,7 @@ The rules are on [`VkXlibSurfaceCreateInfoKHR`'s reference page](https://registr
 - `VUID-VkXlibSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkXlibSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed in the crate's `VALIDATION.md`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_xlib_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

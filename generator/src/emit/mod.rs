@@ -93,7 +93,7 @@ pub struct Context<'m> {
 
 /// The rules of an item as a doc section: a link to the specification's reference
 /// page, each rule the wrappers settle with how, and a count of those left to the
-/// caller by reason (the report lists them one by one).
+/// caller by reason (`validation.json` lists them one by one).
 pub(crate) fn doc_rules(cx: &Context, item: &str) -> String {
     let Some(rules) = cx.by_item.get(item) else {
         return String::new();
@@ -125,12 +125,12 @@ pub(crate) fn doc_rules(cx: &Context, item: &str) -> String {
     match left.len() {
         0 => {}
         1 => s.push_str(&format!(
-            "\n\nLeft to the caller (listed in the crate's `VALIDATION.md`): {total} ({}).",
+            "\n\nLeft to the caller (listed one by one in the crate's `validation.json`): {total} ({}).",
             left.keys().next().copied().unwrap_or_default()
         )),
         _ => {
             s.push_str(&format!(
-                "\n\nLeft to the caller (listed in the crate's `VALIDATION.md`): {total}.\n"
+                "\n\nLeft to the caller (listed one by one in the crate's `validation.json`): {total}.\n"
             ));
             for (why, n) in left {
                 s.push_str(&format!("\n- {n}: {why}"));
