@@ -288,3 +288,83 @@ pub mod chain {
     /// does, and be listed in the head's `structextends` in the registry.
     pub unsafe trait Extends<Head> {}
 }
+
+/// What every safe struct has besides its definition and setters, written once:
+/// `Deref` to ash's struct, `as_raw`, and on request a zeroed `new` with `Default`
+/// (`zeroed`) and a typed `push_next` (`chained`). The generated `structs` module
+/// invokes it after each struct, as `safe_struct!(Name, 'a; zeroed chained);`, with
+/// the struct's `#[cfg]` first where it has one and `'a` where ash's struct borrows.
+macro_rules! safe_struct {
+    ($(#[cfg($cfg:meta)])? $name:ident $(, $lt:lifetime)?; $($part:ident)*) => {
+        $(#[cfg($cfg)])?
+        impl<'a> $name<'a> {
+            /// The ash struct this lowers to.
+            #[inline]
+            pub fn as_raw(&self) -> &ash::vk::$name $(<$lt>)? {
+                &self.raw
+            }
+            /// The ash struct, for a command that writes into it.
+            #[inline]
+            #[allow(dead_code)]
+            pub(crate) fn as_raw_mut(&mut self) -> &mut ash::vk::$name $(<$lt>)? {
+                &mut self.raw
+            }
+        }
+        $(#[cfg($cfg)])?
+        impl<'a> core::ops::Deref for $name<'a> {
+            type Target = ash::vk::$name $(<$lt>)?;
+            #[inline]
+            fn deref(&self) -> &Self::Target {
+                &self.raw
+            }
+        }
+        $crate::support::safe_struct!(@parts [$($cfg)?] $name [$($lt)?]; $($part)*);
+    };
+    (@parts [$($cfg:meta)?] $name:ident [$($lt:lifetime)?];) => {};
+    (@parts [$($cfg:meta)?] $name:ident [$($lt:lifetime)?]; zeroed $($rest:ident)*) => {
+        $(#[cfg($cfg)])?
+        impl<'a> $name<'a> {
+            /// A struct with every member zero or empty (and `sType` set, where it
+            /// has one).
+            #[inline]
+            pub fn new() -> Self {
+                Self { raw: Default::default(), _marker: core::marker::PhantomData }
+            }
+        }
+        $(#[cfg($cfg)])?
+        impl Default for $name<'_> {
+            fn default() -> Self {
+                Self::new()
+            }
+        }
+        $crate::support::safe_struct!(@parts [$($cfg)?] $name [$($lt)?]; $($rest)*);
+    };
+    (@parts [$($cfg:meta)?] $name:ident [$($lt:lifetime)?]; chained $($rest:ident)*) => {
+        $(#[cfg($cfg)])?
+        impl<'a> $name<'a> {
+            /// Pushes a struct that extends this one onto its `pNext` chain; only
+            /// structs that the registry says extend this one are accepted.
+            ///
+            /// `next` becomes one node of this chain: whatever `next` chained before
+            /// is no longer on it, and `next` stays borrowed, for as long as this
+            /// struct's own borrows, so it cannot be used again with this chain's
+            /// pointer in it.
+            #[inline]
+            pub fn push_next<T: $crate::chain::Extends<Self>>(mut self, next: &'a mut T) -> Self {
+                // SAFETY: `Extends` is implemented only for structs that begin with
+                // `sType` and `pNext` (the VkBaseOutStructure layout), as this one
+                // does, and only for `T` of this struct's lifetime; `next` is
+                // borrowed for that lifetime, so the chain it now points into
+                // outlives every use of it.
+                unsafe {
+                    let node = next as *mut T as *mut ash::vk::BaseOutStructure<'a>;
+                    (*node).p_next = self.raw.p_next as *mut _;
+                    self.raw.p_next = node as _;
+                }
+                self
+            }
+        }
+        $crate::support::safe_struct!(@parts [$($cfg)?] $name [$($lt)?]; $($rest)*);
+    };
+}
+pub(crate) use safe_struct;

@@ -8,7 +8,9 @@
     clippy::field_reassign_with_default,
     clippy::unnecessary_cast
 )]
-use crate::{chain::Extends, handles::*, CStrPtr, Handle, HandleSlice};
+use crate::{
+    chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice,
+};
 use ash::vk;
 use core::marker::PhantomData;
 /**Safe counterpart of [`vk::AcquireNextImageInfoKHR`].
@@ -32,6 +34,7 @@ pub struct AcquireNextImageInfoKHR<'a> {
     raw: vk::AcquireNextImageInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(#[cfg(feature = "khr_swapchain")] AcquireNextImageInfoKHR, 'a; chained);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> AcquireNextImageInfoKHR<'a> {
     /// A struct with its required members set and every other member zero or
@@ -73,40 +76,6 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
         self.raw.device_mask = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::AcquireNextImageInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::AcquireNextImageInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for AcquireNextImageInfoKHR<'a> {
-    type Target = vk::AcquireNextImageInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::AllocationCallbacks`].
 
@@ -121,15 +90,8 @@ pub struct AllocationCallbacks<'a> {
     raw: vk::AllocationCallbacks<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(AllocationCallbacks, 'a; zeroed);
 impl<'a> AllocationCallbacks<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets the pointer handed back to the callback; Vulkan never reads through it.
     #[inline]
     pub fn user_data(mut self, value: *mut core::ffi::c_void) -> Self {
@@ -172,29 +134,6 @@ impl<'a> AllocationCallbacks<'a> {
         self.raw.pfn_internal_free = value;
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::AllocationCallbacks<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::AllocationCallbacks<'a> {
-        &mut self.raw
-    }
-}
-impl Default for AllocationCallbacks<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for AllocationCallbacks<'a> {
-    type Target = vk::AllocationCallbacks<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ApplicationInfo`].
 
@@ -214,15 +153,8 @@ pub struct ApplicationInfo<'a> {
     raw: vk::ApplicationInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ApplicationInfo, 'a; zeroed chained);
 impl<'a> ApplicationInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pApplicationName`.
     #[inline]
     pub fn application_name(mut self, value: Option<&'a core::ffi::CStr>) -> Self {
@@ -253,44 +185,6 @@ impl<'a> ApplicationInfo<'a> {
         self.raw.api_version = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ApplicationInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ApplicationInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ApplicationInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ApplicationInfo<'a> {
-    type Target = vk::ApplicationInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::AttachmentDescription2`].
 
@@ -318,15 +212,8 @@ pub struct AttachmentDescription2<'a> {
     raw: vk::AttachmentDescription2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(AttachmentDescription2, 'a; zeroed chained);
 impl<'a> AttachmentDescription2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::AttachmentDescriptionFlags) -> Self {
@@ -381,44 +268,6 @@ impl<'a> AttachmentDescription2<'a> {
         self.raw.final_layout = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::AttachmentDescription2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::AttachmentDescription2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for AttachmentDescription2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for AttachmentDescription2<'a> {
-    type Target = vk::AttachmentDescription2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::AttachmentDescriptionStencilLayout`].
 
@@ -437,15 +286,8 @@ pub struct AttachmentDescriptionStencilLayout<'a> {
     raw: vk::AttachmentDescriptionStencilLayout<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(AttachmentDescriptionStencilLayout, 'a; zeroed chained);
 impl<'a> AttachmentDescriptionStencilLayout<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `stencilInitialLayout`.
     #[inline]
     pub fn stencil_initial_layout(mut self, value: vk::ImageLayout) -> Self {
@@ -457,46 +299,6 @@ impl<'a> AttachmentDescriptionStencilLayout<'a> {
     pub fn stencil_final_layout(mut self, value: vk::ImageLayout) -> Self {
         self.raw.stencil_final_layout = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::AttachmentDescriptionStencilLayout<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::AttachmentDescriptionStencilLayout<'a> {
-        &mut self.raw
-    }
-}
-impl Default for AttachmentDescriptionStencilLayout<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for AttachmentDescriptionStencilLayout<'a> {
-    type Target = vk::AttachmentDescriptionStencilLayout<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<AttachmentDescription2<'a>>
@@ -519,15 +321,8 @@ pub struct AttachmentReference2<'a> {
     raw: vk::AttachmentReference2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(AttachmentReference2, 'a; zeroed chained);
 impl<'a> AttachmentReference2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `attachment`.
     #[inline]
     pub fn attachment(mut self, value: u32) -> Self {
@@ -546,44 +341,6 @@ impl<'a> AttachmentReference2<'a> {
         self.raw.aspect_mask = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::AttachmentReference2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::AttachmentReference2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for AttachmentReference2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for AttachmentReference2<'a> {
-    type Target = vk::AttachmentReference2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::AttachmentReferenceStencilLayout`].
 
@@ -601,60 +358,13 @@ pub struct AttachmentReferenceStencilLayout<'a> {
     raw: vk::AttachmentReferenceStencilLayout<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(AttachmentReferenceStencilLayout, 'a; zeroed chained);
 impl<'a> AttachmentReferenceStencilLayout<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `stencilLayout`.
     #[inline]
     pub fn stencil_layout(mut self, value: vk::ImageLayout) -> Self {
         self.raw.stencil_layout = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::AttachmentReferenceStencilLayout<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::AttachmentReferenceStencilLayout<'a> {
-        &mut self.raw
-    }
-}
-impl Default for AttachmentReferenceStencilLayout<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for AttachmentReferenceStencilLayout<'a> {
-    type Target = vk::AttachmentReferenceStencilLayout<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<AttachmentReference2<'a>>
@@ -674,58 +384,13 @@ pub struct BaseInStructure<'a> {
     raw: vk::BaseInStructure<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BaseInStructure, 'a; zeroed chained);
 impl<'a> BaseInStructure<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `sType`.
     #[inline]
     pub fn s_type(mut self, value: vk::StructureType) -> Self {
         self.raw.s_type = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BaseInStructure<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BaseInStructure<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BaseInStructure<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BaseInStructure<'a> {
-    type Target = vk::BaseInStructure<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::BaseOutStructure`].
@@ -743,58 +408,13 @@ pub struct BaseOutStructure<'a> {
     raw: vk::BaseOutStructure<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BaseOutStructure, 'a; zeroed chained);
 impl<'a> BaseOutStructure<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `sType`.
     #[inline]
     pub fn s_type(mut self, value: vk::StructureType) -> Self {
         self.raw.s_type = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BaseOutStructure<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BaseOutStructure<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BaseOutStructure<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BaseOutStructure<'a> {
-    type Target = vk::BaseOutStructure<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::BindBufferMemoryDeviceGroupInfo`].
@@ -813,59 +433,14 @@ pub struct BindBufferMemoryDeviceGroupInfo<'a> {
     raw: vk::BindBufferMemoryDeviceGroupInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BindBufferMemoryDeviceGroupInfo, 'a; zeroed chained);
 impl<'a> BindBufferMemoryDeviceGroupInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pDeviceIndices`.
     #[inline]
     pub fn device_indices(mut self, value: &'a [u32]) -> Self {
         self.raw.device_index_count = value.len() as _;
         self.raw.p_device_indices = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindBufferMemoryDeviceGroupInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindBufferMemoryDeviceGroupInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BindBufferMemoryDeviceGroupInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BindBufferMemoryDeviceGroupInfo<'a> {
-    type Target = vk::BindBufferMemoryDeviceGroupInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<BindBufferMemoryInfo<'a>>
@@ -890,6 +465,7 @@ pub struct BindBufferMemoryInfo<'a> {
     raw: vk::BindBufferMemoryInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BindBufferMemoryInfo, 'a; chained);
 impl<'a> BindBufferMemoryInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -919,39 +495,6 @@ impl<'a> BindBufferMemoryInfo<'a> {
         self.raw.memory_offset = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindBufferMemoryInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindBufferMemoryInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BindBufferMemoryInfo<'a> {
-    type Target = vk::BindBufferMemoryInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BindImageMemoryDeviceGroupInfo`].
 
@@ -970,15 +513,8 @@ pub struct BindImageMemoryDeviceGroupInfo<'a> {
     raw: vk::BindImageMemoryDeviceGroupInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BindImageMemoryDeviceGroupInfo, 'a; zeroed chained);
 impl<'a> BindImageMemoryDeviceGroupInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pDeviceIndices`.
     #[inline]
     pub fn device_indices(mut self, value: &'a [u32]) -> Self {
@@ -992,44 +528,6 @@ impl<'a> BindImageMemoryDeviceGroupInfo<'a> {
         self.raw.split_instance_bind_region_count = value.len() as _;
         self.raw.p_split_instance_bind_regions = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindImageMemoryDeviceGroupInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindImageMemoryDeviceGroupInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BindImageMemoryDeviceGroupInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BindImageMemoryDeviceGroupInfo<'a> {
-    type Target = vk::BindImageMemoryDeviceGroupInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImageMemoryDeviceGroupInfo<'a> {}
@@ -1052,6 +550,7 @@ pub struct BindImageMemoryInfo<'a> {
     raw: vk::BindImageMemoryInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BindImageMemoryInfo, 'a; chained);
 impl<'a> BindImageMemoryInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -1081,39 +580,6 @@ impl<'a> BindImageMemoryInfo<'a> {
         self.raw.memory_offset = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindImageMemoryInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindImageMemoryInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BindImageMemoryInfo<'a> {
-    type Target = vk::BindImageMemoryInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BindImageMemorySwapchainInfoKHR`].
 
@@ -1132,6 +598,9 @@ pub struct BindImageMemorySwapchainInfoKHR<'a> {
     raw: vk::BindImageMemorySwapchainInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_swapchain")] BindImageMemorySwapchainInfoKHR, 'a; chained
+);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
     /// A struct with its required members set and every other member zero or
@@ -1155,40 +624,6 @@ impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
         self.raw.image_index = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindImageMemorySwapchainInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindImageMemorySwapchainInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for BindImageMemorySwapchainInfoKHR<'a> {
-    type Target = vk::BindImageMemorySwapchainInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 #[cfg(feature = "khr_swapchain")]
 unsafe impl<'a> Extends<BindImageMemoryInfo<'a>>
@@ -1209,58 +644,13 @@ pub struct BindImagePlaneMemoryInfo<'a> {
     raw: vk::BindImagePlaneMemoryInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BindImagePlaneMemoryInfo, 'a; zeroed chained);
 impl<'a> BindImagePlaneMemoryInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `planeAspect`.
     #[inline]
     pub fn plane_aspect(mut self, value: vk::ImageAspectFlags) -> Self {
         self.raw.plane_aspect = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindImagePlaneMemoryInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindImagePlaneMemoryInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BindImagePlaneMemoryInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BindImagePlaneMemoryInfo<'a> {
-    type Target = vk::BindImagePlaneMemoryInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImagePlaneMemoryInfo<'a> {}
@@ -1287,15 +677,8 @@ pub struct BindSparseInfo<'a> {
     raw: vk::BindSparseInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BindSparseInfo, 'a; zeroed chained);
 impl<'a> BindSparseInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pWaitSemaphores`.
     #[inline]
     pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
@@ -1334,44 +717,6 @@ impl<'a> BindSparseInfo<'a> {
         self.raw.p_signal_semaphores = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BindSparseInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BindSparseInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BindSparseInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BindSparseInfo<'a> {
-    type Target = vk::BindSparseInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BlitImageInfo2`].
 
@@ -1397,6 +742,7 @@ pub struct BlitImageInfo2<'a> {
     raw: vk::BlitImageInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BlitImageInfo2, 'a; chained);
 impl<'a> BlitImageInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -1445,39 +791,6 @@ impl<'a> BlitImageInfo2<'a> {
         self.raw.filter = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BlitImageInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BlitImageInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BlitImageInfo2<'a> {
-    type Target = vk::BlitImageInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BufferCopy2`].
 
@@ -1495,15 +808,8 @@ pub struct BufferCopy2<'a> {
     raw: vk::BufferCopy2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferCopy2, 'a; zeroed chained);
 impl<'a> BufferCopy2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcOffset`.
     #[inline]
     pub fn src_offset(mut self, value: vk::DeviceSize) -> Self {
@@ -1521,44 +827,6 @@ impl<'a> BufferCopy2<'a> {
     pub fn size(mut self, value: vk::DeviceSize) -> Self {
         self.raw.size = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferCopy2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferCopy2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BufferCopy2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BufferCopy2<'a> {
-    type Target = vk::BufferCopy2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::BufferCreateInfo`].
@@ -1582,15 +850,8 @@ pub struct BufferCreateInfo<'a> {
     raw: vk::BufferCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferCreateInfo, 'a; zeroed chained);
 impl<'a> BufferCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::BufferCreateFlags) -> Self {
@@ -1622,44 +883,6 @@ impl<'a> BufferCreateInfo<'a> {
         self.raw.p_queue_family_indices = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BufferCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BufferCreateInfo<'a> {
-    type Target = vk::BufferCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BufferDeviceAddressInfo`].
 
@@ -1678,6 +901,7 @@ pub struct BufferDeviceAddressInfo<'a> {
     raw: vk::BufferDeviceAddressInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferDeviceAddressInfo, 'a; chained);
 impl<'a> BufferDeviceAddressInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -1693,39 +917,6 @@ impl<'a> BufferDeviceAddressInfo<'a> {
     pub fn buffer(mut self, value: &'a Buffer) -> Self {
         self.raw.buffer = value.raw();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferDeviceAddressInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferDeviceAddressInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BufferDeviceAddressInfo<'a> {
-    type Target = vk::BufferDeviceAddressInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::BufferImageCopy2`].
@@ -1746,15 +937,8 @@ pub struct BufferImageCopy2<'a> {
     raw: vk::BufferImageCopy2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferImageCopy2, 'a; zeroed chained);
 impl<'a> BufferImageCopy2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `bufferOffset`.
     #[inline]
     pub fn buffer_offset(mut self, value: vk::DeviceSize) -> Self {
@@ -1791,44 +975,6 @@ impl<'a> BufferImageCopy2<'a> {
         self.raw.image_extent = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferImageCopy2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferImageCopy2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BufferImageCopy2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BufferImageCopy2<'a> {
-    type Target = vk::BufferImageCopy2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BufferMemoryBarrier`].
 
@@ -1847,6 +993,7 @@ pub struct BufferMemoryBarrier<'a> {
     raw: vk::BufferMemoryBarrier<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferMemoryBarrier, 'a; chained);
 impl<'a> BufferMemoryBarrier<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -1899,39 +1046,6 @@ impl<'a> BufferMemoryBarrier<'a> {
         self.raw.size = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferMemoryBarrier<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferMemoryBarrier<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BufferMemoryBarrier<'a> {
-    type Target = vk::BufferMemoryBarrier<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BufferMemoryBarrier2`].
 
@@ -1954,6 +1068,7 @@ pub struct BufferMemoryBarrier2<'a> {
     raw: vk::BufferMemoryBarrier2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferMemoryBarrier2, 'a; chained);
 impl<'a> BufferMemoryBarrier2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2018,39 +1133,6 @@ impl<'a> BufferMemoryBarrier2<'a> {
         self.raw.size = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferMemoryBarrier2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferMemoryBarrier2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BufferMemoryBarrier2<'a> {
-    type Target = vk::BufferMemoryBarrier2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BufferMemoryRequirementsInfo2`].
 
@@ -2067,6 +1149,7 @@ pub struct BufferMemoryRequirementsInfo2<'a> {
     raw: vk::BufferMemoryRequirementsInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferMemoryRequirementsInfo2, 'a; chained);
 impl<'a> BufferMemoryRequirementsInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2083,39 +1166,6 @@ impl<'a> BufferMemoryRequirementsInfo2<'a> {
         self.raw.buffer = value.raw();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferMemoryRequirementsInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferMemoryRequirementsInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BufferMemoryRequirementsInfo2<'a> {
-    type Target = vk::BufferMemoryRequirementsInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::BufferOpaqueCaptureAddressCreateInfo`].
 
@@ -2130,60 +1180,13 @@ pub struct BufferOpaqueCaptureAddressCreateInfo<'a> {
     raw: vk::BufferOpaqueCaptureAddressCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferOpaqueCaptureAddressCreateInfo, 'a; zeroed chained);
 impl<'a> BufferOpaqueCaptureAddressCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `opaqueCaptureAddress`.
     #[inline]
     pub fn opaque_capture_address(mut self, value: u64) -> Self {
         self.raw.opaque_capture_address = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferOpaqueCaptureAddressCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::BufferOpaqueCaptureAddressCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for BufferOpaqueCaptureAddressCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for BufferOpaqueCaptureAddressCreateInfo<'a> {
-    type Target = vk::BufferOpaqueCaptureAddressCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<BufferCreateInfo<'a>>
@@ -2208,6 +1211,7 @@ pub struct BufferViewCreateInfo<'a> {
     raw: vk::BufferViewCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(BufferViewCreateInfo, 'a; chained);
 impl<'a> BufferViewCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2248,39 +1252,6 @@ impl<'a> BufferViewCreateInfo<'a> {
         self.raw.range = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::BufferViewCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::BufferViewCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for BufferViewCreateInfo<'a> {
-    type Target = vk::BufferViewCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CommandBufferAllocateInfo`].
 
@@ -2298,6 +1269,7 @@ pub struct CommandBufferAllocateInfo<'a> {
     raw: vk::CommandBufferAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CommandBufferAllocateInfo, 'a; chained);
 impl<'a> CommandBufferAllocateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2326,39 +1298,6 @@ impl<'a> CommandBufferAllocateInfo<'a> {
         self.raw.command_buffer_count = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CommandBufferAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CommandBufferAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CommandBufferAllocateInfo<'a> {
-    type Target = vk::CommandBufferAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CommandBufferBeginInfo`].
 
@@ -2378,15 +1317,8 @@ pub struct CommandBufferBeginInfo<'a> {
     raw: vk::CommandBufferBeginInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CommandBufferBeginInfo, 'a; zeroed chained);
 impl<'a> CommandBufferBeginInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::CommandBufferUsageFlags) -> Self {
@@ -2405,44 +1337,6 @@ impl<'a> CommandBufferBeginInfo<'a> {
                 |value| value as *const CommandBufferInheritanceInfo<'a> as *const _,
             );
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CommandBufferBeginInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CommandBufferBeginInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for CommandBufferBeginInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for CommandBufferBeginInfo<'a> {
-    type Target = vk::CommandBufferBeginInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::CommandBufferInheritanceInfo`].
@@ -2463,15 +1357,8 @@ pub struct CommandBufferInheritanceInfo<'a> {
     raw: vk::CommandBufferInheritanceInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CommandBufferInheritanceInfo, 'a; zeroed chained);
 impl<'a> CommandBufferInheritanceInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `renderPass`.
     #[inline]
     pub fn render_pass(mut self, value: Option<&'a RenderPass>) -> Self {
@@ -2511,44 +1398,6 @@ impl<'a> CommandBufferInheritanceInfo<'a> {
         self.raw.pipeline_statistics = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CommandBufferInheritanceInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CommandBufferInheritanceInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for CommandBufferInheritanceInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for CommandBufferInheritanceInfo<'a> {
-    type Target = vk::CommandBufferInheritanceInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CommandBufferInheritanceRenderingInfo`].
 
@@ -2570,15 +1419,8 @@ pub struct CommandBufferInheritanceRenderingInfo<'a> {
     raw: vk::CommandBufferInheritanceRenderingInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CommandBufferInheritanceRenderingInfo, 'a; zeroed chained);
 impl<'a> CommandBufferInheritanceRenderingInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::RenderingFlags) -> Self {
@@ -2616,46 +1458,6 @@ impl<'a> CommandBufferInheritanceRenderingInfo<'a> {
         self.raw.rasterization_samples = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CommandBufferInheritanceRenderingInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::CommandBufferInheritanceRenderingInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for CommandBufferInheritanceRenderingInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for CommandBufferInheritanceRenderingInfo<'a> {
-    type Target = vk::CommandBufferInheritanceRenderingInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<CommandBufferInheritanceInfo<'a>>
 for CommandBufferInheritanceRenderingInfo<'a> {}
@@ -2677,6 +1479,7 @@ pub struct CommandBufferSubmitInfo<'a> {
     raw: vk::CommandBufferSubmitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CommandBufferSubmitInfo, 'a; chained);
 impl<'a> CommandBufferSubmitInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2699,39 +1502,6 @@ impl<'a> CommandBufferSubmitInfo<'a> {
         self.raw.device_mask = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CommandBufferSubmitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CommandBufferSubmitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CommandBufferSubmitInfo<'a> {
-    type Target = vk::CommandBufferSubmitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CommandPoolCreateInfo`].
 
@@ -2750,15 +1520,8 @@ pub struct CommandPoolCreateInfo<'a> {
     raw: vk::CommandPoolCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CommandPoolCreateInfo, 'a; zeroed chained);
 impl<'a> CommandPoolCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::CommandPoolCreateFlags) -> Self {
@@ -2770,44 +1533,6 @@ impl<'a> CommandPoolCreateInfo<'a> {
     pub fn queue_family_index(mut self, value: u32) -> Self {
         self.raw.queue_family_index = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CommandPoolCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CommandPoolCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for CommandPoolCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for CommandPoolCreateInfo<'a> {
-    type Target = vk::CommandPoolCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::ComputePipelineCreateInfo`].
@@ -2831,6 +1556,7 @@ pub struct ComputePipelineCreateInfo<'a> {
     raw: vk::ComputePipelineCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ComputePipelineCreateInfo, 'a; chained);
 impl<'a> ComputePipelineCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2875,39 +1601,6 @@ impl<'a> ComputePipelineCreateInfo<'a> {
         self.raw.base_pipeline_index = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ComputePipelineCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ComputePipelineCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ComputePipelineCreateInfo<'a> {
-    type Target = vk::ComputePipelineCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CopyBufferInfo2`].
 
@@ -2930,6 +1623,7 @@ pub struct CopyBufferInfo2<'a> {
     raw: vk::CopyBufferInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CopyBufferInfo2, 'a; chained);
 impl<'a> CopyBufferInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -2960,39 +1654,6 @@ impl<'a> CopyBufferInfo2<'a> {
         self.raw.p_regions = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CopyBufferInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CopyBufferInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CopyBufferInfo2<'a> {
-    type Target = vk::CopyBufferInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CopyBufferToImageInfo2`].
 
@@ -3016,6 +1677,7 @@ pub struct CopyBufferToImageInfo2<'a> {
     raw: vk::CopyBufferToImageInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CopyBufferToImageInfo2, 'a; chained);
 impl<'a> CopyBufferToImageInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -3052,39 +1714,6 @@ impl<'a> CopyBufferToImageInfo2<'a> {
         self.raw.p_regions = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CopyBufferToImageInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CopyBufferToImageInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CopyBufferToImageInfo2<'a> {
-    type Target = vk::CopyBufferToImageInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CopyDescriptorSet`].
 
@@ -3105,6 +1734,7 @@ pub struct CopyDescriptorSet<'a> {
     raw: vk::CopyDescriptorSet<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CopyDescriptorSet, 'a; chained);
 impl<'a> CopyDescriptorSet<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -3158,39 +1788,6 @@ impl<'a> CopyDescriptorSet<'a> {
         self.raw.descriptor_count = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CopyDescriptorSet<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CopyDescriptorSet<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CopyDescriptorSet<'a> {
-    type Target = vk::CopyDescriptorSet<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CopyImageInfo2`].
 
@@ -3215,6 +1812,7 @@ pub struct CopyImageInfo2<'a> {
     raw: vk::CopyImageInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CopyImageInfo2, 'a; chained);
 impl<'a> CopyImageInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -3257,39 +1855,6 @@ impl<'a> CopyImageInfo2<'a> {
         self.raw.p_regions = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CopyImageInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CopyImageInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CopyImageInfo2<'a> {
-    type Target = vk::CopyImageInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::CopyImageToBufferInfo2`].
 
@@ -3313,6 +1878,7 @@ pub struct CopyImageToBufferInfo2<'a> {
     raw: vk::CopyImageToBufferInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(CopyImageToBufferInfo2, 'a; chained);
 impl<'a> CopyImageToBufferInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -3349,39 +1915,6 @@ impl<'a> CopyImageToBufferInfo2<'a> {
         self.raw.p_regions = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::CopyImageToBufferInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::CopyImageToBufferInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for CopyImageToBufferInfo2<'a> {
-    type Target = vk::CopyImageToBufferInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DebugUtilsLabelEXT`].
 
@@ -3399,6 +1932,7 @@ pub struct DebugUtilsLabelEXT<'a> {
     raw: vk::DebugUtilsLabelEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(#[cfg(feature = "ext_debug_utils")] DebugUtilsLabelEXT, 'a; chained);
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsLabelEXT<'a> {
     /// A struct with its required members set and every other member zero or
@@ -3421,40 +1955,6 @@ impl<'a> DebugUtilsLabelEXT<'a> {
     pub fn color(mut self, value: [f32; 4usize]) -> Self {
         self.raw.color = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DebugUtilsLabelEXT<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DebugUtilsLabelEXT<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'a> core::ops::Deref for DebugUtilsLabelEXT<'a> {
-    type Target = vk::DebugUtilsLabelEXT<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::DebugUtilsMessengerCallbackDataEXT`].
@@ -3479,6 +1979,9 @@ pub struct DebugUtilsMessengerCallbackDataEXT<'a> {
     raw: vk::DebugUtilsMessengerCallbackDataEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "ext_debug_utils")] DebugUtilsMessengerCallbackDataEXT, 'a; chained
+);
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
     /// A struct with its required members set and every other member zero or
@@ -3535,42 +2038,6 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
         self.raw.p_objects = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DebugUtilsMessengerCallbackDataEXT<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DebugUtilsMessengerCallbackDataEXT<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'a> core::ops::Deref for DebugUtilsMessengerCallbackDataEXT<'a> {
-    type Target = vk::DebugUtilsMessengerCallbackDataEXT<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DebugUtilsMessengerCreateInfoEXT`].
 
@@ -3594,16 +2061,12 @@ pub struct DebugUtilsMessengerCreateInfoEXT<'a> {
     raw: vk::DebugUtilsMessengerCreateInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "ext_debug_utils")] DebugUtilsMessengerCreateInfoEXT, 'a; zeroed
+    chained
+);
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::DebugUtilsMessengerCreateFlagsEXT) -> Self {
@@ -3640,48 +2103,6 @@ impl<'a> DebugUtilsMessengerCreateInfoEXT<'a> {
         self.raw.p_user_data = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DebugUtilsMessengerCreateInfoEXT<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DebugUtilsMessengerCreateInfoEXT<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Default for DebugUtilsMessengerCreateInfoEXT<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'a> core::ops::Deref for DebugUtilsMessengerCreateInfoEXT<'a> {
-    type Target = vk::DebugUtilsMessengerCreateInfoEXT<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 #[cfg(feature = "ext_debug_utils")]
 unsafe impl<'a> Extends<InstanceCreateInfo<'a>>
@@ -3704,16 +2125,11 @@ pub struct DebugUtilsObjectNameInfoEXT<'a> {
     raw: vk::DebugUtilsObjectNameInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "ext_debug_utils")] DebugUtilsObjectNameInfoEXT, 'a; zeroed chained
+);
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsObjectNameInfoEXT<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `objectType`.
     #[inline]
     pub fn object_type(mut self, value: vk::ObjectType) -> Self {
@@ -3731,46 +2147,6 @@ impl<'a> DebugUtilsObjectNameInfoEXT<'a> {
     pub fn object_name(mut self, value: Option<&'a core::ffi::CStr>) -> Self {
         self.raw.p_object_name = value.map_or(core::ptr::null(), |s| s.as_ptr());
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DebugUtilsObjectNameInfoEXT<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DebugUtilsObjectNameInfoEXT<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Default for DebugUtilsObjectNameInfoEXT<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'a> core::ops::Deref for DebugUtilsObjectNameInfoEXT<'a> {
-    type Target = vk::DebugUtilsObjectNameInfoEXT<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 #[cfg(feature = "ext_debug_utils")]
@@ -3796,16 +2172,11 @@ pub struct DebugUtilsObjectTagInfoEXT<'a> {
     raw: vk::DebugUtilsObjectTagInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "ext_debug_utils")] DebugUtilsObjectTagInfoEXT, 'a; zeroed chained
+);
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsObjectTagInfoEXT<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `objectType`.
     #[inline]
     pub fn object_type(mut self, value: vk::ObjectType) -> Self {
@@ -3831,46 +2202,6 @@ impl<'a> DebugUtilsObjectTagInfoEXT<'a> {
         self.raw.p_tag = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DebugUtilsObjectTagInfoEXT<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DebugUtilsObjectTagInfoEXT<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Default for DebugUtilsObjectTagInfoEXT<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'a> core::ops::Deref for DebugUtilsObjectTagInfoEXT<'a> {
-    type Target = vk::DebugUtilsObjectTagInfoEXT<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DependencyInfo`].
 
@@ -3890,15 +2221,8 @@ pub struct DependencyInfo<'a> {
     raw: vk::DependencyInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DependencyInfo, 'a; zeroed chained);
 impl<'a> DependencyInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `dependencyFlags`.
     #[inline]
     pub fn dependency_flags(mut self, value: vk::DependencyFlags) -> Self {
@@ -3932,44 +2256,6 @@ impl<'a> DependencyInfo<'a> {
         self.raw.p_image_memory_barriers = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DependencyInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DependencyInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DependencyInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DependencyInfo<'a> {
-    type Target = vk::DependencyInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DescriptorBufferInfo`].
 
@@ -3986,15 +2272,8 @@ pub struct DescriptorBufferInfo<'a> {
     raw: vk::DescriptorBufferInfo,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorBufferInfo; zeroed);
 impl<'a> DescriptorBufferInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `buffer`.
     #[inline]
     pub fn buffer(mut self, value: Option<&'a Buffer>) -> Self {
@@ -4013,29 +2292,6 @@ impl<'a> DescriptorBufferInfo<'a> {
         self.raw.range = value;
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorBufferInfo {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorBufferInfo {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorBufferInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorBufferInfo<'a> {
-    type Target = vk::DescriptorBufferInfo;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DescriptorImageInfo`].
 
@@ -4052,6 +2308,7 @@ pub struct DescriptorImageInfo<'a> {
     raw: vk::DescriptorImageInfo,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorImageInfo;);
 impl<'a> DescriptorImageInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -4081,24 +2338,6 @@ impl<'a> DescriptorImageInfo<'a> {
         self.raw.image_layout = value;
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorImageInfo {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorImageInfo {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for DescriptorImageInfo<'a> {
-    type Target = vk::DescriptorImageInfo;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DescriptorPoolCreateInfo`].
 
@@ -4119,15 +2358,8 @@ pub struct DescriptorPoolCreateInfo<'a> {
     raw: vk::DescriptorPoolCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorPoolCreateInfo, 'a; zeroed chained);
 impl<'a> DescriptorPoolCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::DescriptorPoolCreateFlags) -> Self {
@@ -4147,44 +2379,6 @@ impl<'a> DescriptorPoolCreateInfo<'a> {
         self.raw.p_pool_sizes = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorPoolCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorPoolCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorPoolCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorPoolCreateInfo<'a> {
-    type Target = vk::DescriptorPoolCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DescriptorPoolInlineUniformBlockCreateInfo`].
 
@@ -4199,60 +2393,13 @@ pub struct DescriptorPoolInlineUniformBlockCreateInfo<'a> {
     raw: vk::DescriptorPoolInlineUniformBlockCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorPoolInlineUniformBlockCreateInfo, 'a; zeroed chained);
 impl<'a> DescriptorPoolInlineUniformBlockCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `maxInlineUniformBlockBindings`.
     #[inline]
     pub fn max_inline_uniform_block_bindings(mut self, value: u32) -> Self {
         self.raw.max_inline_uniform_block_bindings = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorPoolInlineUniformBlockCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DescriptorPoolInlineUniformBlockCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorPoolInlineUniformBlockCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorPoolInlineUniformBlockCreateInfo<'a> {
-    type Target = vk::DescriptorPoolInlineUniformBlockCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<DescriptorPoolCreateInfo<'a>>
@@ -4278,6 +2425,7 @@ pub struct DescriptorSetAllocateInfo<'a> {
     raw: vk::DescriptorSetAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorSetAllocateInfo, 'a; chained);
 impl<'a> DescriptorSetAllocateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -4304,39 +2452,6 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
         self.raw.p_set_layouts = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorSetAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetAllocateInfo<'a> {
-    type Target = vk::DescriptorSetAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DescriptorSetLayoutBinding`].
 
@@ -4353,15 +2468,8 @@ pub struct DescriptorSetLayoutBinding<'a> {
     raw: vk::DescriptorSetLayoutBinding<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorSetLayoutBinding, 'a; zeroed);
 impl<'a> DescriptorSetLayoutBinding<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `binding`.
     #[inline]
     pub fn binding(mut self, value: u32) -> Self {
@@ -4397,29 +2505,6 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
         self.raw.p_immutable_samplers = value.as_ptr().cast();
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetLayoutBinding<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorSetLayoutBinding<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorSetLayoutBinding<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetLayoutBinding<'a> {
-    type Target = vk::DescriptorSetLayoutBinding<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DescriptorSetLayoutBindingFlagsCreateInfo`].
 
@@ -4437,61 +2522,14 @@ pub struct DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
     raw: vk::DescriptorSetLayoutBindingFlagsCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorSetLayoutBindingFlagsCreateInfo, 'a; zeroed chained);
 impl<'a> DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pBindingFlags`.
     #[inline]
     pub fn binding_flags(mut self, value: &'a [vk::DescriptorBindingFlags]) -> Self {
         self.raw.binding_count = value.len() as _;
         self.raw.p_binding_flags = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorSetLayoutBindingFlagsCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
-    type Target = vk::DescriptorSetLayoutBindingFlagsCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<DescriptorSetLayoutCreateInfo<'a>>
@@ -4515,15 +2553,8 @@ pub struct DescriptorSetLayoutCreateInfo<'a> {
     raw: vk::DescriptorSetLayoutCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorSetLayoutCreateInfo, 'a; zeroed chained);
 impl<'a> DescriptorSetLayoutCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::DescriptorSetLayoutCreateFlags) -> Self {
@@ -4536,44 +2567,6 @@ impl<'a> DescriptorSetLayoutCreateInfo<'a> {
         self.raw.binding_count = value.len() as _;
         self.raw.p_bindings = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetLayoutCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorSetLayoutCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorSetLayoutCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetLayoutCreateInfo<'a> {
-    type Target = vk::DescriptorSetLayoutCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::DescriptorSetLayoutSupport`].
@@ -4591,54 +2584,7 @@ pub struct DescriptorSetLayoutSupport<'a> {
     raw: vk::DescriptorSetLayoutSupport<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> DescriptorSetLayoutSupport<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetLayoutSupport<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DescriptorSetLayoutSupport<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorSetLayoutSupport<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetLayoutSupport<'a> {
-    type Target = vk::DescriptorSetLayoutSupport<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(DescriptorSetLayoutSupport, 'a; zeroed chained);
 /**Safe counterpart of [`vk::DescriptorSetVariableDescriptorCountAllocateInfo`].
 
 # Valid usage
@@ -4655,61 +2601,14 @@ pub struct DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
     raw: vk::DescriptorSetVariableDescriptorCountAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorSetVariableDescriptorCountAllocateInfo, 'a; zeroed chained);
 impl<'a> DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pDescriptorCounts`.
     #[inline]
     pub fn descriptor_counts(mut self, value: &'a [u32]) -> Self {
         self.raw.descriptor_set_count = value.len() as _;
         self.raw.p_descriptor_counts = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorSetVariableDescriptorCountAllocateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
-    type Target = vk::DescriptorSetVariableDescriptorCountAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<DescriptorSetAllocateInfo<'a>>
@@ -4727,56 +2626,7 @@ pub struct DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
     raw: vk::DescriptorSetVariableDescriptorCountLayoutSupport<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DescriptorSetVariableDescriptorCountLayoutSupport<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
-    type Target = vk::DescriptorSetVariableDescriptorCountLayoutSupport<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(DescriptorSetVariableDescriptorCountLayoutSupport, 'a; zeroed chained);
 unsafe impl<'a> Extends<DescriptorSetLayoutSupport<'a>>
 for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 /**Safe counterpart of [`vk::DescriptorUpdateTemplateCreateInfo`].
@@ -4800,6 +2650,7 @@ pub struct DescriptorUpdateTemplateCreateInfo<'a> {
     raw: vk::DescriptorUpdateTemplateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DescriptorUpdateTemplateCreateInfo, 'a; chained);
 impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -4860,41 +2711,6 @@ impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
         self.raw.set = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DescriptorUpdateTemplateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DescriptorUpdateTemplateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for DescriptorUpdateTemplateCreateInfo<'a> {
-    type Target = vk::DescriptorUpdateTemplateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DeviceBufferMemoryRequirements`].
 
@@ -4911,6 +2727,7 @@ pub struct DeviceBufferMemoryRequirements<'a> {
     raw: vk::DeviceBufferMemoryRequirements<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceBufferMemoryRequirements, 'a; chained);
 impl<'a> DeviceBufferMemoryRequirements<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -4929,39 +2746,6 @@ impl<'a> DeviceBufferMemoryRequirements<'a> {
     pub fn create_info(mut self, value: &'a BufferCreateInfo<'a>) -> Self {
         self.raw.p_create_info = value as *const BufferCreateInfo<'a> as *const _;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceBufferMemoryRequirements<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceBufferMemoryRequirements<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for DeviceBufferMemoryRequirements<'a> {
-    type Target = vk::DeviceBufferMemoryRequirements<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::DeviceCreateInfo`].
@@ -4989,15 +2773,8 @@ pub struct DeviceCreateInfo<'a> {
     raw: vk::DeviceCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceCreateInfo, 'a; zeroed chained);
 impl<'a> DeviceCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::DeviceCreateFlags) -> Self {
@@ -5031,44 +2808,6 @@ impl<'a> DeviceCreateInfo<'a> {
             );
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceCreateInfo<'a> {
-    type Target = vk::DeviceCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DeviceGroupBindSparseInfo`].
 
@@ -5085,15 +2824,8 @@ pub struct DeviceGroupBindSparseInfo<'a> {
     raw: vk::DeviceGroupBindSparseInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceGroupBindSparseInfo, 'a; zeroed chained);
 impl<'a> DeviceGroupBindSparseInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `resourceDeviceIndex`.
     #[inline]
     pub fn resource_device_index(mut self, value: u32) -> Self {
@@ -5105,44 +2837,6 @@ impl<'a> DeviceGroupBindSparseInfo<'a> {
     pub fn memory_device_index(mut self, value: u32) -> Self {
         self.raw.memory_device_index = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupBindSparseInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupBindSparseInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceGroupBindSparseInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceGroupBindSparseInfo<'a> {
-    type Target = vk::DeviceGroupBindSparseInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<BindSparseInfo<'a>> for DeviceGroupBindSparseInfo<'a> {}
@@ -5161,60 +2855,13 @@ pub struct DeviceGroupCommandBufferBeginInfo<'a> {
     raw: vk::DeviceGroupCommandBufferBeginInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceGroupCommandBufferBeginInfo, 'a; zeroed chained);
 impl<'a> DeviceGroupCommandBufferBeginInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `deviceMask`.
     #[inline]
     pub fn device_mask(mut self, value: u32) -> Self {
         self.raw.device_mask = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupCommandBufferBeginInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DeviceGroupCommandBufferBeginInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceGroupCommandBufferBeginInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceGroupCommandBufferBeginInfo<'a> {
-    type Target = vk::DeviceGroupCommandBufferBeginInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<CommandBufferBeginInfo<'a>>
@@ -5235,15 +2882,8 @@ pub struct DeviceGroupDeviceCreateInfo<'a> {
     raw: vk::DeviceGroupDeviceCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceGroupDeviceCreateInfo, 'a; zeroed chained);
 impl<'a> DeviceGroupDeviceCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pPhysicalDevices`.
     #[inline]
     pub fn physical_devices(
@@ -5253,44 +2893,6 @@ impl<'a> DeviceGroupDeviceCreateInfo<'a> {
         self.raw.physical_device_count = value.len() as _;
         self.raw.p_physical_devices = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupDeviceCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupDeviceCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceGroupDeviceCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceGroupDeviceCreateInfo<'a> {
-    type Target = vk::DeviceGroupDeviceCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DeviceGroupDeviceCreateInfo<'a> {}
@@ -5309,59 +2911,10 @@ pub struct DeviceGroupPresentCapabilitiesKHR<'a> {
     raw: vk::DeviceGroupPresentCapabilitiesKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
-#[cfg(feature = "khr_swapchain")]
-impl<'a> DeviceGroupPresentCapabilitiesKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupPresentCapabilitiesKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DeviceGroupPresentCapabilitiesKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Default for DeviceGroupPresentCapabilitiesKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for DeviceGroupPresentCapabilitiesKHR<'a> {
-    type Target = vk::DeviceGroupPresentCapabilitiesKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(
+    #[cfg(feature = "khr_swapchain")] DeviceGroupPresentCapabilitiesKHR, 'a; zeroed
+    chained
+);
 /**Safe counterpart of [`vk::DeviceGroupPresentInfoKHR`].
 
 # Valid usage
@@ -5380,16 +2933,11 @@ pub struct DeviceGroupPresentInfoKHR<'a> {
     raw: vk::DeviceGroupPresentInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_swapchain")] DeviceGroupPresentInfoKHR, 'a; zeroed chained
+);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> DeviceGroupPresentInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pDeviceMasks`.
     #[inline]
     pub fn device_masks(mut self, value: &'a [u32]) -> Self {
@@ -5402,46 +2950,6 @@ impl<'a> DeviceGroupPresentInfoKHR<'a> {
     pub fn mode(mut self, value: vk::DeviceGroupPresentModeFlagsKHR) -> Self {
         self.raw.mode = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupPresentInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupPresentInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Default for DeviceGroupPresentInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for DeviceGroupPresentInfoKHR<'a> {
-    type Target = vk::DeviceGroupPresentInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 #[cfg(feature = "khr_swapchain")]
@@ -5463,15 +2971,8 @@ pub struct DeviceGroupRenderPassBeginInfo<'a> {
     raw: vk::DeviceGroupRenderPassBeginInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceGroupRenderPassBeginInfo, 'a; zeroed chained);
 impl<'a> DeviceGroupRenderPassBeginInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `deviceMask`.
     #[inline]
     pub fn device_mask(mut self, value: u32) -> Self {
@@ -5484,44 +2985,6 @@ impl<'a> DeviceGroupRenderPassBeginInfo<'a> {
         self.raw.device_render_area_count = value.len() as _;
         self.raw.p_device_render_areas = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupRenderPassBeginInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupRenderPassBeginInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceGroupRenderPassBeginInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceGroupRenderPassBeginInfo<'a> {
-    type Target = vk::DeviceGroupRenderPassBeginInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for DeviceGroupRenderPassBeginInfo<'a> {}
@@ -5544,15 +3007,8 @@ pub struct DeviceGroupSubmitInfo<'a> {
     raw: vk::DeviceGroupSubmitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceGroupSubmitInfo, 'a; zeroed chained);
 impl<'a> DeviceGroupSubmitInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pWaitSemaphoreDeviceIndices`.
     #[inline]
     pub fn wait_semaphore_device_indices(mut self, value: &'a [u32]) -> Self {
@@ -5574,44 +3030,6 @@ impl<'a> DeviceGroupSubmitInfo<'a> {
         self.raw.p_signal_semaphore_device_indices = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupSubmitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceGroupSubmitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceGroupSubmitInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceGroupSubmitInfo<'a> {
-    type Target = vk::DeviceGroupSubmitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<SubmitInfo<'a>> for DeviceGroupSubmitInfo<'a> {}
 /**Safe counterpart of [`vk::DeviceGroupSwapchainCreateInfoKHR`].
@@ -5630,63 +3048,17 @@ pub struct DeviceGroupSwapchainCreateInfoKHR<'a> {
     raw: vk::DeviceGroupSwapchainCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_swapchain")] DeviceGroupSwapchainCreateInfoKHR, 'a; zeroed
+    chained
+);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> DeviceGroupSwapchainCreateInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `modes`.
     #[inline]
     pub fn modes(mut self, value: vk::DeviceGroupPresentModeFlagsKHR) -> Self {
         self.raw.modes = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceGroupSwapchainCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DeviceGroupSwapchainCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Default for DeviceGroupSwapchainCreateInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for DeviceGroupSwapchainCreateInfoKHR<'a> {
-    type Target = vk::DeviceGroupSwapchainCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 #[cfg(feature = "khr_swapchain")]
@@ -5711,6 +3083,7 @@ pub struct DeviceImageMemoryRequirements<'a> {
     raw: vk::DeviceImageMemoryRequirements<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceImageMemoryRequirements, 'a; chained);
 impl<'a> DeviceImageMemoryRequirements<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -5736,39 +3109,6 @@ impl<'a> DeviceImageMemoryRequirements<'a> {
         self.raw.plane_aspect = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceImageMemoryRequirements<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceImageMemoryRequirements<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for DeviceImageMemoryRequirements<'a> {
-    type Target = vk::DeviceImageMemoryRequirements<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DeviceMemoryOpaqueCaptureAddressInfo`].
 
@@ -5787,6 +3127,7 @@ pub struct DeviceMemoryOpaqueCaptureAddressInfo<'a> {
     raw: vk::DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceMemoryOpaqueCaptureAddressInfo, 'a; chained);
 impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -5803,41 +3144,6 @@ impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
         self.raw.memory = value.raw();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceMemoryOpaqueCaptureAddressInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::DeviceMemoryOpaqueCaptureAddressInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for DeviceMemoryOpaqueCaptureAddressInfo<'a> {
-    type Target = vk::DeviceMemoryOpaqueCaptureAddressInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DevicePrivateDataCreateInfo`].
 
@@ -5852,58 +3158,13 @@ pub struct DevicePrivateDataCreateInfo<'a> {
     raw: vk::DevicePrivateDataCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DevicePrivateDataCreateInfo, 'a; zeroed chained);
 impl<'a> DevicePrivateDataCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `privateDataSlotRequestCount`.
     #[inline]
     pub fn private_data_slot_request_count(mut self, value: u32) -> Self {
         self.raw.private_data_slot_request_count = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DevicePrivateDataCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DevicePrivateDataCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DevicePrivateDataCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DevicePrivateDataCreateInfo<'a> {
-    type Target = vk::DevicePrivateDataCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DevicePrivateDataCreateInfo<'a> {}
@@ -5927,15 +3188,8 @@ pub struct DeviceQueueCreateInfo<'a> {
     raw: vk::DeviceQueueCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceQueueCreateInfo, 'a; zeroed chained);
 impl<'a> DeviceQueueCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::DeviceQueueCreateFlags) -> Self {
@@ -5955,44 +3209,6 @@ impl<'a> DeviceQueueCreateInfo<'a> {
         self.raw.p_queue_priorities = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceQueueCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceQueueCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceQueueCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceQueueCreateInfo<'a> {
-    type Target = vk::DeviceQueueCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::DeviceQueueInfo2`].
 
@@ -6011,15 +3227,8 @@ pub struct DeviceQueueInfo2<'a> {
     raw: vk::DeviceQueueInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(DeviceQueueInfo2, 'a; zeroed chained);
 impl<'a> DeviceQueueInfo2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::DeviceQueueCreateFlags) -> Self {
@@ -6037,44 +3246,6 @@ impl<'a> DeviceQueueInfo2<'a> {
     pub fn queue_index(mut self, value: u32) -> Self {
         self.raw.queue_index = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::DeviceQueueInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::DeviceQueueInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for DeviceQueueInfo2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for DeviceQueueInfo2<'a> {
-    type Target = vk::DeviceQueueInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::EventCreateInfo`].
@@ -6095,58 +3266,13 @@ pub struct EventCreateInfo<'a> {
     raw: vk::EventCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(EventCreateInfo, 'a; zeroed chained);
 impl<'a> EventCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::EventCreateFlags) -> Self {
         self.raw.flags = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::EventCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::EventCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for EventCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for EventCreateInfo<'a> {
-    type Target = vk::EventCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::ExportFenceCreateInfo`].
@@ -6165,58 +3291,13 @@ pub struct ExportFenceCreateInfo<'a> {
     raw: vk::ExportFenceCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ExportFenceCreateInfo, 'a; zeroed chained);
 impl<'a> ExportFenceCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleTypes`.
     #[inline]
     pub fn handle_types(mut self, value: vk::ExternalFenceHandleTypeFlags) -> Self {
         self.raw.handle_types = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExportFenceCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExportFenceCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExportFenceCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExportFenceCreateInfo<'a> {
-    type Target = vk::ExportFenceCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<FenceCreateInfo<'a>> for ExportFenceCreateInfo<'a> {}
@@ -6236,58 +3317,13 @@ pub struct ExportMemoryAllocateInfo<'a> {
     raw: vk::ExportMemoryAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ExportMemoryAllocateInfo, 'a; zeroed chained);
 impl<'a> ExportMemoryAllocateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleTypes`.
     #[inline]
     pub fn handle_types(mut self, value: vk::ExternalMemoryHandleTypeFlags) -> Self {
         self.raw.handle_types = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExportMemoryAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExportMemoryAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExportMemoryAllocateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExportMemoryAllocateInfo<'a> {
-    type Target = vk::ExportMemoryAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryAllocateInfo<'a> {}
@@ -6307,58 +3343,13 @@ pub struct ExportSemaphoreCreateInfo<'a> {
     raw: vk::ExportSemaphoreCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ExportSemaphoreCreateInfo, 'a; zeroed chained);
 impl<'a> ExportSemaphoreCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleTypes`.
     #[inline]
     pub fn handle_types(mut self, value: vk::ExternalSemaphoreHandleTypeFlags) -> Self {
         self.raw.handle_types = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExportSemaphoreCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExportSemaphoreCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExportSemaphoreCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExportSemaphoreCreateInfo<'a> {
-    type Target = vk::ExportSemaphoreCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<SemaphoreCreateInfo<'a>> for ExportSemaphoreCreateInfo<'a> {}
@@ -6376,54 +3367,7 @@ pub struct ExternalBufferProperties<'a> {
     raw: vk::ExternalBufferProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> ExternalBufferProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExternalBufferProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExternalBufferProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExternalBufferProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExternalBufferProperties<'a> {
-    type Target = vk::ExternalBufferProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(ExternalBufferProperties, 'a; zeroed chained);
 /**Safe counterpart of [`vk::ExternalFenceProperties`].
 
 # Valid usage
@@ -6438,54 +3382,7 @@ pub struct ExternalFenceProperties<'a> {
     raw: vk::ExternalFenceProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> ExternalFenceProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExternalFenceProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExternalFenceProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExternalFenceProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExternalFenceProperties<'a> {
-    type Target = vk::ExternalFenceProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(ExternalFenceProperties, 'a; zeroed chained);
 /**Safe counterpart of [`vk::ExternalImageFormatProperties`].
 
 # Valid usage
@@ -6499,54 +3396,7 @@ pub struct ExternalImageFormatProperties<'a> {
     raw: vk::ExternalImageFormatProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> ExternalImageFormatProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExternalImageFormatProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExternalImageFormatProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExternalImageFormatProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExternalImageFormatProperties<'a> {
-    type Target = vk::ExternalImageFormatProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(ExternalImageFormatProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<ImageFormatProperties2<'a>>
 for ExternalImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::ExternalMemoryBufferCreateInfo`].
@@ -6563,58 +3413,13 @@ pub struct ExternalMemoryBufferCreateInfo<'a> {
     raw: vk::ExternalMemoryBufferCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ExternalMemoryBufferCreateInfo, 'a; zeroed chained);
 impl<'a> ExternalMemoryBufferCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleTypes`.
     #[inline]
     pub fn handle_types(mut self, value: vk::ExternalMemoryHandleTypeFlags) -> Self {
         self.raw.handle_types = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExternalMemoryBufferCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExternalMemoryBufferCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExternalMemoryBufferCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExternalMemoryBufferCreateInfo<'a> {
-    type Target = vk::ExternalMemoryBufferCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<BufferCreateInfo<'a>> for ExternalMemoryBufferCreateInfo<'a> {}
@@ -6632,58 +3437,13 @@ pub struct ExternalMemoryImageCreateInfo<'a> {
     raw: vk::ExternalMemoryImageCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ExternalMemoryImageCreateInfo, 'a; zeroed chained);
 impl<'a> ExternalMemoryImageCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleTypes`.
     #[inline]
     pub fn handle_types(mut self, value: vk::ExternalMemoryHandleTypeFlags) -> Self {
         self.raw.handle_types = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExternalMemoryImageCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExternalMemoryImageCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExternalMemoryImageCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExternalMemoryImageCreateInfo<'a> {
-    type Target = vk::ExternalMemoryImageCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ExternalMemoryImageCreateInfo<'a> {}
@@ -6701,54 +3461,7 @@ pub struct ExternalSemaphoreProperties<'a> {
     raw: vk::ExternalSemaphoreProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> ExternalSemaphoreProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ExternalSemaphoreProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ExternalSemaphoreProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ExternalSemaphoreProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ExternalSemaphoreProperties<'a> {
-    type Target = vk::ExternalSemaphoreProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(ExternalSemaphoreProperties, 'a; zeroed chained);
 /**Safe counterpart of [`vk::FenceCreateInfo`].
 
 # Valid usage
@@ -6765,58 +3478,13 @@ pub struct FenceCreateInfo<'a> {
     raw: vk::FenceCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(FenceCreateInfo, 'a; zeroed chained);
 impl<'a> FenceCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::FenceCreateFlags) -> Self {
         self.raw.flags = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::FenceCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::FenceCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for FenceCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for FenceCreateInfo<'a> {
-    type Target = vk::FenceCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::FormatProperties2`].
@@ -6834,54 +3502,7 @@ pub struct FormatProperties2<'a> {
     raw: vk::FormatProperties2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> FormatProperties2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::FormatProperties2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::FormatProperties2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for FormatProperties2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for FormatProperties2<'a> {
-    type Target = vk::FormatProperties2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(FormatProperties2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::FormatProperties3`].
 
 # Valid usage
@@ -6895,54 +3516,7 @@ pub struct FormatProperties3<'a> {
     raw: vk::FormatProperties3<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> FormatProperties3<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::FormatProperties3<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::FormatProperties3<'a> {
-        &mut self.raw
-    }
-}
-impl Default for FormatProperties3<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for FormatProperties3<'a> {
-    type Target = vk::FormatProperties3<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(FormatProperties3, 'a; zeroed chained);
 unsafe impl<'a> Extends<FormatProperties2<'a>> for FormatProperties3<'a> {}
 /**Safe counterpart of [`vk::FramebufferAttachmentImageInfo`].
 
@@ -6962,15 +3536,8 @@ pub struct FramebufferAttachmentImageInfo<'a> {
     raw: vk::FramebufferAttachmentImageInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(FramebufferAttachmentImageInfo, 'a; zeroed chained);
 impl<'a> FramebufferAttachmentImageInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::ImageCreateFlags) -> Self {
@@ -7008,44 +3575,6 @@ impl<'a> FramebufferAttachmentImageInfo<'a> {
         self.raw.p_view_formats = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::FramebufferAttachmentImageInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::FramebufferAttachmentImageInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for FramebufferAttachmentImageInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for FramebufferAttachmentImageInfo<'a> {
-    type Target = vk::FramebufferAttachmentImageInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::FramebufferAttachmentsCreateInfo`].
 
@@ -7061,15 +3590,8 @@ pub struct FramebufferAttachmentsCreateInfo<'a> {
     raw: vk::FramebufferAttachmentsCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(FramebufferAttachmentsCreateInfo, 'a; zeroed chained);
 impl<'a> FramebufferAttachmentsCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pAttachmentImageInfos`.
     #[inline]
     pub fn attachment_image_infos(
@@ -7079,46 +3601,6 @@ impl<'a> FramebufferAttachmentsCreateInfo<'a> {
         self.raw.attachment_image_info_count = value.len() as _;
         self.raw.p_attachment_image_infos = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::FramebufferAttachmentsCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::FramebufferAttachmentsCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for FramebufferAttachmentsCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for FramebufferAttachmentsCreateInfo<'a> {
-    type Target = vk::FramebufferAttachmentsCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<FramebufferCreateInfo<'a>>
@@ -7143,6 +3625,7 @@ pub struct FramebufferCreateInfo<'a> {
     raw: vk::FramebufferCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(FramebufferCreateInfo, 'a; chained);
 impl<'a> FramebufferCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -7190,39 +3673,6 @@ impl<'a> FramebufferCreateInfo<'a> {
         self.raw.layers = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::FramebufferCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::FramebufferCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for FramebufferCreateInfo<'a> {
-    type Target = vk::FramebufferCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::GraphicsPipelineCreateInfo`].
 
@@ -7244,15 +3694,8 @@ pub struct GraphicsPipelineCreateInfo<'a> {
     raw: vk::GraphicsPipelineCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(GraphicsPipelineCreateInfo, 'a; zeroed chained);
 impl<'a> GraphicsPipelineCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineCreateFlags) -> Self {
@@ -7435,44 +3878,6 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
         self.raw.base_pipeline_index = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::GraphicsPipelineCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::GraphicsPipelineCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for GraphicsPipelineCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for GraphicsPipelineCreateInfo<'a> {
-    type Target = vk::GraphicsPipelineCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageBlit2`].
 
@@ -7493,15 +3898,8 @@ pub struct ImageBlit2<'a> {
     raw: vk::ImageBlit2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageBlit2, 'a; zeroed chained);
 impl<'a> ImageBlit2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcSubresource`.
     #[inline]
     pub fn src_subresource(mut self, value: vk::ImageSubresourceLayers) -> Self {
@@ -7526,44 +3924,6 @@ impl<'a> ImageBlit2<'a> {
         self.raw.dst_offsets = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageBlit2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageBlit2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageBlit2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageBlit2<'a> {
-    type Target = vk::ImageBlit2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageCopy2`].
 
@@ -7583,15 +3943,8 @@ pub struct ImageCopy2<'a> {
     raw: vk::ImageCopy2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageCopy2, 'a; zeroed chained);
 impl<'a> ImageCopy2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcSubresource`.
     #[inline]
     pub fn src_subresource(mut self, value: vk::ImageSubresourceLayers) -> Self {
@@ -7622,44 +3975,6 @@ impl<'a> ImageCopy2<'a> {
         self.raw.extent = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageCopy2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageCopy2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageCopy2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageCopy2<'a> {
-    type Target = vk::ImageCopy2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageCreateInfo`].
 
@@ -7687,15 +4002,8 @@ pub struct ImageCreateInfo<'a> {
     raw: vk::ImageCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageCreateInfo, 'a; zeroed chained);
 impl<'a> ImageCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::ImageCreateFlags) -> Self {
@@ -7769,44 +4077,6 @@ impl<'a> ImageCreateInfo<'a> {
         self.raw.initial_layout = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageCreateInfo<'a> {
-    type Target = vk::ImageCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageFormatListCreateInfo`].
 
@@ -7822,59 +4092,14 @@ pub struct ImageFormatListCreateInfo<'a> {
     raw: vk::ImageFormatListCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageFormatListCreateInfo, 'a; zeroed chained);
 impl<'a> ImageFormatListCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pViewFormats`.
     #[inline]
     pub fn view_formats(mut self, value: &'a [vk::Format]) -> Self {
         self.raw.view_format_count = value.len() as _;
         self.raw.p_view_formats = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageFormatListCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageFormatListCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageFormatListCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageFormatListCreateInfo<'a> {
-    type Target = vk::ImageFormatListCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageFormatListCreateInfo<'a> {}
@@ -7897,54 +4122,7 @@ pub struct ImageFormatProperties2<'a> {
     raw: vk::ImageFormatProperties2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> ImageFormatProperties2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageFormatProperties2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageFormatProperties2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageFormatProperties2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageFormatProperties2<'a> {
-    type Target = vk::ImageFormatProperties2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(ImageFormatProperties2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::ImageMemoryBarrier`].
 
 # Valid usage
@@ -7966,6 +4144,7 @@ pub struct ImageMemoryBarrier<'a> {
     raw: vk::ImageMemoryBarrier<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageMemoryBarrier, 'a; chained);
 impl<'a> ImageMemoryBarrier<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -8024,39 +4203,6 @@ impl<'a> ImageMemoryBarrier<'a> {
         self.raw.subresource_range = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageMemoryBarrier<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageMemoryBarrier<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ImageMemoryBarrier<'a> {
-    type Target = vk::ImageMemoryBarrier<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageMemoryBarrier2`].
 
@@ -8083,6 +4229,7 @@ pub struct ImageMemoryBarrier2<'a> {
     raw: vk::ImageMemoryBarrier2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageMemoryBarrier2, 'a; chained);
 impl<'a> ImageMemoryBarrier2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -8153,39 +4300,6 @@ impl<'a> ImageMemoryBarrier2<'a> {
         self.raw.subresource_range = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageMemoryBarrier2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageMemoryBarrier2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ImageMemoryBarrier2<'a> {
-    type Target = vk::ImageMemoryBarrier2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageMemoryRequirementsInfo2`].
 
@@ -8205,6 +4319,7 @@ pub struct ImageMemoryRequirementsInfo2<'a> {
     raw: vk::ImageMemoryRequirementsInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageMemoryRequirementsInfo2, 'a; chained);
 impl<'a> ImageMemoryRequirementsInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -8220,39 +4335,6 @@ impl<'a> ImageMemoryRequirementsInfo2<'a> {
     pub fn image(mut self, value: &'a Image) -> Self {
         self.raw.image = value.raw();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageMemoryRequirementsInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageMemoryRequirementsInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ImageMemoryRequirementsInfo2<'a> {
-    type Target = vk::ImageMemoryRequirementsInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::ImagePlaneMemoryRequirementsInfo`].
@@ -8271,60 +4353,13 @@ pub struct ImagePlaneMemoryRequirementsInfo<'a> {
     raw: vk::ImagePlaneMemoryRequirementsInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImagePlaneMemoryRequirementsInfo, 'a; zeroed chained);
 impl<'a> ImagePlaneMemoryRequirementsInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `planeAspect`.
     #[inline]
     pub fn plane_aspect(mut self, value: vk::ImageAspectFlags) -> Self {
         self.raw.plane_aspect = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImagePlaneMemoryRequirementsInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::ImagePlaneMemoryRequirementsInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImagePlaneMemoryRequirementsInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImagePlaneMemoryRequirementsInfo<'a> {
-    type Target = vk::ImagePlaneMemoryRequirementsInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<ImageMemoryRequirementsInfo2<'a>>
@@ -8347,15 +4382,8 @@ pub struct ImageResolve2<'a> {
     raw: vk::ImageResolve2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageResolve2, 'a; zeroed chained);
 impl<'a> ImageResolve2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcSubresource`.
     #[inline]
     pub fn src_subresource(mut self, value: vk::ImageSubresourceLayers) -> Self {
@@ -8386,44 +4414,6 @@ impl<'a> ImageResolve2<'a> {
         self.raw.extent = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageResolve2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageResolve2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageResolve2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageResolve2<'a> {
-    type Target = vk::ImageResolve2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageSparseMemoryRequirementsInfo2`].
 
@@ -8440,6 +4430,7 @@ pub struct ImageSparseMemoryRequirementsInfo2<'a> {
     raw: vk::ImageSparseMemoryRequirementsInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageSparseMemoryRequirementsInfo2, 'a; chained);
 impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -8455,41 +4446,6 @@ impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
     pub fn image(mut self, value: &'a Image) -> Self {
         self.raw.image = value.raw();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageSparseMemoryRequirementsInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::ImageSparseMemoryRequirementsInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ImageSparseMemoryRequirementsInfo2<'a> {
-    type Target = vk::ImageSparseMemoryRequirementsInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::ImageStencilUsageCreateInfo`].
@@ -8509,58 +4465,13 @@ pub struct ImageStencilUsageCreateInfo<'a> {
     raw: vk::ImageStencilUsageCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageStencilUsageCreateInfo, 'a; zeroed chained);
 impl<'a> ImageStencilUsageCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `stencilUsage`.
     #[inline]
     pub fn stencil_usage(mut self, value: vk::ImageUsageFlags) -> Self {
         self.raw.stencil_usage = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageStencilUsageCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageStencilUsageCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageStencilUsageCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageStencilUsageCreateInfo<'a> {
-    type Target = vk::ImageStencilUsageCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImageStencilUsageCreateInfo<'a> {}
@@ -8583,61 +4494,16 @@ pub struct ImageSwapchainCreateInfoKHR<'a> {
     raw: vk::ImageSwapchainCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_swapchain")] ImageSwapchainCreateInfoKHR, 'a; zeroed chained
+);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> ImageSwapchainCreateInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `swapchain`.
     #[inline]
     pub fn swapchain(mut self, value: Option<&'a SwapchainKHR>) -> Self {
         self.raw.swapchain = value.map_or(vk::SwapchainKHR::null(), |h| h.raw());
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageSwapchainCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageSwapchainCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Default for ImageSwapchainCreateInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for ImageSwapchainCreateInfoKHR<'a> {
-    type Target = vk::ImageSwapchainCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 #[cfg(feature = "khr_swapchain")]
@@ -8665,6 +4531,7 @@ pub struct ImageViewCreateInfo<'a> {
     raw: vk::ImageViewCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageViewCreateInfo, 'a; chained);
 impl<'a> ImageViewCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -8711,39 +4578,6 @@ impl<'a> ImageViewCreateInfo<'a> {
         self.raw.subresource_range = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageViewCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageViewCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ImageViewCreateInfo<'a> {
-    type Target = vk::ImageViewCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ImageViewUsageCreateInfo`].
 
@@ -8760,58 +4594,13 @@ pub struct ImageViewUsageCreateInfo<'a> {
     raw: vk::ImageViewUsageCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ImageViewUsageCreateInfo, 'a; zeroed chained);
 impl<'a> ImageViewUsageCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `usage`.
     #[inline]
     pub fn usage(mut self, value: vk::ImageUsageFlags) -> Self {
         self.raw.usage = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ImageViewUsageCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ImageViewUsageCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ImageViewUsageCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ImageViewUsageCreateInfo<'a> {
-    type Target = vk::ImageViewUsageCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for ImageViewUsageCreateInfo<'a> {}
@@ -8836,15 +4625,8 @@ pub struct InstanceCreateInfo<'a> {
     raw: vk::InstanceCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(InstanceCreateInfo, 'a; zeroed chained);
 impl<'a> InstanceCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::InstanceCreateFlags) -> Self {
@@ -8875,44 +4657,6 @@ impl<'a> InstanceCreateInfo<'a> {
         self.raw.pp_enabled_extension_names = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::InstanceCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::InstanceCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for InstanceCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for InstanceCreateInfo<'a> {
-    type Target = vk::InstanceCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::MappedMemoryRange`].
 
@@ -8931,6 +4675,7 @@ pub struct MappedMemoryRange<'a> {
     raw: vk::MappedMemoryRange<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MappedMemoryRange, 'a; chained);
 impl<'a> MappedMemoryRange<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -8959,39 +4704,6 @@ impl<'a> MappedMemoryRange<'a> {
         self.raw.size = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MappedMemoryRange<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MappedMemoryRange<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for MappedMemoryRange<'a> {
-    type Target = vk::MappedMemoryRange<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::MemoryAllocateFlagsInfo`].
 
@@ -9009,15 +4721,8 @@ pub struct MemoryAllocateFlagsInfo<'a> {
     raw: vk::MemoryAllocateFlagsInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MemoryAllocateFlagsInfo, 'a; zeroed chained);
 impl<'a> MemoryAllocateFlagsInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::MemoryAllocateFlags) -> Self {
@@ -9029,44 +4734,6 @@ impl<'a> MemoryAllocateFlagsInfo<'a> {
     pub fn device_mask(mut self, value: u32) -> Self {
         self.raw.device_mask = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryAllocateFlagsInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryAllocateFlagsInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryAllocateFlagsInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryAllocateFlagsInfo<'a> {
-    type Target = vk::MemoryAllocateFlagsInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryAllocateFlagsInfo<'a> {}
@@ -9087,15 +4754,8 @@ pub struct MemoryAllocateInfo<'a> {
     raw: vk::MemoryAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MemoryAllocateInfo, 'a; zeroed chained);
 impl<'a> MemoryAllocateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `allocationSize`.
     #[inline]
     pub fn allocation_size(mut self, value: vk::DeviceSize) -> Self {
@@ -9107,44 +4767,6 @@ impl<'a> MemoryAllocateInfo<'a> {
     pub fn memory_type_index(mut self, value: u32) -> Self {
         self.raw.memory_type_index = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryAllocateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryAllocateInfo<'a> {
-    type Target = vk::MemoryAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::MemoryBarrier`].
@@ -9163,15 +4785,8 @@ pub struct MemoryBarrier<'a> {
     raw: vk::MemoryBarrier<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MemoryBarrier, 'a; zeroed chained);
 impl<'a> MemoryBarrier<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcAccessMask`.
     #[inline]
     pub fn src_access_mask(mut self, value: vk::AccessFlags) -> Self {
@@ -9183,44 +4798,6 @@ impl<'a> MemoryBarrier<'a> {
     pub fn dst_access_mask(mut self, value: vk::AccessFlags) -> Self {
         self.raw.dst_access_mask = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryBarrier<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryBarrier<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryBarrier<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryBarrier<'a> {
-    type Target = vk::MemoryBarrier<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::MemoryBarrier2`].
@@ -9242,15 +4819,8 @@ pub struct MemoryBarrier2<'a> {
     raw: vk::MemoryBarrier2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MemoryBarrier2, 'a; zeroed chained);
 impl<'a> MemoryBarrier2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcStageMask`.
     #[inline]
     pub fn src_stage_mask(mut self, value: vk::PipelineStageFlags2) -> Self {
@@ -9275,44 +4845,6 @@ impl<'a> MemoryBarrier2<'a> {
         self.raw.dst_access_mask = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryBarrier2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryBarrier2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryBarrier2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryBarrier2<'a> {
-    type Target = vk::MemoryBarrier2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<SubpassDependency2<'a>> for MemoryBarrier2<'a> {}
 /**Safe counterpart of [`vk::MemoryDedicatedAllocateInfo`].
@@ -9333,15 +4865,8 @@ pub struct MemoryDedicatedAllocateInfo<'a> {
     raw: vk::MemoryDedicatedAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MemoryDedicatedAllocateInfo, 'a; zeroed chained);
 impl<'a> MemoryDedicatedAllocateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `image`.
     #[inline]
     pub fn image(mut self, value: Option<&'a Image>) -> Self {
@@ -9353,44 +4878,6 @@ impl<'a> MemoryDedicatedAllocateInfo<'a> {
     pub fn buffer(mut self, value: Option<&'a Buffer>) -> Self {
         self.raw.buffer = value.map_or(vk::Buffer::null(), |h| h.raw());
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryDedicatedAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryDedicatedAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryDedicatedAllocateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryDedicatedAllocateInfo<'a> {
-    type Target = vk::MemoryDedicatedAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryDedicatedAllocateInfo<'a> {}
@@ -9407,54 +4894,7 @@ pub struct MemoryDedicatedRequirements<'a> {
     raw: vk::MemoryDedicatedRequirements<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> MemoryDedicatedRequirements<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryDedicatedRequirements<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryDedicatedRequirements<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryDedicatedRequirements<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryDedicatedRequirements<'a> {
-    type Target = vk::MemoryDedicatedRequirements<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(MemoryDedicatedRequirements, 'a; zeroed chained);
 unsafe impl<'a> Extends<MemoryRequirements2<'a>> for MemoryDedicatedRequirements<'a> {}
 /**Safe counterpart of [`vk::MemoryOpaqueCaptureAddressAllocateInfo`].
 
@@ -9469,60 +4909,13 @@ pub struct MemoryOpaqueCaptureAddressAllocateInfo<'a> {
     raw: vk::MemoryOpaqueCaptureAddressAllocateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(MemoryOpaqueCaptureAddressAllocateInfo, 'a; zeroed chained);
 impl<'a> MemoryOpaqueCaptureAddressAllocateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `opaqueCaptureAddress`.
     #[inline]
     pub fn opaque_capture_address(mut self, value: u64) -> Self {
         self.raw.opaque_capture_address = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryOpaqueCaptureAddressAllocateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::MemoryOpaqueCaptureAddressAllocateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryOpaqueCaptureAddressAllocateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryOpaqueCaptureAddressAllocateInfo<'a> {
-    type Target = vk::MemoryOpaqueCaptureAddressAllocateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<MemoryAllocateInfo<'a>>
@@ -9542,54 +4935,7 @@ pub struct MemoryRequirements2<'a> {
     raw: vk::MemoryRequirements2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> MemoryRequirements2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MemoryRequirements2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MemoryRequirements2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for MemoryRequirements2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for MemoryRequirements2<'a> {
-    type Target = vk::MemoryRequirements2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(MemoryRequirements2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::MetalSurfaceCreateInfoEXT`].
 
 # Valid usage
@@ -9606,61 +4952,16 @@ pub struct MetalSurfaceCreateInfoEXT<'a> {
     raw: vk::MetalSurfaceCreateInfoEXT<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "ext_metal_surface")] MetalSurfaceCreateInfoEXT, 'a; zeroed chained
+);
 #[cfg(feature = "ext_metal_surface")]
 impl<'a> MetalSurfaceCreateInfoEXT<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::MetalSurfaceCreateFlagsEXT) -> Self {
         self.raw.flags = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::MetalSurfaceCreateInfoEXT<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::MetalSurfaceCreateInfoEXT<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "ext_metal_surface")]
-impl Default for MetalSurfaceCreateInfoEXT<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "ext_metal_surface")]
-impl<'a> core::ops::Deref for MetalSurfaceCreateInfoEXT<'a> {
-    type Target = vk::MetalSurfaceCreateInfoEXT<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PhysicalDevice16BitStorageFeatures`].
@@ -9676,15 +4977,8 @@ pub struct PhysicalDevice16BitStorageFeatures<'a> {
     raw: vk::PhysicalDevice16BitStorageFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDevice16BitStorageFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevice16BitStorageFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `storageBuffer16BitAccess`.
     #[inline]
     pub fn storage_buffer16_bit_access(mut self, value: vk::Bool32) -> Self {
@@ -9709,46 +5003,6 @@ impl<'a> PhysicalDevice16BitStorageFeatures<'a> {
         self.raw.storage_input_output16 = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDevice16BitStorageFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDevice16BitStorageFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDevice16BitStorageFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDevice16BitStorageFeatures<'a> {
-    type Target = vk::PhysicalDevice16BitStorageFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDevice16BitStorageFeatures<'a> {}
@@ -9767,15 +5021,8 @@ pub struct PhysicalDevice8BitStorageFeatures<'a> {
     raw: vk::PhysicalDevice8BitStorageFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDevice8BitStorageFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevice8BitStorageFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `storageBuffer8BitAccess`.
     #[inline]
     pub fn storage_buffer8_bit_access(mut self, value: vk::Bool32) -> Self {
@@ -9794,46 +5041,6 @@ impl<'a> PhysicalDevice8BitStorageFeatures<'a> {
         self.raw.storage_push_constant8 = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDevice8BitStorageFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDevice8BitStorageFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDevice8BitStorageFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDevice8BitStorageFeatures<'a> {
-    type Target = vk::PhysicalDevice8BitStorageFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDevice8BitStorageFeatures<'a> {}
@@ -9851,15 +5058,8 @@ pub struct PhysicalDeviceBufferDeviceAddressFeatures<'a> {
     raw: vk::PhysicalDeviceBufferDeviceAddressFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceBufferDeviceAddressFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceBufferDeviceAddressFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `bufferDeviceAddress`.
     #[inline]
     pub fn buffer_device_address(mut self, value: vk::Bool32) -> Self {
@@ -9877,46 +5077,6 @@ impl<'a> PhysicalDeviceBufferDeviceAddressFeatures<'a> {
     pub fn buffer_device_address_multi_device(mut self, value: vk::Bool32) -> Self {
         self.raw.buffer_device_address_multi_device = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceBufferDeviceAddressFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceBufferDeviceAddressFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceBufferDeviceAddressFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceBufferDeviceAddressFeatures<'a> {
-    type Target = vk::PhysicalDeviceBufferDeviceAddressFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -9936,56 +5096,7 @@ pub struct PhysicalDeviceDepthStencilResolveProperties<'a> {
     raw: vk::PhysicalDeviceDepthStencilResolveProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceDepthStencilResolveProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceDepthStencilResolveProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceDepthStencilResolveProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceDepthStencilResolveProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceDepthStencilResolveProperties<'a> {
-    type Target = vk::PhysicalDeviceDepthStencilResolveProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceDepthStencilResolveProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceDepthStencilResolveProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDescriptorIndexingFeatures`].
@@ -10001,15 +5112,8 @@ pub struct PhysicalDeviceDescriptorIndexingFeatures<'a> {
     raw: vk::PhysicalDeviceDescriptorIndexingFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceDescriptorIndexingFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderInputAttachmentArrayDynamicIndexing`.
     #[inline]
     pub fn shader_input_attachment_array_dynamic_indexing(
@@ -10184,46 +5288,6 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
         self.raw.runtime_descriptor_array = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceDescriptorIndexingFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceDescriptorIndexingFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceDescriptorIndexingFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceDescriptorIndexingFeatures<'a> {
-    type Target = vk::PhysicalDeviceDescriptorIndexingFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
@@ -10242,56 +5306,7 @@ pub struct PhysicalDeviceDescriptorIndexingProperties<'a> {
     raw: vk::PhysicalDeviceDescriptorIndexingProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceDescriptorIndexingProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceDescriptorIndexingProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceDescriptorIndexingProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceDescriptorIndexingProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceDescriptorIndexingProperties<'a> {
-    type Target = vk::PhysicalDeviceDescriptorIndexingProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceDescriptorIndexingProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceDescriptorIndexingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDriverProperties`].
@@ -10307,54 +5322,7 @@ pub struct PhysicalDeviceDriverProperties<'a> {
     raw: vk::PhysicalDeviceDriverProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceDriverProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceDriverProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceDriverProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceDriverProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceDriverProperties<'a> {
-    type Target = vk::PhysicalDeviceDriverProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceDriverProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceDriverProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceDynamicRenderingFeatures`].
@@ -10370,60 +5338,13 @@ pub struct PhysicalDeviceDynamicRenderingFeatures<'a> {
     raw: vk::PhysicalDeviceDynamicRenderingFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceDynamicRenderingFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceDynamicRenderingFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `dynamicRendering`.
     #[inline]
     pub fn dynamic_rendering(mut self, value: vk::Bool32) -> Self {
         self.raw.dynamic_rendering = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceDynamicRenderingFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceDynamicRenderingFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceDynamicRenderingFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceDynamicRenderingFeatures<'a> {
-    type Target = vk::PhysicalDeviceDynamicRenderingFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -10448,15 +5369,8 @@ pub struct PhysicalDeviceExternalBufferInfo<'a> {
     raw: vk::PhysicalDeviceExternalBufferInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceExternalBufferInfo, 'a; zeroed chained);
 impl<'a> PhysicalDeviceExternalBufferInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::BufferCreateFlags) -> Self {
@@ -10475,46 +5389,6 @@ impl<'a> PhysicalDeviceExternalBufferInfo<'a> {
         self.raw.handle_type = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceExternalBufferInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceExternalBufferInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceExternalBufferInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceExternalBufferInfo<'a> {
-    type Target = vk::PhysicalDeviceExternalBufferInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PhysicalDeviceExternalFenceInfo`].
 
@@ -10531,58 +5405,13 @@ pub struct PhysicalDeviceExternalFenceInfo<'a> {
     raw: vk::PhysicalDeviceExternalFenceInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceExternalFenceInfo, 'a; zeroed chained);
 impl<'a> PhysicalDeviceExternalFenceInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleType`.
     #[inline]
     pub fn handle_type(mut self, value: vk::ExternalFenceHandleTypeFlags) -> Self {
         self.raw.handle_type = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceExternalFenceInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceExternalFenceInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceExternalFenceInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceExternalFenceInfo<'a> {
-    type Target = vk::PhysicalDeviceExternalFenceInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PhysicalDeviceExternalImageFormatInfo`].
@@ -10599,60 +5428,13 @@ pub struct PhysicalDeviceExternalImageFormatInfo<'a> {
     raw: vk::PhysicalDeviceExternalImageFormatInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceExternalImageFormatInfo, 'a; zeroed chained);
 impl<'a> PhysicalDeviceExternalImageFormatInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleType`.
     #[inline]
     pub fn handle_type(mut self, value: vk::ExternalMemoryHandleTypeFlags) -> Self {
         self.raw.handle_type = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceExternalImageFormatInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceExternalImageFormatInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceExternalImageFormatInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceExternalImageFormatInfo<'a> {
-    type Target = vk::PhysicalDeviceExternalImageFormatInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceImageFormatInfo2<'a>>
@@ -10673,60 +5455,13 @@ pub struct PhysicalDeviceExternalSemaphoreInfo<'a> {
     raw: vk::PhysicalDeviceExternalSemaphoreInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceExternalSemaphoreInfo, 'a; zeroed chained);
 impl<'a> PhysicalDeviceExternalSemaphoreInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `handleType`.
     #[inline]
     pub fn handle_type(mut self, value: vk::ExternalSemaphoreHandleTypeFlags) -> Self {
         self.raw.handle_type = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceExternalSemaphoreInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceExternalSemaphoreInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceExternalSemaphoreInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceExternalSemaphoreInfo<'a> {
-    type Target = vk::PhysicalDeviceExternalSemaphoreInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PhysicalDeviceFeatures2`].
@@ -10742,58 +5477,13 @@ pub struct PhysicalDeviceFeatures2<'a> {
     raw: vk::PhysicalDeviceFeatures2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceFeatures2, 'a; zeroed chained);
 impl<'a> PhysicalDeviceFeatures2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `features`.
     #[inline]
     pub fn features(mut self, value: vk::PhysicalDeviceFeatures) -> Self {
         self.raw.features = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceFeatures2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceFeatures2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceFeatures2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceFeatures2<'a> {
-    type Target = vk::PhysicalDeviceFeatures2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceFeatures2<'a> {}
@@ -10810,56 +5500,7 @@ pub struct PhysicalDeviceFloatControlsProperties<'a> {
     raw: vk::PhysicalDeviceFloatControlsProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceFloatControlsProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceFloatControlsProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceFloatControlsProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceFloatControlsProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceFloatControlsProperties<'a> {
-    type Target = vk::PhysicalDeviceFloatControlsProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceFloatControlsProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceFloatControlsProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceGroupProperties`].
@@ -10876,54 +5517,7 @@ pub struct PhysicalDeviceGroupProperties<'a> {
     raw: vk::PhysicalDeviceGroupProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceGroupProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceGroupProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceGroupProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceGroupProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceGroupProperties<'a> {
-    type Target = vk::PhysicalDeviceGroupProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceGroupProperties, 'a; zeroed chained);
 /**Safe counterpart of [`vk::PhysicalDeviceHostQueryResetFeatures`].
 
 # Valid usage
@@ -10937,60 +5531,13 @@ pub struct PhysicalDeviceHostQueryResetFeatures<'a> {
     raw: vk::PhysicalDeviceHostQueryResetFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceHostQueryResetFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceHostQueryResetFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `hostQueryReset`.
     #[inline]
     pub fn host_query_reset(mut self, value: vk::Bool32) -> Self {
         self.raw.host_query_reset = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceHostQueryResetFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceHostQueryResetFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceHostQueryResetFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceHostQueryResetFeatures<'a> {
-    type Target = vk::PhysicalDeviceHostQueryResetFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -11010,54 +5557,7 @@ pub struct PhysicalDeviceIDProperties<'a> {
     raw: vk::PhysicalDeviceIDProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceIDProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceIDProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceIDProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceIDProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceIDProperties<'a> {
-    type Target = vk::PhysicalDeviceIDProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceIDProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceIDProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceImageFormatInfo2`].
@@ -11083,15 +5583,8 @@ pub struct PhysicalDeviceImageFormatInfo2<'a> {
     raw: vk::PhysicalDeviceImageFormatInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceImageFormatInfo2, 'a; zeroed chained);
 impl<'a> PhysicalDeviceImageFormatInfo2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `format`.
     #[inline]
     pub fn format(mut self, value: vk::Format) -> Self {
@@ -11122,44 +5615,6 @@ impl<'a> PhysicalDeviceImageFormatInfo2<'a> {
         self.raw.flags = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceImageFormatInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceImageFormatInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceImageFormatInfo2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceImageFormatInfo2<'a> {
-    type Target = vk::PhysicalDeviceImageFormatInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PhysicalDeviceImageRobustnessFeatures`].
 
@@ -11174,60 +5629,13 @@ pub struct PhysicalDeviceImageRobustnessFeatures<'a> {
     raw: vk::PhysicalDeviceImageRobustnessFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceImageRobustnessFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceImageRobustnessFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `robustImageAccess`.
     #[inline]
     pub fn robust_image_access(mut self, value: vk::Bool32) -> Self {
         self.raw.robust_image_access = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceImageRobustnessFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceImageRobustnessFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceImageRobustnessFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceImageRobustnessFeatures<'a> {
-    type Target = vk::PhysicalDeviceImageRobustnessFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -11247,60 +5655,13 @@ pub struct PhysicalDeviceImagelessFramebufferFeatures<'a> {
     raw: vk::PhysicalDeviceImagelessFramebufferFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceImagelessFramebufferFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceImagelessFramebufferFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `imagelessFramebuffer`.
     #[inline]
     pub fn imageless_framebuffer(mut self, value: vk::Bool32) -> Self {
         self.raw.imageless_framebuffer = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceImagelessFramebufferFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceImagelessFramebufferFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceImagelessFramebufferFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceImagelessFramebufferFeatures<'a> {
-    type Target = vk::PhysicalDeviceImagelessFramebufferFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -11320,15 +5681,8 @@ pub struct PhysicalDeviceInlineUniformBlockFeatures<'a> {
     raw: vk::PhysicalDeviceInlineUniformBlockFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceInlineUniformBlockFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceInlineUniformBlockFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `inlineUniformBlock`.
     #[inline]
     pub fn inline_uniform_block(mut self, value: vk::Bool32) -> Self {
@@ -11343,46 +5697,6 @@ impl<'a> PhysicalDeviceInlineUniformBlockFeatures<'a> {
     ) -> Self {
         self.raw.descriptor_binding_inline_uniform_block_update_after_bind = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceInlineUniformBlockFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceInlineUniformBlockFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceInlineUniformBlockFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceInlineUniformBlockFeatures<'a> {
-    type Target = vk::PhysicalDeviceInlineUniformBlockFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -11402,56 +5716,7 @@ pub struct PhysicalDeviceInlineUniformBlockProperties<'a> {
     raw: vk::PhysicalDeviceInlineUniformBlockProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceInlineUniformBlockProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceInlineUniformBlockProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceInlineUniformBlockProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceInlineUniformBlockProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceInlineUniformBlockProperties<'a> {
-    type Target = vk::PhysicalDeviceInlineUniformBlockProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceInlineUniformBlockProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceInlineUniformBlockProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance3Properties`].
@@ -11467,56 +5732,7 @@ pub struct PhysicalDeviceMaintenance3Properties<'a> {
     raw: vk::PhysicalDeviceMaintenance3Properties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceMaintenance3Properties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceMaintenance3Properties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceMaintenance3Properties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceMaintenance3Properties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceMaintenance3Properties<'a> {
-    type Target = vk::PhysicalDeviceMaintenance3Properties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceMaintenance3Properties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceMaintenance3Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMaintenance4Features`].
@@ -11532,60 +5748,13 @@ pub struct PhysicalDeviceMaintenance4Features<'a> {
     raw: vk::PhysicalDeviceMaintenance4Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceMaintenance4Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceMaintenance4Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `maintenance4`.
     #[inline]
     pub fn maintenance4(mut self, value: vk::Bool32) -> Self {
         self.raw.maintenance4 = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceMaintenance4Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceMaintenance4Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceMaintenance4Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceMaintenance4Features<'a> {
-    type Target = vk::PhysicalDeviceMaintenance4Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -11605,56 +5774,7 @@ pub struct PhysicalDeviceMaintenance4Properties<'a> {
     raw: vk::PhysicalDeviceMaintenance4Properties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceMaintenance4Properties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceMaintenance4Properties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceMaintenance4Properties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceMaintenance4Properties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceMaintenance4Properties<'a> {
-    type Target = vk::PhysicalDeviceMaintenance4Properties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceMaintenance4Properties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceMaintenance4Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceMemoryProperties2`].
@@ -11672,54 +5792,7 @@ pub struct PhysicalDeviceMemoryProperties2<'a> {
     raw: vk::PhysicalDeviceMemoryProperties2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceMemoryProperties2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceMemoryProperties2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceMemoryProperties2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceMemoryProperties2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceMemoryProperties2<'a> {
-    type Target = vk::PhysicalDeviceMemoryProperties2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceMemoryProperties2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::PhysicalDeviceMultiviewFeatures`].
 
 # Valid usage
@@ -11735,15 +5808,8 @@ pub struct PhysicalDeviceMultiviewFeatures<'a> {
     raw: vk::PhysicalDeviceMultiviewFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceMultiviewFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceMultiviewFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `multiview`.
     #[inline]
     pub fn multiview(mut self, value: vk::Bool32) -> Self {
@@ -11762,44 +5828,6 @@ impl<'a> PhysicalDeviceMultiviewFeatures<'a> {
         self.raw.multiview_tessellation_shader = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceMultiviewFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceMultiviewFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceMultiviewFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceMultiviewFeatures<'a> {
-    type Target = vk::PhysicalDeviceMultiviewFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceMultiviewFeatures<'a> {}
@@ -11817,56 +5845,7 @@ pub struct PhysicalDeviceMultiviewProperties<'a> {
     raw: vk::PhysicalDeviceMultiviewProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceMultiviewProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceMultiviewProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceMultiviewProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceMultiviewProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceMultiviewProperties<'a> {
-    type Target = vk::PhysicalDeviceMultiviewProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceMultiviewProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceMultiviewProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePipelineCreationCacheControlFeatures`].
@@ -11882,60 +5861,13 @@ pub struct PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
     raw: vk::PhysicalDevicePipelineCreationCacheControlFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDevicePipelineCreationCacheControlFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pipelineCreationCacheControl`.
     #[inline]
     pub fn pipeline_creation_cache_control(mut self, value: vk::Bool32) -> Self {
         self.raw.pipeline_creation_cache_control = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDevicePipelineCreationCacheControlFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
-    type Target = vk::PhysicalDevicePipelineCreationCacheControlFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -11955,56 +5887,7 @@ pub struct PhysicalDevicePointClippingProperties<'a> {
     raw: vk::PhysicalDevicePointClippingProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDevicePointClippingProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDevicePointClippingProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDevicePointClippingProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDevicePointClippingProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDevicePointClippingProperties<'a> {
-    type Target = vk::PhysicalDevicePointClippingProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDevicePointClippingProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDevicePointClippingProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDevicePrivateDataFeatures`].
@@ -12020,60 +5903,13 @@ pub struct PhysicalDevicePrivateDataFeatures<'a> {
     raw: vk::PhysicalDevicePrivateDataFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDevicePrivateDataFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevicePrivateDataFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `privateData`.
     #[inline]
     pub fn private_data(mut self, value: vk::Bool32) -> Self {
         self.raw.private_data = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDevicePrivateDataFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDevicePrivateDataFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDevicePrivateDataFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDevicePrivateDataFeatures<'a> {
-    type Target = vk::PhysicalDevicePrivateDataFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12094,54 +5930,7 @@ pub struct PhysicalDeviceProperties2<'a> {
     raw: vk::PhysicalDeviceProperties2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceProperties2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceProperties2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceProperties2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceProperties2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceProperties2<'a> {
-    type Target = vk::PhysicalDeviceProperties2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceProperties2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::PhysicalDeviceProtectedMemoryFeatures`].
 
 # Valid usage
@@ -12155,60 +5944,13 @@ pub struct PhysicalDeviceProtectedMemoryFeatures<'a> {
     raw: vk::PhysicalDeviceProtectedMemoryFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceProtectedMemoryFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceProtectedMemoryFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `protectedMemory`.
     #[inline]
     pub fn protected_memory(mut self, value: vk::Bool32) -> Self {
         self.raw.protected_memory = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceProtectedMemoryFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceProtectedMemoryFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceProtectedMemoryFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceProtectedMemoryFeatures<'a> {
-    type Target = vk::PhysicalDeviceProtectedMemoryFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12228,56 +5970,7 @@ pub struct PhysicalDeviceProtectedMemoryProperties<'a> {
     raw: vk::PhysicalDeviceProtectedMemoryProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceProtectedMemoryProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceProtectedMemoryProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceProtectedMemoryProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceProtectedMemoryProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceProtectedMemoryProperties<'a> {
-    type Target = vk::PhysicalDeviceProtectedMemoryProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceProtectedMemoryProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceProtectedMemoryProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerFilterMinmaxProperties`].
@@ -12293,56 +5986,7 @@ pub struct PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
     raw: vk::PhysicalDeviceSamplerFilterMinmaxProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSamplerFilterMinmaxProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
-    type Target = vk::PhysicalDeviceSamplerFilterMinmaxProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceSamplerFilterMinmaxProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSamplerYcbcrConversionFeatures`].
@@ -12358,60 +6002,13 @@ pub struct PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
     raw: vk::PhysicalDeviceSamplerYcbcrConversionFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceSamplerYcbcrConversionFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `samplerYcbcrConversion`.
     #[inline]
     pub fn sampler_ycbcr_conversion(mut self, value: vk::Bool32) -> Self {
         self.raw.sampler_ycbcr_conversion = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSamplerYcbcrConversionFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
-    type Target = vk::PhysicalDeviceSamplerYcbcrConversionFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12431,60 +6028,13 @@ pub struct PhysicalDeviceScalarBlockLayoutFeatures<'a> {
     raw: vk::PhysicalDeviceScalarBlockLayoutFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceScalarBlockLayoutFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceScalarBlockLayoutFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `scalarBlockLayout`.
     #[inline]
     pub fn scalar_block_layout(mut self, value: vk::Bool32) -> Self {
         self.raw.scalar_block_layout = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceScalarBlockLayoutFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceScalarBlockLayoutFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceScalarBlockLayoutFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceScalarBlockLayoutFeatures<'a> {
-    type Target = vk::PhysicalDeviceScalarBlockLayoutFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12504,60 +6054,13 @@ pub struct PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
     raw: vk::PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceSeparateDepthStencilLayoutsFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `separateDepthStencilLayouts`.
     #[inline]
     pub fn separate_depth_stencil_layouts(mut self, value: vk::Bool32) -> Self {
         self.raw.separate_depth_stencil_layouts = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
-    type Target = vk::PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12577,15 +6080,8 @@ pub struct PhysicalDeviceShaderAtomicInt64Features<'a> {
     raw: vk::PhysicalDeviceShaderAtomicInt64Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderAtomicInt64Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderAtomicInt64Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderBufferInt64Atomics`.
     #[inline]
     pub fn shader_buffer_int64_atomics(mut self, value: vk::Bool32) -> Self {
@@ -12597,46 +6093,6 @@ impl<'a> PhysicalDeviceShaderAtomicInt64Features<'a> {
     pub fn shader_shared_int64_atomics(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_shared_int64_atomics = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderAtomicInt64Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderAtomicInt64Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderAtomicInt64Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderAtomicInt64Features<'a> {
-    type Target = vk::PhysicalDeviceShaderAtomicInt64Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12656,62 +6112,13 @@ pub struct PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
     raw: vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderDemoteToHelperInvocationFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderDemoteToHelperInvocation`.
     #[inline]
     pub fn shader_demote_to_helper_invocation(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_demote_to_helper_invocation = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(
-        &self,
-    ) -> &vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
-    type Target = vk::PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12731,60 +6138,13 @@ pub struct PhysicalDeviceShaderDrawParametersFeatures<'a> {
     raw: vk::PhysicalDeviceShaderDrawParametersFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderDrawParametersFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderDrawParametersFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderDrawParameters`.
     #[inline]
     pub fn shader_draw_parameters(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_draw_parameters = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderDrawParametersFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderDrawParametersFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderDrawParametersFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderDrawParametersFeatures<'a> {
-    type Target = vk::PhysicalDeviceShaderDrawParametersFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12804,15 +6164,8 @@ pub struct PhysicalDeviceShaderFloat16Int8Features<'a> {
     raw: vk::PhysicalDeviceShaderFloat16Int8Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderFloat16Int8Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderFloat16Int8Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderFloat16`.
     #[inline]
     pub fn shader_float16(mut self, value: vk::Bool32) -> Self {
@@ -12824,46 +6177,6 @@ impl<'a> PhysicalDeviceShaderFloat16Int8Features<'a> {
     pub fn shader_int8(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_int8 = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderFloat16Int8Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderFloat16Int8Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderFloat16Int8Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderFloat16Int8Features<'a> {
-    type Target = vk::PhysicalDeviceShaderFloat16Int8Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12883,60 +6196,13 @@ pub struct PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
     raw: vk::PhysicalDeviceShaderIntegerDotProductFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderIntegerDotProductFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderIntegerDotProduct`.
     #[inline]
     pub fn shader_integer_dot_product(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_integer_dot_product = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderIntegerDotProductFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
-    type Target = vk::PhysicalDeviceShaderIntegerDotProductFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -12956,56 +6222,7 @@ pub struct PhysicalDeviceShaderIntegerDotProductProperties<'a> {
     raw: vk::PhysicalDeviceShaderIntegerDotProductProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceShaderIntegerDotProductProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderIntegerDotProductProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderIntegerDotProductProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderIntegerDotProductProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderIntegerDotProductProperties<'a> {
-    type Target = vk::PhysicalDeviceShaderIntegerDotProductProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceShaderIntegerDotProductProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceShaderIntegerDotProductProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures`].
@@ -13021,60 +6238,13 @@ pub struct PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
     raw: vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderSubgroupExtendedTypesFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderSubgroupExtendedTypes`.
     #[inline]
     pub fn shader_subgroup_extended_types(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_subgroup_extended_types = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
-    type Target = vk::PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13094,60 +6264,13 @@ pub struct PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
     raw: vk::PhysicalDeviceShaderTerminateInvocationFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceShaderTerminateInvocationFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderTerminateInvocation`.
     #[inline]
     pub fn shader_terminate_invocation(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_terminate_invocation = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceShaderTerminateInvocationFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
-    type Target = vk::PhysicalDeviceShaderTerminateInvocationFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13176,15 +6299,8 @@ pub struct PhysicalDeviceSparseImageFormatInfo2<'a> {
     raw: vk::PhysicalDeviceSparseImageFormatInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceSparseImageFormatInfo2, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSparseImageFormatInfo2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `format`.
     #[inline]
     pub fn format(mut self, value: vk::Format) -> Self {
@@ -13215,46 +6331,6 @@ impl<'a> PhysicalDeviceSparseImageFormatInfo2<'a> {
         self.raw.tiling = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSparseImageFormatInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSparseImageFormatInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSparseImageFormatInfo2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSparseImageFormatInfo2<'a> {
-    type Target = vk::PhysicalDeviceSparseImageFormatInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupProperties`].
 
@@ -13269,56 +6345,7 @@ pub struct PhysicalDeviceSubgroupProperties<'a> {
     raw: vk::PhysicalDeviceSubgroupProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceSubgroupProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSubgroupProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSubgroupProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSubgroupProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSubgroupProperties<'a> {
-    type Target = vk::PhysicalDeviceSubgroupProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceSubgroupProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceSubgroupProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSubgroupSizeControlFeatures`].
@@ -13334,15 +6361,8 @@ pub struct PhysicalDeviceSubgroupSizeControlFeatures<'a> {
     raw: vk::PhysicalDeviceSubgroupSizeControlFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceSubgroupSizeControlFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSubgroupSizeControlFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `subgroupSizeControl`.
     #[inline]
     pub fn subgroup_size_control(mut self, value: vk::Bool32) -> Self {
@@ -13354,46 +6374,6 @@ impl<'a> PhysicalDeviceSubgroupSizeControlFeatures<'a> {
     pub fn compute_full_subgroups(mut self, value: vk::Bool32) -> Self {
         self.raw.compute_full_subgroups = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSubgroupSizeControlFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSubgroupSizeControlFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSubgroupSizeControlFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSubgroupSizeControlFeatures<'a> {
-    type Target = vk::PhysicalDeviceSubgroupSizeControlFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13413,56 +6393,7 @@ pub struct PhysicalDeviceSubgroupSizeControlProperties<'a> {
     raw: vk::PhysicalDeviceSubgroupSizeControlProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceSubgroupSizeControlProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSubgroupSizeControlProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSubgroupSizeControlProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSubgroupSizeControlProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSubgroupSizeControlProperties<'a> {
-    type Target = vk::PhysicalDeviceSubgroupSizeControlProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceSubgroupSizeControlProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceSubgroupSizeControlProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceSynchronization2Features`].
@@ -13478,60 +6409,13 @@ pub struct PhysicalDeviceSynchronization2Features<'a> {
     raw: vk::PhysicalDeviceSynchronization2Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceSynchronization2Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSynchronization2Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `synchronization2`.
     #[inline]
     pub fn synchronization2(mut self, value: vk::Bool32) -> Self {
         self.raw.synchronization2 = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceSynchronization2Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceSynchronization2Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceSynchronization2Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceSynchronization2Features<'a> {
-    type Target = vk::PhysicalDeviceSynchronization2Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13551,56 +6435,7 @@ pub struct PhysicalDeviceTexelBufferAlignmentProperties<'a> {
     raw: vk::PhysicalDeviceTexelBufferAlignmentProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceTexelBufferAlignmentProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceTexelBufferAlignmentProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceTexelBufferAlignmentProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceTexelBufferAlignmentProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceTexelBufferAlignmentProperties<'a> {
-    type Target = vk::PhysicalDeviceTexelBufferAlignmentProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceTexelBufferAlignmentProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceTexelBufferAlignmentProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceTextureCompressionASTCHDRFeatures`].
@@ -13616,60 +6451,13 @@ pub struct PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
     raw: vk::PhysicalDeviceTextureCompressionASTCHDRFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceTextureCompressionASTCHDRFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `textureCompressionASTC_HDR`.
     #[inline]
     pub fn texture_compression_astc_hdr(mut self, value: vk::Bool32) -> Self {
         self.raw.texture_compression_astc_hdr = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceTextureCompressionASTCHDRFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
-    type Target = vk::PhysicalDeviceTextureCompressionASTCHDRFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13689,60 +6477,13 @@ pub struct PhysicalDeviceTimelineSemaphoreFeatures<'a> {
     raw: vk::PhysicalDeviceTimelineSemaphoreFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceTimelineSemaphoreFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceTimelineSemaphoreFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `timelineSemaphore`.
     #[inline]
     pub fn timeline_semaphore(mut self, value: vk::Bool32) -> Self {
         self.raw.timeline_semaphore = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceTimelineSemaphoreFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceTimelineSemaphoreFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceTimelineSemaphoreFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceTimelineSemaphoreFeatures<'a> {
-    type Target = vk::PhysicalDeviceTimelineSemaphoreFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13762,56 +6503,7 @@ pub struct PhysicalDeviceTimelineSemaphoreProperties<'a> {
     raw: vk::PhysicalDeviceTimelineSemaphoreProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceTimelineSemaphoreProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceTimelineSemaphoreProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceTimelineSemaphoreProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceTimelineSemaphoreProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceTimelineSemaphoreProperties<'a> {
-    type Target = vk::PhysicalDeviceTimelineSemaphoreProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceTimelineSemaphoreProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceTimelineSemaphoreProperties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceToolProperties`].
@@ -13828,54 +6520,7 @@ pub struct PhysicalDeviceToolProperties<'a> {
     raw: vk::PhysicalDeviceToolProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceToolProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceToolProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceToolProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceToolProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceToolProperties<'a> {
-    type Target = vk::PhysicalDeviceToolProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceToolProperties, 'a; zeroed chained);
 /**Safe counterpart of [`vk::PhysicalDeviceUniformBufferStandardLayoutFeatures`].
 
 # Valid usage
@@ -13889,60 +6534,13 @@ pub struct PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
     raw: vk::PhysicalDeviceUniformBufferStandardLayoutFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceUniformBufferStandardLayoutFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `uniformBufferStandardLayout`.
     #[inline]
     pub fn uniform_buffer_standard_layout(mut self, value: vk::Bool32) -> Self {
         self.raw.uniform_buffer_standard_layout = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceUniformBufferStandardLayoutFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
-    type Target = vk::PhysicalDeviceUniformBufferStandardLayoutFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -13964,15 +6562,8 @@ pub struct PhysicalDeviceVariablePointersFeatures<'a> {
     raw: vk::PhysicalDeviceVariablePointersFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceVariablePointersFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVariablePointersFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `variablePointersStorageBuffer`.
     #[inline]
     pub fn variable_pointers_storage_buffer(mut self, value: vk::Bool32) -> Self {
@@ -13984,46 +6575,6 @@ impl<'a> PhysicalDeviceVariablePointersFeatures<'a> {
     pub fn variable_pointers(mut self, value: vk::Bool32) -> Self {
         self.raw.variable_pointers = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVariablePointersFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceVariablePointersFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVariablePointersFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVariablePointersFeatures<'a> {
-    type Target = vk::PhysicalDeviceVariablePointersFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -14043,15 +6594,8 @@ pub struct PhysicalDeviceVulkan11Features<'a> {
     raw: vk::PhysicalDeviceVulkan11Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceVulkan11Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkan11Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `storageBuffer16BitAccess`.
     #[inline]
     pub fn storage_buffer16_bit_access(mut self, value: vk::Bool32) -> Self {
@@ -14124,44 +6668,6 @@ impl<'a> PhysicalDeviceVulkan11Features<'a> {
         self.raw.shader_draw_parameters = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkan11Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkan11Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkan11Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkan11Features<'a> {
-    type Target = vk::PhysicalDeviceVulkan11Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkan11Features<'a> {}
@@ -14179,56 +6685,7 @@ pub struct PhysicalDeviceVulkan11Properties<'a> {
     raw: vk::PhysicalDeviceVulkan11Properties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceVulkan11Properties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkan11Properties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceVulkan11Properties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkan11Properties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkan11Properties<'a> {
-    type Target = vk::PhysicalDeviceVulkan11Properties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceVulkan11Properties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceVulkan11Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan12Features`].
@@ -14244,15 +6701,8 @@ pub struct PhysicalDeviceVulkan12Features<'a> {
     raw: vk::PhysicalDeviceVulkan12Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceVulkan12Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkan12Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `samplerMirrorClampToEdge`.
     #[inline]
     pub fn sampler_mirror_clamp_to_edge(mut self, value: vk::Bool32) -> Self {
@@ -14592,44 +7042,6 @@ impl<'a> PhysicalDeviceVulkan12Features<'a> {
         self.raw.subgroup_broadcast_dynamic_id = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkan12Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkan12Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkan12Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkan12Features<'a> {
-    type Target = vk::PhysicalDeviceVulkan12Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkan12Features<'a> {}
@@ -14647,56 +7059,7 @@ pub struct PhysicalDeviceVulkan12Properties<'a> {
     raw: vk::PhysicalDeviceVulkan12Properties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceVulkan12Properties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkan12Properties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceVulkan12Properties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkan12Properties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkan12Properties<'a> {
-    type Target = vk::PhysicalDeviceVulkan12Properties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceVulkan12Properties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceVulkan12Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkan13Features`].
@@ -14712,15 +7075,8 @@ pub struct PhysicalDeviceVulkan13Features<'a> {
     raw: vk::PhysicalDeviceVulkan13Features<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceVulkan13Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkan13Features<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `robustImageAccess`.
     #[inline]
     pub fn robust_image_access(mut self, value: vk::Bool32) -> Self {
@@ -14814,44 +7170,6 @@ impl<'a> PhysicalDeviceVulkan13Features<'a> {
         self.raw.maintenance4 = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkan13Features<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PhysicalDeviceVulkan13Features<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkan13Features<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkan13Features<'a> {
-    type Target = vk::PhysicalDeviceVulkan13Features<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkan13Features<'a> {}
@@ -14869,56 +7187,7 @@ pub struct PhysicalDeviceVulkan13Properties<'a> {
     raw: vk::PhysicalDeviceVulkan13Properties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PhysicalDeviceVulkan13Properties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkan13Properties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceVulkan13Properties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkan13Properties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkan13Properties<'a> {
-    type Target = vk::PhysicalDeviceVulkan13Properties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PhysicalDeviceVulkan13Properties, 'a; zeroed chained);
 unsafe impl<'a> Extends<PhysicalDeviceProperties2<'a>>
 for PhysicalDeviceVulkan13Properties<'a> {}
 /**Safe counterpart of [`vk::PhysicalDeviceVulkanMemoryModelFeatures`].
@@ -14934,15 +7203,8 @@ pub struct PhysicalDeviceVulkanMemoryModelFeatures<'a> {
     raw: vk::PhysicalDeviceVulkanMemoryModelFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceVulkanMemoryModelFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkanMemoryModelFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `vulkanMemoryModel`.
     #[inline]
     pub fn vulkan_memory_model(mut self, value: vk::Bool32) -> Self {
@@ -14964,46 +7226,6 @@ impl<'a> PhysicalDeviceVulkanMemoryModelFeatures<'a> {
         self.raw.vulkan_memory_model_availability_visibility_chains = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PhysicalDeviceVulkanMemoryModelFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceVulkanMemoryModelFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceVulkanMemoryModelFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceVulkanMemoryModelFeatures<'a> {
-    type Target = vk::PhysicalDeviceVulkanMemoryModelFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
 for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
@@ -15022,62 +7244,13 @@ pub struct PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
     raw: vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `shaderZeroInitializeWorkgroupMemory`.
     #[inline]
     pub fn shader_zero_initialize_workgroup_memory(mut self, value: vk::Bool32) -> Self {
         self.raw.shader_zero_initialize_workgroup_memory = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(
-        &self,
-    ) -> &vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
-    type Target = vk::PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PhysicalDeviceFeatures2<'a>>
@@ -15102,15 +7275,8 @@ pub struct PipelineCacheCreateInfo<'a> {
     raw: vk::PipelineCacheCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineCacheCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineCacheCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineCacheCreateFlags) -> Self {
@@ -15123,44 +7289,6 @@ impl<'a> PipelineCacheCreateInfo<'a> {
         self.raw.initial_data_size = value.len() as _;
         self.raw.p_initial_data = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineCacheCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineCacheCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineCacheCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineCacheCreateInfo<'a> {
-    type Target = vk::PipelineCacheCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PipelineColorBlendStateCreateInfo`].
@@ -15182,15 +7310,8 @@ pub struct PipelineColorBlendStateCreateInfo<'a> {
     raw: vk::PipelineColorBlendStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineColorBlendStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineColorBlendStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineColorBlendStateCreateFlags) -> Self {
@@ -15235,46 +7356,6 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
         self.raw.blend_constants = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineColorBlendStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineColorBlendStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineColorBlendStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineColorBlendStateCreateInfo<'a> {
-    type Target = vk::PipelineColorBlendStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PipelineCreationFeedbackCreateInfo`].
 
@@ -15291,56 +7372,7 @@ pub struct PipelineCreationFeedbackCreateInfo<'a> {
     raw: vk::PipelineCreationFeedbackCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PipelineCreationFeedbackCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineCreationFeedbackCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineCreationFeedbackCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineCreationFeedbackCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineCreationFeedbackCreateInfo<'a> {
-    type Target = vk::PipelineCreationFeedbackCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PipelineCreationFeedbackCreateInfo, 'a; zeroed chained);
 unsafe impl<'a> Extends<GraphicsPipelineCreateInfo<'a>>
 for PipelineCreationFeedbackCreateInfo<'a> {}
 unsafe impl<'a> Extends<ComputePipelineCreateInfo<'a>>
@@ -15365,15 +7397,8 @@ pub struct PipelineDepthStencilStateCreateInfo<'a> {
     raw: vk::PipelineDepthStencilStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineDepthStencilStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineDepthStencilStateCreateFlags) -> Self {
@@ -15434,46 +7459,6 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
         self.raw.max_depth_bounds = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineDepthStencilStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineDepthStencilStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineDepthStencilStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineDepthStencilStateCreateInfo<'a> {
-    type Target = vk::PipelineDepthStencilStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PipelineDynamicStateCreateInfo`].
 
@@ -15493,15 +7478,8 @@ pub struct PipelineDynamicStateCreateInfo<'a> {
     raw: vk::PipelineDynamicStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineDynamicStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineDynamicStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineDynamicStateCreateFlags) -> Self {
@@ -15514,44 +7492,6 @@ impl<'a> PipelineDynamicStateCreateInfo<'a> {
         self.raw.dynamic_state_count = value.len() as _;
         self.raw.p_dynamic_states = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineDynamicStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineDynamicStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineDynamicStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineDynamicStateCreateInfo<'a> {
-    type Target = vk::PipelineDynamicStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PipelineInputAssemblyStateCreateInfo`].
@@ -15572,15 +7512,8 @@ pub struct PipelineInputAssemblyStateCreateInfo<'a> {
     raw: vk::PipelineInputAssemblyStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineInputAssemblyStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineInputAssemblyStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineInputAssemblyStateCreateFlags) -> Self {
@@ -15598,46 +7531,6 @@ impl<'a> PipelineInputAssemblyStateCreateInfo<'a> {
     pub fn primitive_restart_enable(mut self, value: vk::Bool32) -> Self {
         self.raw.primitive_restart_enable = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineInputAssemblyStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineInputAssemblyStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineInputAssemblyStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineInputAssemblyStateCreateInfo<'a> {
-    type Target = vk::PipelineInputAssemblyStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PipelineLayoutCreateInfo`].
@@ -15659,15 +7552,8 @@ pub struct PipelineLayoutCreateInfo<'a> {
     raw: vk::PipelineLayoutCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineLayoutCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineLayoutCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineLayoutCreateFlags) -> Self {
@@ -15690,44 +7576,6 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
         self.raw.push_constant_range_count = value.len() as _;
         self.raw.p_push_constant_ranges = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineLayoutCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineLayoutCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineLayoutCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineLayoutCreateInfo<'a> {
-    type Target = vk::PipelineLayoutCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PipelineMultisampleStateCreateInfo`].
@@ -15752,15 +7600,8 @@ pub struct PipelineMultisampleStateCreateInfo<'a> {
     raw: vk::PipelineMultisampleStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineMultisampleStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineMultisampleStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineMultisampleStateCreateFlags) -> Self {
@@ -15797,46 +7638,6 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
         self.raw.alpha_to_one_enable = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineMultisampleStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineMultisampleStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineMultisampleStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineMultisampleStateCreateInfo<'a> {
-    type Target = vk::PipelineMultisampleStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PipelineRasterizationStateCreateInfo`].
 
@@ -15859,15 +7660,8 @@ pub struct PipelineRasterizationStateCreateInfo<'a> {
     raw: vk::PipelineRasterizationStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineRasterizationStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineRasterizationStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineRasterizationStateCreateFlags) -> Self {
@@ -15934,46 +7728,6 @@ impl<'a> PipelineRasterizationStateCreateInfo<'a> {
         self.raw.line_width = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineRasterizationStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineRasterizationStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineRasterizationStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineRasterizationStateCreateInfo<'a> {
-    type Target = vk::PipelineRasterizationStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PipelineRenderingCreateInfo`].
 
@@ -15988,15 +7742,8 @@ pub struct PipelineRenderingCreateInfo<'a> {
     raw: vk::PipelineRenderingCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineRenderingCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineRenderingCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `viewMask`.
     #[inline]
     pub fn view_mask(mut self, value: u32) -> Self {
@@ -16021,44 +7768,6 @@ impl<'a> PipelineRenderingCreateInfo<'a> {
     pub fn stencil_attachment_format(mut self, value: vk::Format) -> Self {
         self.raw.stencil_attachment_format = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineRenderingCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineRenderingCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineRenderingCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineRenderingCreateInfo<'a> {
-    type Target = vk::PipelineRenderingCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<GraphicsPipelineCreateInfo<'a>>
@@ -16085,6 +7794,7 @@ pub struct PipelineShaderStageCreateInfo<'a> {
     raw: vk::PipelineShaderStageCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineShaderStageCreateInfo, 'a; chained);
 impl<'a> PipelineShaderStageCreateInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -16132,39 +7842,6 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
             );
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineShaderStageCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineShaderStageCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for PipelineShaderStageCreateInfo<'a> {
-    type Target = vk::PipelineShaderStageCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PipelineShaderStageRequiredSubgroupSizeCreateInfo`].
 
@@ -16181,56 +7858,7 @@ pub struct PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
     raw: vk::PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
-    type Target = vk::PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(PipelineShaderStageRequiredSubgroupSizeCreateInfo, 'a; zeroed chained);
 unsafe impl<'a> Extends<PipelineShaderStageCreateInfo<'a>>
 for PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineTessellationDomainOriginStateCreateInfo`].
@@ -16247,60 +7875,13 @@ pub struct PipelineTessellationDomainOriginStateCreateInfo<'a> {
     raw: vk::PipelineTessellationDomainOriginStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineTessellationDomainOriginStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineTessellationDomainOriginStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `domainOrigin`.
     #[inline]
     pub fn domain_origin(mut self, value: vk::TessellationDomainOrigin) -> Self {
         self.raw.domain_origin = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineTessellationDomainOriginStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineTessellationDomainOriginStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineTessellationDomainOriginStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineTessellationDomainOriginStateCreateInfo<'a> {
-    type Target = vk::PipelineTessellationDomainOriginStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PipelineTessellationStateCreateInfo<'a>>
@@ -16323,15 +7904,8 @@ pub struct PipelineTessellationStateCreateInfo<'a> {
     raw: vk::PipelineTessellationStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineTessellationStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineTessellationStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineTessellationStateCreateFlags) -> Self {
@@ -16343,46 +7917,6 @@ impl<'a> PipelineTessellationStateCreateInfo<'a> {
     pub fn patch_control_points(mut self, value: u32) -> Self {
         self.raw.patch_control_points = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineTessellationStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineTessellationStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineTessellationStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineTessellationStateCreateInfo<'a> {
-    type Target = vk::PipelineTessellationStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::PipelineVertexInputStateCreateInfo`].
@@ -16405,15 +7939,8 @@ pub struct PipelineVertexInputStateCreateInfo<'a> {
     raw: vk::PipelineVertexInputStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineVertexInputStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineVertexInputStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineVertexInputStateCreateFlags) -> Self {
@@ -16440,46 +7967,6 @@ impl<'a> PipelineVertexInputStateCreateInfo<'a> {
         self.raw.p_vertex_attribute_descriptions = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineVertexInputStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::PipelineVertexInputStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineVertexInputStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineVertexInputStateCreateInfo<'a> {
-    type Target = vk::PipelineVertexInputStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PipelineViewportStateCreateInfo`].
 
@@ -16502,15 +7989,8 @@ pub struct PipelineViewportStateCreateInfo<'a> {
     raw: vk::PipelineViewportStateCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PipelineViewportStateCreateInfo, 'a; zeroed chained);
 impl<'a> PipelineViewportStateCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PipelineViewportStateCreateFlags) -> Self {
@@ -16551,44 +8031,6 @@ impl<'a> PipelineViewportStateCreateInfo<'a> {
         self.raw.p_scissors = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PipelineViewportStateCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PipelineViewportStateCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PipelineViewportStateCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PipelineViewportStateCreateInfo<'a> {
-    type Target = vk::PipelineViewportStateCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PresentInfoKHR`].
 
@@ -16616,16 +8058,9 @@ pub struct PresentInfoKHR<'a> {
     raw: vk::PresentInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(#[cfg(feature = "khr_swapchain")] PresentInfoKHR, 'a; zeroed chained);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> PresentInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pWaitSemaphores`.
     #[inline]
     pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
@@ -16659,46 +8094,6 @@ impl<'a> PresentInfoKHR<'a> {
         self.raw.p_image_indices = image_indices.as_ptr().cast();
         Ok(self)
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PresentInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PresentInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Default for PresentInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for PresentInfoKHR<'a> {
-    type Target = vk::PresentInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::PrivateDataSlotCreateInfo`].
 
@@ -16715,58 +8110,13 @@ pub struct PrivateDataSlotCreateInfo<'a> {
     raw: vk::PrivateDataSlotCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(PrivateDataSlotCreateInfo, 'a; zeroed chained);
 impl<'a> PrivateDataSlotCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::PrivateDataSlotCreateFlags) -> Self {
         self.raw.flags = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::PrivateDataSlotCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::PrivateDataSlotCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for PrivateDataSlotCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for PrivateDataSlotCreateInfo<'a> {
-    type Target = vk::PrivateDataSlotCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::ProtectedSubmitInfo`].
@@ -16782,58 +8132,13 @@ pub struct ProtectedSubmitInfo<'a> {
     raw: vk::ProtectedSubmitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ProtectedSubmitInfo, 'a; zeroed chained);
 impl<'a> ProtectedSubmitInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `protectedSubmit`.
     #[inline]
     pub fn protected_submit(mut self, value: vk::Bool32) -> Self {
         self.raw.protected_submit = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ProtectedSubmitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ProtectedSubmitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ProtectedSubmitInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ProtectedSubmitInfo<'a> {
-    type Target = vk::ProtectedSubmitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<SubmitInfo<'a>> for ProtectedSubmitInfo<'a> {}
@@ -16856,15 +8161,8 @@ pub struct QueryPoolCreateInfo<'a> {
     raw: vk::QueryPoolCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(QueryPoolCreateInfo, 'a; zeroed chained);
 impl<'a> QueryPoolCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::QueryPoolCreateFlags) -> Self {
@@ -16892,44 +8190,6 @@ impl<'a> QueryPoolCreateInfo<'a> {
         self.raw.pipeline_statistics = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::QueryPoolCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::QueryPoolCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for QueryPoolCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for QueryPoolCreateInfo<'a> {
-    type Target = vk::QueryPoolCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::QueueFamilyProperties2`].
 
@@ -16946,54 +8206,7 @@ pub struct QueueFamilyProperties2<'a> {
     raw: vk::QueueFamilyProperties2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> QueueFamilyProperties2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::QueueFamilyProperties2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::QueueFamilyProperties2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for QueueFamilyProperties2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for QueueFamilyProperties2<'a> {
-    type Target = vk::QueueFamilyProperties2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(QueueFamilyProperties2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::RenderPassAttachmentBeginInfo`].
 
 # Valid usage
@@ -17010,59 +8223,14 @@ pub struct RenderPassAttachmentBeginInfo<'a> {
     raw: vk::RenderPassAttachmentBeginInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderPassAttachmentBeginInfo, 'a; zeroed chained);
 impl<'a> RenderPassAttachmentBeginInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pAttachments`.
     #[inline]
     pub fn attachments(mut self, value: &'a HandleSlice<'a, ImageView>) -> Self {
         self.raw.attachment_count = value.len() as _;
         self.raw.p_attachments = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderPassAttachmentBeginInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderPassAttachmentBeginInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderPassAttachmentBeginInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderPassAttachmentBeginInfo<'a> {
-    type Target = vk::RenderPassAttachmentBeginInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for RenderPassAttachmentBeginInfo<'a> {}
@@ -17086,6 +8254,7 @@ pub struct RenderPassBeginInfo<'a> {
     raw: vk::RenderPassBeginInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderPassBeginInfo, 'a; chained);
 impl<'a> RenderPassBeginInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -17122,39 +8291,6 @@ impl<'a> RenderPassBeginInfo<'a> {
         self.raw.p_clear_values = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderPassBeginInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderPassBeginInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for RenderPassBeginInfo<'a> {
-    type Target = vk::RenderPassBeginInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::RenderPassCreateInfo`].
 
@@ -17178,15 +8314,8 @@ pub struct RenderPassCreateInfo<'a> {
     raw: vk::RenderPassCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderPassCreateInfo, 'a; zeroed chained);
 impl<'a> RenderPassCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::RenderPassCreateFlags) -> Self {
@@ -17214,44 +8343,6 @@ impl<'a> RenderPassCreateInfo<'a> {
         self.raw.p_dependencies = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderPassCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderPassCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderPassCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderPassCreateInfo<'a> {
-    type Target = vk::RenderPassCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::RenderPassCreateInfo2`].
 
@@ -17276,15 +8367,8 @@ pub struct RenderPassCreateInfo2<'a> {
     raw: vk::RenderPassCreateInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderPassCreateInfo2, 'a; zeroed chained);
 impl<'a> RenderPassCreateInfo2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::RenderPassCreateFlags) -> Self {
@@ -17319,44 +8403,6 @@ impl<'a> RenderPassCreateInfo2<'a> {
         self.raw.p_correlated_view_masks = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderPassCreateInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderPassCreateInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderPassCreateInfo2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderPassCreateInfo2<'a> {
-    type Target = vk::RenderPassCreateInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::RenderPassInputAttachmentAspectCreateInfo`].
 
@@ -17373,15 +8419,8 @@ pub struct RenderPassInputAttachmentAspectCreateInfo<'a> {
     raw: vk::RenderPassInputAttachmentAspectCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderPassInputAttachmentAspectCreateInfo, 'a; zeroed chained);
 impl<'a> RenderPassInputAttachmentAspectCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pAspectReferences`.
     #[inline]
     pub fn aspect_references(
@@ -17391,46 +8430,6 @@ impl<'a> RenderPassInputAttachmentAspectCreateInfo<'a> {
         self.raw.aspect_reference_count = value.len() as _;
         self.raw.p_aspect_references = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderPassInputAttachmentAspectCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::RenderPassInputAttachmentAspectCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderPassInputAttachmentAspectCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderPassInputAttachmentAspectCreateInfo<'a> {
-    type Target = vk::RenderPassInputAttachmentAspectCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<RenderPassCreateInfo<'a>>
@@ -17453,15 +8452,8 @@ pub struct RenderPassMultiviewCreateInfo<'a> {
     raw: vk::RenderPassMultiviewCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderPassMultiviewCreateInfo, 'a; zeroed chained);
 impl<'a> RenderPassMultiviewCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pViewMasks`.
     #[inline]
     pub fn view_masks(mut self, value: &'a [u32]) -> Self {
@@ -17482,44 +8474,6 @@ impl<'a> RenderPassMultiviewCreateInfo<'a> {
         self.raw.correlation_mask_count = value.len() as _;
         self.raw.p_correlation_masks = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderPassMultiviewCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderPassMultiviewCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderPassMultiviewCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderPassMultiviewCreateInfo<'a> {
-    type Target = vk::RenderPassMultiviewCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<RenderPassCreateInfo<'a>> for RenderPassMultiviewCreateInfo<'a> {}
@@ -17548,15 +8502,8 @@ pub struct RenderingAttachmentInfo<'a> {
     raw: vk::RenderingAttachmentInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderingAttachmentInfo, 'a; zeroed chained);
 impl<'a> RenderingAttachmentInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `imageView`.
     #[inline]
     pub fn image_view(mut self, value: Option<&'a ImageView>) -> Self {
@@ -17605,44 +8552,6 @@ impl<'a> RenderingAttachmentInfo<'a> {
         self.raw.clear_value = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderingAttachmentInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderingAttachmentInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderingAttachmentInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderingAttachmentInfo<'a> {
-    type Target = vk::RenderingAttachmentInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::RenderingInfo`].
 
@@ -17665,15 +8574,8 @@ pub struct RenderingInfo<'a> {
     raw: vk::RenderingInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(RenderingInfo, 'a; zeroed chained);
 impl<'a> RenderingInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::RenderingFlags) -> Self {
@@ -17734,44 +8636,6 @@ impl<'a> RenderingInfo<'a> {
             );
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::RenderingInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::RenderingInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for RenderingInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for RenderingInfo<'a> {
-    type Target = vk::RenderingInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ResolveImageInfo2`].
 
@@ -17796,6 +8660,7 @@ pub struct ResolveImageInfo2<'a> {
     raw: vk::ResolveImageInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ResolveImageInfo2, 'a; chained);
 impl<'a> ResolveImageInfo2<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -17838,39 +8703,6 @@ impl<'a> ResolveImageInfo2<'a> {
         self.raw.p_regions = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ResolveImageInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ResolveImageInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for ResolveImageInfo2<'a> {
-    type Target = vk::ResolveImageInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SamplerCreateInfo`].
 
@@ -17896,15 +8728,8 @@ pub struct SamplerCreateInfo<'a> {
     raw: vk::SamplerCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SamplerCreateInfo, 'a; zeroed chained);
 impl<'a> SamplerCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::SamplerCreateFlags) -> Self {
@@ -18001,44 +8826,6 @@ impl<'a> SamplerCreateInfo<'a> {
         self.raw.unnormalized_coordinates = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SamplerCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SamplerCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SamplerCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SamplerCreateInfo<'a> {
-    type Target = vk::SamplerCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SamplerReductionModeCreateInfo`].
 
@@ -18054,58 +8841,13 @@ pub struct SamplerReductionModeCreateInfo<'a> {
     raw: vk::SamplerReductionModeCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SamplerReductionModeCreateInfo, 'a; zeroed chained);
 impl<'a> SamplerReductionModeCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `reductionMode`.
     #[inline]
     pub fn reduction_mode(mut self, value: vk::SamplerReductionMode) -> Self {
         self.raw.reduction_mode = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SamplerReductionModeCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SamplerReductionModeCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SamplerReductionModeCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SamplerReductionModeCreateInfo<'a> {
-    type Target = vk::SamplerReductionModeCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInfo<'a> {}
@@ -18133,15 +8875,8 @@ pub struct SamplerYcbcrConversionCreateInfo<'a> {
     raw: vk::SamplerYcbcrConversionCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SamplerYcbcrConversionCreateInfo, 'a; zeroed chained);
 impl<'a> SamplerYcbcrConversionCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `format`.
     #[inline]
     pub fn format(mut self, value: vk::Format) -> Self {
@@ -18190,46 +8925,6 @@ impl<'a> SamplerYcbcrConversionCreateInfo<'a> {
         self.raw.force_explicit_reconstruction = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SamplerYcbcrConversionCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::SamplerYcbcrConversionCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SamplerYcbcrConversionCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SamplerYcbcrConversionCreateInfo<'a> {
-    type Target = vk::SamplerYcbcrConversionCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SamplerYcbcrConversionImageFormatProperties`].
 
@@ -18244,56 +8939,7 @@ pub struct SamplerYcbcrConversionImageFormatProperties<'a> {
     raw: vk::SamplerYcbcrConversionImageFormatProperties<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> SamplerYcbcrConversionImageFormatProperties<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SamplerYcbcrConversionImageFormatProperties<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::SamplerYcbcrConversionImageFormatProperties<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SamplerYcbcrConversionImageFormatProperties<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SamplerYcbcrConversionImageFormatProperties<'a> {
-    type Target = vk::SamplerYcbcrConversionImageFormatProperties<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(SamplerYcbcrConversionImageFormatProperties, 'a; zeroed chained);
 unsafe impl<'a> Extends<ImageFormatProperties2<'a>>
 for SamplerYcbcrConversionImageFormatProperties<'a> {}
 /**Safe counterpart of [`vk::SamplerYcbcrConversionInfo`].
@@ -18310,6 +8956,7 @@ pub struct SamplerYcbcrConversionInfo<'a> {
     raw: vk::SamplerYcbcrConversionInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SamplerYcbcrConversionInfo, 'a; chained);
 impl<'a> SamplerYcbcrConversionInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -18325,39 +8972,6 @@ impl<'a> SamplerYcbcrConversionInfo<'a> {
     pub fn conversion(mut self, value: &'a SamplerYcbcrConversion) -> Self {
         self.raw.conversion = value.raw();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SamplerYcbcrConversionInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SamplerYcbcrConversionInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for SamplerYcbcrConversionInfo<'a> {
-    type Target = vk::SamplerYcbcrConversionInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerYcbcrConversionInfo<'a> {}
@@ -18380,58 +8994,13 @@ pub struct SemaphoreCreateInfo<'a> {
     raw: vk::SemaphoreCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SemaphoreCreateInfo, 'a; zeroed chained);
 impl<'a> SemaphoreCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::SemaphoreCreateFlags) -> Self {
         self.raw.flags = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SemaphoreCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SemaphoreCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SemaphoreCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SemaphoreCreateInfo<'a> {
-    type Target = vk::SemaphoreCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::SemaphoreSignalInfo`].
@@ -18451,6 +9020,7 @@ pub struct SemaphoreSignalInfo<'a> {
     raw: vk::SemaphoreSignalInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SemaphoreSignalInfo, 'a; chained);
 impl<'a> SemaphoreSignalInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -18473,39 +9043,6 @@ impl<'a> SemaphoreSignalInfo<'a> {
         self.raw.value = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SemaphoreSignalInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SemaphoreSignalInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for SemaphoreSignalInfo<'a> {
-    type Target = vk::SemaphoreSignalInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SemaphoreSubmitInfo`].
 
@@ -18525,6 +9062,7 @@ pub struct SemaphoreSubmitInfo<'a> {
     raw: vk::SemaphoreSubmitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SemaphoreSubmitInfo, 'a; chained);
 impl<'a> SemaphoreSubmitInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -18559,39 +9097,6 @@ impl<'a> SemaphoreSubmitInfo<'a> {
         self.raw.device_index = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SemaphoreSubmitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SemaphoreSubmitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for SemaphoreSubmitInfo<'a> {
-    type Target = vk::SemaphoreSubmitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SemaphoreTypeCreateInfo`].
 
@@ -18609,15 +9114,8 @@ pub struct SemaphoreTypeCreateInfo<'a> {
     raw: vk::SemaphoreTypeCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SemaphoreTypeCreateInfo, 'a; zeroed chained);
 impl<'a> SemaphoreTypeCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `semaphoreType`.
     #[inline]
     pub fn semaphore_type(mut self, value: vk::SemaphoreType) -> Self {
@@ -18629,44 +9127,6 @@ impl<'a> SemaphoreTypeCreateInfo<'a> {
     pub fn initial_value(mut self, value: u64) -> Self {
         self.raw.initial_value = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SemaphoreTypeCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SemaphoreTypeCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SemaphoreTypeCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SemaphoreTypeCreateInfo<'a> {
-    type Target = vk::SemaphoreTypeCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<SemaphoreCreateInfo<'a>> for SemaphoreTypeCreateInfo<'a> {}
@@ -18692,15 +9152,8 @@ pub struct SemaphoreWaitInfo<'a> {
     raw: vk::SemaphoreWaitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SemaphoreWaitInfo, 'a; zeroed chained);
 impl<'a> SemaphoreWaitInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::SemaphoreWaitFlags) -> Self {
@@ -18733,44 +9186,6 @@ impl<'a> SemaphoreWaitInfo<'a> {
         self.raw.p_values = values.as_ptr().cast();
         Ok(self)
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SemaphoreWaitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SemaphoreWaitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SemaphoreWaitInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SemaphoreWaitInfo<'a> {
-    type Target = vk::SemaphoreWaitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::ShaderModuleCreateInfo`].
 
@@ -18789,15 +9204,8 @@ pub struct ShaderModuleCreateInfo<'a> {
     raw: vk::ShaderModuleCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(ShaderModuleCreateInfo, 'a; zeroed chained);
 impl<'a> ShaderModuleCreateInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::ShaderModuleCreateFlags) -> Self {
@@ -18810,44 +9218,6 @@ impl<'a> ShaderModuleCreateInfo<'a> {
         self.raw.code_size = core::mem::size_of_val(value);
         self.raw.p_code = value.as_ptr();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::ShaderModuleCreateInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::ShaderModuleCreateInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for ShaderModuleCreateInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for ShaderModuleCreateInfo<'a> {
-    type Target = vk::ShaderModuleCreateInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<PipelineShaderStageCreateInfo<'a>>
@@ -18867,6 +9237,7 @@ pub struct SparseBufferMemoryBindInfo<'a> {
     raw: vk::SparseBufferMemoryBindInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SparseBufferMemoryBindInfo, 'a;);
 impl<'a> SparseBufferMemoryBindInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -18890,24 +9261,6 @@ impl<'a> SparseBufferMemoryBindInfo<'a> {
         self.raw.p_binds = value.as_ptr().cast();
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseBufferMemoryBindInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseBufferMemoryBindInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for SparseBufferMemoryBindInfo<'a> {
-    type Target = vk::SparseBufferMemoryBindInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SparseImageFormatProperties2`].
 
@@ -18923,54 +9276,7 @@ pub struct SparseImageFormatProperties2<'a> {
     raw: vk::SparseImageFormatProperties2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> SparseImageFormatProperties2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseImageFormatProperties2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseImageFormatProperties2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SparseImageFormatProperties2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SparseImageFormatProperties2<'a> {
-    type Target = vk::SparseImageFormatProperties2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(SparseImageFormatProperties2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::SparseImageMemoryBind`].
 
 # Valid usage
@@ -18988,15 +9294,8 @@ pub struct SparseImageMemoryBind<'a> {
     raw: vk::SparseImageMemoryBind,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SparseImageMemoryBind; zeroed);
 impl<'a> SparseImageMemoryBind<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `subresource`.
     #[inline]
     pub fn subresource(mut self, value: vk::ImageSubresource) -> Self {
@@ -19033,29 +9332,6 @@ impl<'a> SparseImageMemoryBind<'a> {
         self.raw.flags = value;
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseImageMemoryBind {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseImageMemoryBind {
-        &mut self.raw
-    }
-}
-impl Default for SparseImageMemoryBind<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SparseImageMemoryBind<'a> {
-    type Target = vk::SparseImageMemoryBind;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SparseImageMemoryBindInfo`].
 
@@ -19074,6 +9350,7 @@ pub struct SparseImageMemoryBindInfo<'a> {
     raw: vk::SparseImageMemoryBindInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SparseImageMemoryBindInfo, 'a;);
 impl<'a> SparseImageMemoryBindInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -19097,24 +9374,6 @@ impl<'a> SparseImageMemoryBindInfo<'a> {
         self.raw.p_binds = value.as_ptr().cast();
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseImageMemoryBindInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseImageMemoryBindInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for SparseImageMemoryBindInfo<'a> {
-    type Target = vk::SparseImageMemoryBindInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SparseImageMemoryRequirements2`].
 
@@ -19130,54 +9389,7 @@ pub struct SparseImageMemoryRequirements2<'a> {
     raw: vk::SparseImageMemoryRequirements2<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> SparseImageMemoryRequirements2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseImageMemoryRequirements2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseImageMemoryRequirements2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SparseImageMemoryRequirements2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SparseImageMemoryRequirements2<'a> {
-    type Target = vk::SparseImageMemoryRequirements2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(SparseImageMemoryRequirements2, 'a; zeroed chained);
 /**Safe counterpart of [`vk::SparseImageOpaqueMemoryBindInfo`].
 
 # Valid usage
@@ -19195,6 +9407,7 @@ pub struct SparseImageOpaqueMemoryBindInfo<'a> {
     raw: vk::SparseImageOpaqueMemoryBindInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SparseImageOpaqueMemoryBindInfo, 'a;);
 impl<'a> SparseImageOpaqueMemoryBindInfo<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -19218,24 +9431,6 @@ impl<'a> SparseImageOpaqueMemoryBindInfo<'a> {
         self.raw.p_binds = value.as_ptr().cast();
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseImageOpaqueMemoryBindInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseImageOpaqueMemoryBindInfo<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for SparseImageOpaqueMemoryBindInfo<'a> {
-    type Target = vk::SparseImageOpaqueMemoryBindInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SparseMemoryBind`].
 
@@ -19253,15 +9448,8 @@ pub struct SparseMemoryBind<'a> {
     raw: vk::SparseMemoryBind,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SparseMemoryBind; zeroed);
 impl<'a> SparseMemoryBind<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `resourceOffset`.
     #[inline]
     pub fn resource_offset(mut self, value: vk::DeviceSize) -> Self {
@@ -19292,29 +9480,6 @@ impl<'a> SparseMemoryBind<'a> {
         self.raw.flags = value;
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SparseMemoryBind {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SparseMemoryBind {
-        &mut self.raw
-    }
-}
-impl Default for SparseMemoryBind<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SparseMemoryBind<'a> {
-    type Target = vk::SparseMemoryBind;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SpecializationInfo`].
 
@@ -19332,15 +9497,8 @@ pub struct SpecializationInfo<'a> {
     raw: vk::SpecializationInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SpecializationInfo, 'a; zeroed);
 impl<'a> SpecializationInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pMapEntries`.
     #[inline]
     pub fn map_entries(mut self, value: &'a [vk::SpecializationMapEntry]) -> Self {
@@ -19354,29 +9512,6 @@ impl<'a> SpecializationInfo<'a> {
         self.raw.data_size = value.len() as _;
         self.raw.p_data = value.as_ptr().cast();
         self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SpecializationInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SpecializationInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SpecializationInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SpecializationInfo<'a> {
-    type Target = vk::SpecializationInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::SubmitInfo`].
@@ -19402,15 +9537,8 @@ pub struct SubmitInfo<'a> {
     raw: vk::SubmitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubmitInfo, 'a; zeroed chained);
 impl<'a> SubmitInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     /**Sets `pWaitSemaphores`, `pWaitDstStageMask` (and `waitSemaphoreCount`): one element of each per entry.
 
 # Errors
@@ -19451,44 +9579,6 @@ impl<'a> SubmitInfo<'a> {
         self.raw.p_signal_semaphores = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubmitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubmitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubmitInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubmitInfo<'a> {
-    type Target = vk::SubmitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SubmitInfo2`].
 
@@ -19511,15 +9601,8 @@ pub struct SubmitInfo2<'a> {
     raw: vk::SubmitInfo2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubmitInfo2, 'a; zeroed chained);
 impl<'a> SubmitInfo2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::SubmitFlags) -> Self {
@@ -19553,44 +9636,6 @@ impl<'a> SubmitInfo2<'a> {
         self.raw.p_signal_semaphore_infos = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubmitInfo2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubmitInfo2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubmitInfo2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubmitInfo2<'a> {
-    type Target = vk::SubmitInfo2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SubpassBeginInfo`].
 
@@ -19607,58 +9652,13 @@ pub struct SubpassBeginInfo<'a> {
     raw: vk::SubpassBeginInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubpassBeginInfo, 'a; zeroed chained);
 impl<'a> SubpassBeginInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `contents`.
     #[inline]
     pub fn contents(mut self, value: vk::SubpassContents) -> Self {
         self.raw.contents = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubpassBeginInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubpassBeginInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubpassBeginInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubpassBeginInfo<'a> {
-    type Target = vk::SubpassBeginInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 /**Safe counterpart of [`vk::SubpassDependency2`].
@@ -19683,15 +9683,8 @@ pub struct SubpassDependency2<'a> {
     raw: vk::SubpassDependency2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubpassDependency2, 'a; zeroed chained);
 impl<'a> SubpassDependency2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `srcSubpass`.
     #[inline]
     pub fn src_subpass(mut self, value: u32) -> Self {
@@ -19740,44 +9733,6 @@ impl<'a> SubpassDependency2<'a> {
         self.raw.view_offset = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubpassDependency2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubpassDependency2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubpassDependency2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubpassDependency2<'a> {
-    type Target = vk::SubpassDependency2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SubpassDescription`].
 
@@ -19800,15 +9755,8 @@ pub struct SubpassDescription<'a> {
     raw: vk::SubpassDescription<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubpassDescription, 'a; zeroed);
 impl<'a> SubpassDescription<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::SubpassDescriptionFlags) -> Self {
@@ -19881,29 +9829,6 @@ impl<'a> SubpassDescription<'a> {
         self.raw.p_preserve_attachments = value.as_ptr().cast();
         self
     }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubpassDescription<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubpassDescription<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubpassDescription<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubpassDescription<'a> {
-    type Target = vk::SubpassDescription<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SubpassDescription2`].
 
@@ -19929,15 +9854,8 @@ pub struct SubpassDescription2<'a> {
     raw: vk::SubpassDescription2<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubpassDescription2, 'a; zeroed chained);
 impl<'a> SubpassDescription2<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::SubpassDescriptionFlags) -> Self {
@@ -20016,44 +9934,6 @@ impl<'a> SubpassDescription2<'a> {
         self.raw.p_preserve_attachments = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubpassDescription2<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubpassDescription2<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubpassDescription2<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubpassDescription2<'a> {
-    type Target = vk::SubpassDescription2<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::SubpassDescriptionDepthStencilResolve`].
 
@@ -20071,15 +9951,8 @@ pub struct SubpassDescriptionDepthStencilResolve<'a> {
     raw: vk::SubpassDescriptionDepthStencilResolve<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(SubpassDescriptionDepthStencilResolve, 'a; zeroed chained);
 impl<'a> SubpassDescriptionDepthStencilResolve<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `depthResolveMode`.
     #[inline]
     pub fn depth_resolve_mode(mut self, value: vk::ResolveModeFlags) -> Self {
@@ -20105,46 +9978,6 @@ impl<'a> SubpassDescriptionDepthStencilResolve<'a> {
             );
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubpassDescriptionDepthStencilResolve<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::SubpassDescriptionDepthStencilResolve<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubpassDescriptionDepthStencilResolve<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubpassDescriptionDepthStencilResolve<'a> {
-    type Target = vk::SubpassDescriptionDepthStencilResolve<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<SubpassDescription2<'a>>
 for SubpassDescriptionDepthStencilResolve<'a> {}
@@ -20163,54 +9996,7 @@ pub struct SubpassEndInfo<'a> {
     raw: vk::SubpassEndInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
-impl<'a> SubpassEndInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SubpassEndInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SubpassEndInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for SubpassEndInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for SubpassEndInfo<'a> {
-    type Target = vk::SubpassEndInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
-}
+safe_struct!(SubpassEndInfo, 'a; zeroed chained);
 /**Safe counterpart of [`vk::SwapchainCreateInfoKHR`].
 
 # Valid usage
@@ -20241,6 +10027,7 @@ pub struct SwapchainCreateInfoKHR<'a> {
     raw: vk::SwapchainCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(#[cfg(feature = "khr_swapchain")] SwapchainCreateInfoKHR, 'a; chained);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> SwapchainCreateInfoKHR<'a> {
     /// A struct with its required members set and every other member zero or
@@ -20343,40 +10130,6 @@ impl<'a> SwapchainCreateInfoKHR<'a> {
         self.raw.old_swapchain = value.map_or(vk::SwapchainKHR::null(), |h| h.raw());
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::SwapchainCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::SwapchainCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl<'a> core::ops::Deref for SwapchainCreateInfoKHR<'a> {
-    type Target = vk::SwapchainCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::TimelineSemaphoreSubmitInfo`].
 
@@ -20393,15 +10146,8 @@ pub struct TimelineSemaphoreSubmitInfo<'a> {
     raw: vk::TimelineSemaphoreSubmitInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(TimelineSemaphoreSubmitInfo, 'a; zeroed chained);
 impl<'a> TimelineSemaphoreSubmitInfo<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `waitSemaphoreValueCount`. `pWaitSemaphoreValues` is cleared when its length differs from `value`.
     #[inline]
     pub fn wait_semaphore_value_count(mut self, value: u32) -> Self {
@@ -20436,44 +10182,6 @@ impl<'a> TimelineSemaphoreSubmitInfo<'a> {
         self.raw.p_signal_semaphore_values = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::TimelineSemaphoreSubmitInfo<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::TimelineSemaphoreSubmitInfo<'a> {
-        &mut self.raw
-    }
-}
-impl Default for TimelineSemaphoreSubmitInfo<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for TimelineSemaphoreSubmitInfo<'a> {
-    type Target = vk::TimelineSemaphoreSubmitInfo<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 unsafe impl<'a> Extends<SubmitInfo<'a>> for TimelineSemaphoreSubmitInfo<'a> {}
 unsafe impl<'a> Extends<BindSparseInfo<'a>> for TimelineSemaphoreSubmitInfo<'a> {}
@@ -20495,16 +10203,12 @@ pub struct WaylandSurfaceCreateInfoKHR<'a> {
     raw: vk::WaylandSurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_wayland_surface")] WaylandSurfaceCreateInfoKHR, 'a; zeroed
+    chained
+);
 #[cfg(feature = "khr_wayland_surface")]
 impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::WaylandSurfaceCreateFlagsKHR) -> Self {
@@ -20531,46 +10235,6 @@ impl<'a> WaylandSurfaceCreateInfoKHR<'a> {
         self.raw.surface = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::WaylandSurfaceCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::WaylandSurfaceCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_wayland_surface")]
-impl Default for WaylandSurfaceCreateInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_wayland_surface")]
-impl<'a> core::ops::Deref for WaylandSurfaceCreateInfoKHR<'a> {
-    type Target = vk::WaylandSurfaceCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::Win32SurfaceCreateInfoKHR`].
 
@@ -20590,16 +10254,11 @@ pub struct Win32SurfaceCreateInfoKHR<'a> {
     raw: vk::Win32SurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_win32_surface")] Win32SurfaceCreateInfoKHR, 'a; zeroed chained
+);
 #[cfg(feature = "khr_win32_surface")]
 impl<'a> Win32SurfaceCreateInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::Win32SurfaceCreateFlagsKHR) -> Self {
@@ -20626,46 +10285,6 @@ impl<'a> Win32SurfaceCreateInfoKHR<'a> {
         self.raw.hwnd = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::Win32SurfaceCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::Win32SurfaceCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_win32_surface")]
-impl Default for Win32SurfaceCreateInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_win32_surface")]
-impl<'a> core::ops::Deref for Win32SurfaceCreateInfoKHR<'a> {
-    type Target = vk::Win32SurfaceCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::WriteDescriptorSet`].
 
@@ -20687,6 +10306,7 @@ pub struct WriteDescriptorSet<'a> {
     raw: vk::WriteDescriptorSet<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(WriteDescriptorSet, 'a; chained);
 impl<'a> WriteDescriptorSet<'a> {
     /// A struct with its required members set and every other member zero or
     /// empty (and `sType` set).
@@ -20757,39 +10377,6 @@ impl<'a> WriteDescriptorSet<'a> {
         self.raw.p_texel_buffer_view = value.as_ptr().cast();
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::WriteDescriptorSet<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::WriteDescriptorSet<'a> {
-        &mut self.raw
-    }
-}
-impl<'a> core::ops::Deref for WriteDescriptorSet<'a> {
-    type Target = vk::WriteDescriptorSet<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::WriteDescriptorSetInlineUniformBlock`].
 
@@ -20808,61 +10395,14 @@ pub struct WriteDescriptorSetInlineUniformBlock<'a> {
     raw: vk::WriteDescriptorSetInlineUniformBlock<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(WriteDescriptorSetInlineUniformBlock, 'a; zeroed chained);
 impl<'a> WriteDescriptorSetInlineUniformBlock<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `pData`.
     #[inline]
     pub fn data(mut self, value: &'a [u8]) -> Self {
         self.raw.data_size = value.len() as _;
         self.raw.p_data = value.as_ptr().cast();
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::WriteDescriptorSetInlineUniformBlock<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(
-        &mut self,
-    ) -> &mut vk::WriteDescriptorSetInlineUniformBlock<'a> {
-        &mut self.raw
-    }
-}
-impl Default for WriteDescriptorSetInlineUniformBlock<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-impl<'a> core::ops::Deref for WriteDescriptorSetInlineUniformBlock<'a> {
-    type Target = vk::WriteDescriptorSetInlineUniformBlock<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }
 unsafe impl<'a> Extends<WriteDescriptorSet<'a>>
@@ -20885,16 +10425,11 @@ pub struct XcbSurfaceCreateInfoKHR<'a> {
     raw: vk::XcbSurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_xcb_surface")] XcbSurfaceCreateInfoKHR, 'a; zeroed chained
+);
 #[cfg(feature = "khr_xcb_surface")]
 impl<'a> XcbSurfaceCreateInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::XcbSurfaceCreateFlagsKHR) -> Self {
@@ -20921,46 +10456,6 @@ impl<'a> XcbSurfaceCreateInfoKHR<'a> {
         self.raw.window = value;
         self
     }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::XcbSurfaceCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::XcbSurfaceCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_xcb_surface")]
-impl Default for XcbSurfaceCreateInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_xcb_surface")]
-impl<'a> core::ops::Deref for XcbSurfaceCreateInfoKHR<'a> {
-    type Target = vk::XcbSurfaceCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
-    }
 }
 /**Safe counterpart of [`vk::XlibSurfaceCreateInfoKHR`].
 
@@ -20980,16 +10475,11 @@ pub struct XlibSurfaceCreateInfoKHR<'a> {
     raw: vk::XlibSurfaceCreateInfoKHR<'a>,
     _marker: PhantomData<&'a ()>,
 }
+safe_struct!(
+    #[cfg(feature = "khr_xlib_surface")] XlibSurfaceCreateInfoKHR, 'a; zeroed chained
+);
 #[cfg(feature = "khr_xlib_surface")]
 impl<'a> XlibSurfaceCreateInfoKHR<'a> {
-    /// A struct with every member zero or empty (and `sType` set).
-    #[inline]
-    pub fn new() -> Self {
-        Self {
-            raw: Default::default(),
-            _marker: PhantomData,
-        }
-    }
     ///Sets `flags`.
     #[inline]
     pub fn flags(mut self, value: vk::XlibSurfaceCreateFlagsKHR) -> Self {
@@ -21015,45 +10505,5 @@ impl<'a> XlibSurfaceCreateInfoKHR<'a> {
     pub unsafe fn window(mut self, value: vk::Window) -> Self {
         self.raw.window = value;
         self
-    }
-    /// Pushes a struct that extends this one onto its `pNext` chain; only
-    /// structs that the registry says extend this one are accepted.
-    ///
-    /// `next` becomes one node of this chain: whatever `next` chained before is
-    /// no longer on it, and `next` stays borrowed, for as long as this struct's
-    /// own borrows, so it cannot be used again with this chain's pointer in it.
-    #[inline]
-    pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-        unsafe {
-            let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-            (*node).p_next = self.raw.p_next as *mut _;
-            self.raw.p_next = node as _;
-        }
-        self
-    }
-    /// The ash struct this lowers to.
-    #[inline]
-    pub fn as_raw(&self) -> &vk::XlibSurfaceCreateInfoKHR<'a> {
-        &self.raw
-    }
-    /// The ash struct, for a command that writes into it.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn as_raw_mut(&mut self) -> &mut vk::XlibSurfaceCreateInfoKHR<'a> {
-        &mut self.raw
-    }
-}
-#[cfg(feature = "khr_xlib_surface")]
-impl Default for XlibSurfaceCreateInfoKHR<'_> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-#[cfg(feature = "khr_xlib_surface")]
-impl<'a> core::ops::Deref for XlibSurfaceCreateInfoKHR<'a> {
-    type Target = vk::XlibSurfaceCreateInfoKHR<'a>;
-    #[inline]
-    fn deref(&self) -> &Self::Target {
-        &self.raw
     }
 }

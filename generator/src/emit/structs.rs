@@ -36,7 +36,7 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         //! Safe counterparts of the registry's structs that carry handles, pointers or
         //! an `sType`. Plain structs (`vk::Extent2D`, ...) are used as ash has them.
         #![allow(clippy::needless_lifetimes, clippy::new_without_default, clippy::field_reassign_with_default, clippy::unnecessary_cast)]
-        use crate::{chain::Extends, handles::*, CStrPtr, Handle, HandleSlice};
+        use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice};
         use ash::vk;
         use core::marker::PhantomData;
         #(#items)*
@@ -255,69 +255,31 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
         }
     }
     let has_next = members.iter().any(|(_, s)| matches!(s, Member::PNext));
-    let push_next = has_next.then(|| {
-        quote! {
-            /// Pushes a struct that extends this one onto its `pNext` chain; only
-            /// structs that the registry says extend this one are accepted.
-            ///
-            /// `next` becomes one node of this chain: whatever `next` chained before is
-            /// no longer on it, and `next` stays borrowed, for as long as this struct's
-            /// own borrows, so it cannot be used again with this chain's pointer in it.
-            #[inline]
-            pub fn push_next<T: Extends<Self>>(mut self, next: &'a mut T) -> Self {
-                // SAFETY: `Extends` is implemented only for structs that begin with
-                // `sType` and `pNext` (the VkBaseOutStructure layout), as this one
-                // does, and only for `T` of this struct's lifetime; `next` is
-                // borrowed for that lifetime, so the chain it now points into
-                // outlives every use of it.
-                unsafe {
-                    let node = next as *mut T as *mut vk::BaseOutStructure<'a>;
-                    (*node).p_next = self.raw.p_next as *mut _;
-                    self.raw.p_next = node as _;
-                }
-                self
-            }
-        }
-    });
     let rules = doc_rules(cx, name);
     let doc = format!(
         "Safe counterpart of [`vk::{}`].{rules}",
         super::names::type_name(name)
     );
-    let (new_fn, default_impl) = if ctor_args.is_empty() {
-        (
-            quote! {
-                /// A struct with every member zero or empty (and `sType` set).
-                #[inline]
-                pub fn new() -> Self {
-                    Self { raw: Default::default(), _marker: PhantomData }
-                }
-            },
-            quote! {
-                #cfg
-                impl Default for #id<'_> {
-                    fn default() -> Self {
-                        Self::new()
-                    }
-                }
-            },
-        )
+    let mut parts = Vec::new();
+    let new_fn = if ctor_args.is_empty() {
+        parts.push(quote!(zeroed));
+        quote!()
     } else {
-        (
-            quote! {
-                /// A struct with its required members set and every other member zero or
-                /// empty (and `sType` set).
-                #[inline]
-                pub fn new(#(#ctor_args),*) -> Self {
-                    #[allow(unused_mut)]
-                    let mut raw: #raw_ty = Default::default();
-                    #(#ctor_sets)*
-                    Self { raw, _marker: PhantomData }
-                }
-            },
-            quote!(),
-        )
+        quote! {
+            /// A struct with its required members set and every other member zero or
+            /// empty (and `sType` set).
+            #[inline]
+            pub fn new(#(#ctor_args),*) -> Self {
+                #[allow(unused_mut)]
+                let mut raw: #raw_ty = Default::default();
+                #(#ctor_sets)*
+                Self { raw, _marker: PhantomData }
+            }
+        }
     };
+    if has_next {
+        parts.push(quote!(chained));
+    }
     let extends: Vec<TokenStream> = model.types[name]
         .struct_extends
         .iter()
@@ -335,6 +297,16 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
             }
         })
         .collect();
+    let borrows = facts.has_lifetime(name).then(|| quote!(, 'a));
+    let setters_impl = (!setters.is_empty() || !new_fn.is_empty()).then(|| {
+        quote! {
+            #cfg
+            impl<'a> #id<'a> {
+                #new_fn
+                #(#setters)*
+            }
+        }
+    });
     quote! {
         #[doc = #doc]
         #cfg
@@ -344,32 +316,8 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
             raw: #raw_ty,
             _marker: PhantomData<&'a ()>,
         }
-        #cfg
-        impl<'a> #id<'a> {
-            #new_fn
-            #(#setters)*
-            #push_next
-            /// The ash struct this lowers to.
-            #[inline]
-            pub fn as_raw(&self) -> &#raw_ty {
-                &self.raw
-            }
-            /// The ash struct, for a command that writes into it.
-            #[inline]
-            #[allow(dead_code)]
-            pub(crate) fn as_raw_mut(&mut self) -> &mut #raw_ty {
-                &mut self.raw
-            }
-        }
-        #default_impl
-        #cfg
-        impl<'a> core::ops::Deref for #id<'a> {
-            type Target = #raw_ty;
-            #[inline]
-            fn deref(&self) -> &Self::Target {
-                &self.raw
-            }
-        }
+        safe_struct!(#cfg #id #borrows; #(#parts)*);
+        #setters_impl
         #(#extends)*
     }
 }
