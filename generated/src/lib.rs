@@ -25,6 +25,10 @@ pub mod api_info;
 #[path = "generated/checks.rs"]
 #[rustfmt::skip]
 mod checks;
+#[cfg(feature = "runtime_implicit_validations")]
+#[path = "generated/command_checks.rs"]
+#[rustfmt::skip]
+mod command_checks;
 #[path = "generated/commands.rs"]
 #[rustfmt::skip]
 mod commands;

@@ -18,8 +18,6 @@
 use crate::handles::*;
 use crate::structs::*;
 use crate::{recorder::*, Entry, Error, Handle, Result};
-#[cfg(feature = "runtime_implicit_validations")]
-use crate::validation::fail;
 use ash::vk;
 #[cfg(feature = "khr_swapchain")]
 impl Device {
@@ -41,11 +39,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<(u32, vk::Result)> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_acquire_next_image_info_khr(acquire_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_acquire_next_image2_khr(acquire_info);
             r?;
         }
         crate::submission::check_semaphore_type(
@@ -126,38 +120,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(swapchain.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkAcquireNextImageKHR-swapchain-parent",
-                            "`swapchain` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                if let Some(h) = semaphore {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkAcquireNextImageKHR-semaphore-parent",
-                                "`semaphore` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                if let Some(h) = fence {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkAcquireNextImageKHR-fence-parent",
-                                "`fence` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_acquire_next_image_khr(swapchain, semaphore, fence);
             r?;
         }
         if let Some(semaphore) = semaphore {
@@ -245,19 +208,7 @@ The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if allocate_info.command_buffer_count == 0 {
-                    return Err(
-                        fail(
-                            "VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength",
-                            "`pAllocateInfo::commandBufferCount` is 0".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_command_buffer_allocate_info(allocate_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_allocate_command_buffers(allocate_info);
             r?;
         }
         unsafe { self.allocate_command_buffers_unchecked(command_pool, allocate_info) }
@@ -340,19 +291,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if allocate_info.descriptor_set_count == 0 {
-                    return Err(
-                        fail(
-                            "VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength",
-                            "`pAllocateInfo::descriptorSetCount` is 0".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_descriptor_set_allocate_info(allocate_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
         }
         unsafe {
@@ -426,11 +365,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<DeviceMemory> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_memory_allocate_info(allocate_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_allocate_memory(allocate_info);
             r?;
         }
         unsafe { self.allocate_memory_unchecked(allocate_info) }
@@ -501,26 +436,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkBindBufferMemory-buffer-parent",
-                            "`buffer` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(memory.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkBindBufferMemory-memory-parent",
-                            "`memory` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_bind_buffer_memory(buffer, memory);
             r?;
         }
         unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
@@ -578,21 +494,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if bind_infos.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkBindBufferMemory2-bindInfoCount-arraylength",
-                            "`bindInfoCount` is 0".into(),
-                        ),
-                    );
-                }
-                for x in bind_infos.iter() {
-                    crate::checks::check_bind_buffer_memory_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_bind_buffer_memory2(bind_infos);
             r?;
         }
         unsafe { self.bind_buffer_memory2_unchecked(bind_infos) }
@@ -652,26 +554,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkBindImageMemory-image-parent",
-                            "`image` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(memory.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkBindImageMemory-memory-parent",
-                            "`memory` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_bind_image_memory(image, memory);
             r?;
         }
         unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
@@ -726,21 +609,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if bind_infos.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkBindImageMemory2-bindInfoCount-arraylength",
-                            "`bindInfoCount` is 0".into(),
-                        ),
-                    );
-                }
-                for x in bind_infos.iter() {
-                    crate::checks::check_bind_image_memory_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_bind_image_memory2(bind_infos);
             r?;
         }
         unsafe { self.bind_image_memory2_unchecked(bind_infos) }
@@ -791,21 +660,7 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_begin_debug_utils_label_ext();
             r?;
         }
         unsafe { self.cmd_begin_debug_utils_label_ext_unchecked(label_info) }
@@ -862,36 +717,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_query_control_flags(
-                    flags,
-                    s,
-                    "VUID-vkCmdBeginQuery-flags-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginQuery-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginQuery-commonparent",
-                            "`queryPool` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_begin_query(query_pool, flags);
             if !self.accept(r) {
                 return;
             }
@@ -946,36 +772,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
     ) -> Recorder<'c, InRenderPass> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_subpass_contents(
-                    contents,
-                    s,
-                    "VUID-vkCmdBeginRenderPass-contents-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginRenderPass-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_begin_render_pass(render_pass_begin, contents);
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -1048,32 +845,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
     ) -> Recorder<'c, InRenderPass> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginRenderPass2-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
-                crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
-                Ok(())
-            })();
+            let r = self
+                .validate_cmd_begin_render_pass2(render_pass_begin, subpass_begin_info);
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -1145,23 +918,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Recorder<'c, InRendering> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBeginRendering-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_rendering_info(rendering_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_begin_rendering(rendering_info);
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -1235,55 +992,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_pipeline_bind_point(
+            let r = self
+                .validate_cmd_bind_descriptor_sets(
                     pipeline_bind_point,
-                    s,
-                    "VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if descriptor_sets.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength",
-                            "`descriptorSetCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(layout.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindDescriptorSets-commonparent",
-                            "`layout` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for h in descriptor_sets.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCmdBindDescriptorSets-commonparent",
-                                "`pDescriptorSets` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+                    layout,
+                    descriptor_sets,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -1364,36 +1078,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_index_type(
-                    index_type,
-                    s,
-                    "VUID-vkCmdBindIndexBuffer-indexType-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindIndexBuffer-commonparent",
-                            "`buffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_bind_index_buffer(buffer, index_type);
             if !self.accept(r) {
                 return;
             }
@@ -1447,36 +1132,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_pipeline_bind_point(
-                    pipeline_bind_point,
-                    s,
-                    "VUID-vkCmdBindPipeline-pipelineBindPoint-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindPipeline-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(pipeline.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindPipeline-commonparent",
-                            "`pipeline` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_bind_pipeline(pipeline_bind_point, pipeline);
             if !self.accept(r) {
                 return;
             }
@@ -1531,41 +1187,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if buffers.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindVertexBuffers-bindingCount-arraylength",
-                            "`bindingCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in buffers.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCmdBindVertexBuffers-commonparent",
-                                "`pBuffers` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_bind_vertex_buffers(buffers);
             if !self.accept(r) {
                 return;
             }
@@ -1639,41 +1261,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if buffers.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength",
-                            "`bindingCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in buffers.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCmdBindVertexBuffers2-commonparent",
-                                "`pBuffers` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_bind_vertex_buffers2(buffers);
             if !self.accept(r) {
                 return;
             }
@@ -1761,66 +1349,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
+            let r = self
+                .validate_cmd_blit_image(
+                    src_image,
                     src_image_layout,
-                    s,
-                    "VUID-vkCmdBlitImage-srcImageLayout-parameter",
-                )?;
-                crate::checks::enum_image_layout(
+                    dst_image,
                     dst_image_layout,
-                    s,
-                    "VUID-vkCmdBlitImage-dstImageLayout-parameter",
-                )?;
-                crate::checks::enum_filter(
+                    regions,
                     filter,
-                    s,
-                    "VUID-vkCmdBlitImage-filter-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBlitImage-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if regions.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBlitImage-regionCount-arraylength",
-                            "`regionCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(src_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBlitImage-commonparent",
-                            "`srcImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBlitImage-commonparent",
-                            "`dstImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in regions.iter() {
-                    crate::checks::check_image_blit(x, s)?;
-                }
-                Ok(())
-            })();
+                );
             if !self.accept(r) {
                 return;
             }
@@ -1891,23 +1428,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdBlitImage2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_blit_image_info2(blit_image_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_blit_image2(blit_image_info);
             if !self.accept(r) {
                 return;
             }
@@ -1974,41 +1495,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearAttachments-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if attachments.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearAttachments-attachmentCount-arraylength",
-                            "`attachmentCount` is 0".into(),
-                        ),
-                    );
-                }
-                if rects.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearAttachments-rectCount-arraylength",
-                            "`rectCount` is 0".into(),
-                        ),
-                    );
-                }
-                for x in attachments.iter() {
-                    crate::checks::check_clear_attachment(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_clear_attachments(attachments, rects);
             if !self.accept(r) {
                 return;
             }
@@ -2071,47 +1558,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
-                    image_layout,
-                    s,
-                    "VUID-vkCmdClearColorImage-imageLayout-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearColorImage-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if ranges.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearColorImage-rangeCount-arraylength",
-                            "`rangeCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearColorImage-commonparent",
-                            "`image` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in ranges.iter() {
-                    crate::checks::check_image_subresource_range(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_clear_color_image(image, image_layout, ranges);
             if !self.accept(r) {
                 return;
             }
@@ -2181,47 +1628,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
-                    image_layout,
-                    s,
-                    "VUID-vkCmdClearDepthStencilImage-imageLayout-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if ranges.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength",
-                            "`rangeCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdClearDepthStencilImage-commonparent",
-                            "`image` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in ranges.iter() {
-                    crate::checks::check_image_subresource_range(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self
+                .validate_cmd_clear_depth_stencil_image(image, image_layout, ranges);
             if !self.accept(r) {
                 return;
             }
@@ -2294,49 +1702,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBuffer-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if regions.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBuffer-regionCount-arraylength",
-                            "`regionCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(src_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBuffer-commonparent",
-                            "`srcBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBuffer-commonparent",
-                            "`dstBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_copy_buffer(src_buffer, dst_buffer, regions);
             if !self.accept(r) {
                 return;
             }
@@ -2392,24 +1758,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_copy_buffer_info2(copy_buffer_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_copy_buffer2(copy_buffer_info);
             if !self.accept(r) {
                 return;
             }
@@ -2480,57 +1829,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
+            let r = self
+                .validate_cmd_copy_buffer_to_image(
+                    src_buffer,
+                    dst_image,
                     dst_image_layout,
-                    s,
-                    "VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if regions.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBufferToImage-regionCount-arraylength",
-                            "`regionCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(src_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBufferToImage-commonparent",
-                            "`srcBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBufferToImage-commonparent",
-                            "`dstImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in regions.iter() {
-                    crate::checks::check_buffer_image_copy(x, s)?;
-                }
-                Ok(())
-            })();
+                    regions,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -2598,27 +1903,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_copy_buffer_to_image_info2(
-                    copy_buffer_to_image_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
             if !self.accept(r) {
                 return;
             }
@@ -2694,62 +1979,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
+            let r = self
+                .validate_cmd_copy_image(
+                    src_image,
                     src_image_layout,
-                    s,
-                    "VUID-vkCmdCopyImage-srcImageLayout-parameter",
-                )?;
-                crate::checks::enum_image_layout(
+                    dst_image,
                     dst_image_layout,
-                    s,
-                    "VUID-vkCmdCopyImage-dstImageLayout-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if regions.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage-regionCount-arraylength",
-                            "`regionCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(src_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage-commonparent",
-                            "`srcImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage-commonparent",
-                            "`dstImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in regions.iter() {
-                    crate::checks::check_image_copy(x, s)?;
-                }
-                Ok(())
-            })();
+                    regions,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -2817,24 +2054,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_copy_image_info2(copy_image_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_copy_image2(copy_image_info);
             if !self.accept(r) {
                 return;
             }
@@ -2905,57 +2125,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
+            let r = self
+                .validate_cmd_copy_image_to_buffer(
+                    src_image,
                     src_image_layout,
-                    s,
-                    "VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if regions.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImageToBuffer-regionCount-arraylength",
-                            "`regionCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(src_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImageToBuffer-commonparent",
-                            "`srcImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImageToBuffer-commonparent",
-                            "`dstBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in regions.iter() {
-                    crate::checks::check_buffer_image_copy(x, s)?;
-                }
-                Ok(())
-            })();
+                    dst_buffer,
+                    regions,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -3023,27 +2199,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_copy_image_to_buffer_info2(
-                    copy_image_to_buffer_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
             if !self.accept(r) {
                 return;
             }
@@ -3118,45 +2274,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_query_result_flags(
-                    flags,
-                    s,
-                    "VUID-vkCmdCopyQueryPoolResults-flags-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyQueryPoolResults-commonparent",
-                            "`queryPool` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyQueryPoolResults-commonparent",
-                            "`dstBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self
+                .validate_cmd_copy_query_pool_results(query_pool, dst_buffer, flags);
             if !self.accept(r) {
                 return;
             }
@@ -3233,21 +2352,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 61 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDispatch-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_dispatch();
             if !self.accept(r) {
                 return;
             }
@@ -3304,21 +2409,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 65 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDispatchBase-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_dispatch_base();
             if !self.accept(r) {
                 return;
             }
@@ -3387,31 +2478,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 60 (exp
     pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDispatchIndirect-commonparent",
-                            "`buffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_dispatch_indirect(buffer);
             if !self.accept(r) {
                 return;
             }
@@ -3464,21 +2531,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 192 (ex
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDraw-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_draw();
             if !self.accept(r) {
                 return;
             }
@@ -3546,21 +2599,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndexed-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_draw_indexed();
             if !self.accept(r) {
                 return;
             }
@@ -3632,31 +2671,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 200 (ex
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndexedIndirect-commonparent",
-                            "`buffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_draw_indexed_indirect(buffer);
             if !self.accept(r) {
                 return;
             }
@@ -3724,40 +2739,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 205 (ex
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                            "`buffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(count_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                            "`countBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_draw_indexed_indirect_count(buffer, count_buffer);
             if !self.accept(r) {
                 return;
             }
@@ -3834,31 +2816,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 198 (ex
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndirect-commonparent",
-                            "`buffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_draw_indirect(buffer);
             if !self.accept(r) {
                 return;
             }
@@ -3918,40 +2876,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203 (ex
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndirectCount-commonparent",
-                            "`buffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(count_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdDrawIndirectCount-commonparent",
-                            "`countBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_draw_indirect_count(buffer, count_buffer);
             if !self.accept(r) {
                 return;
             }
@@ -4020,21 +2945,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_end_debug_utils_label_ext();
             r?;
         }
         unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
@@ -4076,31 +2987,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
     pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndQuery-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndQuery-commonparent",
-                            "`queryPool` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_end_query(query_pool);
             if !self.accept(r) {
                 return;
             }
@@ -4148,29 +3035,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndRenderPass-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndRenderPass-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_end_render_pass();
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -4213,31 +3078,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndRenderPass2-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_subpass_end_info(subpass_end_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_end_render_pass2(subpass_end_info);
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -4287,21 +3128,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_end_rendering();
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -4345,50 +3172,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 51 (exp
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdExecuteCommands-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                if command_buffers.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
-                            "`commandBufferCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in command_buffers.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCmdExecuteCommands-commonparent",
-                                "`pCommandBuffers` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_execute_commands(command_buffers);
             r?;
         }
         for h in command_buffers {
@@ -4464,32 +3248,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdFillBuffer-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdFillBuffer-commonparent",
-                            "`dstBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_fill_buffer(dst_buffer);
             if !self.accept(r) {
                 return;
             }
@@ -4540,21 +3299,7 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_insert_debug_utils_label_ext();
             r?;
         }
         unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
@@ -4607,35 +3352,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_subpass_contents(
-                    contents,
-                    s,
-                    "VUID-vkCmdNextSubpass-contents-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdNextSubpass-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdNextSubpass-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_next_subpass(contents);
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return;
@@ -4681,32 +3398,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdNextSubpass2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdNextSubpass2-bufferlevel",
-                            "the command buffer is not a primary command buffer".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
-                crate::checks::check_subpass_end_info(subpass_end_info, s)?;
-                Ok(())
-            })();
+            let r = self
+                .validate_cmd_next_subpass2(subpass_begin_info, subpass_end_info);
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return;
@@ -4769,44 +3462,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 39 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_pipeline_stage_flags(
+            let r = self
+                .validate_cmd_pipeline_barrier(
                     src_stage_mask,
-                    s,
-                    "VUID-vkCmdPipelineBarrier-srcStageMask-parameter",
-                )?;
-                crate::checks::flags_pipeline_stage_flags(
                     dst_stage_mask,
-                    s,
-                    "VUID-vkCmdPipelineBarrier-dstStageMask-parameter",
-                )?;
-                crate::checks::flags_dependency_flags(
                     dependency_flags,
-                    s,
-                    "VUID-vkCmdPipelineBarrier-dependencyFlags-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in memory_barriers.iter() {
-                    crate::checks::check_memory_barrier(x, s)?;
-                }
-                for x in image_memory_barriers.iter() {
-                    crate::checks::check_image_memory_barrier(x, s)?;
-                }
-                Ok(())
-            })();
+                    memory_barriers,
+                    image_memory_barriers,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -4901,24 +3564,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
     pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_dependency_info(dependency_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_pipeline_barrier2(dependency_info);
             if !self.accept(r) {
                 return;
             }
@@ -4988,52 +3634,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_shader_stage_flags(
-                    stage_flags,
-                    s,
-                    "VUID-vkCmdPushConstants-stageFlags-parameter",
-                )?;
-                if stage_flags.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
-                            "`stageFlags` is empty".into(),
-                        ),
-                    );
-                }
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if values.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdPushConstants-size-arraylength",
-                            "`size` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(layout.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdPushConstants-commonparent",
-                            "`layout` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_push_constants(layout, stage_flags, values);
             if !self.accept(r) {
                 return;
             }
@@ -5095,36 +3696,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_pipeline_stage_flags(
-                    stage_mask,
-                    s,
-                    "VUID-vkCmdResetEvent-stageMask-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResetEvent-commonparent",
-                            "`event` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_reset_event(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
@@ -5177,36 +3749,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_pipeline_stage_flags2(
-                    stage_mask,
-                    s,
-                    "VUID-vkCmdResetEvent2-stageMask-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResetEvent2-commonparent",
-                            "`event` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_reset_event2(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
@@ -5260,31 +3803,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResetQueryPool-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode,opticalflow operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResetQueryPool-commonparent",
-                            "`queryPool` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_reset_query_pool(query_pool);
             if !self.accept(r) {
                 return;
             }
@@ -5353,61 +3872,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_image_layout(
+            let r = self
+                .validate_cmd_resolve_image(
+                    src_image,
                     src_image_layout,
-                    s,
-                    "VUID-vkCmdResolveImage-srcImageLayout-parameter",
-                )?;
-                crate::checks::enum_image_layout(
+                    dst_image,
                     dst_image_layout,
-                    s,
-                    "VUID-vkCmdResolveImage-dstImageLayout-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResolveImage-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if regions.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResolveImage-regionCount-arraylength",
-                            "`regionCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(src_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResolveImage-commonparent",
-                            "`srcImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResolveImage-commonparent",
-                            "`dstImage` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in regions.iter() {
-                    crate::checks::check_image_resolve(x, s)?;
-                }
-                Ok(())
-            })();
+                    regions,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -5478,23 +3950,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdResolveImage2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_resolve_image_info2(resolve_image_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_resolve_image2(resolve_image_info);
             if !self.accept(r) {
                 return;
             }
@@ -5552,21 +4008,7 @@ The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.kh
     pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_blend_constants();
             if !self.accept(r) {
                 return;
             }
@@ -5611,27 +4053,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_cull_mode_flags(
-                    cull_mode,
-                    s,
-                    "VUID-vkCmdSetCullMode-cullMode-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetCullMode-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_cull_mode(cull_mode);
             if !self.accept(r) {
                 return;
             }
@@ -5673,21 +4095,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_bias();
             if !self.accept(r) {
                 return;
             }
@@ -5744,21 +4152,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_bias_enable();
             if !self.accept(r) {
                 return;
             }
@@ -5806,21 +4200,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_bounds();
             if !self.accept(r) {
                 return;
             }
@@ -5870,21 +4250,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_bounds_test_enable();
             if !self.accept(r) {
                 return;
             }
@@ -5931,27 +4297,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_compare_op(
-                    depth_compare_op,
-                    s,
-                    "VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_compare_op(depth_compare_op);
             if !self.accept(r) {
                 return;
             }
@@ -5995,21 +4341,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_test_enable();
             if !self.accept(r) {
                 return;
             }
@@ -6053,21 +4385,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_depth_write_enable();
             if !self.accept(r) {
                 return;
             }
@@ -6110,22 +4428,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     pub fn cmd_set_device_mask(&mut self, device_mask: u32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE
-                        | vk::QueueFlags::TRANSFER,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,transfer operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_device_mask();
             if !self.accept(r) {
                 return;
             }
@@ -6165,36 +4468,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 15 (exp
     pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_pipeline_stage_flags(
-                    stage_mask,
-                    s,
-                    "VUID-vkCmdSetEvent-stageMask-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetEvent-commonparent",
-                            "`event` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_event(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
@@ -6247,32 +4521,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetEvent2-commonparent",
-                            "`event` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                crate::checks::check_dependency_info(dependency_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_event2(event, dependency_info);
             if !self.accept(r) {
                 return;
             }
@@ -6334,27 +4583,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_front_face(
-                    front_face,
-                    s,
-                    "VUID-vkCmdSetFrontFace-frontFace-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetFrontFace-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_front_face(front_face);
             if !self.accept(r) {
                 return;
             }
@@ -6391,21 +4620,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_line_width();
             if !self.accept(r) {
                 return;
             }
@@ -6445,21 +4660,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_primitive_restart_enable();
             if !self.accept(r) {
                 return;
             }
@@ -6509,27 +4710,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_primitive_topology(
-                    primitive_topology,
-                    s,
-                    "VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_primitive_topology(primitive_topology);
             if !self.accept(r) {
                 return;
             }
@@ -6576,21 +4757,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_rasterizer_discard_enable();
             if !self.accept(r) {
                 return;
             }
@@ -6641,29 +4808,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
     pub fn cmd_set_scissor<'a>(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if scissors.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetScissor-scissorCount-arraylength",
-                            "`scissorCount` is 0".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_scissor(scissors);
             if !self.accept(r) {
                 return;
             }
@@ -6715,29 +4860,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
     pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if scissors.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetScissorWithCount-scissorCount-arraylength",
-                            "`scissorCount` is 0".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_scissor_with_count(scissors);
             if !self.accept(r) {
                 return;
             }
@@ -6789,35 +4912,7 @@ The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registr
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_stencil_face_flags(
-                    face_mask,
-                    s,
-                    "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
-                )?;
-                if face_mask.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
-                            "`faceMask` is empty".into(),
-                        ),
-                    );
-                }
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_stencil_compare_mask(face_mask);
             if !self.accept(r) {
                 return;
             }
@@ -6875,55 +4970,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_stencil_face_flags(
+            let r = self
+                .validate_cmd_set_stencil_op(
                     face_mask,
-                    s,
-                    "VUID-vkCmdSetStencilOp-faceMask-parameter",
-                )?;
-                if face_mask.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilOp-faceMask-requiredbitmask",
-                            "`faceMask` is empty".into(),
-                        ),
-                    );
-                }
-                crate::checks::enum_stencil_op(
                     fail_op,
-                    s,
-                    "VUID-vkCmdSetStencilOp-failOp-parameter",
-                )?;
-                crate::checks::enum_stencil_op(
                     pass_op,
-                    s,
-                    "VUID-vkCmdSetStencilOp-passOp-parameter",
-                )?;
-                crate::checks::enum_stencil_op(
                     depth_fail_op,
-                    s,
-                    "VUID-vkCmdSetStencilOp-depthFailOp-parameter",
-                )?;
-                crate::checks::enum_compare_op(
                     compare_op,
-                    s,
-                    "VUID-vkCmdSetStencilOp-compareOp-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilOp-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+                );
             if !self.accept(r) {
                 return;
             }
@@ -6990,35 +5044,7 @@ The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_stencil_face_flags(
-                    face_mask,
-                    s,
-                    "VUID-vkCmdSetStencilReference-faceMask-parameter",
-                )?;
-                if face_mask.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
-                            "`faceMask` is empty".into(),
-                        ),
-                    );
-                }
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_stencil_reference(face_mask);
             if !self.accept(r) {
                 return;
             }
@@ -7063,21 +5089,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_stencil_test_enable();
             if !self.accept(r) {
                 return;
             }
@@ -7125,35 +5137,7 @@ The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_stencil_face_flags(
-                    face_mask,
-                    s,
-                    "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
-                )?;
-                if face_mask.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
-                            "`faceMask` is empty".into(),
-                        ),
-                    );
-                }
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_stencil_write_mask(face_mask);
             if !self.accept(r) {
                 return;
             }
@@ -7204,29 +5188,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if viewports.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetViewport-viewportCount-arraylength",
-                            "`viewportCount` is 0".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_viewport(viewports);
             if !self.accept(r) {
                 return;
             }
@@ -7278,29 +5240,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if viewports.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdSetViewportWithCount-viewportCount-arraylength",
-                            "`viewportCount` is 0".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_set_viewport_with_count(viewports);
             if !self.accept(r) {
                 return;
             }
@@ -7358,40 +5298,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if data.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdUpdateBuffer-dataSize-arraylength",
-                            "`dataSize` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdUpdateBuffer-commonparent",
-                            "`dstBuffer` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_update_buffer(dst_buffer, data);
             if !self.accept(r) {
                 return;
             }
@@ -7459,57 +5366,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_pipeline_stage_flags(
+            let r = self
+                .validate_cmd_wait_events(
+                    events,
                     src_stage_mask,
-                    s,
-                    "VUID-vkCmdWaitEvents-srcStageMask-parameter",
-                )?;
-                crate::checks::flags_pipeline_stage_flags(
                     dst_stage_mask,
-                    s,
-                    "VUID-vkCmdWaitEvents-dstStageMask-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWaitEvents-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if events.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWaitEvents-eventCount-arraylength",
-                            "`eventCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in events.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCmdWaitEvents-commonparent",
-                                "`pEvents` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                for x in memory_barriers.iter() {
-                    crate::checks::check_memory_barrier(x, s)?;
-                }
-                for x in image_memory_barriers.iter() {
-                    crate::checks::check_image_memory_barrier(x, s)?;
-                }
-                Ok(())
-            })();
+                    memory_barriers,
+                    image_memory_barriers,
+                );
             if !self.accept(r) {
                 return;
             }
@@ -7619,44 +5483,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWaitEvents2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if events.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWaitEvents2-eventCount-arraylength",
-                            "`eventCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in events.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCmdWaitEvents2-commonparent",
-                                "`pEvents` does not come from the VkDevice the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                for x in dependency_infos.iter() {
-                    crate::checks::check_dependency_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_wait_events2(events, dependency_infos);
             if !self.accept(r) {
                 return;
             }
@@ -7731,37 +5558,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::enum_pipeline_stage_flag_bits(
-                    pipeline_stage,
-                    s,
-                    "VUID-vkCmdWriteTimestamp-pipelineStage-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWriteTimestamp-commonparent",
-                            "`queryPool` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_write_timestamp(pipeline_stage, query_pool);
             if !self.accept(r) {
                 return;
             }
@@ -7820,37 +5617,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
     ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_pipeline_stage_flags2(
-                    stage,
-                    s,
-                    "VUID-vkCmdWriteTimestamp2-stage-parameter",
-                )?;
-                if !crate::validation::supports(
-                    self.command_buffer().parent().queue_flags(),
-                    vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS
-                        | vk::QueueFlags::COMPUTE,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
-                            "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                                .into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdWriteTimestamp2-commonparent",
-                            "`queryPool` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_cmd_write_timestamp2(stage, query_pool);
             if !self.accept(r) {
                 return;
             }
@@ -7900,11 +5667,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<Buffer> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_buffer_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_buffer(create_info);
             r?;
         }
         unsafe { self.create_buffer_unchecked(create_info) }
@@ -7955,11 +5718,7 @@ The rules are on [`vkCreateBufferView`'s reference page](https://registry.khrono
     ) -> Result<BufferView> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_buffer_view_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_buffer_view(create_info);
             r?;
         }
         unsafe { self.create_buffer_view_unchecked(create_info) }
@@ -8031,11 +5790,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<CommandPool> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_command_pool_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_command_pool(create_info);
             r?;
         }
         unsafe { self.create_command_pool_unchecked(create_info) }
@@ -8101,31 +5856,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if create_infos.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
-                            "`createInfoCount` is 0".into(),
-                        ),
-                    );
-                }
-                if let Some(h) = pipeline_cache {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCreateComputePipelines-pipelineCache-parent",
-                                "`pipelineCache` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                for x in create_infos.iter() {
-                    crate::checks::check_compute_pipeline_create_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
         }
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
@@ -8206,14 +5937,7 @@ The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://reg
     ) -> Result<DebugUtilsMessengerEXT> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_debug_utils_messenger_create_info_ext(
-                    create_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_create_debug_utils_messenger_ext(create_info);
             r?;
         }
         unsafe { self.create_debug_utils_messenger_ext_unchecked(create_info) }
@@ -8267,11 +5991,7 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
     ) -> Result<DescriptorPool> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_descriptor_pool_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_descriptor_pool(create_info);
             r?;
         }
         unsafe { self.create_descriptor_pool_unchecked(create_info) }
@@ -8322,11 +6042,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
     ) -> Result<DescriptorSetLayout> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_descriptor_set_layout(create_info);
             r?;
         }
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
@@ -8396,14 +6112,7 @@ The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://r
     ) -> Result<DescriptorUpdateTemplate> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_descriptor_update_template_create_info(
-                    create_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_create_descriptor_update_template(create_info);
             r?;
         }
         unsafe { self.create_descriptor_update_template_unchecked(create_info) }
@@ -8483,22 +6192,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<Device> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &{
-                    let mut s = self.parent().scope();
-                    s.exts = s
-                        .exts
-                        .with(
-                            crate::checks::Exts::new(
-                                0,
-                                &create_info.enabled_extensions(),
-                            ),
-                        );
-                    s
-                };
-                crate::checks::check_device_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_device(create_info);
             r?;
         }
         unsafe { self.create_device_unchecked(create_info) }
@@ -8555,11 +6249,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_event_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_event(create_info);
             r?;
         }
         unsafe { self.create_event_unchecked(create_info) }
@@ -8607,11 +6297,7 @@ The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org
     pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_fence_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_fence(create_info);
             r?;
         }
         unsafe { self.create_fence_unchecked(create_info) }
@@ -8664,11 +6350,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<Framebuffer> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_framebuffer_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_framebuffer(create_info);
             r?;
         }
         unsafe { self.create_framebuffer_unchecked(create_info) }
@@ -8744,31 +6426,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if create_infos.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
-                            "`createInfoCount` is 0".into(),
-                        ),
-                    );
-                }
-                if let Some(h) = pipeline_cache {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
-                                "`pipelineCache` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                for x in create_infos.iter() {
-                    crate::checks::check_graphics_pipeline_create_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self
+                .validate_create_graphics_pipelines(pipeline_cache, create_infos);
             r?;
         }
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
@@ -8847,11 +6506,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_image_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_image(create_info);
             r?;
         }
         unsafe { self.create_image_unchecked(create_info) }
@@ -8921,11 +6576,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
     ) -> Result<ImageView> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_image_view_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_image_view(create_info);
             r?;
         }
         unsafe { self.create_image_view_unchecked(create_info) }
@@ -8996,18 +6647,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<Instance> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &crate::validation::Scope {
-                    exts: crate::checks::Exts::new(
-                        vk::api_version_minor(create_info.api_version()),
-                        &create_info.enabled_extensions(),
-                    ),
-                    instance: None,
-                    device: None,
-                };
-                crate::checks::check_instance_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_instance(create_info);
             r?;
         }
         unsafe { self.create_instance_unchecked(create_info) }
@@ -9065,11 +6705,7 @@ The rules are on [`vkCreateMetalSurfaceEXT`'s reference page](https://registry.k
     ) -> Result<SurfaceKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_metal_surface_create_info_ext(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_metal_surface_ext(create_info);
             r?;
         }
         unsafe { self.create_metal_surface_ext_unchecked(create_info) }
@@ -9123,11 +6759,7 @@ The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khr
     ) -> Result<PipelineCache> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_pipeline_cache_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_pipeline_cache(create_info);
             r?;
         }
         unsafe { self.create_pipeline_cache_unchecked(create_info) }
@@ -9178,11 +6810,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
     ) -> Result<PipelineLayout> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_pipeline_layout_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_pipeline_layout(create_info);
             r?;
         }
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
@@ -9254,11 +6882,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<PrivateDataSlot> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_private_data_slot_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_private_data_slot(create_info);
             r?;
         }
         unsafe { self.create_private_data_slot_unchecked(create_info) }
@@ -9309,11 +6933,7 @@ The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos
     ) -> Result<QueryPool> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_query_pool_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_query_pool(create_info);
             r?;
         }
         unsafe { self.create_query_pool_unchecked(create_info) }
@@ -9364,11 +6984,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
     ) -> Result<RenderPass> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_render_pass_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_render_pass(create_info);
             r?;
         }
         unsafe { self.create_render_pass_unchecked(create_info) }
@@ -9419,11 +7035,7 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
     ) -> Result<RenderPass> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_render_pass_create_info2(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_render_pass2(create_info);
             r?;
         }
         unsafe { self.create_render_pass2_unchecked(create_info) }
@@ -9476,11 +7088,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<Sampler> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_sampler_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_sampler(create_info);
             r?;
         }
         unsafe { self.create_sampler_unchecked(create_info) }
@@ -9552,14 +7160,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<SamplerYcbcrConversion> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_sampler_ycbcr_conversion_create_info(
-                    create_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_create_sampler_ycbcr_conversion(create_info);
             r?;
         }
         unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
@@ -9610,11 +7211,7 @@ The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos
     ) -> Result<Semaphore> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_semaphore_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_semaphore(create_info);
             r?;
         }
         unsafe { self.create_semaphore_unchecked(create_info) }
@@ -9673,11 +7270,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<ShaderModule> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_shader_module_create_info(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_shader_module(create_info);
             r?;
         }
         unsafe { self.create_shader_module_unchecked(create_info) }
@@ -9745,11 +7338,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_swapchain_create_info_khr(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_swapchain_khr(create_info);
             r?;
         }
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
@@ -9822,11 +7411,7 @@ The rules are on [`vkCreateWaylandSurfaceKHR`'s reference page](https://registry
     ) -> Result<SurfaceKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_wayland_surface_create_info_khr(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_wayland_surface_khr(create_info);
             r?;
         }
         unsafe { self.create_wayland_surface_khr_unchecked(create_info) }
@@ -9881,11 +7466,7 @@ The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.k
     ) -> Result<SurfaceKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_win32_surface_create_info_khr(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_win32_surface_khr(create_info);
             r?;
         }
         unsafe { self.create_win32_surface_khr_unchecked(create_info) }
@@ -9940,11 +7521,7 @@ The rules are on [`vkCreateXcbSurfaceKHR`'s reference page](https://registry.khr
     ) -> Result<SurfaceKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_xcb_surface_create_info_khr(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_xcb_surface_khr(create_info);
             r?;
         }
         unsafe { self.create_xcb_surface_khr_unchecked(create_info) }
@@ -9999,11 +7576,7 @@ The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.kh
     ) -> Result<SurfaceKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_xlib_surface_create_info_khr(create_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_create_xlib_surface_khr(create_info);
             r?;
         }
         unsafe { self.create_xlib_surface_khr_unchecked(create_info) }
@@ -10429,17 +8002,7 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if memory_ranges.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
-                            "`memoryRangeCount` is 0".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
             r?;
         }
         unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
@@ -10516,18 +8079,7 @@ The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://regi
     ) -> Result<vk::MemoryRequirements> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(buffer.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetBufferMemoryRequirements-buffer-parent",
-                            "`buffer` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_buffer_memory_requirements(buffer);
             r?;
         }
         Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
@@ -10570,11 +8122,7 @@ The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://reg
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_memory_requirements2(memory_requirements, s)?;
-                Ok(())
-            })();
+            let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
             r?;
         }
         Ok(unsafe {
@@ -10651,12 +8199,8 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
-                crate::checks::check_descriptor_set_layout_support(support, s)?;
-                Ok(())
-            })();
+            let r = self
+                .validate_get_descriptor_set_layout_support(create_info, support);
             r?;
         }
         Ok(unsafe {
@@ -10705,12 +8249,11 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_device_buffer_memory_requirements(info, s)?;
-                crate::checks::check_memory_requirements2(memory_requirements, s)?;
-                Ok(())
-            })();
+            let r = self
+                .validate_get_device_buffer_memory_requirements(
+                    info,
+                    memory_requirements,
+                );
             r?;
         }
         Ok(unsafe {
@@ -10839,19 +8382,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_instance(surface.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent",
-                            "`surface` does not come from the VkInstance the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_device_group_surface_present_modes_khr(surface);
             r?;
         }
         unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
@@ -10910,12 +8441,11 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_device_image_memory_requirements(info, s)?;
-                crate::checks::check_memory_requirements2(memory_requirements, s)?;
-                Ok(())
-            })();
+            let r = self
+                .validate_get_device_image_memory_requirements(
+                    info,
+                    memory_requirements,
+                );
             r?;
         }
         Ok(unsafe {
@@ -10967,11 +8497,7 @@ The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](h
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_device_image_memory_requirements(info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_get_device_image_sparse_memory_requirements(info);
             r?;
         }
         unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
@@ -11041,18 +8567,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<vk::DeviceSize> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(memory.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetDeviceMemoryCommitment-memory-parent",
-                            "`memory` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_device_memory_commitment(memory);
             r?;
         }
         Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
@@ -11153,11 +8668,7 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
     ) -> Result<Queue> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_device_queue_info2(queue_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_get_device_queue2(queue_info);
             r?;
         }
         Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
@@ -11210,18 +8721,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetEventStatus-event-parent",
-                            "`event` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_event_status(event);
             r?;
         }
         unsafe { self.get_event_status_unchecked(event) }
@@ -11259,18 +8759,7 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
     pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(fence.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetFenceStatus-fence-parent",
-                            "`fence` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_fence_status(fence);
             r?;
         }
         unsafe { self.get_fence_status_unchecked(fence) }
@@ -11317,18 +8806,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<vk::MemoryRequirements> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetImageMemoryRequirements-image-parent",
-                            "`image` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_image_memory_requirements(image);
             r?;
         }
         Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
@@ -11371,12 +8849,8 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_image_memory_requirements_info2(info, s)?;
-                crate::checks::check_memory_requirements2(memory_requirements, s)?;
-                Ok(())
-            })();
+            let r = self
+                .validate_get_image_memory_requirements2(info, memory_requirements);
             r?;
         }
         Ok(unsafe {
@@ -11426,18 +8900,7 @@ The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https:/
     ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetImageSparseMemoryRequirements-image-parent",
-                            "`image` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_image_sparse_memory_requirements(image);
             r?;
         }
         unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
@@ -11560,19 +9023,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
     ) -> Result<vk::SubresourceLayout> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(image.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetImageSubresourceLayout-image-parent",
-                            "`image` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_image_subresource(subresource, s)?;
-                Ok(())
-            })();
+            let r = self.validate_get_image_subresource_layout(image, subresource);
             r?;
         }
         Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
@@ -11621,14 +9072,10 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_external_buffer_info(
+            let r = self
+                .validate_get_physical_device_external_buffer_properties(
                     external_buffer_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         Ok(unsafe {
@@ -11682,14 +9129,10 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_external_fence_info(
+            let r = self
+                .validate_get_physical_device_external_fence_properties(
                     external_fence_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         Ok(unsafe {
@@ -11743,14 +9186,10 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_external_semaphore_info(
+            let r = self
+                .validate_get_physical_device_external_semaphore_properties(
                     external_semaphore_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         Ok(unsafe {
@@ -11853,15 +9292,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
     ) -> Result<vk::FormatProperties> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::enum_format(
-                    format,
-                    s,
-                    "VUID-vkGetPhysicalDeviceFormatProperties-format-parameter",
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_format_properties(format);
             r?;
         }
         Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
@@ -11905,16 +9336,11 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::enum_format(
+            let r = self
+                .validate_get_physical_device_format_properties2(
                     format,
-                    s,
-                    "VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter",
-                )?;
-                crate::checks::check_format_properties2(format_properties, s)?;
-                Ok(())
-            })();
+                    format_properties,
+                );
             r?;
         }
         Ok(unsafe {
@@ -11977,43 +9403,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<vk::ImageFormatProperties> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::enum_format(
+            let r = self
+                .validate_get_physical_device_image_format_properties(
                     format,
-                    s,
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter",
-                )?;
-                crate::checks::enum_image_type(
                     ty,
-                    s,
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter",
-                )?;
-                crate::checks::enum_image_tiling(
                     tiling,
-                    s,
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter",
-                )?;
-                crate::checks::flags_image_usage_flags(
                     usage,
-                    s,
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter",
-                )?;
-                if usage.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask",
-                            "`usage` is empty".into(),
-                        ),
-                    );
-                }
-                crate::checks::flags_image_create_flags(
                     flags,
-                    s,
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter",
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         unsafe {
@@ -12082,18 +9479,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_image_format_info2(
+            let r = self
+                .validate_get_physical_device_image_format_properties2(
                     image_format_info,
-                    s,
-                )?;
-                crate::checks::check_image_format_properties2(
                     image_format_properties,
-                    s,
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         unsafe {
@@ -12172,14 +9562,8 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_memory_properties2(
-                    memory_properties,
-                    s,
-                )?;
-                Ok(())
-            })();
+            let r = self
+                .validate_get_physical_device_memory_properties2(memory_properties);
             r?;
         }
         Ok(unsafe {
@@ -12237,19 +9621,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if !s.owned_by_instance(surface.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent",
-                            "`surface` does not come from the VkInstance the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_present_rectangles_khr(surface);
             r?;
         }
         unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
@@ -12352,11 +9724,7 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_properties2(properties, s)?;
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_properties2(properties);
             r?;
         }
         Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
@@ -12511,43 +9879,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<Vec<vk::SparseImageFormatProperties>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::enum_format(
+            let r = self
+                .validate_get_physical_device_sparse_image_format_properties(
                     format,
-                    s,
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter",
-                )?;
-                crate::checks::enum_image_type(
                     ty,
-                    s,
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter",
-                )?;
-                crate::checks::enum_sample_count_flag_bits(
                     samples,
-                    s,
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter",
-                )?;
-                crate::checks::flags_image_usage_flags(
                     usage,
-                    s,
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter",
-                )?;
-                if usage.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask",
-                            "`usage` is empty".into(),
-                        ),
-                    );
-                }
-                crate::checks::enum_image_tiling(
                     tiling,
-                    s,
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter",
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         unsafe {
@@ -12637,14 +9976,10 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_physical_device_sparse_image_format_info2(
+            let r = self
+                .validate_get_physical_device_sparse_image_format_properties2(
                     format_info,
-                    s,
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         unsafe {
@@ -12723,19 +10058,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if !s.owned_by_instance(surface.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent",
-                            "`surface` does not come from the VkInstance the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_surface_capabilities_khr(surface);
             r?;
         }
         unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
@@ -12793,21 +10116,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if let Some(h) = surface {
-                    if !s.owned_by_instance(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent",
-                                "`surface` does not come from the VkInstance the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_surface_formats_khr(surface);
             r?;
         }
         unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
@@ -12890,21 +10199,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<Vec<vk::PresentModeKHR>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if let Some(h) = surface {
-                    if !s.owned_by_instance(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent",
-                                "`surface` does not come from the VkInstance the command is called on"
-                                    .into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_surface_present_modes_khr(surface);
             r?;
         }
         unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
@@ -12985,19 +10280,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<vk::Bool32> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if !s.owned_by_instance(surface.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent",
-                            "`surface` does not come from the VkInstance the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_physical_device_surface_support_khr(surface);
             r?;
         }
         unsafe {
@@ -13151,18 +10434,7 @@ The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.kh
     ) -> Result<Vec<u8>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(pipeline_cache.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPipelineCacheData-pipelineCache-parent",
-                            "`pipelineCache` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_pipeline_cache_data(pipeline_cache);
             r?;
         }
         unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
@@ -13242,23 +10514,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<u64> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::enum_object_type(
-                    object_type,
-                    s,
-                    "VUID-vkGetPrivateData-objectType-parameter",
-                )?;
-                if !s.owned_by_device(private_data_slot.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetPrivateData-privateDataSlot-parent",
-                            "`privateDataSlot` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_private_data(object_type, private_data_slot);
             r?;
         }
         Ok(unsafe {
@@ -13324,31 +10580,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
     ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::flags_query_result_flags(
-                    flags,
-                    s,
-                    "VUID-vkGetQueryPoolResults-flags-parameter",
-                )?;
-                if data.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkGetQueryPoolResults-dataSize-arraylength",
-                            "`dataSize` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetQueryPoolResults-queryPool-parent",
-                            "`queryPool` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_query_pool_results(query_pool, data, flags);
             r?;
         }
         unsafe {
@@ -13416,18 +10648,7 @@ The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registr
     ) -> Result<vk::Extent2D> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(render_pass.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetRenderAreaGranularity-renderPass-parent",
-                            "`renderPass` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_render_area_granularity(render_pass);
             r?;
         }
         Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
@@ -13469,18 +10690,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(semaphore.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetSemaphoreCounterValue-semaphore-parent",
-                            "`semaphore` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_semaphore_counter_value(semaphore);
             r?;
         }
         crate::submission::check_semaphore_type(
@@ -13535,18 +10745,7 @@ The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.k
     ) -> Result<Vec<Image>> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(swapchain.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkGetSwapchainImagesKHR-swapchain-parent",
-                            "`swapchain` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_get_swapchain_images_khr(swapchain);
             r?;
         }
         unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
@@ -13631,17 +10830,7 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                if memory_ranges.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
-                            "`memoryRangeCount` is 0".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
             r?;
         }
         unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
@@ -13701,36 +10890,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if src_caches.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
-                            "`srcCacheCount` is 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(dst_cache.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkMergePipelineCaches-dstCache-parent",
-                            "`dstCache` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                for h in src_caches.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkMergePipelineCaches-pSrcCaches-parent",
-                                "`pSrcCaches` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
             r?;
         }
         unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
@@ -13837,33 +10997,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if !crate::validation::supports(
-                    self.queue_flags(),
-                    vk::QueueFlags::SPARSE_BINDING,
-                ) {
-                    return Err(
-                        fail(
-                            "VUID-vkQueueBindSparse-queuetype",
-                            "the queue does not support sparse_binding operations".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(fence.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkQueueBindSparse-commonparent",
-                            "`fence` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in bind_info.iter() {
-                    crate::checks::check_bind_sparse_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_queue_bind_sparse(bind_info, fence);
             r?;
         }
         crate::submission::check_fence(fence, &crate::submission::BIND_SPARSE)?;
@@ -14054,11 +11188,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                crate::checks::check_present_info_khr(present_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_queue_present_khr(present_info);
             r?;
         }
         let waits = unsafe {
@@ -14189,22 +11319,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if !s.owned_by_device(fence.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkQueueSubmit-commonparent",
-                            "`fence` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in submits.iter() {
-                    crate::checks::check_submit_info(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_queue_submit(submits, fence);
             r?;
         }
         crate::submission::check_fence(fence, &crate::submission::SUBMIT)?;
@@ -14333,22 +11448,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.parent().scope();
-                if !s.owned_by_device(fence.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkQueueSubmit2-commonparent",
-                            "`fence` does not come from the VkDevice the command is called on"
-                                .into(),
-                        ),
-                    );
-                }
-                for x in submits.iter() {
-                    crate::checks::check_submit_info2(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self.validate_queue_submit2(submits, fence);
             r?;
         }
         crate::submission::check_fence(fence, &crate::submission::SUBMIT2)?;
@@ -14482,15 +11582,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.device().scope();
-                crate::checks::flags_command_buffer_reset_flags(
-                    flags,
-                    s,
-                    "VUID-vkResetCommandBuffer-flags-parameter",
-                )?;
-                Ok(())
-            })();
+            let r = self.validate_reset_command_buffer(flags);
             r?;
         }
         self.uses().check_reset(self.device(), self.parent().resets_buffers())?;
@@ -14551,23 +11643,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::flags_command_pool_reset_flags(
-                    flags,
-                    s,
-                    "VUID-vkResetCommandPool-flags-parameter",
-                )?;
-                if !s.owned_by_device(command_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkResetCommandPool-commandPool-parent",
-                            "`commandPool` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_reset_command_pool(command_pool, flags);
             r?;
         }
         crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
@@ -14632,26 +11708,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if flags.as_raw() != 0 {
-                    return Err(
-                        fail(
-                            "VUID-vkResetDescriptorPool-flags-zerobitmask",
-                            "`flags` is not 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(descriptor_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkResetDescriptorPool-descriptorPool-parent",
-                            "`descriptorPool` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
             r?;
         }
         if descriptor_pool.has_sets() {
@@ -14715,18 +11772,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkResetEvent-event-parent",
-                            "`event` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_reset_event(event);
             r?;
         }
         unsafe { self.reset_event_unchecked(event) }
@@ -14775,28 +11821,7 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if fences.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkResetFences-fenceCount-arraylength",
-                            "`fenceCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in fences.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkResetFences-pFences-parent",
-                                "`pFences` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_reset_fences(fences);
             r?;
         }
         for f in fences {
@@ -14862,18 +11887,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(query_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkResetQueryPool-queryPool-parent",
-                            "`queryPool` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_reset_query_pool(query_pool);
             r?;
         }
         Ok(unsafe {
@@ -14938,11 +11952,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_debug_utils_object_name_info_ext(name_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_set_debug_utils_object_name_ext(name_info);
             r?;
         }
         unsafe { self.set_debug_utils_object_name_ext_unchecked(name_info) }
@@ -15018,11 +12028,7 @@ The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://regist
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_debug_utils_object_tag_info_ext(tag_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_set_debug_utils_object_tag_ext(tag_info);
             r?;
         }
         unsafe { self.set_debug_utils_object_tag_ext_unchecked(tag_info) }
@@ -15090,18 +12096,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(event.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkSetEvent-event-parent",
-                            "`event` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_set_event(event);
             r?;
         }
         unsafe { self.set_event_unchecked(event) }
@@ -15149,23 +12144,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::enum_object_type(
-                    object_type,
-                    s,
-                    "VUID-vkSetPrivateData-objectType-parameter",
-                )?;
-                if !s.owned_by_device(private_data_slot.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkSetPrivateData-privateDataSlot-parent",
-                            "`privateDataSlot` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_set_private_data(object_type, private_data_slot);
             r?;
         }
         unsafe {
@@ -15279,32 +12258,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::enum_debug_utils_message_severity_flag_bits_ext(
+            let r = self
+                .validate_submit_debug_utils_message_ext(
                     message_severity,
-                    s,
-                    "VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter",
-                )?;
-                crate::checks::flags_debug_utils_message_type_flags_ext(
                     message_types,
-                    s,
-                    "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter",
-                )?;
-                if message_types.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask",
-                            "`messageTypes` is empty".into(),
-                        ),
-                    );
-                }
-                crate::checks::check_debug_utils_messenger_callback_data_ext(
                     callback_data,
-                    s,
-                )?;
-                Ok(())
-            })();
+                );
             r?;
         }
         unsafe {
@@ -15372,26 +12331,7 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
         };
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if flags.as_raw() != 0 {
-                    return Err(
-                        fail(
-                            "VUID-vkTrimCommandPool-flags-zerobitmask",
-                            "`flags` is not 0".into(),
-                        ),
-                    );
-                }
-                if !s.owned_by_device(command_pool.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkTrimCommandPool-commandPool-parent",
-                            "`commandPool` does not come from `device`".into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self.validate_trim_command_pool(command_pool, flags);
             r?;
         }
         Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
@@ -15448,19 +12388,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if !s.owned_by_device(descriptor_update_template.raw()) {
-                    return Err(
-                        fail(
-                            "VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent",
-                            "`descriptorUpdateTemplate` does not come from `device`"
-                                .into(),
-                        ),
-                    );
-                }
-                Ok(())
-            })();
+            let r = self
+                .validate_update_descriptor_set_with_template(
+                    descriptor_update_template,
+                );
             r?;
         }
         Ok(unsafe {
@@ -15525,16 +12456,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
     ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                for x in descriptor_writes.iter() {
-                    crate::checks::check_write_descriptor_set(x, s)?;
-                }
-                for x in descriptor_copies.iter() {
-                    crate::checks::check_copy_descriptor_set(x, s)?;
-                }
-                Ok(())
-            })();
+            let r = self
+                .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
             r?;
         }
         crate::retention::Live::check_writes(unsafe {
@@ -15606,28 +12529,7 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
     ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                if fences.is_empty() {
-                    return Err(
-                        fail(
-                            "VUID-vkWaitForFences-fenceCount-arraylength",
-                            "`fenceCount` is 0".into(),
-                        ),
-                    );
-                }
-                for h in fences.iter() {
-                    if !s.owned_by_device(h.raw()) {
-                        return Err(
-                            fail(
-                                "VUID-vkWaitForFences-pFences-parent",
-                                "`pFences` does not come from `device`".into(),
-                            ),
-                        );
-                    }
-                }
-                Ok(())
-            })();
+            let r = self.validate_wait_for_fences(fences);
             r?;
         }
         unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
@@ -15697,11 +12599,7 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
     ) -> Result<vk::Result> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r: Result<()> = (|| {
-                let s = &self.scope();
-                crate::checks::check_semaphore_wait_info(wait_info, s)?;
-                Ok(())
-            })();
+            let r = self.validate_wait_semaphores(wait_info);
             r?;
         }
         let semaphores = unsafe {

@@ -530,12 +530,17 @@ pub fn plans(cx: &Context) -> Vec<(String, Result<Plan, String>)> {
         .collect()
 }
 
-pub(super) fn emit(cx: &Context, checker: &Checker, plans: &[&Plan]) -> TokenStream {
+/// The `commands` module, and the `command_checks` module with the named dynamic checks
+/// that its checked methods call.
+pub(super) fn emit(cx: &Context, checker: &Checker, plans: &[&Plan]) -> (TokenStream, TokenStream) {
     let mut items = Vec::new();
+    let mut validators = Vec::new();
     for plan in plans {
-        items.push(emit_command(cx, checker, plan));
+        let (item, validator) = emit_command(cx, checker, plan);
+        items.push(item);
+        validators.extend(validator);
     }
-    quote! {
+    let commands = quote! {
         //! Commands as methods on the wrappers they dispatch on.
         #![allow(
             clippy::too_many_arguments,
@@ -556,14 +561,29 @@ pub(super) fn emit(cx: &Context, checker: &Checker, plans: &[&Plan]) -> TokenStr
         use crate::handles::*;
         use crate::structs::*;
         use crate::{recorder::*, Entry, Error, Handle, Result};
-        #[cfg(feature = "runtime_implicit_validations")]
-        use crate::validation::fail;
         use ash::vk;
         #(#items)*
-    }
+    };
+    let checks = quote! {
+        //! The dynamic checks of each command, compiled in with
+        //! `runtime_implicit_validations`: one `validate_*` method per checked command,
+        //! beside it on the same receiver, which the checked method calls first.
+        #![allow(clippy::needless_lifetimes, clippy::unnecessary_cast)]
+        use crate::handles::*;
+        use crate::structs::*;
+        use crate::validation::fail;
+        use crate::{recorder::*, Entry, Handle, Result};
+        use ash::vk;
+        #(#validators)*
+    };
+    (commands, checks)
 }
 
-fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
+fn emit_command(
+    cx: &Context,
+    checker: &Checker,
+    plan: &Plan,
+) -> (TokenStream, Option<TokenStream>) {
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
     let cfg = super::names::cfg_of(model, model.condition(&plan.name));
@@ -600,7 +620,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 quote!(let ext_table = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?;),
             )
         }
-        None => return quote!(),
+        None => return (quote!(), None),
     };
     let fallible_ext = !ext_check.is_empty();
     let mut args: Vec<TokenStream> = Vec::new(); // method parameters
@@ -1310,6 +1330,7 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
     );
     let checks = checker.command_checks(plan);
     let always = always_checks(&plan.name);
+    let mut validator = None;
     let method = if checks.is_empty() && always.is_none() {
         quote! {
             #[doc = #doc]
@@ -1347,12 +1368,41 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
         // The scope is bound only when a check reads it.
         let uses_scope = checks.iter().any(|c| super::checks::mentions(&c.code, "s"));
         let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
+        // The checks are a named method beside the command's, taking only the
+        // arguments they read.
+        let validate = ident(&format!("validate_{}", command_fn(&plan.name)));
+        let read: Vec<(&TokenStream, &TokenStream)> = args
+            .iter()
+            .zip(&names)
+            .filter(|(_, n)| {
+                checks
+                    .iter()
+                    .any(|c| super::checks::mentions(&c.code, &n.to_string()))
+            })
+            .collect();
+        let v_args = read.iter().map(|(a, _)| a);
+        let v_names = read.iter().map(|(_, n)| n);
+        let v_lt = if read.iter().any(|(a, _)| a.to_string().contains("'a")) {
+            lt.clone()
+        } else {
+            quote!()
+        };
+        let v_doc = format!(
+            "The dynamic checks of [`Self::{}`], run before the call.",
+            command_fn(&plan.name)
+        );
+        validator = (!checks.is_empty()).then(|| {
+            quote! {
+                #[doc = #v_doc]
+                pub(crate) fn #validate #v_lt(&self, #(#v_args),*) -> Result<()> {
+                    #bind_scope
+                    #(#codes)*
+                    Ok(())
+                }
+            }
+        });
         let run = quote! {
-            let r: Result<()> = (|| {
-                #bind_scope
-                #(#codes)*
-                Ok(())
-            })();
+            let r = self.#validate(#(#v_names),*);
         };
         let (ret_checked, guard, call) = match (&transition, is_cmd) {
             (Some(state), _) => {
@@ -1439,8 +1489,20 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
             }
         }
     };
+    let validator = validator.map(|v| in_impl(plan, cmd, &cfg, v));
+    (in_impl(plan, cmd, &cfg, method), validator)
+}
+
+/// `item` in an `impl` block of the command's receiver (a recorder in the states the
+/// command is allowed in, for recorded commands).
+fn in_impl(
+    plan: &Plan,
+    cmd: &CommandDef,
+    cfg: &Option<TokenStream>,
+    item: TokenStream,
+) -> TokenStream {
     match plan.receiver.as_str() {
-        "Entry" => quote!(#cfg impl Entry { #method }),
+        "Entry" => quote!(#cfg impl Entry { #item }),
         "VkCommandBuffer" if recorded(plan) => {
             let state = match (cmd.renderpass.as_deref(), plan.name.as_str()) {
                 (
@@ -1455,11 +1517,11 @@ fn emit_command(cx: &Context, checker: &Checker, plan: &Plan) -> TokenStream {
                 (Some("outside"), _) => quote!(impl<'c> Recorder<'c, Outside>),
                 _ => quote!(impl<'c, S: State> Recorder<'c, S>),
             };
-            quote!(#cfg #state { #method })
+            quote!(#cfg #state { #item })
         }
         r => {
             let w = type_ident(r);
-            quote!(#cfg impl #w { #method })
+            quote!(#cfg impl #w { #item })
         }
     }
 }

@@ -196,13 +196,12 @@ pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
     let plans = commands::plans(&cx);
     let ok: Vec<&commands::Plan> = plans.iter().filter_map(|(_, p)| p.as_ref().ok()).collect();
     let checker = checks::Checker::new(&cx, &ok);
+    let (commands, command_checks) = commands::emit(&cx, &checker, &ok);
     for (path, tokens) in [
         ("src/generated/handles.rs", handles::emit(&cx)),
         ("src/generated/structs.rs", structs::emit(&cx)),
-        (
-            "src/generated/commands.rs",
-            commands::emit(&cx, &checker, &ok),
-        ),
+        ("src/generated/commands.rs", commands),
+        ("src/generated/command_checks.rs", command_checks),
         ("src/generated/checks.rs", checker.emit()),
         ("src/generated/reach.rs", reach::emit(&cx)),
     ] {
