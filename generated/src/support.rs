@@ -368,3 +368,39 @@ macro_rules! safe_struct {
     };
 }
 pub(crate) use safe_struct;
+
+/// A Vulkan two-call enumeration: the count first, then that many items, and again
+/// from the start when the implementation answers `VK_INCOMPLETE` (the list grew
+/// between the calls). Commands that return nothing answer `SUCCESS` through `call`.
+///
+/// # Safety
+///
+/// `call(count, items)` calls one enumeration command with these two out-parameters
+/// and every other argument valid: with `items` null it writes only `*count`;
+/// otherwise it writes at most `*count` items to `items`, and sets `*count` to how
+/// many it wrote.
+pub(crate) unsafe fn two_call<T: Default, C: Copy + Default + TryFrom<usize> + TryInto<usize>>(
+    mut call: impl FnMut(&mut C, *mut T) -> vk::Result,
+) -> Result<Vec<T>> {
+    let ok = |r: vk::Result| r == vk::Result::SUCCESS || r == vk::Result::INCOMPLETE;
+    loop {
+        let mut count = C::default();
+        let r = call(&mut count, core::ptr::null_mut());
+        if !ok(r) {
+            return Err(Error::Vk(r));
+        }
+        let n: usize = count.try_into().unwrap_or(0);
+        let mut items: Vec<T> = Vec::with_capacity(n);
+        items.resize_with(n, T::default);
+        let r = call(&mut count, items.as_mut_ptr());
+        if !ok(r) {
+            return Err(Error::Vk(r));
+        }
+        if r == vk::Result::INCOMPLETE {
+            continue;
+        }
+        // The command wrote `count` items, no more than the `n` it was given.
+        items.truncate(count.try_into().unwrap_or(0));
+        return Ok(items);
+    }
+}

@@ -20,9 +20,6 @@ impl Device {
         crate::checks::check_acquire_next_image_info_khr(acquire_info, s)?;
         Ok(())
     }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
     ///The dynamic checks of [`Self::acquire_next_image_khr`], run before the call.
     pub(crate) fn validate_acquire_next_image_khr(
         &self,
@@ -61,6 +58,48 @@ impl Device {
         }
         Ok(())
     }
+    ///The dynamic checks of [`Self::create_swapchain_khr`], run before the call.
+    pub(crate) fn validate_create_swapchain_khr<'a>(
+        &self,
+        create_info: &SwapchainCreateInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_swapchain_create_info_khr(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_group_surface_present_modes_khr`], run before the call.
+    pub(crate) fn validate_get_device_group_surface_present_modes_khr(
+        &self,
+        surface: &SurfaceKHR,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_instance(surface.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent",
+                    "`surface` does not come from the VkInstance the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_swapchain_images_khr`], run before the call.
+    pub(crate) fn validate_get_swapchain_images_khr(
+        &self,
+        swapchain: &SwapchainKHR,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(swapchain.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetSwapchainImagesKHR-swapchain-parent",
+                    "`swapchain` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
 }
 impl Device {
     ///The dynamic checks of [`Self::allocate_command_buffers`], run before the call.
@@ -80,8 +119,6 @@ impl Device {
         crate::checks::check_command_buffer_allocate_info(allocate_info, s)?;
         Ok(())
     }
-}
-impl Device {
     ///The dynamic checks of [`Self::allocate_descriptor_sets`], run before the call.
     pub(crate) fn validate_allocate_descriptor_sets<'a>(
         &self,
@@ -99,8 +136,6 @@ impl Device {
         crate::checks::check_descriptor_set_allocate_info(allocate_info, s)?;
         Ok(())
     }
-}
-impl Device {
     ///The dynamic checks of [`Self::allocate_memory`], run before the call.
     pub(crate) fn validate_allocate_memory<'a>(
         &self,
@@ -110,8 +145,6 @@ impl Device {
         crate::checks::check_memory_allocate_info(allocate_info, s)?;
         Ok(())
     }
-}
-impl Device {
     ///The dynamic checks of [`Self::bind_buffer_memory`], run before the call.
     pub(crate) fn validate_bind_buffer_memory(
         &self,
@@ -137,8 +170,6 @@ impl Device {
         }
         Ok(())
     }
-}
-impl Device {
     ///The dynamic checks of [`Self::bind_buffer_memory2`], run before the call.
     pub(crate) fn validate_bind_buffer_memory2<'a>(
         &self,
@@ -158,8 +189,6 @@ impl Device {
         }
         Ok(())
     }
-}
-impl Device {
     ///The dynamic checks of [`Self::bind_image_memory`], run before the call.
     pub(crate) fn validate_bind_image_memory(
         &self,
@@ -185,8 +214,6 @@ impl Device {
         }
         Ok(())
     }
-}
-impl Device {
     ///The dynamic checks of [`Self::bind_image_memory2`], run before the call.
     pub(crate) fn validate_bind_image_memory2<'a>(
         &self,
@@ -206,6 +233,822 @@ impl Device {
         }
         Ok(())
     }
+    ///The dynamic checks of [`Self::create_buffer`], run before the call.
+    pub(crate) fn validate_create_buffer<'a>(
+        &self,
+        create_info: &BufferCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_buffer_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_buffer_view`], run before the call.
+    pub(crate) fn validate_create_buffer_view<'a>(
+        &self,
+        create_info: &BufferViewCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_buffer_view_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_command_pool`], run before the call.
+    pub(crate) fn validate_create_command_pool<'a>(
+        &self,
+        create_info: &CommandPoolCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_command_pool_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_compute_pipelines`], run before the call.
+    pub(crate) fn validate_create_compute_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[ComputePipelineCreateInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        if create_infos.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
+                    "`createInfoCount` is 0".into(),
+                ),
+            );
+        }
+        if let Some(h) = pipeline_cache {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCreateComputePipelines-pipelineCache-parent",
+                        "`pipelineCache` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        for x in create_infos.iter() {
+            crate::checks::check_compute_pipeline_create_info(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_descriptor_pool`], run before the call.
+    pub(crate) fn validate_create_descriptor_pool<'a>(
+        &self,
+        create_info: &DescriptorPoolCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_descriptor_pool_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_descriptor_set_layout`], run before the call.
+    pub(crate) fn validate_create_descriptor_set_layout<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_descriptor_update_template`], run before the call.
+    pub(crate) fn validate_create_descriptor_update_template<'a>(
+        &self,
+        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_descriptor_update_template_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_event`], run before the call.
+    pub(crate) fn validate_create_event<'a>(
+        &self,
+        create_info: &EventCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_event_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_fence`], run before the call.
+    pub(crate) fn validate_create_fence<'a>(
+        &self,
+        create_info: &FenceCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_fence_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_framebuffer`], run before the call.
+    pub(crate) fn validate_create_framebuffer<'a>(
+        &self,
+        create_info: &FramebufferCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_framebuffer_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_graphics_pipelines`], run before the call.
+    pub(crate) fn validate_create_graphics_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[GraphicsPipelineCreateInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        if create_infos.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
+                    "`createInfoCount` is 0".into(),
+                ),
+            );
+        }
+        if let Some(h) = pipeline_cache {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
+                        "`pipelineCache` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        for x in create_infos.iter() {
+            crate::checks::check_graphics_pipeline_create_info(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_image`], run before the call.
+    pub(crate) fn validate_create_image<'a>(
+        &self,
+        create_info: &ImageCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_image_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_image_view`], run before the call.
+    pub(crate) fn validate_create_image_view<'a>(
+        &self,
+        create_info: &ImageViewCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_image_view_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_pipeline_cache`], run before the call.
+    pub(crate) fn validate_create_pipeline_cache<'a>(
+        &self,
+        create_info: &PipelineCacheCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_pipeline_cache_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_pipeline_layout`], run before the call.
+    pub(crate) fn validate_create_pipeline_layout<'a>(
+        &self,
+        create_info: &PipelineLayoutCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_pipeline_layout_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_private_data_slot`], run before the call.
+    pub(crate) fn validate_create_private_data_slot<'a>(
+        &self,
+        create_info: &PrivateDataSlotCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_private_data_slot_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_query_pool`], run before the call.
+    pub(crate) fn validate_create_query_pool<'a>(
+        &self,
+        create_info: &QueryPoolCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_query_pool_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_render_pass`], run before the call.
+    pub(crate) fn validate_create_render_pass<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_render_pass_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_render_pass2`], run before the call.
+    pub(crate) fn validate_create_render_pass2<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_render_pass_create_info2(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_sampler`], run before the call.
+    pub(crate) fn validate_create_sampler<'a>(
+        &self,
+        create_info: &SamplerCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_sampler_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_sampler_ycbcr_conversion`], run before the call.
+    pub(crate) fn validate_create_sampler_ycbcr_conversion<'a>(
+        &self,
+        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_sampler_ycbcr_conversion_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_semaphore`], run before the call.
+    pub(crate) fn validate_create_semaphore<'a>(
+        &self,
+        create_info: &SemaphoreCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_semaphore_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_shader_module`], run before the call.
+    pub(crate) fn validate_create_shader_module<'a>(
+        &self,
+        create_info: &ShaderModuleCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_shader_module_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::flush_mapped_memory_ranges`], run before the call.
+    pub(crate) fn validate_flush_mapped_memory_ranges<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        if memory_ranges.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
+                    "`memoryRangeCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_buffer_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_buffer_memory_requirements(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetBufferMemoryRequirements-buffer-parent",
+                    "`buffer` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_buffer_memory_requirements2`], run before the call.
+    pub(crate) fn validate_get_buffer_memory_requirements2<'a>(
+        &self,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_memory_requirements2(memory_requirements, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_descriptor_set_layout_support`], run before the call.
+    pub(crate) fn validate_get_descriptor_set_layout_support<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+        support: &mut DescriptorSetLayoutSupport<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
+        crate::checks::check_descriptor_set_layout_support(support, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_buffer_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_device_buffer_memory_requirements<'a>(
+        &self,
+        info: &DeviceBufferMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_device_buffer_memory_requirements(info, s)?;
+        crate::checks::check_memory_requirements2(memory_requirements, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_image_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_device_image_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_device_image_memory_requirements(info, s)?;
+        crate::checks::check_memory_requirements2(memory_requirements, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_image_sparse_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_device_image_sparse_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_device_image_memory_requirements(info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_memory_commitment`], run before the call.
+    pub(crate) fn validate_get_device_memory_commitment(
+        &self,
+        memory: &DeviceMemory,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(memory.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetDeviceMemoryCommitment-memory-parent",
+                    "`memory` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_queue2`], run before the call.
+    pub(crate) fn validate_get_device_queue2<'a>(
+        &self,
+        queue_info: &DeviceQueueInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_device_queue_info2(queue_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_event_status`], run before the call.
+    pub(crate) fn validate_get_event_status(&self, event: &Event) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(event.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetEventStatus-event-parent",
+                    "`event` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_fence_status`], run before the call.
+    pub(crate) fn validate_get_fence_status(&self, fence: &Fence) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(fence.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetFenceStatus-fence-parent",
+                    "`fence` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_image_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_image_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(image.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetImageMemoryRequirements-image-parent",
+                    "`image` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_image_memory_requirements2`], run before the call.
+    pub(crate) fn validate_get_image_memory_requirements2<'a>(
+        &self,
+        info: &ImageMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_image_memory_requirements_info2(info, s)?;
+        crate::checks::check_memory_requirements2(memory_requirements, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_image_sparse_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_image_sparse_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(image.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetImageSparseMemoryRequirements-image-parent",
+                    "`image` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_image_subresource_layout`], run before the call.
+    pub(crate) fn validate_get_image_subresource_layout(
+        &self,
+        image: &Image,
+        subresource: &vk::ImageSubresource,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(image.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetImageSubresourceLayout-image-parent",
+                    "`image` does not come from `device`".into(),
+                ),
+            );
+        }
+        crate::checks::check_image_subresource(subresource, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_pipeline_cache_data`], run before the call.
+    pub(crate) fn validate_get_pipeline_cache_data(
+        &self,
+        pipeline_cache: &PipelineCache,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(pipeline_cache.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetPipelineCacheData-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_private_data`], run before the call.
+    pub(crate) fn validate_get_private_data(
+        &self,
+        object_type: vk::ObjectType,
+        private_data_slot: &PrivateDataSlot,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::enum_object_type(
+            object_type,
+            s,
+            "VUID-vkGetPrivateData-objectType-parameter",
+        )?;
+        if !s.owned_by_device(private_data_slot.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetPrivateData-privateDataSlot-parent",
+                    "`privateDataSlot` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_query_pool_results`], run before the call.
+    pub(crate) fn validate_get_query_pool_results(
+        &self,
+        query_pool: &QueryPool,
+        data: &mut [u8],
+        flags: vk::QueryResultFlags,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::flags_query_result_flags(
+            flags,
+            s,
+            "VUID-vkGetQueryPoolResults-flags-parameter",
+        )?;
+        if data.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkGetQueryPoolResults-dataSize-arraylength",
+                    "`dataSize` is 0".into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(query_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetQueryPoolResults-queryPool-parent",
+                    "`queryPool` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_render_area_granularity`], run before the call.
+    pub(crate) fn validate_get_render_area_granularity(
+        &self,
+        render_pass: &RenderPass,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(render_pass.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetRenderAreaGranularity-renderPass-parent",
+                    "`renderPass` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_semaphore_counter_value`], run before the call.
+    pub(crate) fn validate_get_semaphore_counter_value(
+        &self,
+        semaphore: &Semaphore,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(semaphore.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetSemaphoreCounterValue-semaphore-parent",
+                    "`semaphore` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::invalidate_mapped_memory_ranges`], run before the call.
+    pub(crate) fn validate_invalidate_mapped_memory_ranges<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        if memory_ranges.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
+                    "`memoryRangeCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::merge_pipeline_caches`], run before the call.
+    pub(crate) fn validate_merge_pipeline_caches(
+        &self,
+        dst_cache: &PipelineCache,
+        src_caches: &[&PipelineCache],
+    ) -> Result<()> {
+        let s = &self.scope();
+        if src_caches.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
+                    "`srcCacheCount` is 0".into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(dst_cache.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkMergePipelineCaches-dstCache-parent",
+                    "`dstCache` does not come from `device`".into(),
+                ),
+            );
+        }
+        for h in src_caches.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkMergePipelineCaches-pSrcCaches-parent",
+                        "`pSrcCaches` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::reset_command_pool`], run before the call.
+    pub(crate) fn validate_reset_command_pool(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolResetFlags,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::flags_command_pool_reset_flags(
+            flags,
+            s,
+            "VUID-vkResetCommandPool-flags-parameter",
+        )?;
+        if !s.owned_by_device(command_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkResetCommandPool-commandPool-parent",
+                    "`commandPool` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::reset_descriptor_pool`], run before the call.
+    pub(crate) fn validate_reset_descriptor_pool(
+        &self,
+        descriptor_pool: &DescriptorPool,
+        flags: vk::DescriptorPoolResetFlags,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if flags.as_raw() != 0 {
+            return Err(
+                fail(
+                    "VUID-vkResetDescriptorPool-flags-zerobitmask",
+                    "`flags` is not 0".into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(descriptor_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkResetDescriptorPool-descriptorPool-parent",
+                    "`descriptorPool` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::reset_event`], run before the call.
+    pub(crate) fn validate_reset_event(&self, event: &Event) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(event.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkResetEvent-event-parent",
+                    "`event` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::reset_fences`], run before the call.
+    pub(crate) fn validate_reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+        let s = &self.scope();
+        if fences.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkResetFences-fenceCount-arraylength",
+                    "`fenceCount` is 0".into(),
+                ),
+            );
+        }
+        for h in fences.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkResetFences-pFences-parent",
+                        "`pFences` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::reset_query_pool`], run before the call.
+    pub(crate) fn validate_reset_query_pool(
+        &self,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(query_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkResetQueryPool-queryPool-parent",
+                    "`queryPool` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::set_event`], run before the call.
+    pub(crate) fn validate_set_event(&self, event: &Event) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(event.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkSetEvent-event-parent",
+                    "`event` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::set_private_data`], run before the call.
+    pub(crate) fn validate_set_private_data(
+        &self,
+        object_type: vk::ObjectType,
+        private_data_slot: &PrivateDataSlot,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::enum_object_type(
+            object_type,
+            s,
+            "VUID-vkSetPrivateData-objectType-parameter",
+        )?;
+        if !s.owned_by_device(private_data_slot.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkSetPrivateData-privateDataSlot-parent",
+                    "`privateDataSlot` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::trim_command_pool`], run before the call.
+    pub(crate) fn validate_trim_command_pool(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolTrimFlags,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if flags.as_raw() != 0 {
+            return Err(
+                fail(
+                    "VUID-vkTrimCommandPool-flags-zerobitmask",
+                    "`flags` is not 0".into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(command_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkTrimCommandPool-commandPool-parent",
+                    "`commandPool` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::update_descriptor_set_with_template`], run before the call.
+    pub(crate) fn validate_update_descriptor_set_with_template(
+        &self,
+        descriptor_update_template: &DescriptorUpdateTemplate,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(descriptor_update_template.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent",
+                    "`descriptorUpdateTemplate` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::update_descriptor_sets`], run before the call.
+    pub(crate) fn validate_update_descriptor_sets<'a>(
+        &self,
+        descriptor_writes: &[WriteDescriptorSet<'a>],
+        descriptor_copies: &[CopyDescriptorSet<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        for x in descriptor_writes.iter() {
+            crate::checks::check_write_descriptor_set(x, s)?;
+        }
+        for x in descriptor_copies.iter() {
+            crate::checks::check_copy_descriptor_set(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::wait_for_fences`], run before the call.
+    pub(crate) fn validate_wait_for_fences(&self, fences: &[&Fence]) -> Result<()> {
+        let s = &self.scope();
+        if fences.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkWaitForFences-fenceCount-arraylength",
+                    "`fenceCount` is 0".into(),
+                ),
+            );
+        }
+        for h in fences.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkWaitForFences-pFences-parent",
+                        "`pFences` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::wait_semaphores`], run before the call.
+    pub(crate) fn validate_wait_semaphores<'a>(
+        &self,
+        wait_info: &SemaphoreWaitInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_semaphore_wait_info(wait_info, s)?;
+        Ok(())
+    }
 }
 #[cfg(feature = "ext_debug_utils")]
 impl<'c, S: State> Recorder<'c, S> {
@@ -218,6 +1061,38 @@ impl<'c, S: State> Recorder<'c, S> {
             return Err(
                 fail(
                     "VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_end_debug_utils_label_ext`], run before the call.
+    pub(crate) fn validate_cmd_end_debug_utils_label_ext(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_insert_debug_utils_label_ext`], run before the call.
+    pub(crate) fn validate_cmd_insert_debug_utils_label_ext(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool",
                     "the command buffer's pool does not support graphics,compute operations"
                         .into(),
                 ),
@@ -262,101 +1137,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_render_pass`], run before the call.
-    pub(crate) fn validate_cmd_begin_render_pass<'a>(
-        &self,
-        render_pass_begin: &RenderPassBeginInfo<'a>,
-        contents: vk::SubpassContents,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_subpass_contents(
-            contents,
-            s,
-            "VUID-vkCmdBeginRenderPass-contents-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_render_pass2`], run before the call.
-    pub(crate) fn validate_cmd_begin_render_pass2<'a>(
-        &self,
-        render_pass_begin: &RenderPassBeginInfo<'a>,
-        subpass_begin_info: &SubpassBeginInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass2-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
-        crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_rendering`], run before the call.
-    pub(crate) fn validate_cmd_begin_rendering<'a>(
-        &self,
-        rendering_info: &RenderingInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRendering-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        crate::checks::check_rendering_info(rendering_info, s)?;
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_bind_descriptor_sets`], run before the call.
     pub(crate) fn validate_cmd_bind_descriptor_sets(
         &self,
@@ -412,8 +1192,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_bind_index_buffer`], run before the call.
     pub(crate) fn validate_cmd_bind_index_buffer(
         &self,
@@ -449,8 +1227,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_bind_pipeline`], run before the call.
     pub(crate) fn validate_cmd_bind_pipeline(
         &self,
@@ -486,8 +1262,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_bind_vertex_buffers`], run before the call.
     pub(crate) fn validate_cmd_bind_vertex_buffers(
         &self,
@@ -527,8 +1301,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_bind_vertex_buffers2`], run before the call.
     pub(crate) fn validate_cmd_bind_vertex_buffers2(
         &self,
@@ -568,8 +1340,1011 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///The dynamic checks of [`Self::cmd_end_query`], run before the call.
+    pub(crate) fn validate_cmd_end_query(&self, query_pool: &QueryPool) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndQuery-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(query_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndQuery-commonparent",
+                    "`queryPool` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_execute_commands`], run before the call.
+    pub(crate) fn validate_cmd_execute_commands(
+        &self,
+        command_buffers: &[&CommandBuffer],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+            return Err(
+                fail(
+                    "VUID-vkCmdExecuteCommands-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        if command_buffers.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
+                    "`commandBufferCount` is 0".into(),
+                ),
+            );
+        }
+        for h in command_buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCmdExecuteCommands-commonparent",
+                        "`pCommandBuffers` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_pipeline_barrier`], run before the call.
+    pub(crate) fn validate_cmd_pipeline_barrier<'a>(
+        &self,
+        src_stage_mask: vk::PipelineStageFlags,
+        dst_stage_mask: vk::PipelineStageFlags,
+        dependency_flags: vk::DependencyFlags,
+        memory_barriers: &[MemoryBarrier<'a>],
+        image_memory_barriers: &[ImageMemoryBarrier<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_pipeline_stage_flags(
+            src_stage_mask,
+            s,
+            "VUID-vkCmdPipelineBarrier-srcStageMask-parameter",
+        )?;
+        crate::checks::flags_pipeline_stage_flags(
+            dst_stage_mask,
+            s,
+            "VUID-vkCmdPipelineBarrier-dstStageMask-parameter",
+        )?;
+        crate::checks::flags_dependency_flags(
+            dependency_flags,
+            s,
+            "VUID-vkCmdPipelineBarrier-dependencyFlags-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        for x in memory_barriers.iter() {
+            crate::checks::check_memory_barrier(x, s)?;
+        }
+        for x in image_memory_barriers.iter() {
+            crate::checks::check_image_memory_barrier(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_pipeline_barrier2`], run before the call.
+    pub(crate) fn validate_cmd_pipeline_barrier2<'a>(
+        &self,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        crate::checks::check_dependency_info(dependency_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_push_constants`], run before the call.
+    pub(crate) fn validate_cmd_push_constants(
+        &self,
+        layout: &PipelineLayout,
+        stage_flags: vk::ShaderStageFlags,
+        values: &[u8],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_shader_stage_flags(
+            stage_flags,
+            s,
+            "VUID-vkCmdPushConstants-stageFlags-parameter",
+        )?;
+        if stage_flags.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
+                    "`stageFlags` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if values.is_empty() {
+            return Err(
+                fail("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0".into()),
+            );
+        }
+        if !s.owned_by_device(layout.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-commonparent",
+                    "`layout` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_blend_constants`], run before the call.
+    pub(crate) fn validate_cmd_set_blend_constants(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_cull_mode`], run before the call.
+    pub(crate) fn validate_cmd_set_cull_mode(
+        &self,
+        cull_mode: vk::CullModeFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_cull_mode_flags(
+            cull_mode,
+            s,
+            "VUID-vkCmdSetCullMode-cullMode-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetCullMode-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_bias`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_bias(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_bias_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_bias_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_bounds`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_bounds(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_bounds_test_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_bounds_test_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_compare_op`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_compare_op(
+        &self,
+        depth_compare_op: vk::CompareOp,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_compare_op(
+            depth_compare_op,
+            s,
+            "VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_test_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_test_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_write_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_write_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_device_mask`], run before the call.
+    pub(crate) fn validate_cmd_set_device_mask(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,transfer operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_front_face`], run before the call.
+    pub(crate) fn validate_cmd_set_front_face(
+        &self,
+        front_face: vk::FrontFace,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_front_face(
+            front_face,
+            s,
+            "VUID-vkCmdSetFrontFace-frontFace-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetFrontFace-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_line_width`], run before the call.
+    pub(crate) fn validate_cmd_set_line_width(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_primitive_restart_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_primitive_restart_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_primitive_topology`], run before the call.
+    pub(crate) fn validate_cmd_set_primitive_topology(
+        &self,
+        primitive_topology: vk::PrimitiveTopology,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_primitive_topology(
+            primitive_topology,
+            s,
+            "VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_rasterizer_discard_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_rasterizer_discard_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
+    pub(crate) fn validate_cmd_set_scissor(
+        &self,
+        scissors: &[vk::Rect2D],
+    ) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if scissors.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissor-scissorCount-arraylength",
+                    "`scissorCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_scissor_with_count`], run before the call.
+    pub(crate) fn validate_cmd_set_scissor_with_count(
+        &self,
+        scissors: &[vk::Rect2D],
+    ) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if scissors.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissorWithCount-scissorCount-arraylength",
+                    "`scissorCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_compare_mask`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_compare_mask(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_op`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_op(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+        fail_op: vk::StencilOp,
+        pass_op: vk::StencilOp,
+        depth_fail_op: vk::StencilOp,
+        compare_op: vk::CompareOp,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilOp-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilOp-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        crate::checks::enum_stencil_op(
+            fail_op,
+            s,
+            "VUID-vkCmdSetStencilOp-failOp-parameter",
+        )?;
+        crate::checks::enum_stencil_op(
+            pass_op,
+            s,
+            "VUID-vkCmdSetStencilOp-passOp-parameter",
+        )?;
+        crate::checks::enum_stencil_op(
+            depth_fail_op,
+            s,
+            "VUID-vkCmdSetStencilOp-depthFailOp-parameter",
+        )?;
+        crate::checks::enum_compare_op(
+            compare_op,
+            s,
+            "VUID-vkCmdSetStencilOp-compareOp-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilOp-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_reference`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_reference(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilReference-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_test_enable`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_test_enable(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_write_mask`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_write_mask(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
+    pub(crate) fn validate_cmd_set_viewport(
+        &self,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if viewports.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewport-viewportCount-arraylength",
+                    "`viewportCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_viewport_with_count`], run before the call.
+    pub(crate) fn validate_cmd_set_viewport_with_count(
+        &self,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if viewports.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewportWithCount-viewportCount-arraylength",
+                    "`viewportCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_wait_events`], run before the call.
+    pub(crate) fn validate_cmd_wait_events<'a>(
+        &self,
+        events: &[&Event],
+        src_stage_mask: vk::PipelineStageFlags,
+        dst_stage_mask: vk::PipelineStageFlags,
+        memory_barriers: &[MemoryBarrier<'a>],
+        image_memory_barriers: &[ImageMemoryBarrier<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_pipeline_stage_flags(
+            src_stage_mask,
+            s,
+            "VUID-vkCmdWaitEvents-srcStageMask-parameter",
+        )?;
+        crate::checks::flags_pipeline_stage_flags(
+            dst_stage_mask,
+            s,
+            "VUID-vkCmdWaitEvents-dstStageMask-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if events.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents-eventCount-arraylength",
+                    "`eventCount` is 0".into(),
+                ),
+            );
+        }
+        for h in events.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCmdWaitEvents-commonparent",
+                        "`pEvents` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
+        }
+        for x in memory_barriers.iter() {
+            crate::checks::check_memory_barrier(x, s)?;
+        }
+        for x in image_memory_barriers.iter() {
+            crate::checks::check_image_memory_barrier(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_wait_events2`], run before the call.
+    pub(crate) fn validate_cmd_wait_events2<'a>(
+        &self,
+        events: &[&Event],
+        dependency_infos: &[DependencyInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if events.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents2-eventCount-arraylength",
+                    "`eventCount` is 0".into(),
+                ),
+            );
+        }
+        for h in events.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCmdWaitEvents2-commonparent",
+                        "`pEvents` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
+        }
+        for x in dependency_infos.iter() {
+            crate::checks::check_dependency_info(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_write_timestamp`], run before the call.
+    pub(crate) fn validate_cmd_write_timestamp(
+        &self,
+        pipeline_stage: vk::PipelineStageFlags,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_pipeline_stage_flag_bits(
+            pipeline_stage,
+            s,
+            "VUID-vkCmdWriteTimestamp-pipelineStage-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(query_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp-commonparent",
+                    "`queryPool` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_write_timestamp2`], run before the call.
+    pub(crate) fn validate_cmd_write_timestamp2(
+        &self,
+        stage: vk::PipelineStageFlags2,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_pipeline_stage_flags2(
+            stage,
+            s,
+            "VUID-vkCmdWriteTimestamp2-stage-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(query_pool.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp2-commonparent",
+                    "`queryPool` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
 }
 impl<'c> Recorder<'c, Outside> {
+    ///The dynamic checks of [`Self::cmd_begin_render_pass`], run before the call.
+    pub(crate) fn validate_cmd_begin_render_pass<'a>(
+        &self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        contents: vk::SubpassContents,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_subpass_contents(
+            contents,
+            s,
+            "VUID-vkCmdBeginRenderPass-contents-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+            return Err(
+                fail(
+                    "VUID-vkCmdBeginRenderPass-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_begin_render_pass2`], run before the call.
+    pub(crate) fn validate_cmd_begin_render_pass2<'a>(
+        &self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+            return Err(
+                fail(
+                    "VUID-vkCmdBeginRenderPass2-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
+        crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_begin_rendering`], run before the call.
+    pub(crate) fn validate_cmd_begin_rendering<'a>(
+        &self,
+        rendering_info: &RenderingInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBeginRendering-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        crate::checks::check_rendering_info(rendering_info, s)?;
+        Ok(())
+    }
     ///The dynamic checks of [`Self::cmd_blit_image`], run before the call.
     pub(crate) fn validate_cmd_blit_image(
         &self,
@@ -635,8 +2410,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_blit_image2`], run before the call.
     pub(crate) fn validate_cmd_blit_image2<'a>(
         &self,
@@ -658,50 +2431,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_blit_image_info2(blit_image_info, s)?;
         Ok(())
     }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_clear_attachments`], run before the call.
-    pub(crate) fn validate_cmd_clear_attachments(
-        &self,
-        attachments: &[vk::ClearAttachment],
-        rects: &[vk::ClearRect],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearAttachments-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if attachments.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearAttachments-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
-            );
-        }
-        if rects.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearAttachments-rectCount-arraylength",
-                    "`rectCount` is 0".into(),
-                ),
-            );
-        }
-        for x in attachments.iter() {
-            crate::checks::check_clear_attachment(x, s)?;
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_clear_color_image`], run before the call.
     pub(crate) fn validate_cmd_clear_color_image(
         &self,
@@ -749,8 +2478,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_clear_depth_stencil_image`], run before the call.
     pub(crate) fn validate_cmd_clear_depth_stencil_image(
         &self,
@@ -798,8 +2525,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_buffer`], run before the call.
     pub(crate) fn validate_cmd_copy_buffer(
         &self,
@@ -848,8 +2573,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_buffer2`], run before the call.
     pub(crate) fn validate_cmd_copy_buffer2<'a>(
         &self,
@@ -871,8 +2594,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_buffer_info2(copy_buffer_info, s)?;
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_buffer_to_image`], run before the call.
     pub(crate) fn validate_cmd_copy_buffer_to_image(
         &self,
@@ -930,8 +2651,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_buffer_to_image2`], run before the call.
     pub(crate) fn validate_cmd_copy_buffer_to_image2<'a>(
         &self,
@@ -953,8 +2672,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_buffer_to_image_info2(copy_buffer_to_image_info, s)?;
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_image`], run before the call.
     pub(crate) fn validate_cmd_copy_image(
         &self,
@@ -1018,8 +2735,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_image2`], run before the call.
     pub(crate) fn validate_cmd_copy_image2<'a>(
         &self,
@@ -1041,8 +2756,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_image_info2(copy_image_info, s)?;
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_image_to_buffer`], run before the call.
     pub(crate) fn validate_cmd_copy_image_to_buffer(
         &self,
@@ -1100,8 +2813,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_image_to_buffer2`], run before the call.
     pub(crate) fn validate_cmd_copy_image_to_buffer2<'a>(
         &self,
@@ -1123,8 +2834,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_image_to_buffer_info2(copy_image_to_buffer_info, s)?;
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_copy_query_pool_results`], run before the call.
     pub(crate) fn validate_cmd_copy_query_pool_results(
         &self,
@@ -1170,8 +2879,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_dispatch`], run before the call.
     pub(crate) fn validate_cmd_dispatch(&self) -> Result<()> {
         if !crate::validation::supports(
@@ -1188,8 +2895,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_dispatch_base`], run before the call.
     pub(crate) fn validate_cmd_dispatch_base(&self) -> Result<()> {
         if !crate::validation::supports(
@@ -1206,8 +2911,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_dispatch_indirect`], run before the call.
     pub(crate) fn validate_cmd_dispatch_indirect(&self, buffer: &Buffer) -> Result<()> {
         let s = &self.device().scope();
@@ -1234,356 +2937,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw`], run before the call.
-    pub(crate) fn validate_cmd_draw(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDraw-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_indexed`], run before the call.
-    pub(crate) fn validate_cmd_draw_indexed(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexed-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_indexed_indirect`], run before the call.
-    pub(crate) fn validate_cmd_draw_indexed_indirect(
-        &self,
-        buffer: &Buffer,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_indexed_indirect_count`], run before the call.
-    pub(crate) fn validate_cmd_draw_indexed_indirect_count(
-        &self,
-        buffer: &Buffer,
-        count_buffer: &Buffer,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(count_buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                    "`countBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_indirect`], run before the call.
-    pub(crate) fn validate_cmd_draw_indirect(&self, buffer: &Buffer) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_indirect_count`], run before the call.
-    pub(crate) fn validate_cmd_draw_indirect_count(
-        &self,
-        buffer: &Buffer,
-        count_buffer: &Buffer,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(count_buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-commonparent",
-                    "`countBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_end_debug_utils_label_ext`], run before the call.
-    pub(crate) fn validate_cmd_end_debug_utils_label_ext(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_end_query`], run before the call.
-    pub(crate) fn validate_cmd_end_query(&self, query_pool: &QueryPool) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndQuery-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(query_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndQuery-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    ///The dynamic checks of [`Self::cmd_end_render_pass`], run before the call.
-    pub(crate) fn validate_cmd_end_render_pass(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    ///The dynamic checks of [`Self::cmd_end_render_pass2`], run before the call.
-    pub(crate) fn validate_cmd_end_render_pass2<'a>(
-        &self,
-        subpass_end_info: &SubpassEndInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass2-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        crate::checks::check_subpass_end_info(subpass_end_info, s)?;
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, InRendering> {
-    ///The dynamic checks of [`Self::cmd_end_rendering`], run before the call.
-    pub(crate) fn validate_cmd_end_rendering(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_execute_commands`], run before the call.
-    pub(crate) fn validate_cmd_execute_commands(
-        &self,
-        command_buffers: &[&CommandBuffer],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        if command_buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
-                    "`commandBufferCount` is 0".into(),
-                ),
-            );
-        }
-        for h in command_buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdExecuteCommands-commonparent",
-                        "`pCommandBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_fill_buffer`], run before the call.
     pub(crate) fn validate_cmd_fill_buffer(&self, dst_buffer: &Buffer) -> Result<()> {
         let s = &self.device().scope();
@@ -1610,216 +2963,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_insert_debug_utils_label_ext`], run before the call.
-    pub(crate) fn validate_cmd_insert_debug_utils_label_ext(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    ///The dynamic checks of [`Self::cmd_next_subpass`], run before the call.
-    pub(crate) fn validate_cmd_next_subpass(
-        &self,
-        contents: vk::SubpassContents,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_subpass_contents(
-            contents,
-            s,
-            "VUID-vkCmdNextSubpass-contents-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    ///The dynamic checks of [`Self::cmd_next_subpass2`], run before the call.
-    pub(crate) fn validate_cmd_next_subpass2<'a>(
-        &self,
-        subpass_begin_info: &SubpassBeginInfo<'a>,
-        subpass_end_info: &SubpassEndInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass2-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
-        crate::checks::check_subpass_end_info(subpass_end_info, s)?;
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_pipeline_barrier`], run before the call.
-    pub(crate) fn validate_cmd_pipeline_barrier<'a>(
-        &self,
-        src_stage_mask: vk::PipelineStageFlags,
-        dst_stage_mask: vk::PipelineStageFlags,
-        dependency_flags: vk::DependencyFlags,
-        memory_barriers: &[MemoryBarrier<'a>],
-        image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_pipeline_stage_flags(
-            src_stage_mask,
-            s,
-            "VUID-vkCmdPipelineBarrier-srcStageMask-parameter",
-        )?;
-        crate::checks::flags_pipeline_stage_flags(
-            dst_stage_mask,
-            s,
-            "VUID-vkCmdPipelineBarrier-dstStageMask-parameter",
-        )?;
-        crate::checks::flags_dependency_flags(
-            dependency_flags,
-            s,
-            "VUID-vkCmdPipelineBarrier-dependencyFlags-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        for x in memory_barriers.iter() {
-            crate::checks::check_memory_barrier(x, s)?;
-        }
-        for x in image_memory_barriers.iter() {
-            crate::checks::check_image_memory_barrier(x, s)?;
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_pipeline_barrier2`], run before the call.
-    pub(crate) fn validate_cmd_pipeline_barrier2<'a>(
-        &self,
-        dependency_info: &DependencyInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        crate::checks::check_dependency_info(dependency_info, s)?;
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_push_constants`], run before the call.
-    pub(crate) fn validate_cmd_push_constants(
-        &self,
-        layout: &PipelineLayout,
-        stage_flags: vk::ShaderStageFlags,
-        values: &[u8],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_shader_stage_flags(
-            stage_flags,
-            s,
-            "VUID-vkCmdPushConstants-stageFlags-parameter",
-        )?;
-        if stage_flags.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
-                    "`stageFlags` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        if values.is_empty() {
-            return Err(
-                fail("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0".into()),
-            );
-        }
-        if !s.owned_by_device(layout.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_reset_event`], run before the call.
     pub(crate) fn validate_cmd_reset_event(
         &self,
@@ -1855,8 +2998,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_reset_event2`], run before the call.
     pub(crate) fn validate_cmd_reset_event2(
         &self,
@@ -1892,8 +3033,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_reset_query_pool`], run before the call.
     pub(crate) fn validate_cmd_reset_query_pool(
         &self,
@@ -1923,8 +3062,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_resolve_image`], run before the call.
     pub(crate) fn validate_cmd_resolve_image(
         &self,
@@ -1988,8 +3125,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_resolve_image2`], run before the call.
     pub(crate) fn validate_cmd_resolve_image2<'a>(
         &self,
@@ -2011,206 +3146,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_resolve_image_info2(resolve_image_info, s)?;
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_blend_constants`], run before the call.
-    pub(crate) fn validate_cmd_set_blend_constants(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_cull_mode`], run before the call.
-    pub(crate) fn validate_cmd_set_cull_mode(
-        &self,
-        cull_mode: vk::CullModeFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_cull_mode_flags(
-            cull_mode,
-            s,
-            "VUID-vkCmdSetCullMode-cullMode-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCullMode-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_bias`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bias(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_bias_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bias_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_bounds`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bounds(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_bounds_test_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bounds_test_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_compare_op`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_compare_op(
-        &self,
-        depth_compare_op: vk::CompareOp,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_compare_op(
-            depth_compare_op,
-            s,
-            "VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_test_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_test_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_depth_write_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_write_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_device_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_device_mask(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,transfer operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_set_event`], run before the call.
     pub(crate) fn validate_cmd_set_event(
         &self,
@@ -2246,8 +3181,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_set_event2`], run before the call.
     pub(crate) fn validate_cmd_set_event2<'a>(
         &self,
@@ -2279,414 +3212,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_dependency_info(dependency_info, s)?;
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_front_face`], run before the call.
-    pub(crate) fn validate_cmd_set_front_face(
-        &self,
-        front_face: vk::FrontFace,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_front_face(
-            front_face,
-            s,
-            "VUID-vkCmdSetFrontFace-frontFace-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetFrontFace-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_line_width`], run before the call.
-    pub(crate) fn validate_cmd_set_line_width(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_primitive_restart_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_primitive_restart_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_primitive_topology`], run before the call.
-    pub(crate) fn validate_cmd_set_primitive_topology(
-        &self,
-        primitive_topology: vk::PrimitiveTopology,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_primitive_topology(
-            primitive_topology,
-            s,
-            "VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_rasterizer_discard_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_rasterizer_discard_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
-    pub(crate) fn validate_cmd_set_scissor(
-        &self,
-        scissors: &[vk::Rect2D],
-    ) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if scissors.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-scissorCount-arraylength",
-                    "`scissorCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_scissor_with_count`], run before the call.
-    pub(crate) fn validate_cmd_set_scissor_with_count(
-        &self,
-        scissors: &[vk::Rect2D],
-    ) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if scissors.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissorWithCount-scissorCount-arraylength",
-                    "`scissorCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_stencil_compare_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_compare_mask(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_stencil_op`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_op(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-        fail_op: vk::StencilOp,
-        pass_op: vk::StencilOp,
-        depth_fail_op: vk::StencilOp,
-        compare_op: vk::CompareOp,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilOp-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilOp-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        crate::checks::enum_stencil_op(
-            fail_op,
-            s,
-            "VUID-vkCmdSetStencilOp-failOp-parameter",
-        )?;
-        crate::checks::enum_stencil_op(
-            pass_op,
-            s,
-            "VUID-vkCmdSetStencilOp-passOp-parameter",
-        )?;
-        crate::checks::enum_stencil_op(
-            depth_fail_op,
-            s,
-            "VUID-vkCmdSetStencilOp-depthFailOp-parameter",
-        )?;
-        crate::checks::enum_compare_op(
-            compare_op,
-            s,
-            "VUID-vkCmdSetStencilOp-compareOp-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilOp-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_stencil_reference`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_reference(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilReference-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_stencil_test_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_test_enable(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_stencil_write_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_write_mask(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport(
-        &self,
-        viewports: &[vk::Viewport],
-    ) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if viewports.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_viewport_with_count`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport_with_count(
-        &self,
-        viewports: &[vk::Viewport],
-    ) -> Result<()> {
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if viewports.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWithCount-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_update_buffer`], run before the call.
     pub(crate) fn validate_cmd_update_buffer(
         &self,
@@ -2726,247 +3251,346 @@ impl<'c> Recorder<'c, Outside> {
         Ok(())
     }
 }
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_wait_events`], run before the call.
-    pub(crate) fn validate_cmd_wait_events<'a>(
+impl<'c, S: Inside> Recorder<'c, S> {
+    ///The dynamic checks of [`Self::cmd_clear_attachments`], run before the call.
+    pub(crate) fn validate_cmd_clear_attachments(
         &self,
-        events: &[&Event],
-        src_stage_mask: vk::PipelineStageFlags,
-        dst_stage_mask: vk::PipelineStageFlags,
-        memory_barriers: &[MemoryBarrier<'a>],
-        image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_pipeline_stage_flags(
-            src_stage_mask,
-            s,
-            "VUID-vkCmdWaitEvents-srcStageMask-parameter",
-        )?;
-        crate::checks::flags_pipeline_stage_flags(
-            dst_stage_mask,
-            s,
-            "VUID-vkCmdWaitEvents-dstStageMask-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if events.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-eventCount-arraylength",
-                    "`eventCount` is 0".into(),
-                ),
-            );
-        }
-        for h in events.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWaitEvents-commonparent",
-                        "`pEvents` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
-        }
-        for x in memory_barriers.iter() {
-            crate::checks::check_memory_barrier(x, s)?;
-        }
-        for x in image_memory_barriers.iter() {
-            crate::checks::check_image_memory_barrier(x, s)?;
-        }
-        Ok(())
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_wait_events2`], run before the call.
-    pub(crate) fn validate_cmd_wait_events2<'a>(
-        &self,
-        events: &[&Event],
-        dependency_infos: &[DependencyInfo<'a>],
+        attachments: &[vk::ClearAttachment],
+        rects: &[vk::ClearRect],
     ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+            vk::QueueFlags::GRAPHICS,
         ) {
             return Err(
                 fail(
-                    "VUID-vkCmdWaitEvents2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                    "VUID-vkCmdClearAttachments-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
                         .into(),
                 ),
             );
         }
-        if events.is_empty() {
+        if attachments.is_empty() {
             return Err(
                 fail(
-                    "VUID-vkCmdWaitEvents2-eventCount-arraylength",
-                    "`eventCount` is 0".into(),
+                    "VUID-vkCmdClearAttachments-attachmentCount-arraylength",
+                    "`attachmentCount` is 0".into(),
                 ),
             );
         }
-        for h in events.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWaitEvents2-commonparent",
-                        "`pEvents` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
+        if rects.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdClearAttachments-rectCount-arraylength",
+                    "`rectCount` is 0".into(),
+                ),
+            );
         }
-        for x in dependency_infos.iter() {
-            crate::checks::check_dependency_info(x, s)?;
+        for x in attachments.iter() {
+            crate::checks::check_clear_attachment(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_draw`], run before the call.
+    pub(crate) fn validate_cmd_draw(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDraw-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_draw_indexed`], run before the call.
+    pub(crate) fn validate_cmd_draw_indexed(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexed-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_draw_indexed_indirect`], run before the call.
+    pub(crate) fn validate_cmd_draw_indexed_indirect(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirect-commonparent",
+                    "`buffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_draw_indexed_indirect_count`], run before the call.
+    pub(crate) fn validate_cmd_draw_indexed_indirect_count(
+        &self,
+        buffer: &Buffer,
+        count_buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                    "`buffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(count_buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                    "`countBuffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_draw_indirect`], run before the call.
+    pub(crate) fn validate_cmd_draw_indirect(&self, buffer: &Buffer) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirect-commonparent",
+                    "`buffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_draw_indirect_count`], run before the call.
+    pub(crate) fn validate_cmd_draw_indirect_count(
+        &self,
+        buffer: &Buffer,
+        count_buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirectCount-commonparent",
+                    "`buffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        if !s.owned_by_device(count_buffer.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirectCount-commonparent",
+                    "`countBuffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
         }
         Ok(())
     }
 }
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_write_timestamp`], run before the call.
-    pub(crate) fn validate_cmd_write_timestamp(
+impl<'c> Recorder<'c, InRenderPass> {
+    ///The dynamic checks of [`Self::cmd_end_render_pass`], run before the call.
+    pub(crate) fn validate_cmd_end_render_pass(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndRenderPass-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndRenderPass-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_end_render_pass2`], run before the call.
+    pub(crate) fn validate_cmd_end_render_pass2<'a>(
         &self,
-        pipeline_stage: vk::PipelineStageFlags,
-        query_pool: &QueryPool,
+        subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
-        crate::checks::enum_pipeline_stage_flag_bits(
-            pipeline_stage,
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndRenderPass2-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        crate::checks::check_subpass_end_info(subpass_end_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_next_subpass`], run before the call.
+    pub(crate) fn validate_cmd_next_subpass(
+        &self,
+        contents: vk::SubpassContents,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_subpass_contents(
+            contents,
             s,
-            "VUID-vkCmdWriteTimestamp-pipelineStage-parameter",
+            "VUID-vkCmdNextSubpass-contents-parameter",
         )?;
         if !crate::validation::supports(
             self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+            vk::QueueFlags::GRAPHICS,
         ) {
             return Err(
                 fail(
-                    "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations"
+                    "VUID-vkCmdNextSubpass-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
                         .into(),
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
             return Err(
                 fail(
-                    "VUID-vkCmdWriteTimestamp-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
+                    "VUID-vkCmdNextSubpass-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
                 ),
             );
         }
         Ok(())
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_write_timestamp2`], run before the call.
-    pub(crate) fn validate_cmd_write_timestamp2(
+    ///The dynamic checks of [`Self::cmd_next_subpass2`], run before the call.
+    pub(crate) fn validate_cmd_next_subpass2<'a>(
         &self,
-        stage: vk::PipelineStageFlags2,
-        query_pool: &QueryPool,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+        subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
-        crate::checks::flags_pipeline_stage_flags2(
-            stage,
-            s,
-            "VUID-vkCmdWriteTimestamp2-stage-parameter",
-        )?;
         if !crate::validation::supports(
             self.command_buffer().parent().queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+            vk::QueueFlags::GRAPHICS,
         ) {
             return Err(
                 fail(
-                    "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                    "VUID-vkCmdNextSubpass2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
                         .into(),
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
             return Err(
                 fail(
-                    "VUID-vkCmdWriteTimestamp2-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
+                    "VUID-vkCmdNextSubpass2-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;
+        crate::checks::check_subpass_end_info(subpass_end_info, s)?;
+        Ok(())
+    }
+}
+impl<'c> Recorder<'c, InRendering> {
+    ///The dynamic checks of [`Self::cmd_end_rendering`], run before the call.
+    pub(crate) fn validate_cmd_end_rendering(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.command_buffer().parent().queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
                         .into(),
                 ),
             );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_buffer`], run before the call.
-    pub(crate) fn validate_create_buffer<'a>(
-        &self,
-        create_info: &BufferCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_buffer_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_buffer_view`], run before the call.
-    pub(crate) fn validate_create_buffer_view<'a>(
-        &self,
-        create_info: &BufferViewCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_buffer_view_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_command_pool`], run before the call.
-    pub(crate) fn validate_create_command_pool<'a>(
-        &self,
-        create_info: &CommandPoolCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_command_pool_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_compute_pipelines`], run before the call.
-    pub(crate) fn validate_create_compute_pipelines<'a>(
-        &self,
-        pipeline_cache: Option<&PipelineCache>,
-        create_infos: &[ComputePipelineCreateInfo<'a>],
-    ) -> Result<()> {
-        let s = &self.scope();
-        if create_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
-                    "`createInfoCount` is 0".into(),
-                ),
-            );
-        }
-        if let Some(h) = pipeline_cache {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateComputePipelines-pipelineCache-parent",
-                        "`pipelineCache` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        for x in create_infos.iter() {
-            crate::checks::check_compute_pipeline_create_info(x, s)?;
         }
         Ok(())
     }
@@ -2982,37 +3606,33 @@ impl Instance {
         crate::checks::check_debug_utils_messenger_create_info_ext(create_info, s)?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_descriptor_pool`], run before the call.
-    pub(crate) fn validate_create_descriptor_pool<'a>(
+    ///The dynamic checks of [`Self::submit_debug_utils_message_ext`], run before the call.
+    pub(crate) fn validate_submit_debug_utils_message_ext<'a>(
         &self,
-        create_info: &DescriptorPoolCreateInfo<'a>,
+        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
+        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        crate::checks::check_descriptor_pool_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_descriptor_set_layout`], run before the call.
-    pub(crate) fn validate_create_descriptor_set_layout<'a>(
-        &self,
-        create_info: &DescriptorSetLayoutCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_descriptor_update_template`], run before the call.
-    pub(crate) fn validate_create_descriptor_update_template<'a>(
-        &self,
-        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_descriptor_update_template_create_info(create_info, s)?;
+        crate::checks::enum_debug_utils_message_severity_flag_bits_ext(
+            message_severity,
+            s,
+            "VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter",
+        )?;
+        crate::checks::flags_debug_utils_message_type_flags_ext(
+            message_types,
+            s,
+            "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter",
+        )?;
+        if message_types.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask",
+                    "`messageTypes` is empty".into(),
+                ),
+            );
+        }
+        crate::checks::check_debug_utils_messenger_callback_data_ext(callback_data, s)?;
         Ok(())
     }
 }
@@ -3032,91 +3652,196 @@ impl PhysicalDevice {
         crate::checks::check_device_create_info(create_info, s)?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_event`], run before the call.
-    pub(crate) fn validate_create_event<'a>(
+    ///The dynamic checks of [`Self::get_physical_device_external_buffer_properties`], run before the call.
+    pub(crate) fn validate_get_physical_device_external_buffer_properties<'a>(
         &self,
-        create_info: &EventCreateInfo<'a>,
+        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
     ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_event_create_info(create_info, s)?;
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_external_buffer_info(
+            external_buffer_info,
+            s,
+        )?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_fence`], run before the call.
-    pub(crate) fn validate_create_fence<'a>(
+    ///The dynamic checks of [`Self::get_physical_device_external_fence_properties`], run before the call.
+    pub(crate) fn validate_get_physical_device_external_fence_properties<'a>(
         &self,
-        create_info: &FenceCreateInfo<'a>,
+        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
     ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_fence_create_info(create_info, s)?;
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_external_fence_info(
+            external_fence_info,
+            s,
+        )?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_framebuffer`], run before the call.
-    pub(crate) fn validate_create_framebuffer<'a>(
+    ///The dynamic checks of [`Self::get_physical_device_external_semaphore_properties`], run before the call.
+    pub(crate) fn validate_get_physical_device_external_semaphore_properties<'a>(
         &self,
-        create_info: &FramebufferCreateInfo<'a>,
+        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
     ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_framebuffer_create_info(create_info, s)?;
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_external_semaphore_info(
+            external_semaphore_info,
+            s,
+        )?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_graphics_pipelines`], run before the call.
-    pub(crate) fn validate_create_graphics_pipelines<'a>(
+    ///The dynamic checks of [`Self::get_physical_device_format_properties`], run before the call.
+    pub(crate) fn validate_get_physical_device_format_properties(
         &self,
-        pipeline_cache: Option<&PipelineCache>,
-        create_infos: &[GraphicsPipelineCreateInfo<'a>],
+        format: vk::Format,
     ) -> Result<()> {
-        let s = &self.scope();
-        if create_infos.is_empty() {
+        let s = &self.parent().scope();
+        crate::checks::enum_format(
+            format,
+            s,
+            "VUID-vkGetPhysicalDeviceFormatProperties-format-parameter",
+        )?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_physical_device_format_properties2`], run before the call.
+    pub(crate) fn validate_get_physical_device_format_properties2<'a>(
+        &self,
+        format: vk::Format,
+        format_properties: &mut FormatProperties2<'a>,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        crate::checks::enum_format(
+            format,
+            s,
+            "VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter",
+        )?;
+        crate::checks::check_format_properties2(format_properties, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_physical_device_image_format_properties`], run before the call.
+    pub(crate) fn validate_get_physical_device_image_format_properties(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        tiling: vk::ImageTiling,
+        usage: vk::ImageUsageFlags,
+        flags: vk::ImageCreateFlags,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        crate::checks::enum_format(
+            format,
+            s,
+            "VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter",
+        )?;
+        crate::checks::enum_image_type(
+            ty,
+            s,
+            "VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter",
+        )?;
+        crate::checks::enum_image_tiling(
+            tiling,
+            s,
+            "VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter",
+        )?;
+        crate::checks::flags_image_usage_flags(
+            usage,
+            s,
+            "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter",
+        )?;
+        if usage.is_empty() {
             return Err(
                 fail(
-                    "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
-                    "`createInfoCount` is 0".into(),
+                    "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask",
+                    "`usage` is empty".into(),
                 ),
             );
         }
-        if let Some(h) = pipeline_cache {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
-                        "`pipelineCache` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        for x in create_infos.iter() {
-            crate::checks::check_graphics_pipeline_create_info(x, s)?;
-        }
+        crate::checks::flags_image_create_flags(
+            flags,
+            s,
+            "VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter",
+        )?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_image`], run before the call.
-    pub(crate) fn validate_create_image<'a>(
+    ///The dynamic checks of [`Self::get_physical_device_image_format_properties2`], run before the call.
+    pub(crate) fn validate_get_physical_device_image_format_properties2<'a>(
         &self,
-        create_info: &ImageCreateInfo<'a>,
+        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
+        image_format_properties: &mut ImageFormatProperties2<'a>,
     ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_image_create_info(create_info, s)?;
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_image_format_info2(image_format_info, s)?;
+        crate::checks::check_image_format_properties2(image_format_properties, s)?;
         Ok(())
     }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_image_view`], run before the call.
-    pub(crate) fn validate_create_image_view<'a>(
+    ///The dynamic checks of [`Self::get_physical_device_memory_properties2`], run before the call.
+    pub(crate) fn validate_get_physical_device_memory_properties2<'a>(
         &self,
-        create_info: &ImageViewCreateInfo<'a>,
+        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_image_view_create_info(create_info, s)?;
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_memory_properties2(memory_properties, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_physical_device_properties2`], run before the call.
+    pub(crate) fn validate_get_physical_device_properties2<'a>(
+        &self,
+        properties: &mut PhysicalDeviceProperties2<'a>,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_properties2(properties, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_physical_device_sparse_image_format_properties`], run before the call.
+    pub(crate) fn validate_get_physical_device_sparse_image_format_properties(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        samples: vk::SampleCountFlags,
+        usage: vk::ImageUsageFlags,
+        tiling: vk::ImageTiling,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        crate::checks::enum_format(
+            format,
+            s,
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter",
+        )?;
+        crate::checks::enum_image_type(
+            ty,
+            s,
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter",
+        )?;
+        crate::checks::enum_sample_count_flag_bits(
+            samples,
+            s,
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter",
+        )?;
+        crate::checks::flags_image_usage_flags(
+            usage,
+            s,
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter",
+        )?;
+        if usage.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask",
+                    "`usage` is empty".into(),
+                ),
+            );
+        }
+        crate::checks::enum_image_tiling(
+            tiling,
+            s,
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter",
+        )?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_physical_device_sparse_image_format_properties2`], run before the call.
+    pub(crate) fn validate_get_physical_device_sparse_image_format_properties2<'a>(
+        &self,
+        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        crate::checks::check_physical_device_sparse_image_format_info2(format_info, s)?;
         Ok(())
     }
 }
@@ -3147,128 +3872,6 @@ impl Instance {
     ) -> Result<()> {
         let s = &self.scope();
         crate::checks::check_metal_surface_create_info_ext(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_pipeline_cache`], run before the call.
-    pub(crate) fn validate_create_pipeline_cache<'a>(
-        &self,
-        create_info: &PipelineCacheCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_pipeline_cache_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_pipeline_layout`], run before the call.
-    pub(crate) fn validate_create_pipeline_layout<'a>(
-        &self,
-        create_info: &PipelineLayoutCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_pipeline_layout_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_private_data_slot`], run before the call.
-    pub(crate) fn validate_create_private_data_slot<'a>(
-        &self,
-        create_info: &PrivateDataSlotCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_private_data_slot_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_query_pool`], run before the call.
-    pub(crate) fn validate_create_query_pool<'a>(
-        &self,
-        create_info: &QueryPoolCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_query_pool_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_render_pass`], run before the call.
-    pub(crate) fn validate_create_render_pass<'a>(
-        &self,
-        create_info: &RenderPassCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_render_pass_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_render_pass2`], run before the call.
-    pub(crate) fn validate_create_render_pass2<'a>(
-        &self,
-        create_info: &RenderPassCreateInfo2<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_render_pass_create_info2(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_sampler`], run before the call.
-    pub(crate) fn validate_create_sampler<'a>(
-        &self,
-        create_info: &SamplerCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_sampler_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_sampler_ycbcr_conversion`], run before the call.
-    pub(crate) fn validate_create_sampler_ycbcr_conversion<'a>(
-        &self,
-        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_sampler_ycbcr_conversion_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_semaphore`], run before the call.
-    pub(crate) fn validate_create_semaphore<'a>(
-        &self,
-        create_info: &SemaphoreCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_semaphore_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::create_shader_module`], run before the call.
-    pub(crate) fn validate_create_shader_module<'a>(
-        &self,
-        create_info: &ShaderModuleCreateInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_shader_module_create_info(create_info, s)?;
-        Ok(())
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    ///The dynamic checks of [`Self::create_swapchain_khr`], run before the call.
-    pub(crate) fn validate_create_swapchain_khr<'a>(
-        &self,
-        create_info: &SwapchainCreateInfoKHR<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_swapchain_create_info_khr(create_info, s)?;
         Ok(())
     }
 }
@@ -3320,395 +3923,6 @@ impl Instance {
         Ok(())
     }
 }
-impl Device {
-    ///The dynamic checks of [`Self::flush_mapped_memory_ranges`], run before the call.
-    pub(crate) fn validate_flush_mapped_memory_ranges<'a>(
-        &self,
-        memory_ranges: &[MappedMemoryRange<'a>],
-    ) -> Result<()> {
-        if memory_ranges.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
-                    "`memoryRangeCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_buffer_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_buffer_memory_requirements(
-        &self,
-        buffer: &Buffer,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetBufferMemoryRequirements-buffer-parent",
-                    "`buffer` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_buffer_memory_requirements2`], run before the call.
-    pub(crate) fn validate_get_buffer_memory_requirements2<'a>(
-        &self,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_memory_requirements2(memory_requirements, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_descriptor_set_layout_support`], run before the call.
-    pub(crate) fn validate_get_descriptor_set_layout_support<'a>(
-        &self,
-        create_info: &DescriptorSetLayoutCreateInfo<'a>,
-        support: &mut DescriptorSetLayoutSupport<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
-        crate::checks::check_descriptor_set_layout_support(support, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_device_buffer_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_device_buffer_memory_requirements<'a>(
-        &self,
-        info: &DeviceBufferMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_device_buffer_memory_requirements(info, s)?;
-        crate::checks::check_memory_requirements2(memory_requirements, s)?;
-        Ok(())
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    ///The dynamic checks of [`Self::get_device_group_surface_present_modes_khr`], run before the call.
-    pub(crate) fn validate_get_device_group_surface_present_modes_khr(
-        &self,
-        surface: &SurfaceKHR,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_instance(surface.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent",
-                    "`surface` does not come from the VkInstance the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_device_image_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_device_image_memory_requirements<'a>(
-        &self,
-        info: &DeviceImageMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_device_image_memory_requirements(info, s)?;
-        crate::checks::check_memory_requirements2(memory_requirements, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_device_image_sparse_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_device_image_sparse_memory_requirements<'a>(
-        &self,
-        info: &DeviceImageMemoryRequirements<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_device_image_memory_requirements(info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_device_memory_commitment`], run before the call.
-    pub(crate) fn validate_get_device_memory_commitment(
-        &self,
-        memory: &DeviceMemory,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(memory.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeviceMemoryCommitment-memory-parent",
-                    "`memory` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_device_queue2`], run before the call.
-    pub(crate) fn validate_get_device_queue2<'a>(
-        &self,
-        queue_info: &DeviceQueueInfo2<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_device_queue_info2(queue_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_event_status`], run before the call.
-    pub(crate) fn validate_get_event_status(&self, event: &Event) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(event.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetEventStatus-event-parent",
-                    "`event` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_fence_status`], run before the call.
-    pub(crate) fn validate_get_fence_status(&self, fence: &Fence) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(fence.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetFenceStatus-fence-parent",
-                    "`fence` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_image_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_image_memory_requirements(
-        &self,
-        image: &Image,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageMemoryRequirements-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_image_memory_requirements2`], run before the call.
-    pub(crate) fn validate_get_image_memory_requirements2<'a>(
-        &self,
-        info: &ImageMemoryRequirementsInfo2<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_image_memory_requirements_info2(info, s)?;
-        crate::checks::check_memory_requirements2(memory_requirements, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_image_sparse_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_image_sparse_memory_requirements(
-        &self,
-        image: &Image,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageSparseMemoryRequirements-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_image_subresource_layout`], run before the call.
-    pub(crate) fn validate_get_image_subresource_layout(
-        &self,
-        image: &Image,
-        subresource: &vk::ImageSubresource,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageSubresourceLayout-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
-            );
-        }
-        crate::checks::check_image_subresource(subresource, s)?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_external_buffer_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_buffer_properties<'a>(
-        &self,
-        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_external_buffer_info(
-            external_buffer_info,
-            s,
-        )?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_external_fence_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_fence_properties<'a>(
-        &self,
-        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_external_fence_info(
-            external_fence_info,
-            s,
-        )?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_external_semaphore_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_semaphore_properties<'a>(
-        &self,
-        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_external_semaphore_info(
-            external_semaphore_info,
-            s,
-        )?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_format_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_format_properties(
-        &self,
-        format: vk::Format,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::enum_format(
-            format,
-            s,
-            "VUID-vkGetPhysicalDeviceFormatProperties-format-parameter",
-        )?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_format_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_format_properties2<'a>(
-        &self,
-        format: vk::Format,
-        format_properties: &mut FormatProperties2<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::enum_format(
-            format,
-            s,
-            "VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter",
-        )?;
-        crate::checks::check_format_properties2(format_properties, s)?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_image_format_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_image_format_properties(
-        &self,
-        format: vk::Format,
-        ty: vk::ImageType,
-        tiling: vk::ImageTiling,
-        usage: vk::ImageUsageFlags,
-        flags: vk::ImageCreateFlags,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::enum_format(
-            format,
-            s,
-            "VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter",
-        )?;
-        crate::checks::enum_image_type(
-            ty,
-            s,
-            "VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter",
-        )?;
-        crate::checks::enum_image_tiling(
-            tiling,
-            s,
-            "VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter",
-        )?;
-        crate::checks::flags_image_usage_flags(
-            usage,
-            s,
-            "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter",
-        )?;
-        if usage.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask",
-                    "`usage` is empty".into(),
-                ),
-            );
-        }
-        crate::checks::flags_image_create_flags(
-            flags,
-            s,
-            "VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter",
-        )?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_image_format_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_image_format_properties2<'a>(
-        &self,
-        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
-        image_format_properties: &mut ImageFormatProperties2<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_image_format_info2(image_format_info, s)?;
-        crate::checks::check_image_format_properties2(image_format_properties, s)?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_memory_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_memory_properties2<'a>(
-        &self,
-        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_memory_properties2(memory_properties, s)?;
-        Ok(())
-    }
-}
 #[cfg(feature = "khr_swapchain")]
 impl PhysicalDevice {
     ///The dynamic checks of [`Self::get_physical_device_present_rectangles_khr`], run before the call.
@@ -3726,75 +3940,6 @@ impl PhysicalDevice {
                 ),
             );
         }
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_properties2<'a>(
-        &self,
-        properties: &mut PhysicalDeviceProperties2<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_properties2(properties, s)?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_sparse_image_format_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_sparse_image_format_properties(
-        &self,
-        format: vk::Format,
-        ty: vk::ImageType,
-        samples: vk::SampleCountFlags,
-        usage: vk::ImageUsageFlags,
-        tiling: vk::ImageTiling,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::enum_format(
-            format,
-            s,
-            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter",
-        )?;
-        crate::checks::enum_image_type(
-            ty,
-            s,
-            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter",
-        )?;
-        crate::checks::enum_sample_count_flag_bits(
-            samples,
-            s,
-            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter",
-        )?;
-        crate::checks::flags_image_usage_flags(
-            usage,
-            s,
-            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter",
-        )?;
-        if usage.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask",
-                    "`usage` is empty".into(),
-                ),
-            );
-        }
-        crate::checks::enum_image_tiling(
-            tiling,
-            s,
-            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter",
-        )?;
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_sparse_image_format_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_sparse_image_format_properties2<'a>(
-        &self,
-        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_physical_device_sparse_image_format_info2(format_info, s)?;
         Ok(())
     }
 }
@@ -3817,9 +3962,6 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-}
-#[cfg(feature = "khr_surface")]
-impl PhysicalDevice {
     ///The dynamic checks of [`Self::get_physical_device_surface_formats_khr`], run before the call.
     pub(crate) fn validate_get_physical_device_surface_formats_khr(
         &self,
@@ -3839,9 +3981,6 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-}
-#[cfg(feature = "khr_surface")]
-impl PhysicalDevice {
     ///The dynamic checks of [`Self::get_physical_device_surface_present_modes_khr`], run before the call.
     pub(crate) fn validate_get_physical_device_surface_present_modes_khr(
         &self,
@@ -3861,9 +4000,6 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-}
-#[cfg(feature = "khr_surface")]
-impl PhysicalDevice {
     ///The dynamic checks of [`Self::get_physical_device_surface_support_khr`], run before the call.
     pub(crate) fn validate_get_physical_device_surface_support_khr(
         &self,
@@ -3878,190 +4014,6 @@ impl PhysicalDevice {
                         .into(),
                 ),
             );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_pipeline_cache_data`], run before the call.
-    pub(crate) fn validate_get_pipeline_cache_data(
-        &self,
-        pipeline_cache: &PipelineCache,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(pipeline_cache.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPipelineCacheData-pipelineCache-parent",
-                    "`pipelineCache` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_private_data`], run before the call.
-    pub(crate) fn validate_get_private_data(
-        &self,
-        object_type: vk::ObjectType,
-        private_data_slot: &PrivateDataSlot,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::enum_object_type(
-            object_type,
-            s,
-            "VUID-vkGetPrivateData-objectType-parameter",
-        )?;
-        if !s.owned_by_device(private_data_slot.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPrivateData-privateDataSlot-parent",
-                    "`privateDataSlot` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_query_pool_results`], run before the call.
-    pub(crate) fn validate_get_query_pool_results(
-        &self,
-        query_pool: &QueryPool,
-        data: &mut [u8],
-        flags: vk::QueryResultFlags,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::flags_query_result_flags(
-            flags,
-            s,
-            "VUID-vkGetQueryPoolResults-flags-parameter",
-        )?;
-        if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetQueryPoolResults-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(query_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetQueryPoolResults-queryPool-parent",
-                    "`queryPool` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_render_area_granularity`], run before the call.
-    pub(crate) fn validate_get_render_area_granularity(
-        &self,
-        render_pass: &RenderPass,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(render_pass.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRenderAreaGranularity-renderPass-parent",
-                    "`renderPass` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::get_semaphore_counter_value`], run before the call.
-    pub(crate) fn validate_get_semaphore_counter_value(
-        &self,
-        semaphore: &Semaphore,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(semaphore.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetSemaphoreCounterValue-semaphore-parent",
-                    "`semaphore` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    ///The dynamic checks of [`Self::get_swapchain_images_khr`], run before the call.
-    pub(crate) fn validate_get_swapchain_images_khr(
-        &self,
-        swapchain: &SwapchainKHR,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetSwapchainImagesKHR-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::invalidate_mapped_memory_ranges`], run before the call.
-    pub(crate) fn validate_invalidate_mapped_memory_ranges<'a>(
-        &self,
-        memory_ranges: &[MappedMemoryRange<'a>],
-    ) -> Result<()> {
-        if memory_ranges.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
-                    "`memoryRangeCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::merge_pipeline_caches`], run before the call.
-    pub(crate) fn validate_merge_pipeline_caches(
-        &self,
-        dst_cache: &PipelineCache,
-        src_caches: &[&PipelineCache],
-    ) -> Result<()> {
-        let s = &self.scope();
-        if src_caches.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
-                    "`srcCacheCount` is 0".into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(dst_cache.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkMergePipelineCaches-dstCache-parent",
-                    "`dstCache` does not come from `device`".into(),
-                ),
-            );
-        }
-        for h in src_caches.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkMergePipelineCaches-pSrcCaches-parent",
-                        "`pSrcCaches` does not come from `device`".into(),
-                    ),
-                );
-            }
         }
         Ok(())
     }
@@ -4099,20 +4051,6 @@ impl Queue {
         }
         Ok(())
     }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Queue {
-    ///The dynamic checks of [`Self::queue_present_khr`], run before the call.
-    pub(crate) fn validate_queue_present_khr<'a>(
-        &self,
-        present_info: &PresentInfoKHR<'a>,
-    ) -> Result<()> {
-        let s = &self.parent().scope();
-        crate::checks::check_present_info_khr(present_info, s)?;
-        Ok(())
-    }
-}
-impl Queue {
     ///The dynamic checks of [`Self::queue_submit`], run before the call.
     pub(crate) fn validate_queue_submit<'a>(
         &self,
@@ -4134,8 +4072,6 @@ impl Queue {
         }
         Ok(())
     }
-}
-impl Queue {
     ///The dynamic checks of [`Self::queue_submit2`], run before the call.
     pub(crate) fn validate_queue_submit2<'a>(
         &self,
@@ -4158,6 +4094,18 @@ impl Queue {
         Ok(())
     }
 }
+#[cfg(feature = "khr_swapchain")]
+impl Queue {
+    ///The dynamic checks of [`Self::queue_present_khr`], run before the call.
+    pub(crate) fn validate_queue_present_khr<'a>(
+        &self,
+        present_info: &PresentInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        crate::checks::check_present_info_khr(present_info, s)?;
+        Ok(())
+    }
+}
 impl CommandBuffer {
     ///The dynamic checks of [`Self::reset_command_buffer`], run before the call.
     pub(crate) fn validate_reset_command_buffer(
@@ -4173,115 +4121,6 @@ impl CommandBuffer {
         Ok(())
     }
 }
-impl Device {
-    ///The dynamic checks of [`Self::reset_command_pool`], run before the call.
-    pub(crate) fn validate_reset_command_pool(
-        &self,
-        command_pool: &CommandPool,
-        flags: vk::CommandPoolResetFlags,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::flags_command_pool_reset_flags(
-            flags,
-            s,
-            "VUID-vkResetCommandPool-flags-parameter",
-        )?;
-        if !s.owned_by_device(command_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetCommandPool-commandPool-parent",
-                    "`commandPool` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::reset_descriptor_pool`], run before the call.
-    pub(crate) fn validate_reset_descriptor_pool(
-        &self,
-        descriptor_pool: &DescriptorPool,
-        flags: vk::DescriptorPoolResetFlags,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if flags.as_raw() != 0 {
-            return Err(
-                fail(
-                    "VUID-vkResetDescriptorPool-flags-zerobitmask",
-                    "`flags` is not 0".into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(descriptor_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetDescriptorPool-descriptorPool-parent",
-                    "`descriptorPool` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::reset_event`], run before the call.
-    pub(crate) fn validate_reset_event(&self, event: &Event) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(event.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetEvent-event-parent",
-                    "`event` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::reset_fences`], run before the call.
-    pub(crate) fn validate_reset_fences(&self, fences: &[&Fence]) -> Result<()> {
-        let s = &self.scope();
-        if fences.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkResetFences-fenceCount-arraylength",
-                    "`fenceCount` is 0".into(),
-                ),
-            );
-        }
-        for h in fences.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkResetFences-pFences-parent",
-                        "`pFences` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::reset_query_pool`], run before the call.
-    pub(crate) fn validate_reset_query_pool(
-        &self,
-        query_pool: &QueryPool,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(query_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetQueryPool-queryPool-parent",
-                    "`queryPool` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
 #[cfg(feature = "ext_debug_utils")]
 impl Device {
     ///The dynamic checks of [`Self::set_debug_utils_object_name_ext`], run before the call.
@@ -4293,9 +4132,6 @@ impl Device {
         crate::checks::check_debug_utils_object_name_info_ext(name_info, s)?;
         Ok(())
     }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Device {
     ///The dynamic checks of [`Self::set_debug_utils_object_tag_ext`], run before the call.
     pub(crate) fn validate_set_debug_utils_object_tag_ext<'a>(
         &self,
@@ -4303,175 +4139,6 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         crate::checks::check_debug_utils_object_tag_info_ext(tag_info, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::set_event`], run before the call.
-    pub(crate) fn validate_set_event(&self, event: &Event) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(event.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetEvent-event-parent",
-                    "`event` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::set_private_data`], run before the call.
-    pub(crate) fn validate_set_private_data(
-        &self,
-        object_type: vk::ObjectType,
-        private_data_slot: &PrivateDataSlot,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::enum_object_type(
-            object_type,
-            s,
-            "VUID-vkSetPrivateData-objectType-parameter",
-        )?;
-        if !s.owned_by_device(private_data_slot.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetPrivateData-privateDataSlot-parent",
-                    "`privateDataSlot` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Instance {
-    ///The dynamic checks of [`Self::submit_debug_utils_message_ext`], run before the call.
-    pub(crate) fn validate_submit_debug_utils_message_ext<'a>(
-        &self,
-        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
-        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::enum_debug_utils_message_severity_flag_bits_ext(
-            message_severity,
-            s,
-            "VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter",
-        )?;
-        crate::checks::flags_debug_utils_message_type_flags_ext(
-            message_types,
-            s,
-            "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter",
-        )?;
-        if message_types.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask",
-                    "`messageTypes` is empty".into(),
-                ),
-            );
-        }
-        crate::checks::check_debug_utils_messenger_callback_data_ext(callback_data, s)?;
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::trim_command_pool`], run before the call.
-    pub(crate) fn validate_trim_command_pool(
-        &self,
-        command_pool: &CommandPool,
-        flags: vk::CommandPoolTrimFlags,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if flags.as_raw() != 0 {
-            return Err(
-                fail(
-                    "VUID-vkTrimCommandPool-flags-zerobitmask",
-                    "`flags` is not 0".into(),
-                ),
-            );
-        }
-        if !s.owned_by_device(command_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkTrimCommandPool-commandPool-parent",
-                    "`commandPool` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::update_descriptor_set_with_template`], run before the call.
-    pub(crate) fn validate_update_descriptor_set_with_template(
-        &self,
-        descriptor_update_template: &DescriptorUpdateTemplate,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if !s.owned_by_device(descriptor_update_template.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent",
-                    "`descriptorUpdateTemplate` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::update_descriptor_sets`], run before the call.
-    pub(crate) fn validate_update_descriptor_sets<'a>(
-        &self,
-        descriptor_writes: &[WriteDescriptorSet<'a>],
-        descriptor_copies: &[CopyDescriptorSet<'a>],
-    ) -> Result<()> {
-        let s = &self.scope();
-        for x in descriptor_writes.iter() {
-            crate::checks::check_write_descriptor_set(x, s)?;
-        }
-        for x in descriptor_copies.iter() {
-            crate::checks::check_copy_descriptor_set(x, s)?;
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::wait_for_fences`], run before the call.
-    pub(crate) fn validate_wait_for_fences(&self, fences: &[&Fence]) -> Result<()> {
-        let s = &self.scope();
-        if fences.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWaitForFences-fenceCount-arraylength",
-                    "`fenceCount` is 0".into(),
-                ),
-            );
-        }
-        for h in fences.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkWaitForFences-pFences-parent",
-                        "`pFences` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        Ok(())
-    }
-}
-impl Device {
-    ///The dynamic checks of [`Self::wait_semaphores`], run before the call.
-    pub(crate) fn validate_wait_semaphores<'a>(
-        &self,
-        wait_info: &SemaphoreWaitInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_semaphore_wait_info(wait_info, s)?;
         Ok(())
     }
 }

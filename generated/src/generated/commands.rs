@@ -79,9 +79,6 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
         }
         Ok((out, r))
     }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
     /**`vkAcquireNextImageKHR`
 
 # Valid usage
@@ -182,6 +179,242 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
         }
         Ok((out, r))
     }
+    /**`vkCreateSwapchainKHR`
+
+# Valid usage
+
+The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
+
+- `VUID-vkCreateSwapchainKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_swapchain_khr<'a>(
+        &self,
+        surface: &SurfaceKHR,
+        create_info: &SwapchainCreateInfoKHR<'a>,
+    ) -> Result<SwapchainKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            syncs
+                .extend(
+                    self
+                        .live()
+                        .sync_of(
+                            vk::ObjectType::SWAPCHAIN_KHR,
+                            vk::Handle::as_raw(create_info.old_swapchain),
+                        ),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_swapchain_khr(create_info);
+            r?;
+        }
+        unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
+    }
+    /**`vkCreateSwapchainKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_swapchain_khr_unchecked<'a>(
+        &self,
+        surface: &SurfaceKHR,
+        create_info: &SwapchainCreateInfoKHR<'a>,
+    ) -> Result<SwapchainKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            syncs
+                .extend(
+                    self
+                        .live()
+                        .sync_of(
+                            vk::ObjectType::SWAPCHAIN_KHR,
+                            vk::Handle::as_raw(create_info.old_swapchain),
+                        ),
+                );
+            tuff_runtime::lock_all(syncs)
+        };
+        let ext_table = self
+            .ext()
+            .khr_swapchain
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let mut create_info = *create_info;
+        create_info.as_raw_mut().surface = surface.raw();
+        let mut out = vk::SwapchainKHR::null();
+        let r = unsafe {
+            (ext_table
+                .create_swapchain_khr)(
+                self.raw(),
+                create_info.as_raw(),
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(SwapchainKHR::from_raw(out, self, Some(surface.retained()), true))
+    }
+    /**`vkGetDeviceGroupPresentCapabilitiesKHR`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPresentCapabilitiesKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_device_group_present_capabilities_khr<'a>(
+        &self,
+        device_group_present_capabilities: &mut DeviceGroupPresentCapabilitiesKHR<'a>,
+    ) -> Result<()> {
+        let ext_table = self
+            .ext()
+            .khr_swapchain
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let r = unsafe {
+            (ext_table
+                .get_device_group_present_capabilities_khr)(
+                self.raw(),
+                device_group_present_capabilities
+                    as *mut DeviceGroupPresentCapabilitiesKHR<'a> as *mut _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkGetDeviceGroupSurfacePresentModesKHR`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_device_group_surface_present_modes_khr(
+        &self,
+        surface: &SurfaceKHR,
+    ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_device_group_surface_present_modes_khr(surface);
+            r?;
+        }
+        unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
+    }
+    /**`vkGetDeviceGroupSurfacePresentModesKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_device_group_surface_present_modes_khr_unchecked(
+        &self,
+        surface: &SurfaceKHR,
+    ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(surface.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let ext_table = self
+            .ext()
+            .khr_swapchain
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let mut out: vk::DeviceGroupPresentModeFlagsKHR = Default::default();
+        let r = unsafe {
+            (ext_table
+                .get_device_group_surface_present_modes_khr)(
+                self.raw(),
+                surface.raw(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(out)
+    }
+    /**`vkGetSwapchainImagesKHR`
+
+# Valid usage
+
+The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainImagesKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetSwapchainImagesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn get_swapchain_images_khr(
+        &self,
+        swapchain: &SwapchainKHR,
+    ) -> Result<Vec<Image>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_swapchain_images_khr(swapchain);
+            r?;
+        }
+        unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
+    }
+    /**`vkGetSwapchainImagesKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at run time: `VUID-vkGetSwapchainImagesKHR-swapchain-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_swapchain_images_khr_unchecked(
+        &self,
+        swapchain: &SwapchainKHR,
+    ) -> Result<Vec<Image>> {
+        let ext_table = self
+            .ext()
+            .khr_swapchain
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let items = unsafe {
+            crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Image| (ext_table
+                .get_swapchain_images_khr)(
+                self.raw(),
+                swapchain.raw(),
+                count,
+                items_ptr.cast(),
+            ))
+        }?;
+        Ok(
+            items
+                .into_iter()
+                .map(|raw| Image::from_raw(raw, self, Some(swapchain.retained()), false))
+                .collect(),
+        )
+    }
 }
 impl Device {
     /**`vkAllocateCommandBuffers`
@@ -265,8 +498,6 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
             cbs
         })
     }
-}
-impl Device {
     /**`vkAllocateDescriptorSets`
 
 # Valid usage
@@ -344,8 +575,6 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
                 .collect()
         })
     }
-}
-impl Device {
     /**`vkAllocateMemory`
 
 # Valid usage
@@ -406,8 +635,6 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
             memory
         })
     }
-}
-impl Device {
     /**`vkBindBufferMemory`
 
 # Valid usage
@@ -476,8 +703,6 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
         buffer.retain_memory(memory.retained());
         Ok(())
     }
-}
-impl Device {
     /**`vkBindBufferMemory2`
 
 # Valid usage
@@ -524,8 +749,6 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
         }
         Ok(())
     }
-}
-impl Device {
     /**`vkBindImageMemory`
 
 # Valid usage
@@ -589,8 +812,6 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
         image.retain_memory(memory.retained());
         Ok(())
     }
-}
-impl Device {
     /**`vkBindImageMemory2`
 
 # Valid usage
@@ -638,6 +859,3459 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
             return Err(Error::Vk(r));
         }
         Ok(())
+    }
+    /**`vkCreateBuffer`
+
+# Valid usage
+
+The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBuffer.html). Settled by the wrappers:
+
+- `VUID-vkCreateBuffer-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateBuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_buffer<'a>(
+        &self,
+        create_info: &BufferCreateInfo<'a>,
+    ) -> Result<Buffer> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_buffer(create_info);
+            r?;
+        }
+        unsafe { self.create_buffer_unchecked(create_info) }
+    }
+    /**`vkCreateBuffer` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_buffer`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_buffer_unchecked<'a>(
+        &self,
+        create_info: &BufferCreateInfo<'a>,
+    ) -> Result<Buffer> {
+        let mut out = vk::Buffer::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_buffer)(
+                self.raw(),
+                create_info as *const BufferCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(Buffer::from_raw(out, self, None, true))
+    }
+    /**`vkCreateBufferView`
+
+# Valid usage
+
+The rules are on [`vkCreateBufferView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html). Settled by the wrappers:
+
+- `VUID-vkCreateBufferView-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_buffer_view<'a>(
+        &self,
+        create_info: &BufferViewCreateInfo<'a>,
+    ) -> Result<BufferView> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_buffer_view(create_info);
+            r?;
+        }
+        unsafe { self.create_buffer_view_unchecked(create_info) }
+    }
+    /**`vkCreateBufferView` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_buffer_view`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_buffer_view_unchecked<'a>(
+        &self,
+        create_info: &BufferViewCreateInfo<'a>,
+    ) -> Result<BufferView> {
+        let mut out = vk::BufferView::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_buffer_view)(
+                self.raw(),
+                create_info as *const BufferViewCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            BufferView::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::buffer_view_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreateCommandPool`
+
+# Valid usage
+
+The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html). Settled by the wrappers:
+
+- `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_command_pool<'a>(
+        &self,
+        create_info: &CommandPoolCreateInfo<'a>,
+    ) -> Result<CommandPool> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_command_pool(create_info);
+            r?;
+        }
+        unsafe { self.create_command_pool_unchecked(create_info) }
+    }
+    /**`vkCreateCommandPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_command_pool`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_command_pool_unchecked<'a>(
+        &self,
+        create_info: &CommandPoolCreateInfo<'a>,
+    ) -> Result<CommandPool> {
+        let mut out = vk::CommandPool::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_command_pool)(
+                self.raw(),
+                create_info as *const CommandPoolCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok({
+            let pool = CommandPool::from_raw(out, self, None, true)
+                .with_create_flags(create_info.flags);
+            #[cfg(feature = "runtime_implicit_validations")]
+            let pool = pool
+                .with_queue_flags(
+                    crate::validation::family_flags(self, create_info.queue_family_index),
+                );
+            pool
+        })
+    }
+    /**`vkCreateComputePipelines`
+
+# Valid usage
+
+The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html). Settled by the wrappers:
+
+- `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateComputePipelines-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_compute_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[ComputePipelineCreateInfo<'a>],
+    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
+            r?;
+        }
+        unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
+    }
+    /**`vkCreateComputePipelines` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn create_compute_pipelines_unchecked<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[ComputePipelineCreateInfo<'a>],
+    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        let mut out = vec![vk::Pipeline::null(); create_infos.len()];
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_compute_pipelines)(
+                self.raw(),
+                pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
+                create_infos.len() as u32,
+                create_infos.as_ptr().cast(),
+                core::ptr::null(),
+                out.as_mut_ptr(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok((
+            out
+                .into_iter()
+                .zip(create_infos.iter())
+                .map(|(raw, info)| Pipeline::from_raw(
+                    raw,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        unsafe {
+                            crate::reach::compute_pipeline_create_info(
+                                info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ))
+                .collect(),
+            r,
+        ))
+    }
+    /**`vkCreateDescriptorPool`
+
+# Valid usage
+
+The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
+
+- `VUID-vkCreateDescriptorPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_descriptor_pool<'a>(
+        &self,
+        create_info: &DescriptorPoolCreateInfo<'a>,
+    ) -> Result<DescriptorPool> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_descriptor_pool(create_info);
+            r?;
+        }
+        unsafe { self.create_descriptor_pool_unchecked(create_info) }
+    }
+    /**`vkCreateDescriptorPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_descriptor_pool_unchecked<'a>(
+        &self,
+        create_info: &DescriptorPoolCreateInfo<'a>,
+    ) -> Result<DescriptorPool> {
+        let mut out = vk::DescriptorPool::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_descriptor_pool)(
+                self.raw(),
+                create_info as *const DescriptorPoolCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(DescriptorPool::from_raw(out, self, None, true).with_flags(create_info.flags))
+    }
+    /**`vkCreateDescriptorSetLayout`
+
+# Valid usage
+
+The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
+
+- `VUID-vkCreateDescriptorSetLayout-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_descriptor_set_layout<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+    ) -> Result<DescriptorSetLayout> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_descriptor_set_layout(create_info);
+            r?;
+        }
+        unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
+    }
+    /**`vkCreateDescriptorSetLayout` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_descriptor_set_layout_unchecked<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+    ) -> Result<DescriptorSetLayout> {
+        let mut out = vk::DescriptorSetLayout::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_descriptor_set_layout)(
+                self.raw(),
+                create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            DescriptorSetLayout::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::descriptor_set_layout_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreateDescriptorUpdateTemplate`
+
+# Valid usage
+
+The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html). Settled by the wrappers:
+
+- `VUID-vkCreateDescriptorUpdateTemplate-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_descriptor_update_template<'a>(
+        &self,
+        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
+    ) -> Result<DescriptorUpdateTemplate> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_descriptor_update_template(create_info);
+            r?;
+        }
+        unsafe { self.create_descriptor_update_template_unchecked(create_info) }
+    }
+    /**`vkCreateDescriptorUpdateTemplate` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_descriptor_update_template`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_descriptor_update_template_unchecked<'a>(
+        &self,
+        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
+    ) -> Result<DescriptorUpdateTemplate> {
+        let mut out = vk::DescriptorUpdateTemplate::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .create_descriptor_update_template)(
+                self.raw(),
+                create_info as *const DescriptorUpdateTemplateCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok({
+            let template: DescriptorUpdateTemplate = DescriptorUpdateTemplate::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::descriptor_update_template_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            );
+            let raw = create_info.as_raw();
+            template
+                .with_entries(unsafe {
+                    crate::retention::raw_slice(
+                        raw.p_descriptor_update_entries,
+                        raw.descriptor_update_entry_count,
+                    )
+                })
+        })
+    }
+    /**`vkCreateEvent`
+
+# Valid usage
+
+The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateEvent.html). Settled by the wrappers:
+
+- `VUID-vkCreateEvent-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateEvent-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_event(create_info);
+            r?;
+        }
+        unsafe { self.create_event_unchecked(create_info) }
+    }
+    /**`vkCreateEvent` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_event`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_event_unchecked<'a>(
+        &self,
+        create_info: &EventCreateInfo<'a>,
+    ) -> Result<Event> {
+        let mut out = vk::Event::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_event)(
+                self.raw(),
+                create_info as *const EventCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(Event::from_raw(out, self, None, true))
+    }
+    /**`vkCreateFence`
+
+# Valid usage
+
+The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFence.html). Settled by the wrappers:
+
+- `VUID-vkCreateFence-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_fence(create_info);
+            r?;
+        }
+        unsafe { self.create_fence_unchecked(create_info) }
+    }
+    /**`vkCreateFence` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_fence`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_fence_unchecked<'a>(
+        &self,
+        create_info: &FenceCreateInfo<'a>,
+    ) -> Result<Fence> {
+        let mut out = vk::Fence::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_fence)(
+                self.raw(),
+                create_info as *const FenceCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(Fence::from_raw(out, self, None, true))
+    }
+    /**`vkCreateFramebuffer`
+
+# Valid usage
+
+The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
+
+- `VUID-vkCreateFramebuffer-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateFramebuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_framebuffer<'a>(
+        &self,
+        create_info: &FramebufferCreateInfo<'a>,
+    ) -> Result<Framebuffer> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_framebuffer(create_info);
+            r?;
+        }
+        unsafe { self.create_framebuffer_unchecked(create_info) }
+    }
+    /**`vkCreateFramebuffer` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_framebuffer`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_framebuffer_unchecked<'a>(
+        &self,
+        create_info: &FramebufferCreateInfo<'a>,
+    ) -> Result<Framebuffer> {
+        let mut out = vk::Framebuffer::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_framebuffer)(
+                self.raw(),
+                create_info as *const FramebufferCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            Framebuffer::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::framebuffer_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreateGraphicsPipelines`
+
+# Valid usage
+
+The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html). Settled by the wrappers:
+
+- `VUID-vkCreateGraphicsPipelines-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateGraphicsPipelines-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_graphics_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[GraphicsPipelineCreateInfo<'a>],
+    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_create_graphics_pipelines(pipeline_cache, create_infos);
+            r?;
+        }
+        unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
+    }
+    /**`vkCreateGraphicsPipelines` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn create_graphics_pipelines_unchecked<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[GraphicsPipelineCreateInfo<'a>],
+    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        let mut out = vec![vk::Pipeline::null(); create_infos.len()];
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_graphics_pipelines)(
+                self.raw(),
+                pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
+                create_infos.len() as u32,
+                create_infos.as_ptr().cast(),
+                core::ptr::null(),
+                out.as_mut_ptr(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok((
+            out
+                .into_iter()
+                .zip(create_infos.iter())
+                .map(|(raw, info)| Pipeline::from_raw(
+                    raw,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        unsafe {
+                            crate::reach::graphics_pipeline_create_info(
+                                info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ))
+                .collect(),
+            r,
+        ))
+    }
+    /**`vkCreateImage`
+
+# Valid usage
+
+The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImage.html). Settled by the wrappers:
+
+- `VUID-vkCreateImage-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateImage-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_image(create_info);
+            r?;
+        }
+        unsafe { self.create_image_unchecked(create_info) }
+    }
+    /**`vkCreateImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_image`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_image_unchecked<'a>(
+        &self,
+        create_info: &ImageCreateInfo<'a>,
+    ) -> Result<Image> {
+        let mut out = vk::Image::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_image)(
+                self.raw(),
+                create_info as *const ImageCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            Image::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::image_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreateImageView`
+
+# Valid usage
+
+The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
+
+- `VUID-vkCreateImageView-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_image_view<'a>(
+        &self,
+        create_info: &ImageViewCreateInfo<'a>,
+    ) -> Result<ImageView> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_image_view(create_info);
+            r?;
+        }
+        unsafe { self.create_image_view_unchecked(create_info) }
+    }
+    /**`vkCreateImageView` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_image_view`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_image_view_unchecked<'a>(
+        &self,
+        create_info: &ImageViewCreateInfo<'a>,
+    ) -> Result<ImageView> {
+        let mut out = vk::ImageView::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_image_view)(
+                self.raw(),
+                create_info as *const ImageViewCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            ImageView::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::image_view_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreatePipelineCache`
+
+# Valid usage
+
+The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html). Settled by the wrappers:
+
+- `VUID-vkCreatePipelineCache-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_pipeline_cache<'a>(
+        &self,
+        create_info: &PipelineCacheCreateInfo<'a>,
+    ) -> Result<PipelineCache> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_pipeline_cache(create_info);
+            r?;
+        }
+        unsafe { self.create_pipeline_cache_unchecked(create_info) }
+    }
+    /**`vkCreatePipelineCache` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_pipeline_cache_unchecked<'a>(
+        &self,
+        create_info: &PipelineCacheCreateInfo<'a>,
+    ) -> Result<PipelineCache> {
+        let mut out = vk::PipelineCache::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_pipeline_cache)(
+                self.raw(),
+                create_info as *const PipelineCacheCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(PipelineCache::from_raw(out, self, None, true))
+    }
+    /**`vkCreatePipelineLayout`
+
+# Valid usage
+
+The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
+
+- `VUID-vkCreatePipelineLayout-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_pipeline_layout<'a>(
+        &self,
+        create_info: &PipelineLayoutCreateInfo<'a>,
+    ) -> Result<PipelineLayout> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_pipeline_layout(create_info);
+            r?;
+        }
+        unsafe { self.create_pipeline_layout_unchecked(create_info) }
+    }
+    /**`vkCreatePipelineLayout` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_pipeline_layout_unchecked<'a>(
+        &self,
+        create_info: &PipelineLayoutCreateInfo<'a>,
+    ) -> Result<PipelineLayout> {
+        let mut out = vk::PipelineLayout::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_pipeline_layout)(
+                self.raw(),
+                create_info as *const PipelineLayoutCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            PipelineLayout::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::pipeline_layout_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreatePrivateDataSlot`
+
+# Valid usage
+
+The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
+
+- `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_private_data_slot<'a>(
+        &self,
+        create_info: &PrivateDataSlotCreateInfo<'a>,
+    ) -> Result<PrivateDataSlot> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_private_data_slot(create_info);
+            r?;
+        }
+        unsafe { self.create_private_data_slot_unchecked(create_info) }
+    }
+    /**`vkCreatePrivateDataSlot` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_private_data_slot`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_private_data_slot_unchecked<'a>(
+        &self,
+        create_info: &PrivateDataSlotCreateInfo<'a>,
+    ) -> Result<PrivateDataSlot> {
+        let mut out = vk::PrivateDataSlot::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_3()
+                .create_private_data_slot)(
+                self.raw(),
+                create_info as *const PrivateDataSlotCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(PrivateDataSlot::from_raw(out, self, None, true))
+    }
+    /**`vkCreateQueryPool`
+
+# Valid usage
+
+The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateQueryPool.html). Settled by the wrappers:
+
+- `VUID-vkCreateQueryPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_query_pool<'a>(
+        &self,
+        create_info: &QueryPoolCreateInfo<'a>,
+    ) -> Result<QueryPool> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_query_pool(create_info);
+            r?;
+        }
+        unsafe { self.create_query_pool_unchecked(create_info) }
+    }
+    /**`vkCreateQueryPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_query_pool`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_query_pool_unchecked<'a>(
+        &self,
+        create_info: &QueryPoolCreateInfo<'a>,
+    ) -> Result<QueryPool> {
+        let mut out = vk::QueryPool::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_query_pool)(
+                self.raw(),
+                create_info as *const QueryPoolCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(QueryPool::from_raw(out, self, None, true))
+    }
+    /**`vkCreateRenderPass`
+
+# Valid usage
+
+The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html). Settled by the wrappers:
+
+- `VUID-vkCreateRenderPass-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_render_pass<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo<'a>,
+    ) -> Result<RenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_render_pass(create_info);
+            r?;
+        }
+        unsafe { self.create_render_pass_unchecked(create_info) }
+    }
+    /**`vkCreateRenderPass` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_render_pass`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_render_pass_unchecked<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo<'a>,
+    ) -> Result<RenderPass> {
+        let mut out = vk::RenderPass::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_render_pass)(
+                self.raw(),
+                create_info as *const RenderPassCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(RenderPass::from_raw(out, self, None, true))
+    }
+    /**`vkCreateRenderPass2`
+
+# Valid usage
+
+The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass2.html). Settled by the wrappers:
+
+- `VUID-vkCreateRenderPass2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_render_pass2<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo2<'a>,
+    ) -> Result<RenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_render_pass2(create_info);
+            r?;
+        }
+        unsafe { self.create_render_pass2_unchecked(create_info) }
+    }
+    /**`vkCreateRenderPass2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_render_pass2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_render_pass2_unchecked<'a>(
+        &self,
+        create_info: &RenderPassCreateInfo2<'a>,
+    ) -> Result<RenderPass> {
+        let mut out = vk::RenderPass::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .create_render_pass2)(
+                self.raw(),
+                create_info as *const RenderPassCreateInfo2<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(RenderPass::from_raw(out, self, None, true))
+    }
+    /**`vkCreateSampler`
+
+# Valid usage
+
+The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html). Settled by the wrappers:
+
+- `VUID-vkCreateSampler-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSampler-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_sampler<'a>(
+        &self,
+        create_info: &SamplerCreateInfo<'a>,
+    ) -> Result<Sampler> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_sampler(create_info);
+            r?;
+        }
+        unsafe { self.create_sampler_unchecked(create_info) }
+    }
+    /**`vkCreateSampler` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_sampler`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_sampler_unchecked<'a>(
+        &self,
+        create_info: &SamplerCreateInfo<'a>,
+    ) -> Result<Sampler> {
+        let mut out = vk::Sampler::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_sampler)(
+                self.raw(),
+                create_info as *const SamplerCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            Sampler::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    unsafe {
+                        crate::reach::sampler_create_info(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkCreateSamplerYcbcrConversion`
+
+# Valid usage
+
+The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html). Settled by the wrappers:
+
+- `VUID-vkCreateSamplerYcbcrConversion-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_sampler_ycbcr_conversion<'a>(
+        &self,
+        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
+    ) -> Result<SamplerYcbcrConversion> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_sampler_ycbcr_conversion(create_info);
+            r?;
+        }
+        unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
+    }
+    /**`vkCreateSamplerYcbcrConversion` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_sampler_ycbcr_conversion_unchecked<'a>(
+        &self,
+        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
+    ) -> Result<SamplerYcbcrConversion> {
+        let mut out = vk::SamplerYcbcrConversion::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .create_sampler_ycbcr_conversion)(
+                self.raw(),
+                create_info as *const SamplerYcbcrConversionCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(SamplerYcbcrConversion::from_raw(out, self, None, true))
+    }
+    /**`vkCreateSemaphore`
+
+# Valid usage
+
+The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html). Settled by the wrappers:
+
+- `VUID-vkCreateSemaphore-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn create_semaphore<'a>(
+        &self,
+        create_info: &SemaphoreCreateInfo<'a>,
+    ) -> Result<Semaphore> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_semaphore(create_info);
+            r?;
+        }
+        unsafe { self.create_semaphore_unchecked(create_info) }
+    }
+    /**`vkCreateSemaphore` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_semaphore`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_semaphore_unchecked<'a>(
+        &self,
+        create_info: &SemaphoreCreateInfo<'a>,
+    ) -> Result<Semaphore> {
+        let mut out = vk::Semaphore::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_semaphore)(
+                self.raw(),
+                create_info as *const SemaphoreCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok({
+            let semaphore: Semaphore = Semaphore::from_raw(out, self, None, true);
+            if crate::submission::creates_timeline(create_info) {
+                self.live().set_timeline(semaphore.raw());
+            }
+            semaphore
+        })
+    }
+    /**`vkCreateShaderModule`
+
+# Valid usage
+
+The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateShaderModule.html). Settled by the wrappers:
+
+- `VUID-vkCreateShaderModule-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateShaderModule-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_shader_module<'a>(
+        &self,
+        create_info: &ShaderModuleCreateInfo<'a>,
+    ) -> Result<ShaderModule> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_create_shader_module(create_info);
+            r?;
+        }
+        unsafe { self.create_shader_module_unchecked(create_info) }
+    }
+    /**`vkCreateShaderModule` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_shader_module`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_shader_module_unchecked<'a>(
+        &self,
+        create_info: &ShaderModuleCreateInfo<'a>,
+    ) -> Result<ShaderModule> {
+        let mut out = vk::ShaderModule::null();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .create_shader_module)(
+                self.raw(),
+                create_info as *const ShaderModuleCreateInfo<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(ShaderModule::from_raw(out, self, None, true))
+    }
+    /**`vkDeviceWaitIdle`
+
+# Valid usage
+
+The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeviceWaitIdle.html). Settled by the wrappers:
+
+- `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
+    #[inline]
+    pub fn device_wait_idle(&self) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.extend(self.live().queue_syncs());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe { (self.fns().fp_v1_0().device_wait_idle)(self.raw()) };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        self.live().ledger().retire_all();
+        Ok(())
+    }
+    /**`vkFlushMappedMemoryRanges`
+
+# Valid usage
+
+The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html). Settled by the wrappers:
+
+- `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[inline]
+    pub fn flush_mapped_memory_ranges<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
+            r?;
+        }
+        unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
+    }
+    /**`vkFlushMappedMemoryRanges` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn flush_mapped_memory_ranges_unchecked<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .flush_mapped_memory_ranges)(
+                self.raw(),
+                memory_ranges.len() as u32,
+                memory_ranges.as_ptr().cast(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkGetBufferDeviceAddress`
+
+# Valid usage
+
+The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html). Settled by the wrappers:
+
+- `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_buffer_device_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> vk::DeviceAddress {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_buffer_device_address)(
+                self.raw(),
+                info as *const BufferDeviceAddressInfo<'a> as *const _,
+            )
+        };
+        r
+    }
+    /**`vkGetBufferMemoryRequirements`
+
+# Valid usage
+
+The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements.html). Settled by the wrappers:
+
+- `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetBufferMemoryRequirements-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn get_buffer_memory_requirements(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<vk::MemoryRequirements> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_buffer_memory_requirements(buffer);
+            r?;
+        }
+        Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
+    }
+    /**`vkGetBufferMemoryRequirements` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_memory_requirements`] checks at run time: `VUID-vkGetBufferMemoryRequirements-buffer-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_buffer_memory_requirements_unchecked(
+        &self,
+        buffer: &Buffer,
+    ) -> vk::MemoryRequirements {
+        let mut out: vk::MemoryRequirements = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_buffer_memory_requirements)(self.raw(), buffer.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetBufferMemoryRequirements2`
+
+# Valid usage
+
+The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements2.html). Settled by the wrappers:
+
+- `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_buffer_memory_requirements2<'a>(
+        &self,
+        info: &BufferMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
+            r?;
+        }
+        Ok(unsafe {
+            self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
+        })
+    }
+    /**`vkGetBufferMemoryRequirements2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_buffer_memory_requirements2_unchecked<'a>(
+        &self,
+        info: &BufferMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_buffer_memory_requirements2)(
+                self.raw(),
+                info as *const BufferMemoryRequirementsInfo2<'a> as *const _,
+                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetBufferOpaqueCaptureAddress`
+
+# Valid usage
+
+The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureAddress.html). Settled by the wrappers:
+
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_buffer_opaque_capture_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> u64 {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_buffer_opaque_capture_address)(
+                self.raw(),
+                info as *const BufferDeviceAddressInfo<'a> as *const _,
+            )
+        };
+        r
+    }
+    /**`vkGetDescriptorSetLayoutSupport`
+
+# Valid usage
+
+The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html). Settled by the wrappers:
+
+- `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_descriptor_set_layout_support<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+        support: &mut DescriptorSetLayoutSupport<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_descriptor_set_layout_support(create_info, support);
+            r?;
+        }
+        Ok(unsafe {
+            self.get_descriptor_set_layout_support_unchecked(create_info, support)
+        })
+    }
+    /**`vkGetDescriptorSetLayoutSupport` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_descriptor_set_layout_support_unchecked<'a>(
+        &self,
+        create_info: &DescriptorSetLayoutCreateInfo<'a>,
+        support: &mut DescriptorSetLayoutSupport<'a>,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_descriptor_set_layout_support)(
+                self.raw(),
+                create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
+                support as *mut DescriptorSetLayoutSupport<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetDeviceBufferMemoryRequirements`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_device_buffer_memory_requirements<'a>(
+        &self,
+        info: &DeviceBufferMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_device_buffer_memory_requirements(
+                    info,
+                    memory_requirements,
+                );
+            r?;
+        }
+        Ok(unsafe {
+            self.get_device_buffer_memory_requirements_unchecked(
+                info,
+                memory_requirements,
+            )
+        })
+    }
+    /**`vkGetDeviceBufferMemoryRequirements` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_buffer_memory_requirements_unchecked<'a>(
+        &self,
+        info: &DeviceBufferMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_3()
+                .get_device_buffer_memory_requirements)(
+                self.raw(),
+                info as *const DeviceBufferMemoryRequirements<'a> as *const _,
+                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetDeviceGroupPeerMemoryFeatures`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_device_group_peer_memory_features(
+        &self,
+        heap_index: u32,
+        local_device_index: u32,
+        remote_device_index: u32,
+    ) -> vk::PeerMemoryFeatureFlags {
+        let mut out: vk::PeerMemoryFeatureFlags = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_device_group_peer_memory_features)(
+                self.raw(),
+                heap_index,
+                local_device_index,
+                remote_device_index,
+                &mut out,
+            )
+        };
+        out
+    }
+    /**`vkGetDeviceImageMemoryRequirements`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_device_image_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_device_image_memory_requirements(
+                    info,
+                    memory_requirements,
+                );
+            r?;
+        }
+        Ok(unsafe {
+            self.get_device_image_memory_requirements_unchecked(
+                info,
+                memory_requirements,
+            )
+        })
+    }
+    /**`vkGetDeviceImageMemoryRequirements` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_image_memory_requirements`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_image_memory_requirements_unchecked<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_3()
+                .get_device_image_memory_requirements)(
+                self.raw(),
+                info as *const DeviceImageMemoryRequirements<'a> as *const _,
+                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetDeviceImageSparseMemoryRequirements`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_device_image_sparse_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_device_image_sparse_memory_requirements(info);
+            r?;
+        }
+        unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
+    }
+    /**`vkGetDeviceImageSparseMemoryRequirements` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_image_sparse_memory_requirements`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_image_sparse_memory_requirements_unchecked<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::SparseImageMemoryRequirements2<'static>|
+            {
+                (self
+                    .fns()
+                    .fp_v1_3()
+                    .get_device_image_sparse_memory_requirements)(
+                    self.raw(),
+                    info as *const DeviceImageMemoryRequirements<'a> as *const _,
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetDeviceMemoryCommitment`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_device_memory_commitment(
+        &self,
+        memory: &DeviceMemory,
+    ) -> Result<vk::DeviceSize> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_device_memory_commitment(memory);
+            r?;
+        }
+        Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
+    }
+    /**`vkGetDeviceMemoryCommitment` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_device_memory_commitment_unchecked(
+        &self,
+        memory: &DeviceMemory,
+    ) -> vk::DeviceSize {
+        let mut out: vk::DeviceSize = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_device_memory_commitment)(self.raw(), memory.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetDeviceMemoryOpaqueCaptureAddress`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryOpaqueCaptureAddress.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_device_memory_opaque_capture_address<'a>(
+        &self,
+        info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
+    ) -> u64 {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_device_memory_opaque_capture_address)(
+                self.raw(),
+                info as *const DeviceMemoryOpaqueCaptureAddressInfo<'a> as *const _,
+            )
+        };
+        r
+    }
+    /**`vkGetDeviceQueue`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
+        let mut out = vk::Queue::null();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_device_queue)(self.raw(), queue_family_index, queue_index, &mut out)
+        };
+        {
+            let queue = Queue::from_raw(out, self, None, true);
+            #[cfg(feature = "runtime_implicit_validations")]
+            let queue = queue
+                .with_queue_flags(
+                    crate::validation::family_flags(self, queue_family_index),
+                );
+            queue
+        }
+    }
+    /**`vkGetDeviceQueue2`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_device_queue2<'a>(
+        &self,
+        queue_info: &DeviceQueueInfo2<'a>,
+    ) -> Result<Queue> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_device_queue2(queue_info);
+            r?;
+        }
+        Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
+    }
+    /**`vkGetDeviceQueue2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_queue2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_device_queue2_unchecked<'a>(
+        &self,
+        queue_info: &DeviceQueueInfo2<'a>,
+    ) -> Queue {
+        let mut out = vk::Queue::null();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_device_queue2)(
+                self.raw(),
+                queue_info as *const DeviceQueueInfo2<'a> as *const _,
+                &mut out,
+            )
+        };
+        {
+            let queue = Queue::from_raw(out, self, None, true);
+            #[cfg(feature = "runtime_implicit_validations")]
+            let queue = queue
+                .with_queue_flags(
+                    crate::validation::family_flags(self, queue_info.queue_family_index),
+                );
+            queue
+        }
+    }
+    /**`vkGetEventStatus`
+
+# Valid usage
+
+The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html). Settled by the wrappers:
+
+- `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_event_status(event);
+            r?;
+        }
+        unsafe { self.get_event_status_unchecked(event) }
+    }
+    /**`vkGetEventStatus` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_event_status_unchecked(
+        &self,
+        event: &Event,
+    ) -> Result<vk::Result> {
+        let r = unsafe {
+            (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(r)
+    }
+    /**`vkGetFenceStatus`
+
+# Valid usage
+
+The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceStatus.html). Settled by the wrappers:
+
+- `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_fence_status(fence);
+            r?;
+        }
+        unsafe { self.get_fence_status_unchecked(fence) }
+    }
+    /**`vkGetFenceStatus` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_fence_status`] checks at run time: `VUID-vkGetFenceStatus-fence-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_fence_status_unchecked(
+        &self,
+        fence: &Fence,
+    ) -> Result<vk::Result> {
+        let r = unsafe {
+            (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        if r == vk::Result::SUCCESS {
+            fence.completed();
+        }
+        Ok(r)
+    }
+    /**`vkGetImageMemoryRequirements`
+
+# Valid usage
+
+The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements.html). Settled by the wrappers:
+
+- `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_image_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> Result<vk::MemoryRequirements> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_image_memory_requirements(image);
+            r?;
+        }
+        Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
+    }
+    /**`vkGetImageMemoryRequirements` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_memory_requirements`] checks at run time: `VUID-vkGetImageMemoryRequirements-image-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_image_memory_requirements_unchecked(
+        &self,
+        image: &Image,
+    ) -> vk::MemoryRequirements {
+        let mut out: vk::MemoryRequirements = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_image_memory_requirements)(self.raw(), image.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetImageMemoryRequirements2`
+
+# Valid usage
+
+The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html). Settled by the wrappers:
+
+- `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_image_memory_requirements2<'a>(
+        &self,
+        info: &ImageMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_image_memory_requirements2(info, memory_requirements);
+            r?;
+        }
+        Ok(unsafe {
+            self.get_image_memory_requirements2_unchecked(info, memory_requirements)
+        })
+    }
+    /**`vkGetImageMemoryRequirements2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_memory_requirements2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_image_memory_requirements2_unchecked<'a>(
+        &self,
+        info: &ImageMemoryRequirementsInfo2<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .get_image_memory_requirements2)(
+                self.raw(),
+                info as *const ImageMemoryRequirementsInfo2<'a> as *const _,
+                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetImageSparseMemoryRequirements`
+
+# Valid usage
+
+The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements.html). Settled by the wrappers:
+
+- `VUID-vkGetImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn get_image_sparse_memory_requirements(
+        &self,
+        image: &Image,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_image_sparse_memory_requirements(image);
+            r?;
+        }
+        unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
+    }
+    /**`vkGetImageSparseMemoryRequirements` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`] checks at run time: `VUID-vkGetImageSparseMemoryRequirements-image-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_image_sparse_memory_requirements_unchecked(
+        &self,
+        image: &Image,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::SparseImageMemoryRequirements|
+            {
+                (self
+                    .fns()
+                    .fp_v1_0()
+                    .get_image_sparse_memory_requirements)(
+                    self.raw(),
+                    image.raw(),
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetImageSparseMemoryRequirements2`
+
+# Valid usage
+
+The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements2.html). Settled by the wrappers:
+
+- `VUID-vkGetImageSparseMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_image_sparse_memory_requirements2<'a>(
+        &self,
+        info: &ImageSparseMemoryRequirementsInfo2<'a>,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::SparseImageMemoryRequirements2<'static>|
+            {
+                (self
+                    .fns()
+                    .fp_v1_1()
+                    .get_image_sparse_memory_requirements2)(
+                    self.raw(),
+                    info as *const ImageSparseMemoryRequirementsInfo2<'a> as *const _,
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetImageSubresourceLayout`
+
+# Valid usage
+
+The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html). Settled by the wrappers:
+
+- `VUID-vkGetImageSubresourceLayout-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_image_subresource_layout<'a>(
+        &self,
+        image: &Image,
+        subresource: &vk::ImageSubresource,
+    ) -> Result<vk::SubresourceLayout> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_image_subresource_layout(image, subresource);
+            r?;
+        }
+        Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
+    }
+    /**`vkGetImageSubresourceLayout` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_image_subresource_layout_unchecked<'a>(
+        &self,
+        image: &Image,
+        subresource: &vk::ImageSubresource,
+    ) -> vk::SubresourceLayout {
+        let mut out: vk::SubresourceLayout = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_image_subresource_layout)(
+                self.raw(),
+                image.raw(),
+                subresource as *const vk::ImageSubresource as *const _,
+                &mut out,
+            )
+        };
+        out
+    }
+    /**`vkGetPipelineCacheData`
+
+# Valid usage
+
+The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineCacheData.html). Settled by the wrappers:
+
+- `VUID-vkGetPipelineCacheData-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPipelineCacheData-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn get_pipeline_cache_data(
+        &self,
+        pipeline_cache: &PipelineCache,
+    ) -> Result<Vec<u8>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_pipeline_cache_data(pipeline_cache);
+            r?;
+        }
+        unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
+    }
+    /**`vkGetPipelineCacheData` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at run time: `VUID-vkGetPipelineCacheData-pipelineCache-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_pipeline_cache_data_unchecked(
+        &self,
+        pipeline_cache: &PipelineCache,
+    ) -> Result<Vec<u8>> {
+        unsafe {
+            crate::support::two_call(|count: &mut usize, items_ptr: *mut u8| (self
+                .fns()
+                .fp_v1_0()
+                .get_pipeline_cache_data)(
+                self.raw(),
+                pipeline_cache.raw(),
+                count,
+                items_ptr.cast(),
+            ))
+        }
+    }
+    /**`vkGetPrivateData`
+
+# Valid usage
+
+The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html). Settled by the wrappers:
+
+- `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_private_data(
+        &self,
+        object_type: vk::ObjectType,
+        object_handle: u64,
+        private_data_slot: &PrivateDataSlot,
+    ) -> Result<u64> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_private_data(object_type, private_data_slot);
+            r?;
+        }
+        Ok(unsafe {
+            self.get_private_data_unchecked(
+                object_type,
+                object_handle,
+                private_data_slot,
+            )
+        })
+    }
+    /**`vkGetPrivateData` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_private_data_unchecked(
+        &self,
+        object_type: vk::ObjectType,
+        object_handle: u64,
+        private_data_slot: &PrivateDataSlot,
+    ) -> u64 {
+        let mut out: u64 = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_3()
+                .get_private_data)(
+                self.raw(),
+                object_type,
+                object_handle,
+                private_data_slot.raw(),
+                &mut out,
+            )
+        };
+        out
+    }
+    /**`vkGetQueryPoolResults`
+
+# Valid usage
+
+The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueryPoolResults.html). Settled by the wrappers:
+
+- `VUID-vkGetQueryPoolResults-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetQueryPoolResults-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_query_pool_results(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        data: &mut [u8],
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) -> Result<vk::Result> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_query_pool_results(query_pool, data, flags);
+            r?;
+        }
+        unsafe {
+            self.get_query_pool_results_unchecked(
+                query_pool,
+                first_query,
+                query_count,
+                data,
+                stride,
+                flags,
+            )
+        }
+    }
+    /**`vkGetQueryPoolResults` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_query_pool_results_unchecked(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        data: &mut [u8],
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) -> Result<vk::Result> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_query_pool_results)(
+                self.raw(),
+                query_pool.raw(),
+                first_query,
+                query_count,
+                data.len() as usize,
+                data.as_mut_ptr().cast(),
+                stride,
+                flags,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(r)
+    }
+    /**`vkGetRenderAreaGranularity`
+
+# Valid usage
+
+The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRenderAreaGranularity.html). Settled by the wrappers:
+
+- `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetRenderAreaGranularity-renderPass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn get_render_area_granularity(
+        &self,
+        render_pass: &RenderPass,
+    ) -> Result<vk::Extent2D> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_render_area_granularity(render_pass);
+            r?;
+        }
+        Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
+    }
+    /**`vkGetRenderAreaGranularity` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_render_area_granularity`] checks at run time: `VUID-vkGetRenderAreaGranularity-renderPass-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_render_area_granularity_unchecked(
+        &self,
+        render_pass: &RenderPass,
+    ) -> vk::Extent2D {
+        let mut out: vk::Extent2D = Default::default();
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .get_render_area_granularity)(self.raw(), render_pass.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetSemaphoreCounterValue`
+
+# Valid usage
+
+The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreCounterValue.html). Settled by the wrappers:
+
+- `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_semaphore_counter_value(semaphore);
+            r?;
+        }
+        crate::submission::check_semaphore_type(
+            self.live(),
+            &[semaphore.raw()],
+            true,
+            "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
+        )?;
+        unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
+    }
+    /**`vkGetSemaphoreCounterValue` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, `VUID-vkGetSemaphoreCounterValue-semaphore-03255`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_semaphore_counter_value_unchecked(
+        &self,
+        semaphore: &Semaphore,
+    ) -> Result<u64> {
+        let mut out: u64 = Default::default();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .get_semaphore_counter_value)(self.raw(), semaphore.raw(), &mut out)
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        self.live().ledger().reached(semaphore.raw(), out);
+        Ok(out)
+    }
+    /**`vkInvalidateMappedMemoryRanges`
+
+# Valid usage
+
+The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html). Settled by the wrappers:
+
+- `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[inline]
+    pub fn invalidate_mapped_memory_ranges<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
+            r?;
+        }
+        unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
+    }
+    /**`vkInvalidateMappedMemoryRanges` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] checks at run time: `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn invalidate_mapped_memory_ranges_unchecked<'a>(
+        &self,
+        memory_ranges: &[MappedMemoryRange<'a>],
+    ) -> Result<()> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .invalidate_mapped_memory_ranges)(
+                self.raw(),
+                memory_ranges.len() as u32,
+                memory_ranges.as_ptr().cast(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkMergePipelineCaches`
+
+# Valid usage
+
+The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergePipelineCaches.html). Settled by the wrappers:
+
+- `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn merge_pipeline_caches(
+        &self,
+        dst_cache: &PipelineCache,
+        src_caches: &[&PipelineCache],
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(dst_cache.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
+            r?;
+        }
+        unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
+    }
+    /**`vkMergePipelineCaches` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn merge_pipeline_caches_unchecked(
+        &self,
+        dst_cache: &PipelineCache,
+        src_caches: &[&PipelineCache],
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(dst_cache.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
+            .iter()
+            .map(|h| h.raw())
+            .collect();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .merge_pipeline_caches)(
+                self.raw(),
+                dst_cache.raw(),
+                src_caches.len() as u32,
+                src_caches.as_ptr(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkResetCommandPool`
+
+# Valid usage
+
+The rules are on [`vkResetCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandPool.html). Settled by the wrappers:
+
+- `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn reset_command_pool(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolResetFlags,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_reset_command_pool(command_pool, flags);
+            r?;
+        }
+        crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
+        unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
+    }
+    /**`vkResetCommandPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_command_pool_unchecked(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolResetFlags,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .reset_command_pool)(self.raw(), command_pool.raw(), flags)
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        for u in command_pool.buffer_uses() {
+            u.reset();
+        }
+        Ok(())
+    }
+    /**`vkResetDescriptorPool`
+
+# Valid usage
+
+The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetDescriptorPool.html). Settled by the wrappers:
+
+- `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn reset_descriptor_pool(
+        &self,
+        descriptor_pool: &DescriptorPool,
+        flags: vk::DescriptorPoolResetFlags,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(descriptor_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
+            r?;
+        }
+        if descriptor_pool.has_sets() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
+                message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset"
+                    .into(),
+            });
+        }
+        unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
+    }
+    /**`vkResetDescriptorPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_descriptor_pool_unchecked(
+        &self,
+        descriptor_pool: &DescriptorPool,
+        flags: vk::DescriptorPoolResetFlags,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(descriptor_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .reset_descriptor_pool)(self.raw(), descriptor_pool.raw(), flags)
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        descriptor_pool.forget_deferred();
+        Ok(())
+    }
+    /**`vkResetEvent`
+
+# Valid usage
+
+The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html). Settled by the wrappers:
+
+- `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn reset_event(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_reset_event(event);
+            r?;
+        }
+        unsafe { self.reset_event_unchecked(event) }
+    }
+    /**`vkResetEvent` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkResetFences`
+
+# Valid usage
+
+The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetFences.html). Settled by the wrappers:
+
+- `VUID-vkResetFences-pFences-01123`: dynamic (refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled))
+- `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkResetFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            for h in fences.iter() {
+                syncs.push(h.host_sync().clone());
+            }
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_reset_fences(fences);
+            r?;
+        }
+        for f in fences {
+            if f.submission().is_some_and(|sub| !sub.poll(self)) {
+                return Err(Error::Validation {
+                    vuid: "VUID-vkResetFences-pFences-01123",
+                    message: "a fence is reset while the queue operation that signals it may still be executing"
+                        .into(),
+                });
+            }
+        }
+        unsafe { self.reset_fences_unchecked(fences) }
+    }
+    /**`vkResetFences` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            for h in fences.iter() {
+                syncs.push(h.host_sync().clone());
+            }
+            tuff_runtime::lock_all(syncs)
+        };
+        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
+            .iter()
+            .map(|h| h.raw())
+            .collect();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .reset_fences)(self.raw(), fences.len() as u32, fences.as_ptr())
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkResetQueryPool`
+
+# Valid usage
+
+The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html). Settled by the wrappers:
+
+- `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn reset_query_pool(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_reset_query_pool(query_pool);
+            r?;
+        }
+        Ok(unsafe {
+            self.reset_query_pool_unchecked(query_pool, first_query, query_count)
+        })
+    }
+    /**`vkResetQueryPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn reset_query_pool_unchecked(
+        &self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .reset_query_pool)(
+                self.raw(),
+                query_pool.raw(),
+                first_query,
+                query_count,
+            )
+        };
+    }
+    /**`vkSetEvent`
+
+# Valid usage
+
+The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html). Settled by the wrappers:
+
+- `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn set_event(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_set_event(event);
+            r?;
+        }
+        unsafe { self.set_event_unchecked(event) }
+    }
+    /**`vkSetEvent` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn set_event_unchecked(&self, event: &Event) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(event.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkSetPrivateData`
+
+# Valid usage
+
+The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetPrivateData.html). Settled by the wrappers:
+
+- `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn set_private_data(
+        &self,
+        object_type: vk::ObjectType,
+        object_handle: u64,
+        private_data_slot: &PrivateDataSlot,
+        data: u64,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_set_private_data(object_type, private_data_slot);
+            r?;
+        }
+        unsafe {
+            self.set_private_data_unchecked(
+                object_type,
+                object_handle,
+                private_data_slot,
+                data,
+            )
+        }
+    }
+    /**`vkSetPrivateData` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn set_private_data_unchecked(
+        &self,
+        object_type: vk::ObjectType,
+        object_handle: u64,
+        private_data_slot: &PrivateDataSlot,
+        data: u64,
+    ) -> Result<()> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_3()
+                .set_private_data)(
+                self.raw(),
+                object_type,
+                object_handle,
+                private_data_slot.raw(),
+                data,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkSignalSemaphore`
+
+# Valid usage
+
+The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html). Settled by the wrappers:
+
+- `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn signal_semaphore<'a>(
+        &self,
+        signal_info: &SemaphoreSignalInfo<'a>,
+    ) -> Result<()> {
+        crate::submission::check_semaphore_type(
+            self.live(),
+            &[signal_info.semaphore],
+            true,
+            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
+        )?;
+        unsafe { self.signal_semaphore_unchecked(signal_info) }
+    }
+    /**`vkSignalSemaphore` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn signal_semaphore_unchecked<'a>(
+        &self,
+        signal_info: &SemaphoreSignalInfo<'a>,
+    ) -> Result<()> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .signal_semaphore)(
+                self.raw(),
+                signal_info as *const SemaphoreSignalInfo<'a> as *const _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkTrimCommandPool`
+
+# Valid usage
+
+The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkTrimCommandPool.html). Settled by the wrappers:
+
+- `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkTrimCommandPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-vkTrimCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn trim_command_pool(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolTrimFlags,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_trim_command_pool(command_pool, flags);
+            r?;
+        }
+        Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
+    }
+    /**`vkTrimCommandPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-flags-zerobitmask`, `VUID-vkTrimCommandPool-commandPool-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn trim_command_pool_unchecked(
+        &self,
+        command_pool: &CommandPool,
+        flags: vk::CommandPoolTrimFlags,
+    ) {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(command_pool.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .trim_command_pool)(self.raw(), command_pool.raw(), flags)
+        };
+    }
+    /**`vkUpdateDescriptorSetWithTemplate`
+
+# Safety
+
+`data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.
+
+# Valid usage
+
+The rules are on [`vkUpdateDescriptorSetWithTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSetWithTemplate.html). Settled by the wrappers:
+
+- `VUID-vkUpdateDescriptorSetWithTemplate-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub unsafe fn update_descriptor_set_with_template(
+        &self,
+        descriptor_set: &DescriptorSet,
+        descriptor_update_template: &DescriptorUpdateTemplate,
+        data: *const core::ffi::c_void,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_update_descriptor_set_with_template(
+                    descriptor_update_template,
+                );
+            r?;
+        }
+        Ok(unsafe {
+            self.update_descriptor_set_with_template_unchecked(
+                descriptor_set,
+                descriptor_update_template,
+                data,
+            )
+        })
+    }
+    /**`vkUpdateDescriptorSetWithTemplate` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::update_descriptor_set_with_template`] checks at run time: `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.*/
+    #[inline]
+    pub unsafe fn update_descriptor_set_with_template_unchecked(
+        &self,
+        descriptor_set: &DescriptorSet,
+        descriptor_update_template: &DescriptorUpdateTemplate,
+        data: *const core::ffi::c_void,
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_1()
+                .update_descriptor_set_with_template)(
+                self.raw(),
+                descriptor_set.raw(),
+                descriptor_update_template.raw(),
+                data,
+            )
+        };
+        unsafe {
+            self.live()
+                .write_template(
+                    descriptor_set.raw(),
+                    descriptor_update_template.entries(),
+                    data,
+                )
+        };
+    }
+    /**`vkUpdateDescriptorSets`
+
+# Valid usage
+
+The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
+
+- `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn update_descriptor_sets<'a>(
+        &self,
+        descriptor_writes: &[WriteDescriptorSet<'a>],
+        descriptor_copies: &[CopyDescriptorSet<'a>],
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
+            r?;
+        }
+        crate::retention::Live::check_writes(unsafe {
+            core::slice::from_raw_parts(
+                descriptor_writes.as_ptr().cast(),
+                descriptor_writes.len(),
+            )
+        })?;
+        Ok(unsafe {
+            self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
+        })
+    }
+    /**`vkUpdateDescriptorSets` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn update_descriptor_sets_unchecked<'a>(
+        &self,
+        descriptor_writes: &[WriteDescriptorSet<'a>],
+        descriptor_copies: &[CopyDescriptorSet<'a>],
+    ) {
+        unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .update_descriptor_sets)(
+                self.raw(),
+                descriptor_writes.len() as u32,
+                descriptor_writes.as_ptr().cast(),
+                descriptor_copies.len() as u32,
+                descriptor_copies.as_ptr().cast(),
+            )
+        };
+        unsafe {
+            self.live()
+                .write_sets(
+                    core::slice::from_raw_parts(
+                        descriptor_writes.as_ptr().cast(),
+                        descriptor_writes.len(),
+                    ),
+                    core::slice::from_raw_parts(
+                        descriptor_copies.as_ptr().cast(),
+                        descriptor_copies.len(),
+                    ),
+                );
+        }
+    }
+    /**`vkWaitForFences`
+
+# Valid usage
+
+The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForFences.html). Settled by the wrappers:
+
+- `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkWaitForFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkWaitForFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[inline]
+    pub fn wait_for_fences(
+        &self,
+        fences: &[&Fence],
+        wait_all: vk::Bool32,
+        timeout: u64,
+    ) -> Result<vk::Result> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_wait_for_fences(fences);
+            r?;
+        }
+        unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
+    }
+    /**`vkWaitForFences` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn wait_for_fences_unchecked(
+        &self,
+        fences: &[&Fence],
+        wait_all: vk::Bool32,
+        timeout: u64,
+    ) -> Result<vk::Result> {
+        let fences_w: &[&Fence] = fences;
+        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
+            .iter()
+            .map(|h| h.raw())
+            .collect();
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_0()
+                .wait_for_fences)(
+                self.raw(),
+                fences.len() as u32,
+                fences.as_ptr(),
+                wait_all,
+                timeout,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        if r == vk::Result::SUCCESS {
+            if wait_all == vk::TRUE || fences_w.len() == 1 {
+                for f in fences_w {
+                    f.completed();
+                }
+            } else {
+                for f in fences_w {
+                    if let Some(sub) = f.submission() {
+                        sub.poll(self);
+                    }
+                }
+            }
+        }
+        Ok(r)
+    }
+    /**`vkWaitSemaphores`
+
+# Valid usage
+
+The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitSemaphores.html). Settled by the wrappers:
+
+- `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn wait_semaphores<'a>(
+        &self,
+        wait_info: &SemaphoreWaitInfo<'a>,
+        timeout: u64,
+    ) -> Result<vk::Result> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_wait_semaphores(wait_info);
+            r?;
+        }
+        let semaphores = unsafe {
+            crate::retention::raw_slice(
+                wait_info.p_semaphores,
+                wait_info.semaphore_count,
+            )
+        };
+        crate::submission::check_semaphore_type(
+            self.live(),
+            semaphores,
+            true,
+            "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
+        )?;
+        unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
+    }
+    /**`vkWaitSemaphores` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn wait_semaphores_unchecked<'a>(
+        &self,
+        wait_info: &SemaphoreWaitInfo<'a>,
+        timeout: u64,
+    ) -> Result<vk::Result> {
+        let r = unsafe {
+            (self
+                .fns()
+                .fp_v1_2()
+                .wait_semaphores)(
+                self.raw(),
+                wait_info as *const SemaphoreWaitInfo<'a> as *const _,
+                timeout,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        if r == vk::Result::SUCCESS
+            && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY)
+        {
+            let semaphores = unsafe {
+                crate::retention::raw_slice(
+                    wait_info.p_semaphores,
+                    wait_info.semaphore_count,
+                )
+            };
+            let values = unsafe {
+                crate::retention::raw_slice(
+                    wait_info.p_values,
+                    wait_info.semaphore_count,
+                )
+            };
+            for (s, v) in semaphores.iter().zip(values) {
+                self.live().ledger().reached(*s, *v);
+            }
+        }
+        Ok(r)
     }
 }
 #[cfg(feature = "ext_debug_utils")]
@@ -689,7 +4363,93 @@ The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] chec
                     label_info as *const DebugUtilsLabelEXT<'a> as *const _,
                 )
             };
-            ()
+        })
+    }
+    /**`vkCmdEndDebugUtilsLabelEXT`
+
+# Valid usage
+
+The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_end_debug_utils_label_ext();
+            r?;
+        }
+        unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
+    }
+    /**`vkCmdEndDebugUtilsLabelEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
+        let ext_table = self
+            .device()
+            .ext()
+            .ext_debug_utils
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+        Ok({
+            unsafe { (ext_table.cmd_end_debug_utils_label_ext)(self.raw()) };
+        })
+    }
+    /**`vkCmdInsertDebugUtilsLabelEXT`
+
+# Valid usage
+
+The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
+
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
+    #[inline]
+    pub fn cmd_insert_debug_utils_label_ext<'a>(
+        &mut self,
+        label_info: &DebugUtilsLabelEXT<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_insert_debug_utils_label_ext();
+            r?;
+        }
+        unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
+    }
+    /**`vkCmdInsertDebugUtilsLabelEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_insert_debug_utils_label_ext_unchecked<'a>(
+        &mut self,
+        label_info: &DebugUtilsLabelEXT<'a>,
+    ) -> Result<()> {
+        let ext_table = self
+            .device()
+            .ext()
+            .ext_debug_utils
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+        Ok({
+            unsafe {
+                (ext_table
+                    .cmd_insert_debug_utils_label_ext)(
+                    self.raw(),
+                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
+                )
+            };
         })
     }
 }
@@ -744,225 +4504,7 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
                 .cmd_begin_query)(self.raw(), query_pool.raw(), query, flags)
         };
         self.retain_with(query_pool.address(), || query_pool.retained());
-        ()
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdBeginRenderPass`
-
-# Valid usage
-
-The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass.html). Settled by the wrappers:
-
-- `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginRenderPass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBeginRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBeginRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdBeginRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_begin_render_pass<'a>(
-        mut self,
-        render_pass_begin: &RenderPassBeginInfo<'a>,
-        contents: vk::SubpassContents,
-    ) -> Recorder<'c, InRenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_begin_render_pass(render_pass_begin, contents);
-            if !self.accept(r) {
-                self.skip_begin(true);
-                return self.into_state();
-            }
-            self.skip_begin(false);
-        }
-        unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
-    }
-    /**`vkCmdBeginRenderPass` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_begin_render_pass_unchecked<'a>(
-        mut self,
-        render_pass_begin: &RenderPassBeginInfo<'a>,
-        contents: vk::SubpassContents,
-    ) -> Recorder<'c, InRenderPass> {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_begin_render_pass)(
-                self.raw(),
-                render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
-                contents,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(render_pass_begin) {
-                unsafe {
-                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
-                };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ();
-        self.into_state()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdBeginRenderPass2`
-
-# Valid usage
-
-The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass2.html). Settled by the wrappers:
-
-- `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_begin_render_pass2<'a>(
-        mut self,
-        render_pass_begin: &RenderPassBeginInfo<'a>,
-        subpass_begin_info: &SubpassBeginInfo<'a>,
-    ) -> Recorder<'c, InRenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_begin_render_pass2(render_pass_begin, subpass_begin_info);
-            if !self.accept(r) {
-                self.skip_begin(true);
-                return self.into_state();
-            }
-            self.skip_begin(false);
-        }
-        unsafe {
-            self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
-        }
-    }
-    /**`vkCmdBeginRenderPass2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_begin_render_pass2_unchecked<'a>(
-        mut self,
-        render_pass_begin: &RenderPassBeginInfo<'a>,
-        subpass_begin_info: &SubpassBeginInfo<'a>,
-    ) -> Recorder<'c, InRenderPass> {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_begin_render_pass2)(
-                self.raw(),
-                render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
-                subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(render_pass_begin) {
-                unsafe {
-                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
-                };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ();
-        self.into_state()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdBeginRendering`
-
-# Valid usage
-
-The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRendering.html). Settled by the wrappers:
-
-- `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_begin_rendering<'a>(
-        mut self,
-        rendering_info: &RenderingInfo<'a>,
-    ) -> Recorder<'c, InRendering> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_begin_rendering(rendering_info);
-            if !self.accept(r) {
-                self.skip_begin(true);
-                return self.into_state();
-            }
-            self.skip_begin(false);
-        }
-        unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
-    }
-    /**`vkCmdBeginRendering` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_begin_rendering_unchecked<'a>(
-        mut self,
-        rendering_info: &RenderingInfo<'a>,
-    ) -> Recorder<'c, InRendering> {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_begin_rendering)(
-                self.raw(),
-                rendering_info as *const RenderingInfo<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(rendering_info) {
-                unsafe { crate::reach::rendering_info(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ();
-        self.into_state()
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindDescriptorSets`
 
 # Valid usage
@@ -1050,10 +4592,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
             )
         };
         self.retain_with(layout.address(), || layout.retained());
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindIndexBuffer`
 
 # Valid usage
@@ -1105,10 +4644,7 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
                 .cmd_bind_index_buffer)(self.raw(), buffer.raw(), offset, index_type)
         };
         self.retain_with(buffer.address(), || buffer.retained());
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindPipeline`
 
 # Valid usage
@@ -1158,10 +4694,7 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
                 .cmd_bind_pipeline)(self.raw(), pipeline_bind_point, pipeline.raw())
         };
         self.retain_with(pipeline.address(), || pipeline.retained());
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers`
 
 # Valid usage
@@ -1228,10 +4761,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
                 offsets.as_ptr().cast(),
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers2`
 
 # Valid usage
@@ -1312,1664 +4842,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
                 strides.as_ptr().cast(),
             )
         };
-        ()
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdBlitImage`
-
-# Valid usage
-
-The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage.html). Settled by the wrappers:
-
-- `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBlitImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBlitImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBlitImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBlitImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBlitImage-filter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBlitImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBlitImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBlitImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBlitImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdBlitImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdBlitImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_blit_image<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::ImageBlit],
-        filter: vk::Filter,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_blit_image(
-                    src_image,
-                    src_image_layout,
-                    dst_image,
-                    dst_image_layout,
-                    regions,
-                    filter,
-                );
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_blit_image_unchecked(
-                src_image,
-                src_image_layout,
-                dst_image,
-                dst_image_layout,
-                regions,
-                filter,
-            )
-        }
-    }
-    /**`vkCmdBlitImage` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_blit_image_unchecked<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::ImageBlit],
-        filter: vk::Filter,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_blit_image)(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-                filter,
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdBlitImage2`
-
-# Valid usage
-
-The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage2.html). Settled by the wrappers:
-
-- `VUID-vkCmdBlitImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_blit_image2(blit_image_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
-    }
-    /**`vkCmdBlitImage2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_blit_image2_unchecked<'a>(
-        &mut self,
-        blit_image_info: &BlitImageInfo2<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_blit_image2)(
-                self.raw(),
-                blit_image_info as *const BlitImageInfo2<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(blit_image_info) {
-                unsafe { crate::reach::blit_image_info2(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdClearAttachments`
-
-# Valid usage
-
-The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearAttachments.html). Settled by the wrappers:
-
-- `VUID-vkCmdClearAttachments-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdClearAttachments-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdClearAttachments-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdClearAttachments-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_clear_attachments<'a>(
-        &mut self,
-        attachments: &[vk::ClearAttachment],
-        rects: &[vk::ClearRect],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_clear_attachments(attachments, rects);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
-    }
-    /**`vkCmdClearAttachments` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_clear_attachments_unchecked<'a>(
-        &mut self,
-        attachments: &[vk::ClearAttachment],
-        rects: &[vk::ClearRect],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_clear_attachments)(
-                self.raw(),
-                attachments.len() as u32,
-                attachments.as_ptr().cast(),
-                rects.len() as u32,
-                rects.as_ptr().cast(),
-            )
-        };
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdClearColorImage`
-
-# Valid usage
-
-The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearColorImage.html). Settled by the wrappers:
-
-- `VUID-vkCmdClearColorImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdClearColorImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdClearColorImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdClearColorImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdClearColorImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdClearColorImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdClearColorImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdClearColorImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_clear_color_image<'a>(
-        &mut self,
-        image: &Image,
-        image_layout: vk::ImageLayout,
-        color: &vk::ClearColorValue,
-        ranges: &[vk::ImageSubresourceRange],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_clear_color_image(image, image_layout, ranges);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
-        }
-    }
-    /**`vkCmdClearColorImage` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_clear_color_image_unchecked<'a>(
-        &mut self,
-        image: &Image,
-        image_layout: vk::ImageLayout,
-        color: &vk::ClearColorValue,
-        ranges: &[vk::ImageSubresourceRange],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_clear_color_image)(
-                self.raw(),
-                image.raw(),
-                image_layout,
-                color as *const vk::ClearColorValue as *const _,
-                ranges.len() as u32,
-                ranges.as_ptr().cast(),
-            )
-        };
-        self.retain_with(image.address(), || image.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdClearDepthStencilImage`
-
-# Valid usage
-
-The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearDepthStencilImage.html). Settled by the wrappers:
-
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdClearDepthStencilImage-pDepthStencil-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdClearDepthStencilImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdClearDepthStencilImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdClearDepthStencilImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 18 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_clear_depth_stencil_image<'a>(
-        &mut self,
-        image: &Image,
-        image_layout: vk::ImageLayout,
-        depth_stencil: &vk::ClearDepthStencilValue,
-        ranges: &[vk::ImageSubresourceRange],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_clear_depth_stencil_image(image, image_layout, ranges);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_clear_depth_stencil_image_unchecked(
-                image,
-                image_layout,
-                depth_stencil,
-                ranges,
-            )
-        }
-    }
-    /**`vkCmdClearDepthStencilImage` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_clear_depth_stencil_image_unchecked<'a>(
-        &mut self,
-        image: &Image,
-        image_layout: vk::ImageLayout,
-        depth_stencil: &vk::ClearDepthStencilValue,
-        ranges: &[vk::ImageSubresourceRange],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_clear_depth_stencil_image)(
-                self.raw(),
-                image.raw(),
-                image_layout,
-                depth_stencil as *const vk::ClearDepthStencilValue as *const _,
-                ranges.len() as u32,
-                ranges.as_ptr().cast(),
-            )
-        };
-        self.retain_with(image.address(), || image.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyBuffer`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyBuffer-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdCopyBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_buffer<'a>(
-        &mut self,
-        src_buffer: &Buffer,
-        dst_buffer: &Buffer,
-        regions: &[vk::BufferCopy],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_copy_buffer(src_buffer, dst_buffer, regions);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
-    }
-    /**`vkCmdCopyBuffer` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_buffer_unchecked<'a>(
-        &mut self,
-        src_buffer: &Buffer,
-        dst_buffer: &Buffer,
-        regions: &[vk::BufferCopy],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_buffer)(
-                self.raw(),
-                src_buffer.raw(),
-                dst_buffer.raw(),
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_buffer.address(), || src_buffer.retained());
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyBuffer2`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer2.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_copy_buffer2(copy_buffer_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
-    }
-    /**`vkCmdCopyBuffer2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_buffer2_unchecked<'a>(
-        &mut self,
-        copy_buffer_info: &CopyBufferInfo2<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_buffer2)(
-                self.raw(),
-                copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_buffer_info) {
-                unsafe { crate::reach::copy_buffer_info2(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyBufferToImage`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyBufferToImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyBufferToImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBufferToImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_buffer_to_image<'a>(
-        &mut self,
-        src_buffer: &Buffer,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::BufferImageCopy],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_copy_buffer_to_image(
-                    src_buffer,
-                    dst_image,
-                    dst_image_layout,
-                    regions,
-                );
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_copy_buffer_to_image_unchecked(
-                src_buffer,
-                dst_image,
-                dst_image_layout,
-                regions,
-            )
-        }
-    }
-    /**`vkCmdCopyBufferToImage` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image_unchecked<'a>(
-        &mut self,
-        src_buffer: &Buffer,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::BufferImageCopy],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_buffer_to_image)(
-                self.raw(),
-                src_buffer.raw(),
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_buffer.address(), || src_buffer.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyBufferToImage2`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage2.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyBufferToImage2-pCopyBufferToImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_buffer_to_image2<'a>(
-        &mut self,
-        copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
-    }
-    /**`vkCmdCopyBufferToImage2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
-        &mut self,
-        copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_buffer_to_image2)(
-                self.raw(),
-                copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a>
-                    as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_buffer_to_image_info) {
-                unsafe {
-                    crate::reach::copy_buffer_to_image_info2(e.as_raw(), live, &mut kept)
-                };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyImage`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 76 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_image<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::ImageCopy],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_copy_image(
-                    src_image,
-                    src_image_layout,
-                    dst_image,
-                    dst_image_layout,
-                    regions,
-                );
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_copy_image_unchecked(
-                src_image,
-                src_image_layout,
-                dst_image,
-                dst_image_layout,
-                regions,
-            )
-        }
-    }
-    /**`vkCmdCopyImage` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_image_unchecked<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::ImageCopy],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_image)(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyImage2`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage2.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_copy_image2(copy_image_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
-    }
-    /**`vkCmdCopyImage2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_image2_unchecked<'a>(
-        &mut self,
-        copy_image_info: &CopyImageInfo2<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_image2)(
-                self.raw(),
-                copy_image_info as *const CopyImageInfo2<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_image_info) {
-                unsafe { crate::reach::copy_image_info2(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyImageToBuffer`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyImageToBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyImageToBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyImageToBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImageToBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_image_to_buffer<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_buffer: &Buffer,
-        regions: &[vk::BufferImageCopy],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_copy_image_to_buffer(
-                    src_image,
-                    src_image_layout,
-                    dst_buffer,
-                    regions,
-                );
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_copy_image_to_buffer_unchecked(
-                src_image,
-                src_image_layout,
-                dst_buffer,
-                regions,
-            )
-        }
-    }
-    /**`vkCmdCopyImageToBuffer` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_image_to_buffer_unchecked<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_buffer: &Buffer,
-        regions: &[vk::BufferImageCopy],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_image_to_buffer)(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_buffer.raw(),
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyImageToBuffer2`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer2.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyImageToBuffer2-pCopyImageToBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_image_to_buffer2<'a>(
-        &mut self,
-        copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
-    }
-    /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
-        &mut self,
-        copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_image_to_buffer2)(
-                self.raw(),
-                copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a>
-                    as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_image_to_buffer_info) {
-                unsafe {
-                    crate::reach::copy_image_to_buffer_info2(e.as_raw(), live, &mut kept)
-                };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdCopyQueryPoolResults`
-
-# Valid usage
-
-The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyQueryPoolResults.html). Settled by the wrappers:
-
-- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyQueryPoolResults-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_copy_query_pool_results(
-        &mut self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-        stride: vk::DeviceSize,
-        flags: vk::QueryResultFlags,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_copy_query_pool_results(query_pool, dst_buffer, flags);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_copy_query_pool_results_unchecked(
-                query_pool,
-                first_query,
-                query_count,
-                dst_buffer,
-                dst_offset,
-                stride,
-                flags,
-            )
-        }
-    }
-    /**`vkCmdCopyQueryPoolResults` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_copy_query_pool_results_unchecked(
-        &mut self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-        stride: vk::DeviceSize,
-        flags: vk::QueryResultFlags,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_query_pool_results)(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-                dst_buffer.raw(),
-                dst_offset,
-                stride,
-                flags,
-            )
-        };
-        self.retain_with(query_pool.address(), || query_pool.retained());
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdDispatch`
-
-# Valid usage
-
-The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatch.html). Settled by the wrappers:
-
-- `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDispatch-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 61 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_dispatch(
-        &mut self,
-        group_count_x: u32,
-        group_count_y: u32,
-        group_count_z: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_dispatch();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
-        }
-    }
-    /**`vkCmdDispatch` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_dispatch_unchecked(
-        &mut self,
-        group_count_x: u32,
-        group_count_y: u32,
-        group_count_z: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_dispatch)(self.raw(), group_count_x, group_count_y, group_count_z)
-        };
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdDispatchBase`
-
-# Valid usage
-
-The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchBase.html). Settled by the wrappers:
-
-- `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 65 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_dispatch_base(
-        &mut self,
-        base_group_x: u32,
-        base_group_y: u32,
-        base_group_z: u32,
-        group_count_x: u32,
-        group_count_y: u32,
-        group_count_z: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_dispatch_base();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_dispatch_base_unchecked(
-                base_group_x,
-                base_group_y,
-                base_group_z,
-                group_count_x,
-                group_count_y,
-                group_count_z,
-            )
-        }
-    }
-    /**`vkCmdDispatchBase` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_dispatch_base_unchecked(
-        &mut self,
-        base_group_x: u32,
-        base_group_y: u32,
-        base_group_z: u32,
-        group_count_x: u32,
-        group_count_y: u32,
-        group_count_z: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_1()
-                .cmd_dispatch_base)(
-                self.raw(),
-                base_group_x,
-                base_group_y,
-                base_group_z,
-                group_count_x,
-                group_count_y,
-                group_count_z,
-            )
-        };
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdDispatchIndirect`
-
-# Valid usage
-
-The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchIndirect.html). Settled by the wrappers:
-
-- `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 60 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_dispatch_indirect(buffer);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
-    }
-    /**`vkCmdDispatchIndirect` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_dispatch_indirect_unchecked(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_dispatch_indirect)(self.raw(), buffer.raw(), offset)
-        };
-        self.retain_with(buffer.address(), || buffer.retained());
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdDraw`
-
-# Valid usage
-
-The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDraw.html). Settled by the wrappers:
-
-- `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 192 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_draw(
-        &mut self,
-        vertex_count: u32,
-        instance_count: u32,
-        first_vertex: u32,
-        first_instance: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_draw();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_draw_unchecked(
-                vertex_count,
-                instance_count,
-                first_vertex,
-                first_instance,
-            )
-        }
-    }
-    /**`vkCmdDraw` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_draw_unchecked(
-        &mut self,
-        vertex_count: u32,
-        instance_count: u32,
-        first_vertex: u32,
-        first_instance: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw)(
-                self.raw(),
-                vertex_count,
-                instance_count,
-                first_vertex,
-                first_instance,
-            )
-        };
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdDrawIndexed`
-
-# Valid usage
-
-The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
-
-- `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_draw_indexed(
-        &mut self,
-        index_count: u32,
-        instance_count: u32,
-        first_index: u32,
-        vertex_offset: i32,
-        first_instance: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_draw_indexed();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_draw_indexed_unchecked(
-                index_count,
-                instance_count,
-                first_index,
-                vertex_offset,
-                first_instance,
-            )
-        }
-    }
-    /**`vkCmdDrawIndexed` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_draw_indexed_unchecked(
-        &mut self,
-        index_count: u32,
-        instance_count: u32,
-        first_index: u32,
-        vertex_offset: i32,
-        first_instance: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw_indexed)(
-                self.raw(),
-                index_count,
-                instance_count,
-                first_index,
-                vertex_offset,
-                first_instance,
-            )
-        };
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdDrawIndexedIndirect`
-
-# Valid usage
-
-The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
-
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 200 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_draw_indexed_indirect(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        draw_count: u32,
-        stride: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_draw_indexed_indirect(buffer);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
-        }
-    }
-    /**`vkCmdDrawIndexedIndirect` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_draw_indexed_indirect_unchecked(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        draw_count: u32,
-        stride: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw_indexed_indirect)(
-                self.raw(),
-                buffer.raw(),
-                offset,
-                draw_count,
-                stride,
-            )
-        };
-        self.retain_with(buffer.address(), || buffer.retained());
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdDrawIndexedIndirectCount`
-
-# Valid usage
-
-The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirectCount.html). Settled by the wrappers:
-
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 205 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_draw_indexed_indirect_count(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        count_buffer: &Buffer,
-        count_buffer_offset: vk::DeviceSize,
-        max_draw_count: u32,
-        stride: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_draw_indexed_indirect_count(buffer, count_buffer);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_draw_indexed_indirect_count_unchecked(
-                buffer,
-                offset,
-                count_buffer,
-                count_buffer_offset,
-                max_draw_count,
-                stride,
-            )
-        }
-    }
-    /**`vkCmdDrawIndexedIndirectCount` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        count_buffer: &Buffer,
-        count_buffer_offset: vk::DeviceSize,
-        max_draw_count: u32,
-        stride: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_draw_indexed_indirect_count)(
-                self.raw(),
-                buffer.raw(),
-                offset,
-                count_buffer.raw(),
-                count_buffer_offset,
-                max_draw_count,
-                stride,
-            )
-        };
-        self.retain_with(buffer.address(), || buffer.retained());
-        self.retain_with(count_buffer.address(), || count_buffer.retained());
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdDrawIndirect`
-
-# Valid usage
-
-The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
-
-- `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 198 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_draw_indirect(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        draw_count: u32,
-        stride: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_draw_indirect(buffer);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
-    }
-    /**`vkCmdDrawIndirect` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_draw_indirect_unchecked(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        draw_count: u32,
-        stride: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw_indirect)(self.raw(), buffer.raw(), offset, draw_count, stride)
-        };
-        self.retain_with(buffer.address(), || buffer.retained());
-        ()
-    }
-}
-impl<'c, S: Inside> Recorder<'c, S> {
-    /**`vkCmdDrawIndirectCount`
-
-# Valid usage
-
-The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirectCount.html). Settled by the wrappers:
-
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 203 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_draw_indirect_count(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        count_buffer: &Buffer,
-        count_buffer_offset: vk::DeviceSize,
-        max_draw_count: u32,
-        stride: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_draw_indirect_count(buffer, count_buffer);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_draw_indirect_count_unchecked(
-                buffer,
-                offset,
-                count_buffer,
-                count_buffer_offset,
-                max_draw_count,
-                stride,
-            )
-        }
-    }
-    /**`vkCmdDrawIndirectCount` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_draw_indirect_count_unchecked(
-        &mut self,
-        buffer: &Buffer,
-        offset: vk::DeviceSize,
-        count_buffer: &Buffer,
-        count_buffer_offset: vk::DeviceSize,
-        max_draw_count: u32,
-        stride: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_draw_indirect_count)(
-                self.raw(),
-                buffer.raw(),
-                offset,
-                count_buffer.raw(),
-                count_buffer_offset,
-                max_draw_count,
-                stride,
-            )
-        };
-        self.retain_with(buffer.address(), || buffer.retained());
-        self.retain_with(count_buffer.address(), || count_buffer.retained());
-        ()
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'c, S: State> Recorder<'c, S> {
-    /**`vkCmdEndDebugUtilsLabelEXT`
-
-# Valid usage
-
-The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndDebugUtilsLabelEXT.html). Settled by the wrappers:
-
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_end_debug_utils_label_ext();
-            r?;
-        }
-        unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
-    }
-    /**`vkCmdEndDebugUtilsLabelEXT` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
-        let ext_table = self
-            .device()
-            .ext()
-            .ext_debug_utils
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
-        Ok({
-            unsafe { (ext_table.cmd_end_debug_utils_label_ext)(self.raw()) };
-            ()
-        })
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdEndQuery`
 
 # Valid usage
@@ -3013,142 +4886,7 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
                 .cmd_end_query)(self.raw(), query_pool.raw(), query)
         };
         self.retain_with(query_pool.address(), || query_pool.retained());
-        ()
     }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    /**`vkCmdEndRenderPass`
-
-# Valid usage
-
-The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass.html). Settled by the wrappers:
-
-- `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_end_render_pass();
-            let _ = self.accept(r);
-            if self.begin_skipped() {
-                return self.into_state();
-            }
-        }
-        unsafe { self.cmd_end_render_pass_unchecked() }
-    }
-    /**`vkCmdEndRenderPass` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
-        unsafe { (self.device().fns().fp_v1_0().cmd_end_render_pass)(self.raw()) };
-        ();
-        self.into_state()
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    /**`vkCmdEndRenderPass2`
-
-# Valid usage
-
-The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass2.html). Settled by the wrappers:
-
-- `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_end_render_pass2<'a>(
-        mut self,
-        subpass_end_info: &SubpassEndInfo<'a>,
-    ) -> Recorder<'c, Outside> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_end_render_pass2(subpass_end_info);
-            let _ = self.accept(r);
-            if self.begin_skipped() {
-                return self.into_state();
-            }
-        }
-        unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
-    }
-    /**`vkCmdEndRenderPass2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run time: `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass2-bufferlevel`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_end_render_pass2_unchecked<'a>(
-        mut self,
-        subpass_end_info: &SubpassEndInfo<'a>,
-    ) -> Recorder<'c, Outside> {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_end_render_pass2)(
-                self.raw(),
-                subpass_end_info as *const SubpassEndInfo<'a> as *const _,
-            )
-        };
-        ();
-        self.into_state()
-    }
-}
-impl<'c> Recorder<'c, InRendering> {
-    /**`vkCmdEndRendering`
-
-# Valid usage
-
-The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
-
-- `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_end_rendering();
-            let _ = self.accept(r);
-            if self.begin_skipped() {
-                return self.into_state();
-            }
-        }
-        unsafe { self.cmd_end_rendering_unchecked() }
-    }
-    /**`vkCmdEndRendering` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
-        unsafe { (self.device().fns().fp_v1_3().cmd_end_rendering)(self.raw()) };
-        ();
-        self.into_state()
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdExecuteCommands`
 
 # Valid usage
@@ -3218,221 +4956,8 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
                     command_buffers.as_ptr(),
                 )
             };
-            ()
         })
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdFillBuffer`
-
-# Valid usage
-
-The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdFillBuffer.html). Settled by the wrappers:
-
-- `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdFillBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdFillBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_fill_buffer(
-        &mut self,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-        size: vk::DeviceSize,
-        data: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_fill_buffer(dst_buffer);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
-    }
-    /**`vkCmdFillBuffer` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_fill_buffer_unchecked(
-        &mut self,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-        size: vk::DeviceSize,
-        data: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_fill_buffer)(self.raw(), dst_buffer.raw(), dst_offset, size, data)
-        };
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
-        ()
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl<'c, S: State> Recorder<'c, S> {
-    /**`vkCmdInsertDebugUtilsLabelEXT`
-
-# Valid usage
-
-The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
-
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
-    #[inline]
-    pub fn cmd_insert_debug_utils_label_ext<'a>(
-        &mut self,
-        label_info: &DebugUtilsLabelEXT<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_insert_debug_utils_label_ext();
-            r?;
-        }
-        unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
-    }
-    /**`vkCmdInsertDebugUtilsLabelEXT` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_insert_debug_utils_label_ext_unchecked<'a>(
-        &mut self,
-        label_info: &DebugUtilsLabelEXT<'a>,
-    ) -> Result<()> {
-        let ext_table = self
-            .device()
-            .ext()
-            .ext_debug_utils
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
-        Ok({
-            unsafe {
-                (ext_table
-                    .cmd_insert_debug_utils_label_ext)(
-                    self.raw(),
-                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
-                )
-            };
-            ()
-        })
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    /**`vkCmdNextSubpass`
-
-# Valid usage
-
-The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass.html). Settled by the wrappers:
-
-- `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdNextSubpass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdNextSubpass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdNextSubpass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_next_subpass(contents);
-            let _ = self.accept(r);
-            if self.begin_skipped() {
-                return;
-            }
-        }
-        unsafe { self.cmd_next_subpass_unchecked(contents) }
-    }
-    /**`vkCmdNextSubpass` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
-        unsafe {
-            (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
-        };
-        ()
-    }
-}
-impl<'c> Recorder<'c, InRenderPass> {
-    /**`vkCmdNextSubpass2`
-
-# Valid usage
-
-The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass2.html). Settled by the wrappers:
-
-- `VUID-vkCmdNextSubpass2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdNextSubpass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdNextSubpass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdNextSubpass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdNextSubpass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_next_subpass2<'a>(
-        &mut self,
-        subpass_begin_info: &SubpassBeginInfo<'a>,
-        subpass_end_info: &SubpassEndInfo<'a>,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_next_subpass2(subpass_begin_info, subpass_end_info);
-            let _ = self.accept(r);
-            if self.begin_skipped() {
-                return;
-            }
-        }
-        unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
-    }
-    /**`vkCmdNextSubpass2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time: `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass2-bufferlevel`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_next_subpass2_unchecked<'a>(
-        &mut self,
-        subpass_begin_info: &SubpassBeginInfo<'a>,
-        subpass_end_info: &SubpassEndInfo<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_next_subpass2)(
-                self.raw(),
-                subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
-                subpass_end_info as *const SubpassEndInfo<'a> as *const _,
-            )
-        };
-        ()
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdPipelineBarrier`
 
 # Valid usage
@@ -3544,10 +5069,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
         for o in kept {
             self.retain(o);
         }
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdPipelineBarrier2`
 
 # Valid usage
@@ -3602,10 +5124,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
         for o in kept {
             self.retain(o);
         }
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdPushConstants`
 
 # Valid usage
@@ -3669,331 +5188,7 @@ The caller upholds the rules that [`Self::cmd_push_constants`] checks at run tim
             )
         };
         self.retain_with(layout.address(), || layout.retained());
-        ()
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdResetEvent`
-
-# Valid usage
-
-The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent.html). Settled by the wrappers:
-
-- `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdResetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_reset_event(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_reset_event(event, stage_mask);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
-    }
-    /**`vkCmdResetEvent` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_reset_event_unchecked(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_reset_event)(self.raw(), event.raw(), stage_mask)
-        };
-        self.retain_with(event.address(), || event.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdResetEvent2`
-
-# Valid usage
-
-The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
-
-- `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_reset_event2(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags2,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_reset_event2(event, stage_mask);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
-    }
-    /**`vkCmdResetEvent2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_reset_event2_unchecked(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags2,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_reset_event2)(self.raw(), event.raw(), stage_mask)
-        };
-        self.retain_with(event.address(), || event.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdResetQueryPool`
-
-# Valid usage
-
-The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetQueryPool.html). Settled by the wrappers:
-
-- `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdResetQueryPool-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetQueryPool-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_reset_query_pool(
-        &mut self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_reset_query_pool(query_pool);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
-        }
-    }
-    /**`vkCmdResetQueryPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_reset_query_pool_unchecked(
-        &mut self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_reset_query_pool)(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-            )
-        };
-        self.retain_with(query_pool.address(), || query_pool.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdResolveImage`
-
-# Valid usage
-
-The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage.html). Settled by the wrappers:
-
-- `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResolveImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdResolveImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResolveImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdResolveImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdResolveImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResolveImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdResolveImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResolveImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_resolve_image<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::ImageResolve],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_cmd_resolve_image(
-                    src_image,
-                    src_image_layout,
-                    dst_image,
-                    dst_image_layout,
-                    regions,
-                );
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe {
-            self.cmd_resolve_image_unchecked(
-                src_image,
-                src_image_layout,
-                dst_image,
-                dst_image_layout,
-                regions,
-            )
-        }
-    }
-    /**`vkCmdResolveImage` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_resolve_image_unchecked<'a>(
-        &mut self,
-        src_image: &Image,
-        src_image_layout: vk::ImageLayout,
-        dst_image: &Image,
-        dst_image_layout: vk::ImageLayout,
-        regions: &[vk::ImageResolve],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_resolve_image)(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdResolveImage2`
-
-# Valid usage
-
-The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage2.html). Settled by the wrappers:
-
-- `VUID-vkCmdResolveImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_resolve_image2<'a>(
-        &mut self,
-        resolve_image_info: &ResolveImageInfo2<'a>,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_resolve_image2(resolve_image_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
-    }
-    /**`vkCmdResolveImage2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_resolve_image2_unchecked<'a>(
-        &mut self,
-        resolve_image_info: &ResolveImageInfo2<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_resolve_image2)(
-                self.raw(),
-                resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(resolve_image_info) {
-                unsafe {
-                    crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
-                };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetBlendConstants`
 
 # Valid usage
@@ -4032,10 +5227,7 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
                 .fp_v1_0()
                 .cmd_set_blend_constants)(self.raw(), blend_constants)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetCullMode`
 
 # Valid usage
@@ -4070,10 +5262,7 @@ The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBias`
 
 # Valid usage
@@ -4132,10 +5321,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
                 depth_bias_slope_factor,
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBiasEnable`
 
 # Valid usage
@@ -4176,10 +5362,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
                 .fp_v1_3()
                 .cmd_set_depth_bias_enable)(self.raw(), depth_bias_enable)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBounds`
 
 # Valid usage
@@ -4227,10 +5410,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
                 .fp_v1_0()
                 .cmd_set_depth_bounds)(self.raw(), min_depth_bounds, max_depth_bounds)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthBoundsTestEnable`
 
 # Valid usage
@@ -4276,10 +5456,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
                 .fp_v1_3()
                 .cmd_set_depth_bounds_test_enable)(self.raw(), depth_bounds_test_enable)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthCompareOp`
 
 # Valid usage
@@ -4321,10 +5498,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at r
                 .fp_v1_3()
                 .cmd_set_depth_compare_op)(self.raw(), depth_compare_op)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthTestEnable`
 
 # Valid usage
@@ -4365,10 +5539,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
                 .fp_v1_3()
                 .cmd_set_depth_test_enable)(self.raw(), depth_test_enable)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDepthWriteEnable`
 
 # Valid usage
@@ -4409,10 +5580,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
                 .fp_v1_3()
                 .cmd_set_depth_write_enable)(self.raw(), depth_write_enable)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDeviceMask`
 
 # Valid usage
@@ -4445,127 +5613,7 @@ The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run ti
         unsafe {
             (self.device().fns().fp_v1_1().cmd_set_device_mask)(self.raw(), device_mask)
         };
-        ()
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdSetEvent`
-
-# Valid usage
-
-The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdSetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_set_event(event, stage_mask);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
-    }
-    /**`vkCmdSetEvent` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_set_event_unchecked(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_event)(self.raw(), event.raw(), stage_mask)
-        };
-        self.retain_with(event.address(), || event.retained());
-        ()
-    }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdSetEvent2`
-
-# Valid usage
-
-The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_set_event2<'a>(
-        &mut self,
-        event: &Event,
-        dependency_info: &DependencyInfo<'a>,
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_set_event2(event, dependency_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
-    }
-    /**`vkCmdSetEvent2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_set_event2_unchecked<'a>(
-        &mut self,
-        event: &Event,
-        dependency_info: &DependencyInfo<'a>,
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_event2)(
-                self.raw(),
-                event.raw(),
-                dependency_info as *const DependencyInfo<'a> as *const _,
-            )
-        };
-        self.retain_with(event.address(), || event.retained());
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(dependency_info) {
-                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        ()
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetFrontFace`
 
 # Valid usage
@@ -4600,10 +5648,7 @@ The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run tim
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetLineWidth`
 
 # Valid usage
@@ -4637,10 +5682,7 @@ The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run tim
         unsafe {
             (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetPrimitiveRestartEnable`
 
 # Valid usage
@@ -4686,10 +5728,7 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
                 .fp_v1_3()
                 .cmd_set_primitive_restart_enable)(self.raw(), primitive_restart_enable)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetPrimitiveTopology`
 
 # Valid usage
@@ -4734,10 +5773,7 @@ The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at
                 .fp_v1_3()
                 .cmd_set_primitive_topology)(self.raw(), primitive_topology)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetRasterizerDiscardEnable`
 
 # Valid usage
@@ -4786,10 +5822,7 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
                 rasterizer_discard_enable,
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetScissor`
 
 # Valid usage
@@ -4838,10 +5871,7 @@ The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: 
                 scissors.as_ptr().cast(),
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetScissorWithCount`
 
 # Valid usage
@@ -4888,10 +5918,7 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
                 scissors.as_ptr().cast(),
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilCompareMask`
 
 # Valid usage
@@ -4937,10 +5964,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks 
                 .fp_v1_0()
                 .cmd_set_stencil_compare_mask)(self.raw(), face_mask, compare_mask)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilOp`
 
 # Valid usage
@@ -5020,10 +6044,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
                 compare_op,
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilReference`
 
 # Valid usage
@@ -5069,10 +6090,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at 
                 .fp_v1_0()
                 .cmd_set_stencil_reference)(self.raw(), face_mask, reference)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilTestEnable`
 
 # Valid usage
@@ -5113,10 +6131,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
                 .fp_v1_3()
                 .cmd_set_stencil_test_enable)(self.raw(), stencil_test_enable)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetStencilWriteMask`
 
 # Valid usage
@@ -5162,10 +6177,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
                 .fp_v1_0()
                 .cmd_set_stencil_write_mask)(self.raw(), face_mask, write_mask)
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetViewport`
 
 # Valid usage
@@ -5218,10 +6230,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
                 viewports.as_ptr().cast(),
             )
         };
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetViewportWithCount`
 
 # Valid usage
@@ -5268,73 +6277,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
                 viewports.as_ptr().cast(),
             )
         };
-        ()
     }
-}
-impl<'c> Recorder<'c, Outside> {
-    /**`vkCmdUpdateBuffer`
-
-# Valid usage
-
-The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdUpdateBuffer.html). Settled by the wrappers:
-
-- `VUID-vkCmdUpdateBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdUpdateBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdUpdateBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdUpdateBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-- `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn cmd_update_buffer(
-        &mut self,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-        data: &[u8],
-    ) {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_update_buffer(dst_buffer, data);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
-    }
-    /**`vkCmdUpdateBuffer` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn cmd_update_buffer_unchecked(
-        &mut self,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-        data: &[u8],
-    ) {
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_update_buffer)(
-                self.raw(),
-                dst_buffer.raw(),
-                dst_offset,
-                data.len() as vk::DeviceSize,
-                data.as_ptr().cast(),
-            )
-        };
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
-        ()
-    }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWaitEvents`
 
 # Valid usage
@@ -5456,10 +6399,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
         for o in kept {
             self.retain(o);
         }
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWaitEvents2`
 
 # Valid usage
@@ -5531,10 +6471,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
         for o in kept {
             self.retain(o);
         }
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWriteTimestamp`
 
 # Valid usage
@@ -5590,10 +6527,7 @@ The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run ti
             )
         };
         self.retain_with(query_pool.address(), || query_pool.retained());
-        ()
     }
-}
-impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdWriteTimestamp2`
 
 # Valid usage
@@ -5644,278 +6578,2511 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
                 .cmd_write_timestamp2)(self.raw(), stage, query_pool.raw(), query)
         };
         self.retain_with(query_pool.address(), || query_pool.retained());
-        ()
     }
 }
-impl Device {
-    /**`vkCreateBuffer`
+impl<'c> Recorder<'c, Outside> {
+    /**`vkCmdBeginRenderPass`
 
 # Valid usage
 
-The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBuffer.html). Settled by the wrappers:
+The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass.html). Settled by the wrappers:
 
-- `VUID-vkCreateBuffer-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateBuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRenderPass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBeginRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_begin_render_pass<'a>(
+        mut self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        contents: vk::SubpassContents,
+    ) -> Recorder<'c, InRenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_begin_render_pass(render_pass_begin, contents);
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
+        }
+        unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
+    }
+    /**`vkCmdBeginRenderPass` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_render_pass_unchecked<'a>(
+        mut self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        contents: vk::SubpassContents,
+    ) -> Recorder<'c, InRenderPass> {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_begin_render_pass)(
+                self.raw(),
+                render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
+                contents,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(render_pass_begin) {
+                unsafe {
+                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
+                };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+        self.into_state()
+    }
+    /**`vkCmdBeginRenderPass2`
+
+# Valid usage
+
+The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass2.html). Settled by the wrappers:
+
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_begin_render_pass2<'a>(
+        mut self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+    ) -> Recorder<'c, InRenderPass> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_begin_render_pass2(render_pass_begin, subpass_begin_info);
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
+        }
+        unsafe {
+            self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
+        }
+    }
+    /**`vkCmdBeginRenderPass2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_begin_render_pass2_unchecked<'a>(
+        mut self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+    ) -> Recorder<'c, InRenderPass> {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_begin_render_pass2)(
+                self.raw(),
+                render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
+                subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(render_pass_begin) {
+                unsafe {
+                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
+                };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+        self.into_state()
+    }
+    /**`vkCmdBeginRendering`
+
+# Valid usage
+
+The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRendering.html). Settled by the wrappers:
+
+- `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_buffer<'a>(
-        &self,
-        create_info: &BufferCreateInfo<'a>,
-    ) -> Result<Buffer> {
+    pub fn cmd_begin_rendering<'a>(
+        mut self,
+        rendering_info: &RenderingInfo<'a>,
+    ) -> Recorder<'c, InRendering> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r = self.validate_create_buffer(create_info);
-            r?;
+            let r = self.validate_cmd_begin_rendering(rendering_info);
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
         }
-        unsafe { self.create_buffer_unchecked(create_info) }
+        unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
     }
-    /**`vkCreateBuffer` without its dynamic checks.
+    /**`vkCmdBeginRendering` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_buffer`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn create_buffer_unchecked<'a>(
-        &self,
-        create_info: &BufferCreateInfo<'a>,
-    ) -> Result<Buffer> {
-        let mut out = vk::Buffer::null();
-        let r = unsafe {
+    pub unsafe fn cmd_begin_rendering_unchecked<'a>(
+        mut self,
+        rendering_info: &RenderingInfo<'a>,
+    ) -> Recorder<'c, InRendering> {
+        unsafe {
             (self
+                .device()
                 .fns()
-                .fp_v1_0()
-                .create_buffer)(
+                .fp_v1_3()
+                .cmd_begin_rendering)(
                 self.raw(),
-                create_info as *const BufferCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
+                rendering_info as *const RenderingInfo<'a> as *const _,
             )
         };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(rendering_info) {
+                unsafe { crate::reach::rendering_info(e.as_raw(), live, &mut kept) };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
-        Ok(Buffer::from_raw(out, self, None, true))
+        self.into_state()
     }
-}
-impl Device {
-    /**`vkCreateBufferView`
+    /**`vkCmdBlitImage`
 
 # Valid usage
 
-The rules are on [`vkCreateBufferView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html). Settled by the wrappers:
+The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage.html). Settled by the wrappers:
 
-- `VUID-vkCreateBufferView-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBlitImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdBlitImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdBlitImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdBlitImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBlitImage-filter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdBlitImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBlitImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBlitImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBlitImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdBlitImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdBlitImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_buffer_view<'a>(
-        &self,
-        create_info: &BufferViewCreateInfo<'a>,
-    ) -> Result<BufferView> {
+    pub fn cmd_blit_image<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageBlit],
+        filter: vk::Filter,
+    ) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r = self.validate_create_buffer_view(create_info);
-            r?;
-        }
-        unsafe { self.create_buffer_view_unchecked(create_info) }
-    }
-    /**`vkCreateBufferView` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_buffer_view`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_buffer_view_unchecked<'a>(
-        &self,
-        create_info: &BufferViewCreateInfo<'a>,
-    ) -> Result<BufferView> {
-        let mut out = vk::BufferView::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_buffer_view)(
-                self.raw(),
-                create_info as *const BufferViewCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(
-            BufferView::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::buffer_view_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
-    }
-}
-impl Device {
-    /**`vkCreateCommandPool`
-
-# Valid usage
-
-The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html). Settled by the wrappers:
-
-- `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_command_pool<'a>(
-        &self,
-        create_info: &CommandPoolCreateInfo<'a>,
-    ) -> Result<CommandPool> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_command_pool(create_info);
-            r?;
-        }
-        unsafe { self.create_command_pool_unchecked(create_info) }
-    }
-    /**`vkCreateCommandPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_command_pool`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_command_pool_unchecked<'a>(
-        &self,
-        create_info: &CommandPoolCreateInfo<'a>,
-    ) -> Result<CommandPool> {
-        let mut out = vk::CommandPool::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_command_pool)(
-                self.raw(),
-                create_info as *const CommandPoolCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok({
-            let pool = CommandPool::from_raw(out, self, None, true)
-                .with_create_flags(create_info.flags);
-            #[cfg(feature = "runtime_implicit_validations")]
-            let pool = pool
-                .with_queue_flags(
-                    crate::validation::family_flags(self, create_info.queue_family_index),
+            let r = self
+                .validate_cmd_blit_image(
+                    src_image,
+                    src_image_layout,
+                    dst_image,
+                    dst_image_layout,
+                    regions,
+                    filter,
                 );
-            pool
-        })
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_blit_image_unchecked(
+                src_image,
+                src_image_layout,
+                dst_image,
+                dst_image_layout,
+                regions,
+                filter,
+            )
+        }
     }
-}
-impl Device {
-    /**`vkCreateComputePipelines`
+    /**`vkCmdBlitImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_blit_image_unchecked<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageBlit],
+        filter: vk::Filter,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_blit_image)(
+                self.raw(),
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions.len() as u32,
+                regions.as_ptr().cast(),
+                filter,
+            )
+        };
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
+    }
+    /**`vkCmdBlitImage2`
 
 # Valid usage
 
-The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html). Settled by the wrappers:
+The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage2.html). Settled by the wrappers:
 
-- `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateComputePipelines-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkCmdBlitImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_compute_pipelines<'a>(
-        &self,
-        pipeline_cache: Option<&PipelineCache>,
-        create_infos: &[ComputePipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
-            r?;
+            let r = self.validate_cmd_blit_image2(blit_image_info);
+            if !self.accept(r) {
+                return;
+            }
         }
-        unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
+        unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
     }
-    /**`vkCreateComputePipelines` without its dynamic checks.
+    /**`vkCmdBlitImage2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn create_compute_pipelines_unchecked<'a>(
-        &self,
-        pipeline_cache: Option<&PipelineCache>,
-        create_infos: &[ComputePipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
-        let mut out = vec![vk::Pipeline::null(); create_infos.len()];
-        let r = unsafe {
+    pub unsafe fn cmd_blit_image2_unchecked<'a>(
+        &mut self,
+        blit_image_info: &BlitImageInfo2<'a>,
+    ) {
+        unsafe {
             (self
+                .device()
                 .fns()
-                .fp_v1_0()
-                .create_compute_pipelines)(
+                .fp_v1_3()
+                .cmd_blit_image2)(
                 self.raw(),
-                pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
-                create_infos.len() as u32,
-                create_infos.as_ptr().cast(),
-                core::ptr::null(),
-                out.as_mut_ptr(),
+                blit_image_info as *const BlitImageInfo2<'a> as *const _,
             )
         };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(blit_image_info) {
+                unsafe { crate::reach::blit_image_info2(e.as_raw(), live, &mut kept) };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
-        Ok((
-            out
-                .into_iter()
-                .zip(create_infos.iter())
-                .map(|(raw, info)| Pipeline::from_raw(
-                    raw,
-                    self,
-                    {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        unsafe {
-                            crate::reach::compute_pipeline_create_info(
-                                info.as_raw(),
-                                live,
-                                &mut kept,
-                            )
-                        };
-                        (!kept.is_empty())
-                            .then(|| {
-                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
-                            })
-                    },
-                    true,
-                ))
-                .collect(),
-            r,
-        ))
+    }
+    /**`vkCmdClearColorImage`
+
+# Valid usage
+
+The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearColorImage.html). Settled by the wrappers:
+
+- `VUID-vkCmdClearColorImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdClearColorImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdClearColorImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdClearColorImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearColorImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdClearColorImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdClearColorImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdClearColorImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_clear_color_image<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        color: &vk::ClearColorValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_clear_color_image(image, image_layout, ranges);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
+        }
+    }
+    /**`vkCmdClearColorImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_clear_color_image_unchecked<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        color: &vk::ClearColorValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_clear_color_image)(
+                self.raw(),
+                image.raw(),
+                image_layout,
+                color as *const vk::ClearColorValue as *const _,
+                ranges.len() as u32,
+                ranges.as_ptr().cast(),
+            )
+        };
+        self.retain_with(image.address(), || image.retained());
+    }
+    /**`vkCmdClearDepthStencilImage`
+
+# Valid usage
+
+The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearDepthStencilImage.html). Settled by the wrappers:
+
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdClearDepthStencilImage-pDepthStencil-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearDepthStencilImage-pRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdClearDepthStencilImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdClearDepthStencilImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 18 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_clear_depth_stencil_image<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        depth_stencil: &vk::ClearDepthStencilValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_clear_depth_stencil_image(image, image_layout, ranges);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_clear_depth_stencil_image_unchecked(
+                image,
+                image_layout,
+                depth_stencil,
+                ranges,
+            )
+        }
+    }
+    /**`vkCmdClearDepthStencilImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_clear_depth_stencil_image_unchecked<'a>(
+        &mut self,
+        image: &Image,
+        image_layout: vk::ImageLayout,
+        depth_stencil: &vk::ClearDepthStencilValue,
+        ranges: &[vk::ImageSubresourceRange],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_clear_depth_stencil_image)(
+                self.raw(),
+                image.raw(),
+                image_layout,
+                depth_stencil as *const vk::ClearDepthStencilValue as *const _,
+                ranges.len() as u32,
+                ranges.as_ptr().cast(),
+            )
+        };
+        self.retain_with(image.address(), || image.retained());
+    }
+    /**`vkCmdCopyBuffer`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBuffer-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_buffer<'a>(
+        &mut self,
+        src_buffer: &Buffer,
+        dst_buffer: &Buffer,
+        regions: &[vk::BufferCopy],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_copy_buffer(src_buffer, dst_buffer, regions);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
+    }
+    /**`vkCmdCopyBuffer` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer_unchecked<'a>(
+        &mut self,
+        src_buffer: &Buffer,
+        dst_buffer: &Buffer,
+        regions: &[vk::BufferCopy],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_buffer)(
+                self.raw(),
+                src_buffer.raw(),
+                dst_buffer.raw(),
+                regions.len() as u32,
+                regions.as_ptr().cast(),
+            )
+        };
+        self.retain_with(src_buffer.address(), || src_buffer.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+    }
+    /**`vkCmdCopyBuffer2`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer2.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_copy_buffer2(copy_buffer_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
+    }
+    /**`vkCmdCopyBuffer2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer2_unchecked<'a>(
+        &mut self,
+        copy_buffer_info: &CopyBufferInfo2<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_buffer2)(
+                self.raw(),
+                copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_buffer_info) {
+                unsafe { crate::reach::copy_buffer_info2(e.as_raw(), live, &mut kept) };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+    }
+    /**`vkCmdCopyBufferToImage`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdCopyBufferToImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyBufferToImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBufferToImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_buffer_to_image<'a>(
+        &mut self,
+        src_buffer: &Buffer,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::BufferImageCopy],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_copy_buffer_to_image(
+                    src_buffer,
+                    dst_image,
+                    dst_image_layout,
+                    regions,
+                );
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_buffer_to_image_unchecked(
+                src_buffer,
+                dst_image,
+                dst_image_layout,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdCopyBufferToImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer_to_image_unchecked<'a>(
+        &mut self,
+        src_buffer: &Buffer,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::BufferImageCopy],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_buffer_to_image)(
+                self.raw(),
+                src_buffer.raw(),
+                dst_image.raw(),
+                dst_image_layout,
+                regions.len() as u32,
+                regions.as_ptr().cast(),
+            )
+        };
+        self.retain_with(src_buffer.address(), || src_buffer.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
+    }
+    /**`vkCmdCopyBufferToImage2`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage2.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyBufferToImage2-pCopyBufferToImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_buffer_to_image2<'a>(
+        &mut self,
+        copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
+    }
+    /**`vkCmdCopyBufferToImage2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
+        &mut self,
+        copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_buffer_to_image2)(
+                self.raw(),
+                copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a>
+                    as *const _,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_buffer_to_image_info) {
+                unsafe {
+                    crate::reach::copy_buffer_to_image_info2(e.as_raw(), live, &mut kept)
+                };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+    }
+    /**`vkCmdCopyImage`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdCopyImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdCopyImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 76 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_image<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageCopy],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_copy_image(
+                    src_image,
+                    src_image_layout,
+                    dst_image,
+                    dst_image_layout,
+                    regions,
+                );
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_image_unchecked(
+                src_image,
+                src_image_layout,
+                dst_image,
+                dst_image_layout,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdCopyImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image_unchecked<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageCopy],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_image)(
+                self.raw(),
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions.len() as u32,
+                regions.as_ptr().cast(),
+            )
+        };
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
+    }
+    /**`vkCmdCopyImage2`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage2.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_copy_image2(copy_image_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
+    }
+    /**`vkCmdCopyImage2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image2_unchecked<'a>(
+        &mut self,
+        copy_image_info: &CopyImageInfo2<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_image2)(
+                self.raw(),
+                copy_image_info as *const CopyImageInfo2<'a> as *const _,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_image_info) {
+                unsafe { crate::reach::copy_image_info2(e.as_raw(), live, &mut kept) };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+    }
+    /**`vkCmdCopyImageToBuffer`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdCopyImageToBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyImageToBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImageToBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_image_to_buffer<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_buffer: &Buffer,
+        regions: &[vk::BufferImageCopy],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_copy_image_to_buffer(
+                    src_image,
+                    src_image_layout,
+                    dst_buffer,
+                    regions,
+                );
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_image_to_buffer_unchecked(
+                src_image,
+                src_image_layout,
+                dst_buffer,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdCopyImageToBuffer` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image_to_buffer_unchecked<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_buffer: &Buffer,
+        regions: &[vk::BufferImageCopy],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_image_to_buffer)(
+                self.raw(),
+                src_image.raw(),
+                src_image_layout,
+                dst_buffer.raw(),
+                regions.len() as u32,
+                regions.as_ptr().cast(),
+            )
+        };
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+    }
+    /**`vkCmdCopyImageToBuffer2`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer2.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyImageToBuffer2-pCopyImageToBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_image_to_buffer2<'a>(
+        &mut self,
+        copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
+    }
+    /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
+        &mut self,
+        copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_copy_image_to_buffer2)(
+                self.raw(),
+                copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a>
+                    as *const _,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(copy_image_to_buffer_info) {
+                unsafe {
+                    crate::reach::copy_image_to_buffer_info2(e.as_raw(), live, &mut kept)
+                };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+    }
+    /**`vkCmdCopyQueryPoolResults`
+
+# Valid usage
+
+The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyQueryPoolResults.html). Settled by the wrappers:
+
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdCopyQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdCopyQueryPoolResults-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_copy_query_pool_results(
+        &mut self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_copy_query_pool_results(query_pool, dst_buffer, flags);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_copy_query_pool_results_unchecked(
+                query_pool,
+                first_query,
+                query_count,
+                dst_buffer,
+                dst_offset,
+                stride,
+                flags,
+            )
+        }
+    }
+    /**`vkCmdCopyQueryPoolResults` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_copy_query_pool_results_unchecked(
+        &mut self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        stride: vk::DeviceSize,
+        flags: vk::QueryResultFlags,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_copy_query_pool_results)(
+                self.raw(),
+                query_pool.raw(),
+                first_query,
+                query_count,
+                dst_buffer.raw(),
+                dst_offset,
+                stride,
+                flags,
+            )
+        };
+        self.retain_with(query_pool.address(), || query_pool.retained());
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+    }
+    /**`vkCmdDispatch`
+
+# Valid usage
+
+The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatch.html). Settled by the wrappers:
+
+- `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDispatch-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 61 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_dispatch(
+        &mut self,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_dispatch();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
+        }
+    }
+    /**`vkCmdDispatch` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_dispatch_unchecked(
+        &mut self,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_dispatch)(self.raw(), group_count_x, group_count_y, group_count_z)
+        };
+    }
+    /**`vkCmdDispatchBase`
+
+# Valid usage
+
+The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchBase.html). Settled by the wrappers:
+
+- `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 65 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_dispatch_base(
+        &mut self,
+        base_group_x: u32,
+        base_group_y: u32,
+        base_group_z: u32,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_dispatch_base();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_dispatch_base_unchecked(
+                base_group_x,
+                base_group_y,
+                base_group_z,
+                group_count_x,
+                group_count_y,
+                group_count_z,
+            )
+        }
+    }
+    /**`vkCmdDispatchBase` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_dispatch_base_unchecked(
+        &mut self,
+        base_group_x: u32,
+        base_group_y: u32,
+        base_group_z: u32,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_1()
+                .cmd_dispatch_base)(
+                self.raw(),
+                base_group_x,
+                base_group_y,
+                base_group_z,
+                group_count_x,
+                group_count_y,
+                group_count_z,
+            )
+        };
+    }
+    /**`vkCmdDispatchIndirect`
+
+# Valid usage
+
+The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchIndirect.html). Settled by the wrappers:
+
+- `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 60 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_dispatch_indirect(buffer);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
+    }
+    /**`vkCmdDispatchIndirect` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_dispatch_indirect_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_dispatch_indirect)(self.raw(), buffer.raw(), offset)
+        };
+        self.retain_with(buffer.address(), || buffer.retained());
+    }
+    /**`vkCmdFillBuffer`
+
+# Valid usage
+
+The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdFillBuffer.html). Settled by the wrappers:
+
+- `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdFillBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdFillBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_fill_buffer(
+        &mut self,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        size: vk::DeviceSize,
+        data: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_fill_buffer(dst_buffer);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
+    }
+    /**`vkCmdFillBuffer` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_fill_buffer_unchecked(
+        &mut self,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        size: vk::DeviceSize,
+        data: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_fill_buffer)(self.raw(), dst_buffer.raw(), dst_offset, size, data)
+        };
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+    }
+    /**`vkCmdResetEvent`
+
+# Valid usage
+
+The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent.html). Settled by the wrappers:
+
+- `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdResetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_reset_event(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_reset_event(event, stage_mask);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
+    }
+    /**`vkCmdResetEvent` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_reset_event_unchecked(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_reset_event)(self.raw(), event.raw(), stage_mask)
+        };
+        self.retain_with(event.address(), || event.retained());
+    }
+    /**`vkCmdResetEvent2`
+
+# Valid usage
+
+The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
+
+- `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_reset_event2(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_reset_event2(event, stage_mask);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
+    }
+    /**`vkCmdResetEvent2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_reset_event2_unchecked(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_reset_event2)(self.raw(), event.raw(), stage_mask)
+        };
+        self.retain_with(event.address(), || event.retained());
+    }
+    /**`vkCmdResetQueryPool`
+
+# Valid usage
+
+The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetQueryPool.html). Settled by the wrappers:
+
+- `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdResetQueryPool-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetQueryPool-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_reset_query_pool(
+        &mut self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_reset_query_pool(query_pool);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
+        }
+    }
+    /**`vkCmdResetQueryPool` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_reset_query_pool_unchecked(
+        &mut self,
+        query_pool: &QueryPool,
+        first_query: u32,
+        query_count: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_reset_query_pool)(
+                self.raw(),
+                query_pool.raw(),
+                first_query,
+                query_count,
+            )
+        };
+        self.retain_with(query_pool.address(), || query_pool.retained());
+    }
+    /**`vkCmdResolveImage`
+
+# Valid usage
+
+The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage.html). Settled by the wrappers:
+
+- `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResolveImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdResolveImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResolveImage-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdResolveImage-pRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdResolveImage-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResolveImage-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdResolveImage-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResolveImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_resolve_image<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageResolve],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_resolve_image(
+                    src_image,
+                    src_image_layout,
+                    dst_image,
+                    dst_image_layout,
+                    regions,
+                );
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_resolve_image_unchecked(
+                src_image,
+                src_image_layout,
+                dst_image,
+                dst_image_layout,
+                regions,
+            )
+        }
+    }
+    /**`vkCmdResolveImage` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_resolve_image_unchecked<'a>(
+        &mut self,
+        src_image: &Image,
+        src_image_layout: vk::ImageLayout,
+        dst_image: &Image,
+        dst_image_layout: vk::ImageLayout,
+        regions: &[vk::ImageResolve],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_resolve_image)(
+                self.raw(),
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions.len() as u32,
+                regions.as_ptr().cast(),
+            )
+        };
+        self.retain_with(src_image.address(), || src_image.retained());
+        self.retain_with(dst_image.address(), || dst_image.retained());
+    }
+    /**`vkCmdResolveImage2`
+
+# Valid usage
+
+The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage2.html). Settled by the wrappers:
+
+- `VUID-vkCmdResolveImage2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_resolve_image2<'a>(
+        &mut self,
+        resolve_image_info: &ResolveImageInfo2<'a>,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_resolve_image2(resolve_image_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
+    }
+    /**`vkCmdResolveImage2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_resolve_image2_unchecked<'a>(
+        &mut self,
+        resolve_image_info: &ResolveImageInfo2<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_resolve_image2)(
+                self.raw(),
+                resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
+            )
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(resolve_image_info) {
+                unsafe {
+                    crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
+                };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+    }
+    /**`vkCmdSetEvent`
+
+# Valid usage
+
+The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdSetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetEvent-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetEvent-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_set_event(event, stage_mask);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
+    }
+    /**`vkCmdSetEvent` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_event_unchecked(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_set_event)(self.raw(), event.raw(), stage_mask)
+        };
+        self.retain_with(event.address(), || event.retained());
+    }
+    /**`vkCmdSetEvent2`
+
+# Valid usage
+
+The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_event2<'a>(
+        &mut self,
+        event: &Event,
+        dependency_info: &DependencyInfo<'a>,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_set_event2(event, dependency_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
+    }
+    /**`vkCmdSetEvent2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_set_event2_unchecked<'a>(
+        &mut self,
+        event: &Event,
+        dependency_info: &DependencyInfo<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_3()
+                .cmd_set_event2)(
+                self.raw(),
+                event.raw(),
+                dependency_info as *const DependencyInfo<'a> as *const _,
+            )
+        };
+        self.retain_with(event.address(), || event.retained());
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(dependency_info) {
+                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
+    }
+    /**`vkCmdUpdateBuffer`
+
+# Valid usage
+
+The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdUpdateBuffer.html). Settled by the wrappers:
+
+- `VUID-vkCmdUpdateBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdUpdateBuffer-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdUpdateBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_update_buffer(
+        &mut self,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        data: &[u8],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_update_buffer(dst_buffer, data);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
+    }
+    /**`vkCmdUpdateBuffer` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_update_buffer_unchecked(
+        &mut self,
+        dst_buffer: &Buffer,
+        dst_offset: vk::DeviceSize,
+        data: &[u8],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_update_buffer)(
+                self.raw(),
+                dst_buffer.raw(),
+                dst_offset,
+                data.len() as vk::DeviceSize,
+                data.as_ptr().cast(),
+            )
+        };
+        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+    }
+}
+impl<'c, S: Inside> Recorder<'c, S> {
+    /**`vkCmdClearAttachments`
+
+# Valid usage
+
+The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearAttachments.html). Settled by the wrappers:
+
+- `VUID-vkCmdClearAttachments-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdClearAttachments-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdClearAttachments-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdClearAttachments-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_clear_attachments<'a>(
+        &mut self,
+        attachments: &[vk::ClearAttachment],
+        rects: &[vk::ClearRect],
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_clear_attachments(attachments, rects);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
+    }
+    /**`vkCmdClearAttachments` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_clear_attachments_unchecked<'a>(
+        &mut self,
+        attachments: &[vk::ClearAttachment],
+        rects: &[vk::ClearRect],
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_clear_attachments)(
+                self.raw(),
+                attachments.len() as u32,
+                attachments.as_ptr().cast(),
+                rects.len() as u32,
+                rects.as_ptr().cast(),
+            )
+        };
+    }
+    /**`vkCmdDraw`
+
+# Valid usage
+
+The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDraw.html). Settled by the wrappers:
+
+- `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 192 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_draw(
+        &mut self,
+        vertex_count: u32,
+        instance_count: u32,
+        first_vertex: u32,
+        first_instance: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_draw();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_unchecked(
+                vertex_count,
+                instance_count,
+                first_vertex,
+                first_instance,
+            )
+        }
+    }
+    /**`vkCmdDraw` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_unchecked(
+        &mut self,
+        vertex_count: u32,
+        instance_count: u32,
+        first_vertex: u32,
+        first_instance: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw)(
+                self.raw(),
+                vertex_count,
+                instance_count,
+                first_vertex,
+                first_instance,
+            )
+        };
+    }
+    /**`vkCmdDrawIndexed`
+
+# Valid usage
+
+The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
+
+- `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_draw_indexed(
+        &mut self,
+        index_count: u32,
+        instance_count: u32,
+        first_index: u32,
+        vertex_offset: i32,
+        first_instance: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_draw_indexed();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indexed_unchecked(
+                index_count,
+                instance_count,
+                first_index,
+                vertex_offset,
+                first_instance,
+            )
+        }
+    }
+    /**`vkCmdDrawIndexed` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indexed_unchecked(
+        &mut self,
+        index_count: u32,
+        instance_count: u32,
+        first_index: u32,
+        vertex_offset: i32,
+        first_instance: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw_indexed)(
+                self.raw(),
+                index_count,
+                instance_count,
+                first_index,
+                vertex_offset,
+                first_instance,
+            )
+        };
+    }
+    /**`vkCmdDrawIndexedIndirect`
+
+# Valid usage
+
+The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
+
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 200 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_draw_indexed_indirect(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        draw_count: u32,
+        stride: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_draw_indexed_indirect(buffer);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
+        }
+    }
+    /**`vkCmdDrawIndexedIndirect` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indexed_indirect_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        draw_count: u32,
+        stride: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw_indexed_indirect)(
+                self.raw(),
+                buffer.raw(),
+                offset,
+                draw_count,
+                stride,
+            )
+        };
+        self.retain_with(buffer.address(), || buffer.retained());
+    }
+    /**`vkCmdDrawIndexedIndirectCount`
+
+# Valid usage
+
+The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirectCount.html). Settled by the wrappers:
+
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 205 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_draw_indexed_indirect_count(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
+        max_draw_count: u32,
+        stride: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_draw_indexed_indirect_count(buffer, count_buffer);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indexed_indirect_count_unchecked(
+                buffer,
+                offset,
+                count_buffer,
+                count_buffer_offset,
+                max_draw_count,
+                stride,
+            )
+        }
+    }
+    /**`vkCmdDrawIndexedIndirectCount` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
+        max_draw_count: u32,
+        stride: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_draw_indexed_indirect_count)(
+                self.raw(),
+                buffer.raw(),
+                offset,
+                count_buffer.raw(),
+                count_buffer_offset,
+                max_draw_count,
+                stride,
+            )
+        };
+        self.retain_with(buffer.address(), || buffer.retained());
+        self.retain_with(count_buffer.address(), || count_buffer.retained());
+    }
+    /**`vkCmdDrawIndirect`
+
+# Valid usage
+
+The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
+
+- `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 198 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_draw_indirect(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        draw_count: u32,
+        stride: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_draw_indirect(buffer);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
+    }
+    /**`vkCmdDrawIndirect` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indirect_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        draw_count: u32,
+        stride: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_0()
+                .cmd_draw_indirect)(self.raw(), buffer.raw(), offset, draw_count, stride)
+        };
+        self.retain_with(buffer.address(), || buffer.retained());
+    }
+    /**`vkCmdDrawIndirectCount`
+
+# Valid usage
+
+The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirectCount.html). Settled by the wrappers:
+
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 203 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_draw_indirect_count(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
+        max_draw_count: u32,
+        stride: u32,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_draw_indirect_count(buffer, count_buffer);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        unsafe {
+            self.cmd_draw_indirect_count_unchecked(
+                buffer,
+                offset,
+                count_buffer,
+                count_buffer_offset,
+                max_draw_count,
+                stride,
+            )
+        }
+    }
+    /**`vkCmdDrawIndirectCount` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_draw_indirect_count_unchecked(
+        &mut self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+        count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
+        max_draw_count: u32,
+        stride: u32,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_draw_indirect_count)(
+                self.raw(),
+                buffer.raw(),
+                offset,
+                count_buffer.raw(),
+                count_buffer_offset,
+                max_draw_count,
+                stride,
+            )
+        };
+        self.retain_with(buffer.address(), || buffer.retained());
+        self.retain_with(count_buffer.address(), || count_buffer.retained());
+    }
+}
+impl<'c> Recorder<'c, InRenderPass> {
+    /**`vkCmdEndRenderPass`
+
+# Valid usage
+
+The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass.html). Settled by the wrappers:
+
+- `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_end_render_pass();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        unsafe { self.cmd_end_render_pass_unchecked() }
+    }
+    /**`vkCmdEndRenderPass` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
+        unsafe { (self.device().fns().fp_v1_0().cmd_end_render_pass)(self.raw()) };
+        self.into_state()
+    }
+    /**`vkCmdEndRenderPass2`
+
+# Valid usage
+
+The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass2.html). Settled by the wrappers:
+
+- `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_end_render_pass2<'a>(
+        mut self,
+        subpass_end_info: &SubpassEndInfo<'a>,
+    ) -> Recorder<'c, Outside> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_end_render_pass2(subpass_end_info);
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
+    }
+    /**`vkCmdEndRenderPass2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run time: `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass2-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_render_pass2_unchecked<'a>(
+        mut self,
+        subpass_end_info: &SubpassEndInfo<'a>,
+    ) -> Recorder<'c, Outside> {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_end_render_pass2)(
+                self.raw(),
+                subpass_end_info as *const SubpassEndInfo<'a> as *const _,
+            )
+        };
+        self.into_state()
+    }
+    /**`vkCmdNextSubpass`
+
+# Valid usage
+
+The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass.html). Settled by the wrappers:
+
+- `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdNextSubpass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdNextSubpass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdNextSubpass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_next_subpass(contents);
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return;
+            }
+        }
+        unsafe { self.cmd_next_subpass_unchecked(contents) }
+    }
+    /**`vkCmdNextSubpass` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
+        unsafe {
+            (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
+        };
+    }
+    /**`vkCmdNextSubpass2`
+
+# Valid usage
+
+The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass2.html). Settled by the wrappers:
+
+- `VUID-vkCmdNextSubpass2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdNextSubpass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdNextSubpass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdNextSubpass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdNextSubpass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_next_subpass2<'a>(
+        &mut self,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+        subpass_end_info: &SubpassEndInfo<'a>,
+    ) {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_cmd_next_subpass2(subpass_begin_info, subpass_end_info);
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return;
+            }
+        }
+        unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
+    }
+    /**`vkCmdNextSubpass2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time: `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass2-bufferlevel`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_next_subpass2_unchecked<'a>(
+        &mut self,
+        subpass_begin_info: &SubpassBeginInfo<'a>,
+        subpass_end_info: &SubpassEndInfo<'a>,
+    ) {
+        unsafe {
+            (self
+                .device()
+                .fns()
+                .fp_v1_2()
+                .cmd_next_subpass2)(
+                self.raw(),
+                subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
+                subpass_end_info as *const SubpassEndInfo<'a> as *const _,
+            )
+        };
+    }
+}
+impl<'c> Recorder<'c, InRendering> {
+    /**`vkCmdEndRendering`
+
+# Valid usage
+
+The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
+
+- `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_cmd_end_rendering();
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        unsafe { self.cmd_end_rendering_unchecked() }
+    }
+    /**`vkCmdEndRendering` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
+        unsafe { (self.device().fns().fp_v1_3().cmd_end_rendering)(self.raw()) };
+        self.into_state()
     }
 }
 #[cfg(feature = "ext_debug_utils")]
@@ -5972,203 +9139,72 @@ The caller upholds the rules that [`Self::create_debug_utils_messenger_ext`] che
         }
         Ok(DebugUtilsMessengerEXT::from_raw(out, self, None, true))
     }
-}
-impl Device {
-    /**`vkCreateDescriptorPool`
+    /**`vkSubmitDebugUtilsMessageEXT`
 
 # Valid usage
 
-The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
+The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSubmitDebugUtilsMessageEXT.html). Settled by the wrappers:
 
-- `VUID-vkCreateDescriptorPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_descriptor_pool<'a>(
+    pub fn submit_debug_utils_message_ext<'a>(
         &self,
-        create_info: &DescriptorPoolCreateInfo<'a>,
-    ) -> Result<DescriptorPool> {
+        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
+        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r = self.validate_create_descriptor_pool(create_info);
+            let r = self
+                .validate_submit_debug_utils_message_ext(
+                    message_severity,
+                    message_types,
+                    callback_data,
+                );
             r?;
         }
-        unsafe { self.create_descriptor_pool_unchecked(create_info) }
+        unsafe {
+            self.submit_debug_utils_message_ext_unchecked(
+                message_severity,
+                message_types,
+                callback_data,
+            )
+        }
     }
-    /**`vkCreateDescriptorPool` without its dynamic checks.
+    /**`vkSubmitDebugUtilsMessageEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] checks at run time: `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn create_descriptor_pool_unchecked<'a>(
+    pub unsafe fn submit_debug_utils_message_ext_unchecked<'a>(
         &self,
-        create_info: &DescriptorPoolCreateInfo<'a>,
-    ) -> Result<DescriptorPool> {
-        let mut out = vk::DescriptorPool::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_descriptor_pool)(
-                self.raw(),
-                create_info as *const DescriptorPoolCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(DescriptorPool::from_raw(out, self, None, true).with_flags(create_info.flags))
-    }
-}
-impl Device {
-    /**`vkCreateDescriptorSetLayout`
-
-# Valid usage
-
-The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
-
-- `VUID-vkCreateDescriptorSetLayout-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_descriptor_set_layout<'a>(
-        &self,
-        create_info: &DescriptorSetLayoutCreateInfo<'a>,
-    ) -> Result<DescriptorSetLayout> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_descriptor_set_layout(create_info);
-            r?;
-        }
-        unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
-    }
-    /**`vkCreateDescriptorSetLayout` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_descriptor_set_layout_unchecked<'a>(
-        &self,
-        create_info: &DescriptorSetLayoutCreateInfo<'a>,
-    ) -> Result<DescriptorSetLayout> {
-        let mut out = vk::DescriptorSetLayout::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_descriptor_set_layout)(
-                self.raw(),
-                create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(
-            DescriptorSetLayout::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::descriptor_set_layout_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
-    }
-}
-impl Device {
-    /**`vkCreateDescriptorUpdateTemplate`
-
-# Valid usage
-
-The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html). Settled by the wrappers:
-
-- `VUID-vkCreateDescriptorUpdateTemplate-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_descriptor_update_template<'a>(
-        &self,
-        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
-    ) -> Result<DescriptorUpdateTemplate> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_descriptor_update_template(create_info);
-            r?;
-        }
-        unsafe { self.create_descriptor_update_template_unchecked(create_info) }
-    }
-    /**`vkCreateDescriptorUpdateTemplate` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_descriptor_update_template`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_descriptor_update_template_unchecked<'a>(
-        &self,
-        create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
-    ) -> Result<DescriptorUpdateTemplate> {
-        let mut out = vk::DescriptorUpdateTemplate::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .create_descriptor_update_template)(
-                self.raw(),
-                create_info as *const DescriptorUpdateTemplateCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
+        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
+        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
+    ) -> Result<()> {
+        let ext_table = self
+            .ext()
+            .ext_debug_utils
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
         Ok({
-            let template: DescriptorUpdateTemplate = DescriptorUpdateTemplate::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::descriptor_update_template_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            );
-            let raw = create_info.as_raw();
-            template
-                .with_entries(unsafe {
-                    crate::retention::raw_slice(
-                        raw.p_descriptor_update_entries,
-                        raw.descriptor_update_entry_count,
-                    )
-                })
+            unsafe {
+                (ext_table
+                    .submit_debug_utils_message_ext)(
+                    self.raw(),
+                    message_severity,
+                    message_types,
+                    callback_data as *const DebugUtilsMessengerCallbackDataEXT<'a>
+                        as *const _,
+                )
+            };
         })
     }
 }
@@ -6231,401 +9267,864 @@ The caller upholds the rules that [`Self::create_device`] checks at run time (th
             ),
         )
     }
-}
-impl Device {
-    /**`vkCreateEvent`
+    /**`vkEnumerateDeviceExtensionProperties`
 
 # Valid usage
 
-The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateEvent.html). Settled by the wrappers:
+The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceExtensionProperties.html). Settled by the wrappers:
 
-- `VUID-vkCreateEvent-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateEvent-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkEnumerateDeviceExtensionProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
+- `VUID-vkEnumerateDeviceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateDeviceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_event(create_info);
-            r?;
-        }
-        unsafe { self.create_event_unchecked(create_info) }
-    }
-    /**`vkCreateEvent` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_event`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_event_unchecked<'a>(
+    pub fn enumerate_device_extension_properties(
         &self,
-        create_info: &EventCreateInfo<'a>,
-    ) -> Result<Event> {
-        let mut out = vk::Event::null();
-        let r = unsafe {
+        layer_name: Option<&core::ffi::CStr>,
+    ) -> Result<Vec<vk::ExtensionProperties>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::ExtensionProperties|
             (self
+                .parent()
                 .fns()
                 .fp_v1_0()
-                .create_event)(
+                .enumerate_device_extension_properties)(
                 self.raw(),
-                create_info as *const EventCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
+                layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
+                count,
+                items_ptr.cast(),
+            ))
         }
-        Ok(Event::from_raw(out, self, None, true))
     }
-}
-impl Device {
-    /**`vkCreateFence`
+    /**`vkEnumerateDeviceLayerProperties`
 
 # Valid usage
 
-The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFence.html). Settled by the wrappers:
+The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceLayerProperties.html). Settled by the wrappers:
 
-- `VUID-vkCreateFence-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_fence(create_info);
-            r?;
-        }
-        unsafe { self.create_fence_unchecked(create_info) }
-    }
-    /**`vkCreateFence` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_fence`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_fence_unchecked<'a>(
-        &self,
-        create_info: &FenceCreateInfo<'a>,
-    ) -> Result<Fence> {
-        let mut out = vk::Fence::null();
-        let r = unsafe {
+    pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::LayerProperties|
             (self
+                .parent()
                 .fns()
                 .fp_v1_0()
-                .create_fence)(
-                self.raw(),
-                create_info as *const FenceCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
+                .enumerate_device_layer_properties)(self.raw(), count, items_ptr.cast()))
         }
-        Ok(Fence::from_raw(out, self, None, true))
     }
-}
-impl Device {
-    /**`vkCreateFramebuffer`
+    /**`vkGetPhysicalDeviceExternalBufferProperties`
 
 # Valid usage
 
-The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
+The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalBufferProperties.html). Settled by the wrappers:
 
-- `VUID-vkCreateFramebuffer-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateFramebuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn create_framebuffer<'a>(
+    pub fn get_physical_device_external_buffer_properties<'a>(
         &self,
-        create_info: &FramebufferCreateInfo<'a>,
-    ) -> Result<Framebuffer> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_framebuffer(create_info);
-            r?;
-        }
-        unsafe { self.create_framebuffer_unchecked(create_info) }
-    }
-    /**`vkCreateFramebuffer` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_framebuffer`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_framebuffer_unchecked<'a>(
-        &self,
-        create_info: &FramebufferCreateInfo<'a>,
-    ) -> Result<Framebuffer> {
-        let mut out = vk::Framebuffer::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_framebuffer)(
-                self.raw(),
-                create_info as *const FramebufferCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(
-            Framebuffer::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::framebuffer_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
-    }
-}
-impl Device {
-    /**`vkCreateGraphicsPipelines`
-
-# Valid usage
-
-The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html). Settled by the wrappers:
-
-- `VUID-vkCreateGraphicsPipelines-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateGraphicsPipelines-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_graphics_pipelines<'a>(
-        &self,
-        pipeline_cache: Option<&PipelineCache>,
-        create_infos: &[GraphicsPipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
+        external_buffer_properties: &mut ExternalBufferProperties<'a>,
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
-                .validate_create_graphics_pipelines(pipeline_cache, create_infos);
+                .validate_get_physical_device_external_buffer_properties(
+                    external_buffer_info,
+                );
             r?;
         }
-        unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
+        Ok(unsafe {
+            self.get_physical_device_external_buffer_properties_unchecked(
+                external_buffer_info,
+                external_buffer_properties,
+            )
+        })
     }
-    /**`vkCreateGraphicsPipelines` without its dynamic checks.
+    /**`vkGetPhysicalDeviceExternalBufferProperties` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_external_buffer_properties`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn create_graphics_pipelines_unchecked<'a>(
+    pub unsafe fn get_physical_device_external_buffer_properties_unchecked<'a>(
         &self,
-        pipeline_cache: Option<&PipelineCache>,
-        create_infos: &[GraphicsPipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
-        let mut out = vec![vk::Pipeline::null(); create_infos.len()];
-        let r = unsafe {
+        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
+        external_buffer_properties: &mut ExternalBufferProperties<'a>,
+    ) {
+        unsafe {
             (self
+                .parent()
                 .fns()
-                .fp_v1_0()
-                .create_graphics_pipelines)(
+                .fp_v1_1()
+                .get_physical_device_external_buffer_properties)(
                 self.raw(),
-                pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
-                create_infos.len() as u32,
-                create_infos.as_ptr().cast(),
-                core::ptr::null(),
-                out.as_mut_ptr(),
+                external_buffer_info as *const PhysicalDeviceExternalBufferInfo<'a>
+                    as *const _,
+                external_buffer_properties as *mut ExternalBufferProperties<'a> as *mut _,
             )
         };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok((
-            out
-                .into_iter()
-                .zip(create_infos.iter())
-                .map(|(raw, info)| Pipeline::from_raw(
-                    raw,
-                    self,
-                    {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        unsafe {
-                            crate::reach::graphics_pipeline_create_info(
-                                info.as_raw(),
-                                live,
-                                &mut kept,
-                            )
-                        };
-                        (!kept.is_empty())
-                            .then(|| {
-                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
-                            })
-                    },
-                    true,
-                ))
-                .collect(),
-            r,
-        ))
     }
-}
-impl Device {
-    /**`vkCreateImage`
+    /**`vkGetPhysicalDeviceExternalFenceProperties`
 
 # Valid usage
 
-The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImage.html). Settled by the wrappers:
+The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalFenceProperties.html). Settled by the wrappers:
 
-- `VUID-vkCreateImage-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateImage-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
+    pub fn get_physical_device_external_fence_properties<'a>(
+        &self,
+        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
+        external_fence_properties: &mut ExternalFenceProperties<'a>,
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r = self.validate_create_image(create_info);
+            let r = self
+                .validate_get_physical_device_external_fence_properties(
+                    external_fence_info,
+                );
             r?;
         }
-        unsafe { self.create_image_unchecked(create_info) }
+        Ok(unsafe {
+            self.get_physical_device_external_fence_properties_unchecked(
+                external_fence_info,
+                external_fence_properties,
+            )
+        })
     }
-    /**`vkCreateImage` without its dynamic checks.
+    /**`vkGetPhysicalDeviceExternalFenceProperties` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_image`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_physical_device_external_fence_properties`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn create_image_unchecked<'a>(
+    pub unsafe fn get_physical_device_external_fence_properties_unchecked<'a>(
         &self,
-        create_info: &ImageCreateInfo<'a>,
-    ) -> Result<Image> {
-        let mut out = vk::Image::null();
-        let r = unsafe {
+        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
+        external_fence_properties: &mut ExternalFenceProperties<'a>,
+    ) {
+        unsafe {
             (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_external_fence_properties)(
+                self.raw(),
+                external_fence_info as *const PhysicalDeviceExternalFenceInfo<'a>
+                    as *const _,
+                external_fence_properties as *mut ExternalFenceProperties<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetPhysicalDeviceExternalSemaphoreProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalSemaphoreProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_physical_device_external_semaphore_properties<'a>(
+        &self,
+        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
+        external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_physical_device_external_semaphore_properties(
+                    external_semaphore_info,
+                );
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_external_semaphore_properties_unchecked(
+                external_semaphore_info,
+                external_semaphore_properties,
+            )
+        })
+    }
+    /**`vkGetPhysicalDeviceExternalSemaphoreProperties` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_external_semaphore_properties`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_external_semaphore_properties_unchecked<'a>(
+        &self,
+        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
+        external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
+    ) {
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_external_semaphore_properties)(
+                self.raw(),
+                external_semaphore_info as *const PhysicalDeviceExternalSemaphoreInfo<'a>
+                    as *const _,
+                external_semaphore_properties as *mut ExternalSemaphoreProperties<'a>
+                    as *mut _,
+            )
+        };
+    }
+    /**`vkGetPhysicalDeviceFeatures`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
+        let mut out: vk::PhysicalDeviceFeatures = Default::default();
+        unsafe {
+            (self
+                .parent()
                 .fns()
                 .fp_v1_0()
-                .create_image)(
+                .get_physical_device_features)(self.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetPhysicalDeviceFeatures2`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_physical_device_features2<'a>(
+        &self,
+        features: &mut PhysicalDeviceFeatures2<'a>,
+    ) {
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_features2)(
                 self.raw(),
-                create_info as *const ImageCreateInfo<'a> as *const _,
-                core::ptr::null(),
+                features as *mut PhysicalDeviceFeatures2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetPhysicalDeviceFormatProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_format_properties(
+        &self,
+        format: vk::Format,
+    ) -> Result<vk::FormatProperties> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_physical_device_format_properties(format);
+            r?;
+        }
+        Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
+    }
+    /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_format_properties_unchecked(
+        &self,
+        format: vk::Format,
+    ) -> vk::FormatProperties {
+        let mut out: vk::FormatProperties = Default::default();
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .get_physical_device_format_properties)(self.raw(), format, &mut out)
+        };
+        out
+    }
+    /**`vkGetPhysicalDeviceFormatProperties2`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties2.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_physical_device_format_properties2<'a>(
+        &self,
+        format: vk::Format,
+        format_properties: &mut FormatProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_physical_device_format_properties2(
+                    format,
+                    format_properties,
+                );
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_format_properties2_unchecked(
+                format,
+                format_properties,
+            )
+        })
+    }
+    /**`vkGetPhysicalDeviceFormatProperties2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_format_properties2_unchecked<'a>(
+        &self,
+        format: vk::Format,
+        format_properties: &mut FormatProperties2<'a>,
+    ) {
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_format_properties2)(
+                self.raw(),
+                format,
+                format_properties as *mut FormatProperties2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetPhysicalDeviceImageFormatProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_physical_device_image_format_properties(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        tiling: vk::ImageTiling,
+        usage: vk::ImageUsageFlags,
+        flags: vk::ImageCreateFlags,
+    ) -> Result<vk::ImageFormatProperties> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_physical_device_image_format_properties(
+                    format,
+                    ty,
+                    tiling,
+                    usage,
+                    flags,
+                );
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_image_format_properties_unchecked(
+                format,
+                ty,
+                tiling,
+                usage,
+                flags,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceImageFormatProperties` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_image_format_properties_unchecked(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        tiling: vk::ImageTiling,
+        usage: vk::ImageUsageFlags,
+        flags: vk::ImageCreateFlags,
+    ) -> Result<vk::ImageFormatProperties> {
+        let mut out: vk::ImageFormatProperties = Default::default();
+        let r = unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .get_physical_device_image_format_properties)(
+                self.raw(),
+                format,
+                ty,
+                tiling,
+                usage,
+                flags,
                 &mut out,
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(
-            Image::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::image_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
+        Ok(out)
     }
-}
-impl Device {
-    /**`vkCreateImageView`
+    /**`vkGetPhysicalDeviceImageFormatProperties2`
 
 # Valid usage
 
-The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
+The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html). Settled by the wrappers:
 
-- `VUID-vkCreateImageView-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_image_view<'a>(
+    pub fn get_physical_device_image_format_properties2<'a>(
         &self,
-        create_info: &ImageViewCreateInfo<'a>,
-    ) -> Result<ImageView> {
+        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
+        image_format_properties: &mut ImageFormatProperties2<'a>,
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
-            let r = self.validate_create_image_view(create_info);
+            let r = self
+                .validate_get_physical_device_image_format_properties2(
+                    image_format_info,
+                    image_format_properties,
+                );
             r?;
         }
-        unsafe { self.create_image_view_unchecked(create_info) }
+        unsafe {
+            self.get_physical_device_image_format_properties2_unchecked(
+                image_format_info,
+                image_format_properties,
+            )
+        }
     }
-    /**`vkCreateImageView` without its dynamic checks.
+    /**`vkGetPhysicalDeviceImageFormatProperties2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_image_view`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_physical_device_image_format_properties2`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn create_image_view_unchecked<'a>(
+    pub unsafe fn get_physical_device_image_format_properties2_unchecked<'a>(
         &self,
-        create_info: &ImageViewCreateInfo<'a>,
-    ) -> Result<ImageView> {
-        let mut out = vk::ImageView::null();
+        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
+        image_format_properties: &mut ImageFormatProperties2<'a>,
+    ) -> Result<()> {
         let r = unsafe {
             (self
+                .parent()
                 .fns()
-                .fp_v1_0()
-                .create_image_view)(
+                .fp_v1_1()
+                .get_physical_device_image_format_properties2)(
                 self.raw(),
-                create_info as *const ImageViewCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
+                image_format_info as *const PhysicalDeviceImageFormatInfo2<'a>
+                    as *const _,
+                image_format_properties as *mut ImageFormatProperties2<'a> as *mut _,
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(
-            ImageView::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::image_view_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
+        Ok(())
+    }
+    /**`vkGetPhysicalDeviceMemoryProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_memory_properties(
+        &self,
+    ) -> vk::PhysicalDeviceMemoryProperties {
+        let mut out: vk::PhysicalDeviceMemoryProperties = Default::default();
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .get_physical_device_memory_properties)(self.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetPhysicalDeviceMemoryProperties2`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_physical_device_memory_properties2<'a>(
+        &self,
+        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_physical_device_memory_properties2(memory_properties);
+            r?;
+        }
+        Ok(unsafe {
+            self.get_physical_device_memory_properties2_unchecked(memory_properties)
+        })
+    }
+    /**`vkGetPhysicalDeviceMemoryProperties2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_memory_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_memory_properties2_unchecked<'a>(
+        &self,
+        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
+    ) {
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_memory_properties2)(
+                self.raw(),
+                memory_properties as *mut PhysicalDeviceMemoryProperties2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetPhysicalDeviceProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
+        let mut out: vk::PhysicalDeviceProperties = Default::default();
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .get_physical_device_properties)(self.raw(), &mut out)
+        };
+        out
+    }
+    /**`vkGetPhysicalDeviceProperties2`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties2.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn get_physical_device_properties2<'a>(
+        &self,
+        properties: &mut PhysicalDeviceProperties2<'a>,
+    ) -> Result<()> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_get_physical_device_properties2(properties);
+            r?;
+        }
+        Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
+    }
+    /**`vkGetPhysicalDeviceProperties2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_properties2_unchecked<'a>(
+        &self,
+        properties: &mut PhysicalDeviceProperties2<'a>,
+    ) {
+        unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_properties2)(
+                self.raw(),
+                properties as *mut PhysicalDeviceProperties2<'a> as *mut _,
+            )
+        };
+    }
+    /**`vkGetPhysicalDeviceQueueFamilyProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_queue_family_properties(
+        &self,
+    ) -> Result<Vec<vk::QueueFamilyProperties>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::QueueFamilyProperties|
+            {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_0()
+                    .get_physical_device_queue_family_properties)(
+                    self.raw(),
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetPhysicalDeviceQueueFamilyProperties2`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties2.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_queue_family_properties2(
+        &self,
+    ) -> Result<Vec<vk::QueueFamilyProperties2<'static>>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::QueueFamilyProperties2<'static>|
+            {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_1()
+                    .get_physical_device_queue_family_properties2)(
+                    self.raw(),
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_physical_device_sparse_image_format_properties(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        samples: vk::SampleCountFlags,
+        usage: vk::ImageUsageFlags,
+        tiling: vk::ImageTiling,
+    ) -> Result<Vec<vk::SparseImageFormatProperties>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_physical_device_sparse_image_format_properties(
+                    format,
+                    ty,
+                    samples,
+                    usage,
+                    tiling,
+                );
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_sparse_image_format_properties_unchecked(
+                format,
+                ty,
+                samples,
+                usage,
+                tiling,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn get_physical_device_sparse_image_format_properties_unchecked(
+        &self,
+        format: vk::Format,
+        ty: vk::ImageType,
+        samples: vk::SampleCountFlags,
+        usage: vk::ImageUsageFlags,
+        tiling: vk::ImageTiling,
+    ) -> Result<Vec<vk::SparseImageFormatProperties>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::SparseImageFormatProperties|
+            {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_0()
+                    .get_physical_device_sparse_image_format_properties)(
+                    self.raw(),
+                    format,
+                    ty,
+                    samples,
+                    usage,
+                    tiling,
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties2`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_sparse_image_format_properties2<'a>(
+        &self,
+        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
+    ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self
+                .validate_get_physical_device_sparse_image_format_properties2(
+                    format_info,
+                );
+            r?;
+        }
+        unsafe {
+            self.get_physical_device_sparse_image_format_properties2_unchecked(
+                format_info,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceSparseImageFormatProperties2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_physical_device_sparse_image_format_properties2_unchecked<'a>(
+        &self,
+        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
+    ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::SparseImageFormatProperties2<'static>|
+            {
+                (self
+                    .parent()
+                    .fns()
+                    .fp_v1_1()
+                    .get_physical_device_sparse_image_format_properties2)(
+                    self.raw(),
+                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a>
+                        as *const _,
+                    count,
+                    items_ptr.cast(),
+                );
+                vk::Result::SUCCESS
+            })
+        }
+    }
+    /**`vkGetPhysicalDeviceToolProperties`
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceToolProperties.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn get_physical_device_tool_properties(
+        &self,
+    ) -> Result<Vec<vk::PhysicalDeviceToolProperties<'static>>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::PhysicalDeviceToolProperties<'static>|
+            (self
+                .parent()
+                .fns()
+                .fp_v1_3()
+                .get_physical_device_tool_properties)(
+                self.raw(),
+                count,
+                items_ptr.cast(),
+            ))
+        }
     }
 }
 impl Entry {
@@ -6685,6 +10184,72 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time (
             ),
         )
     }
+    /**`vkEnumerateInstanceExtensionProperties`
+
+# Valid usage
+
+The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceExtensionProperties.html). Settled by the wrappers:
+
+- `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
+- `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateInstanceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn enumerate_instance_extension_properties(
+        &self,
+        layer_name: Option<&core::ffi::CStr>,
+    ) -> Result<Vec<vk::ExtensionProperties>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::ExtensionProperties|
+            (self
+                .fns()
+                .fp_v1_0()
+                .enumerate_instance_extension_properties)(
+                layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
+                count,
+                items_ptr.cast(),
+            ))
+        }
+    }
+    /**`vkEnumerateInstanceLayerProperties`
+
+# Valid usage
+
+The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceLayerProperties.html). Settled by the wrappers:
+
+- `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn enumerate_instance_layer_properties(
+        &self,
+    ) -> Result<Vec<vk::LayerProperties>> {
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::LayerProperties|
+            (self
+                .fns()
+                .fp_v1_0()
+                .enumerate_instance_layer_properties)(count, items_ptr.cast()))
+        }
+    }
+    /**`vkEnumerateInstanceVersion`
+
+# Valid usage
+
+The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceVersion.html). Settled by the wrappers:
+
+- `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
+    #[inline]
+    pub fn enumerate_instance_version(&self) -> Result<u32> {
+        let mut out: u32 = Default::default();
+        let r = unsafe { (self.fns().fp_v1_1().enumerate_instance_version)(&mut out) };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(out)
+    }
 }
 #[cfg(feature = "ext_metal_surface")]
 impl Instance {
@@ -6739,657 +10304,6 @@ The caller upholds the rules that [`Self::create_metal_surface_ext`] checks at r
             return Err(Error::Vk(r));
         }
         Ok(SurfaceKHR::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreatePipelineCache`
-
-# Valid usage
-
-The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html). Settled by the wrappers:
-
-- `VUID-vkCreatePipelineCache-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_pipeline_cache<'a>(
-        &self,
-        create_info: &PipelineCacheCreateInfo<'a>,
-    ) -> Result<PipelineCache> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_pipeline_cache(create_info);
-            r?;
-        }
-        unsafe { self.create_pipeline_cache_unchecked(create_info) }
-    }
-    /**`vkCreatePipelineCache` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_pipeline_cache_unchecked<'a>(
-        &self,
-        create_info: &PipelineCacheCreateInfo<'a>,
-    ) -> Result<PipelineCache> {
-        let mut out = vk::PipelineCache::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_pipeline_cache)(
-                self.raw(),
-                create_info as *const PipelineCacheCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(PipelineCache::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreatePipelineLayout`
-
-# Valid usage
-
-The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
-
-- `VUID-vkCreatePipelineLayout-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_pipeline_layout<'a>(
-        &self,
-        create_info: &PipelineLayoutCreateInfo<'a>,
-    ) -> Result<PipelineLayout> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_pipeline_layout(create_info);
-            r?;
-        }
-        unsafe { self.create_pipeline_layout_unchecked(create_info) }
-    }
-    /**`vkCreatePipelineLayout` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_pipeline_layout_unchecked<'a>(
-        &self,
-        create_info: &PipelineLayoutCreateInfo<'a>,
-    ) -> Result<PipelineLayout> {
-        let mut out = vk::PipelineLayout::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_pipeline_layout)(
-                self.raw(),
-                create_info as *const PipelineLayoutCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(
-            PipelineLayout::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::pipeline_layout_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
-    }
-}
-impl Device {
-    /**`vkCreatePrivateDataSlot`
-
-# Valid usage
-
-The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
-
-- `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_private_data_slot<'a>(
-        &self,
-        create_info: &PrivateDataSlotCreateInfo<'a>,
-    ) -> Result<PrivateDataSlot> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_private_data_slot(create_info);
-            r?;
-        }
-        unsafe { self.create_private_data_slot_unchecked(create_info) }
-    }
-    /**`vkCreatePrivateDataSlot` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_private_data_slot`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_private_data_slot_unchecked<'a>(
-        &self,
-        create_info: &PrivateDataSlotCreateInfo<'a>,
-    ) -> Result<PrivateDataSlot> {
-        let mut out = vk::PrivateDataSlot::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .create_private_data_slot)(
-                self.raw(),
-                create_info as *const PrivateDataSlotCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(PrivateDataSlot::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreateQueryPool`
-
-# Valid usage
-
-The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateQueryPool.html). Settled by the wrappers:
-
-- `VUID-vkCreateQueryPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_query_pool<'a>(
-        &self,
-        create_info: &QueryPoolCreateInfo<'a>,
-    ) -> Result<QueryPool> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_query_pool(create_info);
-            r?;
-        }
-        unsafe { self.create_query_pool_unchecked(create_info) }
-    }
-    /**`vkCreateQueryPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_query_pool`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_query_pool_unchecked<'a>(
-        &self,
-        create_info: &QueryPoolCreateInfo<'a>,
-    ) -> Result<QueryPool> {
-        let mut out = vk::QueryPool::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_query_pool)(
-                self.raw(),
-                create_info as *const QueryPoolCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(QueryPool::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreateRenderPass`
-
-# Valid usage
-
-The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html). Settled by the wrappers:
-
-- `VUID-vkCreateRenderPass-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_render_pass<'a>(
-        &self,
-        create_info: &RenderPassCreateInfo<'a>,
-    ) -> Result<RenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_render_pass(create_info);
-            r?;
-        }
-        unsafe { self.create_render_pass_unchecked(create_info) }
-    }
-    /**`vkCreateRenderPass` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_render_pass`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_render_pass_unchecked<'a>(
-        &self,
-        create_info: &RenderPassCreateInfo<'a>,
-    ) -> Result<RenderPass> {
-        let mut out = vk::RenderPass::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_render_pass)(
-                self.raw(),
-                create_info as *const RenderPassCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(RenderPass::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreateRenderPass2`
-
-# Valid usage
-
-The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass2.html). Settled by the wrappers:
-
-- `VUID-vkCreateRenderPass2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_render_pass2<'a>(
-        &self,
-        create_info: &RenderPassCreateInfo2<'a>,
-    ) -> Result<RenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_render_pass2(create_info);
-            r?;
-        }
-        unsafe { self.create_render_pass2_unchecked(create_info) }
-    }
-    /**`vkCreateRenderPass2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_render_pass2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_render_pass2_unchecked<'a>(
-        &self,
-        create_info: &RenderPassCreateInfo2<'a>,
-    ) -> Result<RenderPass> {
-        let mut out = vk::RenderPass::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .create_render_pass2)(
-                self.raw(),
-                create_info as *const RenderPassCreateInfo2<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(RenderPass::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreateSampler`
-
-# Valid usage
-
-The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html). Settled by the wrappers:
-
-- `VUID-vkCreateSampler-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSampler-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_sampler<'a>(
-        &self,
-        create_info: &SamplerCreateInfo<'a>,
-    ) -> Result<Sampler> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_sampler(create_info);
-            r?;
-        }
-        unsafe { self.create_sampler_unchecked(create_info) }
-    }
-    /**`vkCreateSampler` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_sampler`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_sampler_unchecked<'a>(
-        &self,
-        create_info: &SamplerCreateInfo<'a>,
-    ) -> Result<Sampler> {
-        let mut out = vk::Sampler::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_sampler)(
-                self.raw(),
-                create_info as *const SamplerCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(
-            Sampler::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    unsafe {
-                        crate::reach::sampler_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
-    }
-}
-impl Device {
-    /**`vkCreateSamplerYcbcrConversion`
-
-# Valid usage
-
-The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html). Settled by the wrappers:
-
-- `VUID-vkCreateSamplerYcbcrConversion-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_sampler_ycbcr_conversion<'a>(
-        &self,
-        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
-    ) -> Result<SamplerYcbcrConversion> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_sampler_ycbcr_conversion(create_info);
-            r?;
-        }
-        unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
-    }
-    /**`vkCreateSamplerYcbcrConversion` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_sampler_ycbcr_conversion_unchecked<'a>(
-        &self,
-        create_info: &SamplerYcbcrConversionCreateInfo<'a>,
-    ) -> Result<SamplerYcbcrConversion> {
-        let mut out = vk::SamplerYcbcrConversion::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .create_sampler_ycbcr_conversion)(
-                self.raw(),
-                create_info as *const SamplerYcbcrConversionCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(SamplerYcbcrConversion::from_raw(out, self, None, true))
-    }
-}
-impl Device {
-    /**`vkCreateSemaphore`
-
-# Valid usage
-
-The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html). Settled by the wrappers:
-
-- `VUID-vkCreateSemaphore-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_semaphore<'a>(
-        &self,
-        create_info: &SemaphoreCreateInfo<'a>,
-    ) -> Result<Semaphore> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_semaphore(create_info);
-            r?;
-        }
-        unsafe { self.create_semaphore_unchecked(create_info) }
-    }
-    /**`vkCreateSemaphore` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_semaphore`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_semaphore_unchecked<'a>(
-        &self,
-        create_info: &SemaphoreCreateInfo<'a>,
-    ) -> Result<Semaphore> {
-        let mut out = vk::Semaphore::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_semaphore)(
-                self.raw(),
-                create_info as *const SemaphoreCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok({
-            let semaphore: Semaphore = Semaphore::from_raw(out, self, None, true);
-            if crate::submission::creates_timeline(create_info) {
-                self.live().set_timeline(semaphore.raw());
-            }
-            semaphore
-        })
-    }
-}
-impl Device {
-    /**`vkCreateShaderModule`
-
-# Valid usage
-
-The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateShaderModule.html). Settled by the wrappers:
-
-- `VUID-vkCreateShaderModule-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateShaderModule-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_shader_module<'a>(
-        &self,
-        create_info: &ShaderModuleCreateInfo<'a>,
-    ) -> Result<ShaderModule> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_shader_module(create_info);
-            r?;
-        }
-        unsafe { self.create_shader_module_unchecked(create_info) }
-    }
-    /**`vkCreateShaderModule` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_shader_module`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_shader_module_unchecked<'a>(
-        &self,
-        create_info: &ShaderModuleCreateInfo<'a>,
-    ) -> Result<ShaderModule> {
-        let mut out = vk::ShaderModule::null();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_shader_module)(
-                self.raw(),
-                create_info as *const ShaderModuleCreateInfo<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(ShaderModule::from_raw(out, self, None, true))
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    /**`vkCreateSwapchainKHR`
-
-# Valid usage
-
-The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
-
-- `VUID-vkCreateSwapchainKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn create_swapchain_khr<'a>(
-        &self,
-        surface: &SurfaceKHR,
-        create_info: &SwapchainCreateInfoKHR<'a>,
-    ) -> Result<SwapchainKHR> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(surface.host_sync().clone());
-            syncs
-                .extend(
-                    self
-                        .live()
-                        .sync_of(
-                            vk::ObjectType::SWAPCHAIN_KHR,
-                            vk::Handle::as_raw(create_info.old_swapchain),
-                        ),
-                );
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_create_swapchain_khr(create_info);
-            r?;
-        }
-        unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
-    }
-    /**`vkCreateSwapchainKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_swapchain_khr_unchecked<'a>(
-        &self,
-        surface: &SurfaceKHR,
-        create_info: &SwapchainCreateInfoKHR<'a>,
-    ) -> Result<SwapchainKHR> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(surface.host_sync().clone());
-            syncs
-                .extend(
-                    self
-                        .live()
-                        .sync_of(
-                            vk::ObjectType::SWAPCHAIN_KHR,
-                            vk::Handle::as_raw(create_info.old_swapchain),
-                        ),
-                );
-            tuff_runtime::lock_all(syncs)
-        };
-        let ext_table = self
-            .ext()
-            .khr_swapchain
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
-        let mut create_info = *create_info;
-        create_info.as_raw_mut().surface = surface.raw();
-        let mut out = vk::SwapchainKHR::null();
-        let r = unsafe {
-            (ext_table
-                .create_swapchain_khr)(
-                self.raw(),
-                create_info.as_raw(),
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(SwapchainKHR::from_raw(out, self, Some(surface.retained()), true))
     }
 }
 #[cfg(feature = "khr_wayland_surface")]
@@ -7612,266 +10526,6 @@ The caller upholds the rules that [`Self::create_xlib_surface_khr`] checks at ru
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
-impl Device {
-    /**`vkDeviceWaitIdle`
-
-# Valid usage
-
-The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeviceWaitIdle.html). Settled by the wrappers:
-
-- `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
-    #[inline]
-    pub fn device_wait_idle(&self) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.extend(self.live().queue_syncs());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe { (self.fns().fp_v1_0().device_wait_idle)(self.raw()) };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        self.live().ledger().retire_all();
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    /**`vkEnumerateDeviceExtensionProperties`
-
-# Valid usage
-
-The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceExtensionProperties.html). Settled by the wrappers:
-
-- `VUID-vkEnumerateDeviceExtensionProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
-- `VUID-vkEnumerateDeviceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateDeviceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn enumerate_device_extension_properties(
-        &self,
-        layer_name: Option<&core::ffi::CStr>,
-    ) -> Result<Vec<vk::ExtensionProperties>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::ExtensionProperties = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_device_extension_properties)(
-                    self.raw(),
-                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::ExtensionProperties> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_device_extension_properties)(
-                    self.raw(),
-                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl PhysicalDevice {
-    /**`vkEnumerateDeviceLayerProperties`
-
-# Valid usage
-
-The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceLayerProperties.html). Settled by the wrappers:
-
-- `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::LayerProperties = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_device_layer_properties)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::LayerProperties> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_device_layer_properties)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Entry {
-    /**`vkEnumerateInstanceExtensionProperties`
-
-# Valid usage
-
-The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceExtensionProperties.html). Settled by the wrappers:
-
-- `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
-- `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateInstanceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn enumerate_instance_extension_properties(
-        &self,
-        layer_name: Option<&core::ffi::CStr>,
-    ) -> Result<Vec<vk::ExtensionProperties>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::ExtensionProperties = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_instance_extension_properties)(
-                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::ExtensionProperties> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_instance_extension_properties)(
-                    layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Entry {
-    /**`vkEnumerateInstanceLayerProperties`
-
-# Valid usage
-
-The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceLayerProperties.html). Settled by the wrappers:
-
-- `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn enumerate_instance_layer_properties(
-        &self,
-    ) -> Result<Vec<vk::LayerProperties>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::LayerProperties = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_instance_layer_properties)(&mut count, items_ptr.cast())
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::LayerProperties> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_instance_layer_properties)(&mut count, items_ptr.cast())
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Entry {
-    /**`vkEnumerateInstanceVersion`
-
-# Valid usage
-
-The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceVersion.html). Settled by the wrappers:
-
-- `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn enumerate_instance_version(&self) -> Result<u32> {
-        let mut out: u32 = Default::default();
-        let r = unsafe { (self.fns().fp_v1_1().enumerate_instance_version)(&mut out) };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(out)
-    }
-}
 impl Instance {
     /**`vkEnumeratePhysicalDeviceGroups`
 
@@ -7886,49 +10540,16 @@ The rules are on [`vkEnumeratePhysicalDeviceGroups`'s reference page](https://re
     pub fn enumerate_physical_device_groups(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceGroupProperties<'static>>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::PhysicalDeviceGroupProperties<'static> = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_1()
-                    .enumerate_physical_device_groups)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::PhysicalDeviceGroupProperties<'static>> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_1()
-                    .enumerate_physical_device_groups)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::PhysicalDeviceGroupProperties<'static>|
+            (self
+                .fns()
+                .fp_v1_1()
+                .enumerate_physical_device_groups)(self.raw(), count, items_ptr.cast()))
         }
     }
-}
-impl Instance {
     /**`vkEnumeratePhysicalDevices`
 
 # Valid usage
@@ -7940,1657 +10561,21 @@ The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registr
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_physical_devices(&self) -> Result<Vec<PhysicalDevice>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::PhysicalDevice = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_physical_devices)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::PhysicalDevice> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .enumerate_physical_devices)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(
-                items
-                    .into_iter()
-                    .map(|raw| PhysicalDevice::from_raw(raw, self, None, false))
-                    .collect(),
-            );
-        }
-    }
-}
-impl Device {
-    /**`vkFlushMappedMemoryRanges`
-
-# Valid usage
-
-The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html). Settled by the wrappers:
-
-- `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
-    #[inline]
-    pub fn flush_mapped_memory_ranges<'a>(
-        &self,
-        memory_ranges: &[MappedMemoryRange<'a>],
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
-            r?;
-        }
-        unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
-    }
-    /**`vkFlushMappedMemoryRanges` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn flush_mapped_memory_ranges_unchecked<'a>(
-        &self,
-        memory_ranges: &[MappedMemoryRange<'a>],
-    ) -> Result<()> {
-        let r = unsafe {
+        let items = unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::PhysicalDevice|
             (self
                 .fns()
                 .fp_v1_0()
-                .flush_mapped_memory_ranges)(
-                self.raw(),
-                memory_ranges.len() as u32,
-                memory_ranges.as_ptr().cast(),
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkGetBufferDeviceAddress`
-
-# Valid usage
-
-The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html). Settled by the wrappers:
-
-- `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_buffer_device_address<'a>(
-        &self,
-        info: &BufferDeviceAddressInfo<'a>,
-    ) -> vk::DeviceAddress {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_buffer_device_address)(
-                self.raw(),
-                info as *const BufferDeviceAddressInfo<'a> as *const _,
-            )
-        };
-        r
-    }
-}
-impl Device {
-    /**`vkGetBufferMemoryRequirements`
-
-# Valid usage
-
-The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements.html). Settled by the wrappers:
-
-- `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetBufferMemoryRequirements-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn get_buffer_memory_requirements(
-        &self,
-        buffer: &Buffer,
-    ) -> Result<vk::MemoryRequirements> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_buffer_memory_requirements(buffer);
-            r?;
-        }
-        Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
-    }
-    /**`vkGetBufferMemoryRequirements` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_buffer_memory_requirements`] checks at run time: `VUID-vkGetBufferMemoryRequirements-buffer-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_buffer_memory_requirements_unchecked(
-        &self,
-        buffer: &Buffer,
-    ) -> vk::MemoryRequirements {
-        let mut out: vk::MemoryRequirements = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_buffer_memory_requirements)(self.raw(), buffer.raw(), &mut out)
-        };
-        out
-    }
-}
-impl Device {
-    /**`vkGetBufferMemoryRequirements2`
-
-# Valid usage
-
-The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements2.html). Settled by the wrappers:
-
-- `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_buffer_memory_requirements2<'a>(
-        &self,
-        info: &BufferMemoryRequirementsInfo2<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
-            r?;
-        }
-        Ok(unsafe {
-            self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
-        })
-    }
-    /**`vkGetBufferMemoryRequirements2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_buffer_memory_requirements2_unchecked<'a>(
-        &self,
-        info: &BufferMemoryRequirementsInfo2<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_buffer_memory_requirements2)(
-                self.raw(),
-                info as *const BufferMemoryRequirementsInfo2<'a> as *const _,
-                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkGetBufferOpaqueCaptureAddress`
-
-# Valid usage
-
-The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureAddress.html). Settled by the wrappers:
-
-- `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_buffer_opaque_capture_address<'a>(
-        &self,
-        info: &BufferDeviceAddressInfo<'a>,
-    ) -> u64 {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_buffer_opaque_capture_address)(
-                self.raw(),
-                info as *const BufferDeviceAddressInfo<'a> as *const _,
-            )
-        };
-        r
-    }
-}
-impl Device {
-    /**`vkGetDescriptorSetLayoutSupport`
-
-# Valid usage
-
-The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html). Settled by the wrappers:
-
-- `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_descriptor_set_layout_support<'a>(
-        &self,
-        create_info: &DescriptorSetLayoutCreateInfo<'a>,
-        support: &mut DescriptorSetLayoutSupport<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_descriptor_set_layout_support(create_info, support);
-            r?;
-        }
-        Ok(unsafe {
-            self.get_descriptor_set_layout_support_unchecked(create_info, support)
-        })
-    }
-    /**`vkGetDescriptorSetLayoutSupport` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_descriptor_set_layout_support_unchecked<'a>(
-        &self,
-        create_info: &DescriptorSetLayoutCreateInfo<'a>,
-        support: &mut DescriptorSetLayoutSupport<'a>,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_descriptor_set_layout_support)(
-                self.raw(),
-                create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
-                support as *mut DescriptorSetLayoutSupport<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkGetDeviceBufferMemoryRequirements`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_device_buffer_memory_requirements<'a>(
-        &self,
-        info: &DeviceBufferMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_device_buffer_memory_requirements(
-                    info,
-                    memory_requirements,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.get_device_buffer_memory_requirements_unchecked(
-                info,
-                memory_requirements,
-            )
-        })
-    }
-    /**`vkGetDeviceBufferMemoryRequirements` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_device_buffer_memory_requirements_unchecked<'a>(
-        &self,
-        info: &DeviceBufferMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .get_device_buffer_memory_requirements)(
-                self.raw(),
-                info as *const DeviceBufferMemoryRequirements<'a> as *const _,
-                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkGetDeviceGroupPeerMemoryFeatures`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_device_group_peer_memory_features(
-        &self,
-        heap_index: u32,
-        local_device_index: u32,
-        remote_device_index: u32,
-    ) -> vk::PeerMemoryFeatureFlags {
-        let mut out: vk::PeerMemoryFeatureFlags = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_device_group_peer_memory_features)(
-                self.raw(),
-                heap_index,
-                local_device_index,
-                remote_device_index,
-                &mut out,
-            )
-        };
-        out
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    /**`vkGetDeviceGroupPresentCapabilitiesKHR`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPresentCapabilitiesKHR.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_device_group_present_capabilities_khr<'a>(
-        &self,
-        device_group_present_capabilities: &mut DeviceGroupPresentCapabilitiesKHR<'a>,
-    ) -> Result<()> {
-        let ext_table = self
-            .ext()
-            .khr_swapchain
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
-        let r = unsafe {
-            (ext_table
-                .get_device_group_present_capabilities_khr)(
-                self.raw(),
-                device_group_present_capabilities
-                    as *mut DeviceGroupPresentCapabilitiesKHR<'a> as *mut _,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    /**`vkGetDeviceGroupSurfacePresentModesKHR`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_device_group_surface_present_modes_khr(
-        &self,
-        surface: &SurfaceKHR,
-    ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(surface.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_device_group_surface_present_modes_khr(surface);
-            r?;
-        }
-        unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
-    }
-    /**`vkGetDeviceGroupSurfacePresentModesKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_device_group_surface_present_modes_khr_unchecked(
-        &self,
-        surface: &SurfaceKHR,
-    ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(surface.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let ext_table = self
-            .ext()
-            .khr_swapchain
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
-        let mut out: vk::DeviceGroupPresentModeFlagsKHR = Default::default();
-        let r = unsafe {
-            (ext_table
-                .get_device_group_surface_present_modes_khr)(
-                self.raw(),
-                surface.raw(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(out)
-    }
-}
-impl Device {
-    /**`vkGetDeviceImageMemoryRequirements`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_device_image_memory_requirements<'a>(
-        &self,
-        info: &DeviceImageMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_device_image_memory_requirements(
-                    info,
-                    memory_requirements,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.get_device_image_memory_requirements_unchecked(
-                info,
-                memory_requirements,
-            )
-        })
-    }
-    /**`vkGetDeviceImageMemoryRequirements` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_device_image_memory_requirements`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_device_image_memory_requirements_unchecked<'a>(
-        &self,
-        info: &DeviceImageMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .get_device_image_memory_requirements)(
-                self.raw(),
-                info as *const DeviceImageMemoryRequirements<'a> as *const _,
-                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkGetDeviceImageSparseMemoryRequirements`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_device_image_sparse_memory_requirements<'a>(
-        &self,
-        info: &DeviceImageMemoryRequirements<'a>,
-    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_device_image_sparse_memory_requirements(info);
-            r?;
-        }
-        unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
-    }
-    /**`vkGetDeviceImageSparseMemoryRequirements` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_device_image_sparse_memory_requirements`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_device_image_sparse_memory_requirements_unchecked<'a>(
-        &self,
-        info: &DeviceImageMemoryRequirements<'a>,
-    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::SparseImageMemoryRequirements2<'static> = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .fns()
-                    .fp_v1_3()
-                    .get_device_image_sparse_memory_requirements)(
-                    self.raw(),
-                    info as *const DeviceImageMemoryRequirements<'a> as *const _,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::SparseImageMemoryRequirements2<'static>> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .fns()
-                    .fp_v1_3()
-                    .get_device_image_sparse_memory_requirements)(
-                    self.raw(),
-                    info as *const DeviceImageMemoryRequirements<'a> as *const _,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Device {
-    /**`vkGetDeviceMemoryCommitment`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_device_memory_commitment(
-        &self,
-        memory: &DeviceMemory,
-    ) -> Result<vk::DeviceSize> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_device_memory_commitment(memory);
-            r?;
-        }
-        Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
-    }
-    /**`vkGetDeviceMemoryCommitment` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_device_memory_commitment_unchecked(
-        &self,
-        memory: &DeviceMemory,
-    ) -> vk::DeviceSize {
-        let mut out: vk::DeviceSize = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_device_memory_commitment)(self.raw(), memory.raw(), &mut out)
-        };
-        out
-    }
-}
-impl Device {
-    /**`vkGetDeviceMemoryOpaqueCaptureAddress`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryOpaqueCaptureAddress.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_device_memory_opaque_capture_address<'a>(
-        &self,
-        info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
-    ) -> u64 {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_device_memory_opaque_capture_address)(
-                self.raw(),
-                info as *const DeviceMemoryOpaqueCaptureAddressInfo<'a> as *const _,
-            )
-        };
-        r
-    }
-}
-impl Device {
-    /**`vkGetDeviceQueue`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
-        let mut out = vk::Queue::null();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_device_queue)(self.raw(), queue_family_index, queue_index, &mut out)
-        };
-        {
-            let queue = Queue::from_raw(out, self, None, true);
-            #[cfg(feature = "runtime_implicit_validations")]
-            let queue = queue
-                .with_queue_flags(
-                    crate::validation::family_flags(self, queue_family_index),
-                );
-            queue
-        }
-    }
-}
-impl Device {
-    /**`vkGetDeviceQueue2`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_device_queue2<'a>(
-        &self,
-        queue_info: &DeviceQueueInfo2<'a>,
-    ) -> Result<Queue> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_device_queue2(queue_info);
-            r?;
-        }
-        Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
-    }
-    /**`vkGetDeviceQueue2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_device_queue2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_device_queue2_unchecked<'a>(
-        &self,
-        queue_info: &DeviceQueueInfo2<'a>,
-    ) -> Queue {
-        let mut out = vk::Queue::null();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_device_queue2)(
-                self.raw(),
-                queue_info as *const DeviceQueueInfo2<'a> as *const _,
-                &mut out,
-            )
-        };
-        {
-            let queue = Queue::from_raw(out, self, None, true);
-            #[cfg(feature = "runtime_implicit_validations")]
-            let queue = queue
-                .with_queue_flags(
-                    crate::validation::family_flags(self, queue_info.queue_family_index),
-                );
-            queue
-        }
-    }
-}
-impl Device {
-    /**`vkGetEventStatus`
-
-# Valid usage
-
-The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html). Settled by the wrappers:
-
-- `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_event_status(event);
-            r?;
-        }
-        unsafe { self.get_event_status_unchecked(event) }
-    }
-    /**`vkGetEventStatus` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_event_status_unchecked(
-        &self,
-        event: &Event,
-    ) -> Result<vk::Result> {
-        let r = unsafe {
-            (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(r)
-    }
-}
-impl Device {
-    /**`vkGetFenceStatus`
-
-# Valid usage
-
-The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceStatus.html). Settled by the wrappers:
-
-- `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_fence_status(fence);
-            r?;
-        }
-        unsafe { self.get_fence_status_unchecked(fence) }
-    }
-    /**`vkGetFenceStatus` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_fence_status`] checks at run time: `VUID-vkGetFenceStatus-fence-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_fence_status_unchecked(
-        &self,
-        fence: &Fence,
-    ) -> Result<vk::Result> {
-        let r = unsafe {
-            (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        if r == vk::Result::SUCCESS {
-            fence.completed();
-        }
-        Ok(r)
-    }
-}
-impl Device {
-    /**`vkGetImageMemoryRequirements`
-
-# Valid usage
-
-The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements.html). Settled by the wrappers:
-
-- `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_image_memory_requirements(
-        &self,
-        image: &Image,
-    ) -> Result<vk::MemoryRequirements> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_image_memory_requirements(image);
-            r?;
-        }
-        Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
-    }
-    /**`vkGetImageMemoryRequirements` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_image_memory_requirements`] checks at run time: `VUID-vkGetImageMemoryRequirements-image-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_image_memory_requirements_unchecked(
-        &self,
-        image: &Image,
-    ) -> vk::MemoryRequirements {
-        let mut out: vk::MemoryRequirements = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_image_memory_requirements)(self.raw(), image.raw(), &mut out)
-        };
-        out
-    }
-}
-impl Device {
-    /**`vkGetImageMemoryRequirements2`
-
-# Valid usage
-
-The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html). Settled by the wrappers:
-
-- `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_image_memory_requirements2<'a>(
-        &self,
-        info: &ImageMemoryRequirementsInfo2<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_image_memory_requirements2(info, memory_requirements);
-            r?;
-        }
-        Ok(unsafe {
-            self.get_image_memory_requirements2_unchecked(info, memory_requirements)
-        })
-    }
-    /**`vkGetImageMemoryRequirements2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_image_memory_requirements2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_image_memory_requirements2_unchecked<'a>(
-        &self,
-        info: &ImageMemoryRequirementsInfo2<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_image_memory_requirements2)(
-                self.raw(),
-                info as *const ImageMemoryRequirementsInfo2<'a> as *const _,
-                memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkGetImageSparseMemoryRequirements`
-
-# Valid usage
-
-The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements.html). Settled by the wrappers:
-
-- `VUID-vkGetImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn get_image_sparse_memory_requirements(
-        &self,
-        image: &Image,
-    ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_image_sparse_memory_requirements(image);
-            r?;
-        }
-        unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
-    }
-    /**`vkGetImageSparseMemoryRequirements` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`] checks at run time: `VUID-vkGetImageSparseMemoryRequirements-image-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_image_sparse_memory_requirements_unchecked(
-        &self,
-        image: &Image,
-    ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::SparseImageMemoryRequirements = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .get_image_sparse_memory_requirements)(
-                    self.raw(),
-                    image.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::SparseImageMemoryRequirements> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .get_image_sparse_memory_requirements)(
-                    self.raw(),
-                    image.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Device {
-    /**`vkGetImageSparseMemoryRequirements2`
-
-# Valid usage
-
-The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements2.html). Settled by the wrappers:
-
-- `VUID-vkGetImageSparseMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_image_sparse_memory_requirements2<'a>(
-        &self,
-        info: &ImageSparseMemoryRequirementsInfo2<'a>,
-    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::SparseImageMemoryRequirements2<'static> = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .fns()
-                    .fp_v1_1()
-                    .get_image_sparse_memory_requirements2)(
-                    self.raw(),
-                    info as *const ImageSparseMemoryRequirementsInfo2<'a> as *const _,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::SparseImageMemoryRequirements2<'static>> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .fns()
-                    .fp_v1_1()
-                    .get_image_sparse_memory_requirements2)(
-                    self.raw(),
-                    info as *const ImageSparseMemoryRequirementsInfo2<'a> as *const _,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Device {
-    /**`vkGetImageSubresourceLayout`
-
-# Valid usage
-
-The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html). Settled by the wrappers:
-
-- `VUID-vkGetImageSubresourceLayout-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_image_subresource_layout<'a>(
-        &self,
-        image: &Image,
-        subresource: &vk::ImageSubresource,
-    ) -> Result<vk::SubresourceLayout> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_image_subresource_layout(image, subresource);
-            r?;
-        }
-        Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
-    }
-    /**`vkGetImageSubresourceLayout` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_image_subresource_layout_unchecked<'a>(
-        &self,
-        image: &Image,
-        subresource: &vk::ImageSubresource,
-    ) -> vk::SubresourceLayout {
-        let mut out: vk::SubresourceLayout = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_image_subresource_layout)(
-                self.raw(),
-                image.raw(),
-                subresource as *const vk::ImageSubresource as *const _,
-                &mut out,
-            )
-        };
-        out
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceExternalBufferProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalBufferProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_external_buffer_properties<'a>(
-        &self,
-        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
-        external_buffer_properties: &mut ExternalBufferProperties<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_external_buffer_properties(
-                    external_buffer_info,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.get_physical_device_external_buffer_properties_unchecked(
-                external_buffer_info,
-                external_buffer_properties,
-            )
-        })
-    }
-    /**`vkGetPhysicalDeviceExternalBufferProperties` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_external_buffer_properties`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_external_buffer_properties_unchecked<'a>(
-        &self,
-        external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
-        external_buffer_properties: &mut ExternalBufferProperties<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_external_buffer_properties)(
-                self.raw(),
-                external_buffer_info as *const PhysicalDeviceExternalBufferInfo<'a>
-                    as *const _,
-                external_buffer_properties as *mut ExternalBufferProperties<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceExternalFenceProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalFenceProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_external_fence_properties<'a>(
-        &self,
-        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
-        external_fence_properties: &mut ExternalFenceProperties<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_external_fence_properties(
-                    external_fence_info,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.get_physical_device_external_fence_properties_unchecked(
-                external_fence_info,
-                external_fence_properties,
-            )
-        })
-    }
-    /**`vkGetPhysicalDeviceExternalFenceProperties` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_external_fence_properties`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_external_fence_properties_unchecked<'a>(
-        &self,
-        external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
-        external_fence_properties: &mut ExternalFenceProperties<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_external_fence_properties)(
-                self.raw(),
-                external_fence_info as *const PhysicalDeviceExternalFenceInfo<'a>
-                    as *const _,
-                external_fence_properties as *mut ExternalFenceProperties<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceExternalSemaphoreProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalSemaphoreProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_external_semaphore_properties<'a>(
-        &self,
-        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
-        external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_external_semaphore_properties(
-                    external_semaphore_info,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.get_physical_device_external_semaphore_properties_unchecked(
-                external_semaphore_info,
-                external_semaphore_properties,
-            )
-        })
-    }
-    /**`vkGetPhysicalDeviceExternalSemaphoreProperties` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_external_semaphore_properties`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_external_semaphore_properties_unchecked<'a>(
-        &self,
-        external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
-        external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_external_semaphore_properties)(
-                self.raw(),
-                external_semaphore_info as *const PhysicalDeviceExternalSemaphoreInfo<'a>
-                    as *const _,
-                external_semaphore_properties as *mut ExternalSemaphoreProperties<'a>
-                    as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceFeatures`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
-        let mut out: vk::PhysicalDeviceFeatures = Default::default();
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_features)(self.raw(), &mut out)
-        };
-        out
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceFeatures2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_features2<'a>(
-        &self,
-        features: &mut PhysicalDeviceFeatures2<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_features2)(
-                self.raw(),
-                features as *mut PhysicalDeviceFeatures2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceFormatProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_format_properties(
-        &self,
-        format: vk::Format,
-    ) -> Result<vk::FormatProperties> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_physical_device_format_properties(format);
-            r?;
-        }
-        Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
-    }
-    /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_physical_device_format_properties_unchecked(
-        &self,
-        format: vk::Format,
-    ) -> vk::FormatProperties {
-        let mut out: vk::FormatProperties = Default::default();
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_format_properties)(self.raw(), format, &mut out)
-        };
-        out
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceFormatProperties2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_format_properties2<'a>(
-        &self,
-        format: vk::Format,
-        format_properties: &mut FormatProperties2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_format_properties2(
-                    format,
-                    format_properties,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.get_physical_device_format_properties2_unchecked(
-                format,
-                format_properties,
-            )
-        })
-    }
-    /**`vkGetPhysicalDeviceFormatProperties2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_physical_device_format_properties2_unchecked<'a>(
-        &self,
-        format: vk::Format,
-        format_properties: &mut FormatProperties2<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_format_properties2)(
-                self.raw(),
-                format,
-                format_properties as *mut FormatProperties2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceImageFormatProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_physical_device_image_format_properties(
-        &self,
-        format: vk::Format,
-        ty: vk::ImageType,
-        tiling: vk::ImageTiling,
-        usage: vk::ImageUsageFlags,
-        flags: vk::ImageCreateFlags,
-    ) -> Result<vk::ImageFormatProperties> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_image_format_properties(
-                    format,
-                    ty,
-                    tiling,
-                    usage,
-                    flags,
-                );
-            r?;
-        }
-        unsafe {
-            self.get_physical_device_image_format_properties_unchecked(
-                format,
-                ty,
-                tiling,
-                usage,
-                flags,
-            )
-        }
-    }
-    /**`vkGetPhysicalDeviceImageFormatProperties` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_physical_device_image_format_properties_unchecked(
-        &self,
-        format: vk::Format,
-        ty: vk::ImageType,
-        tiling: vk::ImageTiling,
-        usage: vk::ImageUsageFlags,
-        flags: vk::ImageCreateFlags,
-    ) -> Result<vk::ImageFormatProperties> {
-        let mut out: vk::ImageFormatProperties = Default::default();
-        let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_image_format_properties)(
-                self.raw(),
-                format,
-                ty,
-                tiling,
-                usage,
-                flags,
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(out)
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceImageFormatProperties2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_physical_device_image_format_properties2<'a>(
-        &self,
-        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
-        image_format_properties: &mut ImageFormatProperties2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_image_format_properties2(
-                    image_format_info,
-                    image_format_properties,
-                );
-            r?;
-        }
-        unsafe {
-            self.get_physical_device_image_format_properties2_unchecked(
-                image_format_info,
-                image_format_properties,
-            )
-        }
-    }
-    /**`vkGetPhysicalDeviceImageFormatProperties2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_image_format_properties2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_image_format_properties2_unchecked<'a>(
-        &self,
-        image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
-        image_format_properties: &mut ImageFormatProperties2<'a>,
-    ) -> Result<()> {
-        let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_image_format_properties2)(
-                self.raw(),
-                image_format_info as *const PhysicalDeviceImageFormatInfo2<'a>
-                    as *const _,
-                image_format_properties as *mut ImageFormatProperties2<'a> as *mut _,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceMemoryProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_memory_properties(
-        &self,
-    ) -> vk::PhysicalDeviceMemoryProperties {
-        let mut out: vk::PhysicalDeviceMemoryProperties = Default::default();
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_memory_properties)(self.raw(), &mut out)
-        };
-        out
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceMemoryProperties2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_memory_properties2<'a>(
-        &self,
-        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_memory_properties2(memory_properties);
-            r?;
-        }
-        Ok(unsafe {
-            self.get_physical_device_memory_properties2_unchecked(memory_properties)
-        })
-    }
-    /**`vkGetPhysicalDeviceMemoryProperties2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_memory_properties2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_memory_properties2_unchecked<'a>(
-        &self,
-        memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_memory_properties2)(
-                self.raw(),
-                memory_properties as *mut PhysicalDeviceMemoryProperties2<'a> as *mut _,
-            )
-        };
-        ()
+                .enumerate_physical_devices)(self.raw(), count, items_ptr.cast()))
+        }?;
+        Ok(
+            items
+                .into_iter()
+                .map(|raw| PhysicalDevice::from_raw(raw, self, None, false))
+                .collect(),
+        )
     }
 }
 #[cfg(feature = "khr_swapchain")]
@@ -9648,392 +10633,14 @@ The caller upholds the rules that [`Self::get_physical_device_present_rectangles
             .khr_swapchain
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::Rect2D = core::ptr::null_mut();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_present_rectangles_khr)(
-                    self.raw(),
-                    surface.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::Rect2D> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_present_rectangles_khr)(
-                    self.raw(),
-                    surface.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
-        let mut out: vk::PhysicalDeviceProperties = Default::default();
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_properties)(self.raw(), &mut out)
-        };
-        out
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceProperties2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn get_physical_device_properties2<'a>(
-        &self,
-        properties: &mut PhysicalDeviceProperties2<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_physical_device_properties2(properties);
-            r?;
-        }
-        Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
-    }
-    /**`vkGetPhysicalDeviceProperties2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_properties2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_properties2_unchecked<'a>(
-        &self,
-        properties: &mut PhysicalDeviceProperties2<'a>,
-    ) {
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_properties2)(
+            crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Rect2D| (ext_table
+                .get_physical_device_present_rectangles_khr)(
                 self.raw(),
-                properties as *mut PhysicalDeviceProperties2<'a> as *mut _,
-            )
-        };
-        ()
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceQueueFamilyProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_queue_family_properties(
-        &self,
-    ) -> Result<Vec<vk::QueueFamilyProperties>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::QueueFamilyProperties = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .get_physical_device_queue_family_properties)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::QueueFamilyProperties> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .get_physical_device_queue_family_properties)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceQueueFamilyProperties2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_queue_family_properties2(
-        &self,
-    ) -> Result<Vec<vk::QueueFamilyProperties2<'static>>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::QueueFamilyProperties2<'static> = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_queue_family_properties2)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::QueueFamilyProperties2<'static>> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_queue_family_properties2)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceSparseImageFormatProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_physical_device_sparse_image_format_properties(
-        &self,
-        format: vk::Format,
-        ty: vk::ImageType,
-        samples: vk::SampleCountFlags,
-        usage: vk::ImageUsageFlags,
-        tiling: vk::ImageTiling,
-    ) -> Result<Vec<vk::SparseImageFormatProperties>> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_sparse_image_format_properties(
-                    format,
-                    ty,
-                    samples,
-                    usage,
-                    tiling,
-                );
-            r?;
-        }
-        unsafe {
-            self.get_physical_device_sparse_image_format_properties_unchecked(
-                format,
-                ty,
-                samples,
-                usage,
-                tiling,
-            )
-        }
-    }
-    /**`vkGetPhysicalDeviceSparseImageFormatProperties` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_physical_device_sparse_image_format_properties_unchecked(
-        &self,
-        format: vk::Format,
-        ty: vk::ImageType,
-        samples: vk::SampleCountFlags,
-        usage: vk::ImageUsageFlags,
-        tiling: vk::ImageTiling,
-    ) -> Result<Vec<vk::SparseImageFormatProperties>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::SparseImageFormatProperties = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .get_physical_device_sparse_image_format_properties)(
-                    self.raw(),
-                    format,
-                    ty,
-                    samples,
-                    usage,
-                    tiling,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::SparseImageFormatProperties> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .get_physical_device_sparse_image_format_properties)(
-                    self.raw(),
-                    format,
-                    ty,
-                    samples,
-                    usage,
-                    tiling,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceSparseImageFormatProperties2`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_sparse_image_format_properties2<'a>(
-        &self,
-        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
-    ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_get_physical_device_sparse_image_format_properties2(
-                    format_info,
-                );
-            r?;
-        }
-        unsafe {
-            self.get_physical_device_sparse_image_format_properties2_unchecked(
-                format_info,
-            )
-        }
-    }
-    /**`vkGetPhysicalDeviceSparseImageFormatProperties2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties2`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn get_physical_device_sparse_image_format_properties2_unchecked<'a>(
-        &self,
-        format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
-    ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::SparseImageFormatProperties2<'static> = core::ptr::null_mut();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_sparse_image_format_properties2)(
-                    self.raw(),
-                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a>
-                        as *const _,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            let mut items: Vec<vk::SparseImageFormatProperties2<'static>> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_sparse_image_format_properties2)(
-                    self.raw(),
-                    format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a>
-                        as *const _,
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            items.truncate(count as usize);
-            return Ok(items);
+                surface.raw(),
+                count,
+                items_ptr.cast(),
+            ))
         }
     }
 }
@@ -10093,9 +10700,6 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
         }
         Ok(out)
     }
-}
-#[cfg(feature = "khr_surface")]
-impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR`
 
 # Valid usage
@@ -10137,48 +10741,19 @@ The caller upholds the rules that [`Self::get_physical_device_surface_formats_kh
             .khr_surface
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::SurfaceFormatKHR = core::ptr::null_mut();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_surface_formats_khr)(
-                    self.raw(),
-                    surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::SurfaceFormatKHR> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_surface_formats_khr)(
-                    self.raw(),
-                    surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::SurfaceFormatKHR|
+            (ext_table
+                .get_physical_device_surface_formats_khr)(
+                self.raw(),
+                surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
+                count,
+                items_ptr.cast(),
+            ))
         }
     }
-}
-#[cfg(feature = "khr_surface")]
-impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR`
 
 # Valid usage
@@ -10220,46 +10795,19 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
             .khr_surface
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::PresentModeKHR = core::ptr::null_mut();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_surface_present_modes_khr)(
-                    self.raw(),
-                    surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::PresentModeKHR> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_surface_present_modes_khr)(
-                    self.raw(),
-                    surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
+        unsafe {
+            crate::support::two_call(|
+                count: &mut u32,
+                items_ptr: *mut vk::PresentModeKHR|
+            (ext_table
+                .get_physical_device_surface_present_modes_khr)(
+                self.raw(),
+                surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
+                count,
+                items_ptr.cast(),
+            ))
         }
     }
-}
-#[cfg(feature = "khr_surface")]
-impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceSupportKHR`
 
 # Valid usage
@@ -10323,64 +10871,6 @@ The caller upholds the rules that [`Self::get_physical_device_surface_support_kh
         Ok(out)
     }
 }
-impl PhysicalDevice {
-    /**`vkGetPhysicalDeviceToolProperties`
-
-# Valid usage
-
-The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceToolProperties.html). Settled by the wrappers:
-
-- `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
-    #[inline]
-    pub fn get_physical_device_tool_properties(
-        &self,
-    ) -> Result<Vec<vk::PhysicalDeviceToolProperties<'static>>> {
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::PhysicalDeviceToolProperties<'static> = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_3()
-                    .get_physical_device_tool_properties)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::PhysicalDeviceToolProperties<'static>> = Vec::with_capacity(
-                count as usize,
-            );
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_3()
-                    .get_physical_device_tool_properties)(
-                    self.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
 #[cfg(feature = "khr_win32_surface")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceWin32PresentationSupportKHR`
@@ -10415,524 +10905,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         })
     }
 }
-impl Device {
-    /**`vkGetPipelineCacheData`
-
-# Valid usage
-
-The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineCacheData.html). Settled by the wrappers:
-
-- `VUID-vkGetPipelineCacheData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn get_pipeline_cache_data(
-        &self,
-        pipeline_cache: &PipelineCache,
-    ) -> Result<Vec<u8>> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_pipeline_cache_data(pipeline_cache);
-            r?;
-        }
-        unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
-    }
-    /**`vkGetPipelineCacheData` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at run time: `VUID-vkGetPipelineCacheData-pipelineCache-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_pipeline_cache_data_unchecked(
-        &self,
-        pipeline_cache: &PipelineCache,
-    ) -> Result<Vec<u8>> {
-        loop {
-            let mut count: usize = 0;
-            let items_ptr: *mut u8 = core::ptr::null_mut();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .get_pipeline_cache_data)(
-                    self.raw(),
-                    pipeline_cache.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<u8> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .get_pipeline_cache_data)(
-                    self.raw(),
-                    pipeline_cache.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(items);
-        }
-    }
-}
-impl Device {
-    /**`vkGetPrivateData`
-
-# Valid usage
-
-The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html). Settled by the wrappers:
-
-- `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_private_data(
-        &self,
-        object_type: vk::ObjectType,
-        object_handle: u64,
-        private_data_slot: &PrivateDataSlot,
-    ) -> Result<u64> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_private_data(object_type, private_data_slot);
-            r?;
-        }
-        Ok(unsafe {
-            self.get_private_data_unchecked(
-                object_type,
-                object_handle,
-                private_data_slot,
-            )
-        })
-    }
-    /**`vkGetPrivateData` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_private_data_unchecked(
-        &self,
-        object_type: vk::ObjectType,
-        object_handle: u64,
-        private_data_slot: &PrivateDataSlot,
-    ) -> u64 {
-        let mut out: u64 = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .get_private_data)(
-                self.raw(),
-                object_type,
-                object_handle,
-                private_data_slot.raw(),
-                &mut out,
-            )
-        };
-        out
-    }
-}
-impl Device {
-    /**`vkGetQueryPoolResults`
-
-# Valid usage
-
-The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueryPoolResults.html). Settled by the wrappers:
-
-- `VUID-vkGetQueryPoolResults-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetQueryPoolResults-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_query_pool_results(
-        &self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-        data: &mut [u8],
-        stride: vk::DeviceSize,
-        flags: vk::QueryResultFlags,
-    ) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_query_pool_results(query_pool, data, flags);
-            r?;
-        }
-        unsafe {
-            self.get_query_pool_results_unchecked(
-                query_pool,
-                first_query,
-                query_count,
-                data,
-                stride,
-                flags,
-            )
-        }
-    }
-    /**`vkGetQueryPoolResults` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_query_pool_results_unchecked(
-        &self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-        data: &mut [u8],
-        stride: vk::DeviceSize,
-        flags: vk::QueryResultFlags,
-    ) -> Result<vk::Result> {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_query_pool_results)(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-                data.len() as usize,
-                data.as_mut_ptr().cast(),
-                stride,
-                flags,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(r)
-    }
-}
-impl Device {
-    /**`vkGetRenderAreaGranularity`
-
-# Valid usage
-
-The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRenderAreaGranularity.html). Settled by the wrappers:
-
-- `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetRenderAreaGranularity-renderPass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn get_render_area_granularity(
-        &self,
-        render_pass: &RenderPass,
-    ) -> Result<vk::Extent2D> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_render_area_granularity(render_pass);
-            r?;
-        }
-        Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
-    }
-    /**`vkGetRenderAreaGranularity` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_render_area_granularity`] checks at run time: `VUID-vkGetRenderAreaGranularity-renderPass-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_render_area_granularity_unchecked(
-        &self,
-        render_pass: &RenderPass,
-    ) -> vk::Extent2D {
-        let mut out: vk::Extent2D = Default::default();
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_render_area_granularity)(self.raw(), render_pass.raw(), &mut out)
-        };
-        out
-    }
-}
-impl Device {
-    /**`vkGetSemaphoreCounterValue`
-
-# Valid usage
-
-The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreCounterValue.html). Settled by the wrappers:
-
-- `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_semaphore_counter_value(semaphore);
-            r?;
-        }
-        crate::submission::check_semaphore_type(
-            self.live(),
-            &[semaphore.raw()],
-            true,
-            "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
-        )?;
-        unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
-    }
-    /**`vkGetSemaphoreCounterValue` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, `VUID-vkGetSemaphoreCounterValue-semaphore-03255`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_semaphore_counter_value_unchecked(
-        &self,
-        semaphore: &Semaphore,
-    ) -> Result<u64> {
-        let mut out: u64 = Default::default();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_semaphore_counter_value)(self.raw(), semaphore.raw(), &mut out)
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        self.live().ledger().reached(semaphore.raw(), out);
-        Ok(out)
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl Device {
-    /**`vkGetSwapchainImagesKHR`
-
-# Valid usage
-
-The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainImagesKHR.html). Settled by the wrappers:
-
-- `VUID-vkGetSwapchainImagesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn get_swapchain_images_khr(
-        &self,
-        swapchain: &SwapchainKHR,
-    ) -> Result<Vec<Image>> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_swapchain_images_khr(swapchain);
-            r?;
-        }
-        unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
-    }
-    /**`vkGetSwapchainImagesKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at run time: `VUID-vkGetSwapchainImagesKHR-swapchain-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn get_swapchain_images_khr_unchecked(
-        &self,
-        swapchain: &SwapchainKHR,
-    ) -> Result<Vec<Image>> {
-        let ext_table = self
-            .ext()
-            .khr_swapchain
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
-        loop {
-            let mut count: u32 = 0;
-            let items_ptr: *mut vk::Image = core::ptr::null_mut();
-            let r = unsafe {
-                (ext_table
-                    .get_swapchain_images_khr)(
-                    self.raw(),
-                    swapchain.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            let mut items: Vec<vk::Image> = Vec::with_capacity(count as usize);
-            items.resize_with(count as usize, Default::default);
-            let items_ptr = items.as_mut_ptr();
-            let r = unsafe {
-                (ext_table
-                    .get_swapchain_images_khr)(
-                    self.raw(),
-                    swapchain.raw(),
-                    &mut count,
-                    items_ptr.cast(),
-                )
-            };
-            if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE {
-                return Err(Error::Vk(r));
-            }
-            if r == vk::Result::INCOMPLETE {
-                continue;
-            }
-            items.truncate(count as usize);
-            return Ok(
-                items
-                    .into_iter()
-                    .map(|raw| Image::from_raw(
-                        raw,
-                        self,
-                        Some(swapchain.retained()),
-                        false,
-                    ))
-                    .collect(),
-            );
-        }
-    }
-}
-impl Device {
-    /**`vkInvalidateMappedMemoryRanges`
-
-# Valid usage
-
-The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html). Settled by the wrappers:
-
-- `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
-    #[inline]
-    pub fn invalidate_mapped_memory_ranges<'a>(
-        &self,
-        memory_ranges: &[MappedMemoryRange<'a>],
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
-            r?;
-        }
-        unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
-    }
-    /**`vkInvalidateMappedMemoryRanges` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] checks at run time: `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn invalidate_mapped_memory_ranges_unchecked<'a>(
-        &self,
-        memory_ranges: &[MappedMemoryRange<'a>],
-    ) -> Result<()> {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .invalidate_mapped_memory_ranges)(
-                self.raw(),
-                memory_ranges.len() as u32,
-                memory_ranges.as_ptr().cast(),
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkMergePipelineCaches`
-
-# Valid usage
-
-The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergePipelineCaches.html). Settled by the wrappers:
-
-- `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn merge_pipeline_caches(
-        &self,
-        dst_cache: &PipelineCache,
-        src_caches: &[&PipelineCache],
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(dst_cache.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
-            r?;
-        }
-        unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
-    }
-    /**`vkMergePipelineCaches` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn merge_pipeline_caches_unchecked(
-        &self,
-        dst_cache: &PipelineCache,
-        src_caches: &[&PipelineCache],
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(dst_cache.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .merge_pipeline_caches)(
-                self.raw(),
-                dst_cache.raw(),
-                src_caches.len() as u32,
-                src_caches.as_ptr(),
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
 #[cfg(feature = "ext_debug_utils")]
 impl Queue {
     /**`vkQueueBeginDebugUtilsLabelEXT`
@@ -10962,7 +10934,56 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
                     label_info as *const DebugUtilsLabelEXT<'a> as *const _,
                 )
             };
-            ()
+        })
+    }
+    /**`vkQueueEndDebugUtilsLabelEXT`
+
+# Valid usage
+
+The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+
+- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
+        let ext_table = self
+            .parent()
+            .ext()
+            .ext_debug_utils
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+        Ok({
+            unsafe { (ext_table.queue_end_debug_utils_label_ext)(self.raw()) };
+        })
+    }
+    /**`vkQueueInsertDebugUtilsLabelEXT`
+
+# Valid usage
+
+The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
+
+- `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub fn queue_insert_debug_utils_label_ext<'a>(
+        &self,
+        label_info: &DebugUtilsLabelEXT<'a>,
+    ) -> Result<()> {
+        let ext_table = self
+            .parent()
+            .ext()
+            .ext_debug_utils
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+        Ok({
+            unsafe {
+                (ext_table
+                    .queue_insert_debug_utils_label_ext)(
+                    self.raw(),
+                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
+                )
+            };
         })
     }
 }
@@ -11073,63 +11094,272 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
         );
         Ok(())
     }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Queue {
-    /**`vkQueueEndDebugUtilsLabelEXT`
+    /**`vkQueueSubmit`
 
 # Valid usage
 
-The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html). Settled by the wrappers:
 
-- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueSubmit-fence-00063`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit-fence-00064`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit-pCommandBuffers-00070`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit-pCommandBuffers-00071`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit-pCommandBuffers-00072`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13.
+
+- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
+- 12: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
-        let ext_table = self
-            .parent()
-            .ext()
-            .ext_debug_utils
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
-        Ok({
-            unsafe { (ext_table.queue_end_debug_utils_label_ext)(self.raw()) };
-            ()
-        })
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Queue {
-    /**`vkQueueInsertDebugUtilsLabelEXT`
-
-# Valid usage
-
-The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
-
-- `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn queue_insert_debug_utils_label_ext<'a>(
+    pub fn queue_submit<'a>(
         &self,
-        label_info: &DebugUtilsLabelEXT<'a>,
+        submits: &[SubmitInfo<'a>],
+        fence: &Fence,
     ) -> Result<()> {
-        let ext_table = self
-            .parent()
-            .ext()
-            .ext_debug_utils
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
-        Ok({
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_queue_submit(submits, fence);
+            r?;
+        }
+        crate::submission::check_fence(fence, &crate::submission::SUBMIT)?;
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+            })
+            .copied()
+            .collect();
+        crate::submission::check_command_buffers(
+            self.parent(),
+            &cbs,
+            &crate::submission::SUBMIT,
+        )?;
+        for b in submits {
+            let b = b.as_raw();
             unsafe {
-                (ext_table
-                    .queue_insert_debug_utils_label_ext)(
-                    self.raw(),
-                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
+                crate::submission::check_timeline_batch(
+                    self.parent().live(),
+                    crate::retention::raw_slice(
+                        b.p_wait_semaphores,
+                        b.wait_semaphore_count,
+                    ),
+                    crate::retention::raw_slice(
+                        b.p_signal_semaphores,
+                        b.signal_semaphore_count,
+                    ),
+                    b.p_next,
+                    &crate::submission::SUBMIT_TIMELINE,
                 )
-            };
-            ()
-        })
+            }?;
+        }
+        unsafe { self.queue_submit_unchecked(submits, fence) }
+    }
+    /**`vkQueueSubmit` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn queue_submit_unchecked<'a>(
+        &self,
+        submits: &[SubmitInfo<'a>],
+        fence: &Fence,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_0()
+                .queue_submit)(
+                self.raw(),
+                submits.len() as u32,
+                submits.as_ptr().cast(),
+                fence.raw(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        let device = self.parent();
+        let mut kept = Vec::new();
+        for s in submits {
+            unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
+        }
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+            })
+            .copied()
+            .collect();
+        let batches = crate::submission::submit_timeline_batches(device.live(), submits);
+        crate::submission::submitted(
+            device,
+            self.raw(),
+            Some(fence),
+            &cbs,
+            kept,
+            batches,
+        );
+        Ok(())
+    }
+    /**`vkQueueSubmit2`
+
+# Valid usage
+
+The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html). Settled by the wrappers:
+
+- `VUID-vkQueueSubmit2-fence-04894`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit2-fence-04895`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit2-commandBuffer-03874`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit2-commandBuffer-03875`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit2-commandBuffer-03876`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
+- `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 13.
+
+- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
+- 12: explicit rule; the wrappers do not check it*/
+    #[inline]
+    pub fn queue_submit2<'a>(
+        &self,
+        submits: &[SubmitInfo2<'a>],
+        fence: &Fence,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        #[cfg(feature = "runtime_implicit_validations")]
+        {
+            let r = self.validate_queue_submit2(submits, fence);
+            r?;
+        }
+        crate::submission::check_fence(fence, &crate::submission::SUBMIT2)?;
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(
+                    s.p_command_buffer_infos,
+                    s.command_buffer_info_count,
+                )
+            })
+            .map(|i| i.command_buffer)
+            .collect();
+        crate::submission::check_command_buffers(
+            self.parent(),
+            &cbs,
+            &crate::submission::SUBMIT2,
+        )?;
+        unsafe { self.queue_submit2_unchecked(submits, fence) }
+    }
+    /**`vkQueueSubmit2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes.*/
+    #[inline]
+    pub unsafe fn queue_submit2_unchecked<'a>(
+        &self,
+        submits: &[SubmitInfo2<'a>],
+        fence: &Fence,
+    ) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            syncs.push(fence.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe {
+            (self
+                .parent()
+                .fns()
+                .fp_v1_3()
+                .queue_submit2)(
+                self.raw(),
+                submits.len() as u32,
+                submits.as_ptr().cast(),
+                fence.raw(),
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        let device = self.parent();
+        let mut kept = Vec::new();
+        for s in submits {
+            unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
+        }
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
+            .iter()
+            .flat_map(|s| unsafe {
+                crate::retention::raw_slice(
+                    s.p_command_buffer_infos,
+                    s.command_buffer_info_count,
+                )
+            })
+            .map(|i| i.command_buffer)
+            .collect();
+        let batches = crate::submission::submit2_timeline_batches(
+            device.live(),
+            submits,
+        );
+        crate::submission::submitted(
+            device,
+            self.raw(),
+            Some(fence),
+            &cbs,
+            kept,
+            batches,
+        );
+        Ok(())
+    }
+    /**`vkQueueWaitIdle`
+
+# Valid usage
+
+The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueWaitIdle.html). Settled by the wrappers:
+
+- `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
+    #[inline]
+    pub fn queue_wait_idle(&self) -> Result<()> {
+        #[allow(clippy::vec_init_then_push)]
+        let _host_sync = {
+            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
+            syncs.push(self.host_sync().clone());
+            tuff_runtime::lock_all(syncs)
+        };
+        let r = unsafe { (self.parent().fns().fp_v1_0().queue_wait_idle)(self.raw()) };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        self.parent().live().ledger().retire_queue(self.raw());
+        Ok(())
     }
 }
 #[cfg(feature = "khr_swapchain")]
@@ -11283,279 +11513,6 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
         Ok(r)
     }
 }
-impl Queue {
-    /**`vkQueueSubmit`
-
-# Valid usage
-
-The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html). Settled by the wrappers:
-
-- `VUID-vkQueueSubmit-fence-00063`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit-fence-00064`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit-pCommandBuffers-00070`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-pCommandBuffers-00071`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-pCommandBuffers-00072`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
-
-- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
-- 12: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn queue_submit<'a>(
-        &self,
-        submits: &[SubmitInfo<'a>],
-        fence: &Fence,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_queue_submit(submits, fence);
-            r?;
-        }
-        crate::submission::check_fence(fence, &crate::submission::SUBMIT)?;
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
-            })
-            .copied()
-            .collect();
-        crate::submission::check_command_buffers(
-            self.parent(),
-            &cbs,
-            &crate::submission::SUBMIT,
-        )?;
-        for b in submits {
-            let b = b.as_raw();
-            unsafe {
-                crate::submission::check_timeline_batch(
-                    self.parent().live(),
-                    crate::retention::raw_slice(
-                        b.p_wait_semaphores,
-                        b.wait_semaphore_count,
-                    ),
-                    crate::retention::raw_slice(
-                        b.p_signal_semaphores,
-                        b.signal_semaphore_count,
-                    ),
-                    b.p_next,
-                    &crate::submission::SUBMIT_TIMELINE,
-                )
-            }?;
-        }
-        unsafe { self.queue_submit_unchecked(submits, fence) }
-    }
-    /**`vkQueueSubmit` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn queue_submit_unchecked<'a>(
-        &self,
-        submits: &[SubmitInfo<'a>],
-        fence: &Fence,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .queue_submit)(
-                self.raw(),
-                submits.len() as u32,
-                submits.as_ptr().cast(),
-                fence.raw(),
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        let device = self.parent();
-        let mut kept = Vec::new();
-        for s in submits {
-            unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
-        }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
-            })
-            .copied()
-            .collect();
-        let batches = crate::submission::submit_timeline_batches(device.live(), submits);
-        crate::submission::submitted(
-            device,
-            self.raw(),
-            Some(fence),
-            &cbs,
-            kept,
-            batches,
-        );
-        Ok(())
-    }
-}
-impl Queue {
-    /**`vkQueueSubmit2`
-
-# Valid usage
-
-The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html). Settled by the wrappers:
-
-- `VUID-vkQueueSubmit2-fence-04894`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit2-fence-04895`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit2-commandBuffer-03874`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-commandBuffer-03875`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-commandBuffer-03876`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
-
-- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
-- 12: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn queue_submit2<'a>(
-        &self,
-        submits: &[SubmitInfo2<'a>],
-        fence: &Fence,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_queue_submit2(submits, fence);
-            r?;
-        }
-        crate::submission::check_fence(fence, &crate::submission::SUBMIT2)?;
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(
-                    s.p_command_buffer_infos,
-                    s.command_buffer_info_count,
-                )
-            })
-            .map(|i| i.command_buffer)
-            .collect();
-        crate::submission::check_command_buffers(
-            self.parent(),
-            &cbs,
-            &crate::submission::SUBMIT2,
-        )?;
-        unsafe { self.queue_submit2_unchecked(submits, fence) }
-    }
-    /**`vkQueueSubmit2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn queue_submit2_unchecked<'a>(
-        &self,
-        submits: &[SubmitInfo2<'a>],
-        fence: &Fence,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_3()
-                .queue_submit2)(
-                self.raw(),
-                submits.len() as u32,
-                submits.as_ptr().cast(),
-                fence.raw(),
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        let device = self.parent();
-        let mut kept = Vec::new();
-        for s in submits {
-            unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
-        }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(
-                    s.p_command_buffer_infos,
-                    s.command_buffer_info_count,
-                )
-            })
-            .map(|i| i.command_buffer)
-            .collect();
-        let batches = crate::submission::submit2_timeline_batches(
-            device.live(),
-            submits,
-        );
-        crate::submission::submitted(
-            device,
-            self.raw(),
-            Some(fence),
-            &cbs,
-            kept,
-            batches,
-        );
-        Ok(())
-    }
-}
-impl Queue {
-    /**`vkQueueWaitIdle`
-
-# Valid usage
-
-The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueWaitIdle.html). Settled by the wrappers:
-
-- `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
-    #[inline]
-    pub fn queue_wait_idle(&self) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(self.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe { (self.parent().fns().fp_v1_0().queue_wait_idle)(self.raw()) };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        self.parent().live().ledger().retire_queue(self.raw());
-        Ok(())
-    }
-}
 impl CommandBuffer {
     /**`vkResetCommandBuffer`
 
@@ -11614,310 +11571,6 @@ The caller upholds the rules that [`Self::reset_command_buffer`] checks at run t
         self.uses().reset();
         self.keep_alive(Vec::new());
         Ok(())
-    }
-}
-impl Device {
-    /**`vkResetCommandPool`
-
-# Valid usage
-
-The rules are on [`vkResetCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandPool.html). Settled by the wrappers:
-
-- `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn reset_command_pool(
-        &self,
-        command_pool: &CommandPool,
-        flags: vk::CommandPoolResetFlags,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(command_pool.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_reset_command_pool(command_pool, flags);
-            r?;
-        }
-        crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
-        unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
-    }
-    /**`vkResetCommandPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn reset_command_pool_unchecked(
-        &self,
-        command_pool: &CommandPool,
-        flags: vk::CommandPoolResetFlags,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(command_pool.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .reset_command_pool)(self.raw(), command_pool.raw(), flags)
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        for u in command_pool.buffer_uses() {
-            u.reset();
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkResetDescriptorPool`
-
-# Valid usage
-
-The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetDescriptorPool.html). Settled by the wrappers:
-
-- `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn reset_descriptor_pool(
-        &self,
-        descriptor_pool: &DescriptorPool,
-        flags: vk::DescriptorPoolResetFlags,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(descriptor_pool.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
-            r?;
-        }
-        if descriptor_pool.has_sets() {
-            return Err(Error::Validation {
-                vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
-                message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset"
-                    .into(),
-            });
-        }
-        unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
-    }
-    /**`vkResetDescriptorPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn reset_descriptor_pool_unchecked(
-        &self,
-        descriptor_pool: &DescriptorPool,
-        flags: vk::DescriptorPoolResetFlags,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(descriptor_pool.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .reset_descriptor_pool)(self.raw(), descriptor_pool.raw(), flags)
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        descriptor_pool.forget_deferred();
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkResetEvent`
-
-# Valid usage
-
-The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html). Settled by the wrappers:
-
-- `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn reset_event(&self, event: &Event) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(event.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_reset_event(event);
-            r?;
-        }
-        unsafe { self.reset_event_unchecked(event) }
-    }
-    /**`vkResetEvent` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(event.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkResetFences`
-
-# Valid usage
-
-The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetFences.html). Settled by the wrappers:
-
-- `VUID-vkResetFences-pFences-01123`: dynamic (refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled))
-- `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkResetFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            for h in fences.iter() {
-                syncs.push(h.host_sync().clone());
-            }
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_reset_fences(fences);
-            r?;
-        }
-        for f in fences {
-            if f.submission().is_some_and(|sub| !sub.poll(self)) {
-                return Err(Error::Validation {
-                    vuid: "VUID-vkResetFences-pFences-01123",
-                    message: "a fence is reset while the queue operation that signals it may still be executing"
-                        .into(),
-                });
-            }
-        }
-        unsafe { self.reset_fences_unchecked(fences) }
-    }
-    /**`vkResetFences` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            for h in fences.iter() {
-                syncs.push(h.host_sync().clone());
-            }
-            tuff_runtime::lock_all(syncs)
-        };
-        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .reset_fences)(self.raw(), fences.len() as u32, fences.as_ptr())
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkResetQueryPool`
-
-# Valid usage
-
-The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html). Settled by the wrappers:
-
-- `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn reset_query_pool(
-        &self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_reset_query_pool(query_pool);
-            r?;
-        }
-        Ok(unsafe {
-            self.reset_query_pool_unchecked(query_pool, first_query, query_count)
-        })
-    }
-    /**`vkResetQueryPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn reset_query_pool_unchecked(
-        &self,
-        query_pool: &QueryPool,
-        first_query: u32,
-        query_count: u32,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .reset_query_pool)(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-            )
-        };
-        ()
     }
 }
 #[cfg(feature = "ext_debug_utils")]
@@ -11997,9 +11650,6 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
         }
         Ok(())
     }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Device {
     /**`vkSetDebugUtilsObjectTagEXT`
 
 # Valid usage
@@ -12072,593 +11722,5 @@ The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] check
             return Err(Error::Vk(r));
         }
         Ok(())
-    }
-}
-impl Device {
-    /**`vkSetEvent`
-
-# Valid usage
-
-The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html). Settled by the wrappers:
-
-- `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn set_event(&self, event: &Event) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(event.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_set_event(event);
-            r?;
-        }
-        unsafe { self.set_event_unchecked(event) }
-    }
-    /**`vkSetEvent` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn set_event_unchecked(&self, event: &Event) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(event.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkSetPrivateData`
-
-# Valid usage
-
-The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetPrivateData.html). Settled by the wrappers:
-
-- `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn set_private_data(
-        &self,
-        object_type: vk::ObjectType,
-        object_handle: u64,
-        private_data_slot: &PrivateDataSlot,
-        data: u64,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_set_private_data(object_type, private_data_slot);
-            r?;
-        }
-        unsafe {
-            self.set_private_data_unchecked(
-                object_type,
-                object_handle,
-                private_data_slot,
-                data,
-            )
-        }
-    }
-    /**`vkSetPrivateData` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn set_private_data_unchecked(
-        &self,
-        object_type: vk::ObjectType,
-        object_handle: u64,
-        private_data_slot: &PrivateDataSlot,
-        data: u64,
-    ) -> Result<()> {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .set_private_data)(
-                self.raw(),
-                object_type,
-                object_handle,
-                private_data_slot.raw(),
-                data,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-impl Device {
-    /**`vkSignalSemaphore`
-
-# Valid usage
-
-The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html). Settled by the wrappers:
-
-- `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn signal_semaphore<'a>(
-        &self,
-        signal_info: &SemaphoreSignalInfo<'a>,
-    ) -> Result<()> {
-        crate::submission::check_semaphore_type(
-            self.live(),
-            &[signal_info.semaphore],
-            true,
-            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
-        )?;
-        unsafe { self.signal_semaphore_unchecked(signal_info) }
-    }
-    /**`vkSignalSemaphore` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn signal_semaphore_unchecked<'a>(
-        &self,
-        signal_info: &SemaphoreSignalInfo<'a>,
-    ) -> Result<()> {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .signal_semaphore)(
-                self.raw(),
-                signal_info as *const SemaphoreSignalInfo<'a> as *const _,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl Instance {
-    /**`vkSubmitDebugUtilsMessageEXT`
-
-# Valid usage
-
-The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSubmitDebugUtilsMessageEXT.html). Settled by the wrappers:
-
-- `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn submit_debug_utils_message_ext<'a>(
-        &self,
-        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
-        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_submit_debug_utils_message_ext(
-                    message_severity,
-                    message_types,
-                    callback_data,
-                );
-            r?;
-        }
-        unsafe {
-            self.submit_debug_utils_message_ext_unchecked(
-                message_severity,
-                message_types,
-                callback_data,
-            )
-        }
-    }
-    /**`vkSubmitDebugUtilsMessageEXT` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] checks at run time: `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn submit_debug_utils_message_ext_unchecked<'a>(
-        &self,
-        message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-        message_types: vk::DebugUtilsMessageTypeFlagsEXT,
-        callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
-    ) -> Result<()> {
-        let ext_table = self
-            .ext()
-            .ext_debug_utils
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
-        Ok({
-            unsafe {
-                (ext_table
-                    .submit_debug_utils_message_ext)(
-                    self.raw(),
-                    message_severity,
-                    message_types,
-                    callback_data as *const DebugUtilsMessengerCallbackDataEXT<'a>
-                        as *const _,
-                )
-            };
-            ()
-        })
-    }
-}
-impl Device {
-    /**`vkTrimCommandPool`
-
-# Valid usage
-
-The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkTrimCommandPool.html). Settled by the wrappers:
-
-- `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkTrimCommandPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-vkTrimCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn trim_command_pool(
-        &self,
-        command_pool: &CommandPool,
-        flags: vk::CommandPoolTrimFlags,
-    ) -> Result<()> {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(command_pool.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_trim_command_pool(command_pool, flags);
-            r?;
-        }
-        Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
-    }
-    /**`vkTrimCommandPool` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-flags-zerobitmask`, `VUID-vkTrimCommandPool-commandPool-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn trim_command_pool_unchecked(
-        &self,
-        command_pool: &CommandPool,
-        flags: vk::CommandPoolTrimFlags,
-    ) {
-        #[allow(clippy::vec_init_then_push)]
-        let _host_sync = {
-            let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(command_pool.host_sync().clone());
-            tuff_runtime::lock_all(syncs)
-        };
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .trim_command_pool)(self.raw(), command_pool.raw(), flags)
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkUpdateDescriptorSetWithTemplate`
-
-# Safety
-
-`data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.
-
-# Valid usage
-
-The rules are on [`vkUpdateDescriptorSetWithTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSetWithTemplate.html). Settled by the wrappers:
-
-- `VUID-vkUpdateDescriptorSetWithTemplate-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub unsafe fn update_descriptor_set_with_template(
-        &self,
-        descriptor_set: &DescriptorSet,
-        descriptor_update_template: &DescriptorUpdateTemplate,
-        data: *const core::ffi::c_void,
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_update_descriptor_set_with_template(
-                    descriptor_update_template,
-                );
-            r?;
-        }
-        Ok(unsafe {
-            self.update_descriptor_set_with_template_unchecked(
-                descriptor_set,
-                descriptor_update_template,
-                data,
-            )
-        })
-    }
-    /**`vkUpdateDescriptorSetWithTemplate` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::update_descriptor_set_with_template`] checks at run time: `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.*/
-    #[inline]
-    pub unsafe fn update_descriptor_set_with_template_unchecked(
-        &self,
-        descriptor_set: &DescriptorSet,
-        descriptor_update_template: &DescriptorUpdateTemplate,
-        data: *const core::ffi::c_void,
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .update_descriptor_set_with_template)(
-                self.raw(),
-                descriptor_set.raw(),
-                descriptor_update_template.raw(),
-                data,
-            )
-        };
-        unsafe {
-            self.live()
-                .write_template(
-                    descriptor_set.raw(),
-                    descriptor_update_template.entries(),
-                    data,
-                )
-        };
-        ()
-    }
-}
-impl Device {
-    /**`vkUpdateDescriptorSets`
-
-# Valid usage
-
-The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
-
-- `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn update_descriptor_sets<'a>(
-        &self,
-        descriptor_writes: &[WriteDescriptorSet<'a>],
-        descriptor_copies: &[CopyDescriptorSet<'a>],
-    ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
-            r?;
-        }
-        crate::retention::Live::check_writes(unsafe {
-            core::slice::from_raw_parts(
-                descriptor_writes.as_ptr().cast(),
-                descriptor_writes.len(),
-            )
-        })?;
-        Ok(unsafe {
-            self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
-        })
-    }
-    /**`vkUpdateDescriptorSets` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn update_descriptor_sets_unchecked<'a>(
-        &self,
-        descriptor_writes: &[WriteDescriptorSet<'a>],
-        descriptor_copies: &[CopyDescriptorSet<'a>],
-    ) {
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .update_descriptor_sets)(
-                self.raw(),
-                descriptor_writes.len() as u32,
-                descriptor_writes.as_ptr().cast(),
-                descriptor_copies.len() as u32,
-                descriptor_copies.as_ptr().cast(),
-            )
-        };
-        unsafe {
-            self.live()
-                .write_sets(
-                    core::slice::from_raw_parts(
-                        descriptor_writes.as_ptr().cast(),
-                        descriptor_writes.len(),
-                    ),
-                    core::slice::from_raw_parts(
-                        descriptor_copies.as_ptr().cast(),
-                        descriptor_copies.len(),
-                    ),
-                );
-        }
-        ()
-    }
-}
-impl Device {
-    /**`vkWaitForFences`
-
-# Valid usage
-
-The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForFences.html). Settled by the wrappers:
-
-- `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWaitForFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWaitForFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
-    #[inline]
-    pub fn wait_for_fences(
-        &self,
-        fences: &[&Fence],
-        wait_all: vk::Bool32,
-        timeout: u64,
-    ) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_wait_for_fences(fences);
-            r?;
-        }
-        unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
-    }
-    /**`vkWaitForFences` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn wait_for_fences_unchecked(
-        &self,
-        fences: &[&Fence],
-        wait_all: vk::Bool32,
-        timeout: u64,
-    ) -> Result<vk::Result> {
-        let fences_w: &[&Fence] = fences;
-        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .wait_for_fences)(
-                self.raw(),
-                fences.len() as u32,
-                fences.as_ptr(),
-                wait_all,
-                timeout,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        if r == vk::Result::SUCCESS {
-            if wait_all == vk::TRUE || fences_w.len() == 1 {
-                for f in fences_w {
-                    f.completed();
-                }
-            } else {
-                for f in fences_w {
-                    if let Some(sub) = f.submission() {
-                        sub.poll(self);
-                    }
-                }
-            }
-        }
-        Ok(r)
-    }
-}
-impl Device {
-    /**`vkWaitSemaphores`
-
-# Valid usage
-
-The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitSemaphores.html). Settled by the wrappers:
-
-- `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
-    #[inline]
-    pub fn wait_semaphores<'a>(
-        &self,
-        wait_info: &SemaphoreWaitInfo<'a>,
-        timeout: u64,
-    ) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_wait_semaphores(wait_info);
-            r?;
-        }
-        let semaphores = unsafe {
-            crate::retention::raw_slice(
-                wait_info.p_semaphores,
-                wait_info.semaphore_count,
-            )
-        };
-        crate::submission::check_semaphore_type(
-            self.live(),
-            semaphores,
-            true,
-            "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
-        )?;
-        unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
-    }
-    /**`vkWaitSemaphores` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`, and those of the structs it takes.*/
-    #[inline]
-    pub unsafe fn wait_semaphores_unchecked<'a>(
-        &self,
-        wait_info: &SemaphoreWaitInfo<'a>,
-        timeout: u64,
-    ) -> Result<vk::Result> {
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .wait_semaphores)(
-                self.raw(),
-                wait_info as *const SemaphoreWaitInfo<'a> as *const _,
-                timeout,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        if r == vk::Result::SUCCESS
-            && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY)
-        {
-            let semaphores = unsafe {
-                crate::retention::raw_slice(
-                    wait_info.p_semaphores,
-                    wait_info.semaphore_count,
-                )
-            };
-            let values = unsafe {
-                crate::retention::raw_slice(
-                    wait_info.p_values,
-                    wait_info.semaphore_count,
-                )
-            };
-            for (s, v) in semaphores.iter().zip(values) {
-                self.live().ledger().reached(*s, *v);
-            }
-        }
-        Ok(r)
     }
 }

@@ -533,13 +533,19 @@ pub fn plans(cx: &Context) -> Vec<(String, Result<Plan, String>)> {
 /// The `commands` module, and the `command_checks` module with the named dynamic checks
 /// that its checked methods call.
 pub(super) fn emit(cx: &Context, checker: &Checker, plans: &[&Plan]) -> (TokenStream, TokenStream) {
-    let mut items = Vec::new();
-    let mut validators = Vec::new();
+    let mut items = ImplBlocks::default();
+    let mut validators = ImplBlocks::default();
     for plan in plans {
-        let (item, validator) = emit_command(cx, checker, plan);
-        items.push(item);
-        validators.extend(validator);
+        let (header, item, validator) = emit_command(cx, checker, plan);
+        if item.is_empty() {
+            continue;
+        }
+        if let Some(v) = validator {
+            validators.push(header.clone(), v);
+        }
+        items.push(header, item);
     }
+    let (items, validators) = (items.render(), validators.render());
     let commands = quote! {
         //! Commands as methods on the wrappers they dispatch on.
         #![allow(
@@ -579,11 +585,12 @@ pub(super) fn emit(cx: &Context, checker: &Checker, plans: &[&Plan]) -> (TokenSt
     (commands, checks)
 }
 
+/// A command's `impl` header, its methods, and its `validate_*` method if it has checks.
 fn emit_command(
     cx: &Context,
     checker: &Checker,
     plan: &Plan,
-) -> (TokenStream, Option<TokenStream>) {
+) -> (TokenStream, TokenStream, Option<TokenStream>) {
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
     let cfg = super::names::cfg_of(model, model.condition(&plan.name));
@@ -620,7 +627,7 @@ fn emit_command(
                 quote!(let ext_table = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?;),
             )
         }
-        None => return (quote!(), None),
+        None => return (quote!(), quote!(), None),
     };
     let fallible_ext = !ext_check.is_empty();
     let mut args: Vec<TokenStream> = Vec::new(); // method parameters
@@ -974,7 +981,7 @@ fn emit_command(
                 }
             }
             Param::EnumCount => {
-                call_args.push(quote!(&mut count,));
+                call_args.push(quote!(count,));
             }
             Param::Enumerated => {
                 let elem_is_handle = model.category(&p.type_name) == Some("handle");
@@ -1178,33 +1185,29 @@ fn emit_command(
         .and_then(|(p, _)| ash_type(model, &cx.facts, &p.type_name))
         .unwrap_or(quote!(u32));
     let body = if let Some(elem) = &two_call {
-        let check = if cmd.return_type == "VkResult" {
-            quote!(let r = unsafe { #fp(#(#call_args)*) }; if r != vk::Result::SUCCESS && r != vk::Result::INCOMPLETE { return Err(Error::Vk(r)); })
+        let call = if cmd.return_type == "VkResult" {
+            quote!(#fp(#(#call_args)*))
         } else {
-            quote!(unsafe { #fp(#(#call_args)*) };)
-        };
-        let repeat = if cmd.return_type == "VkResult" {
-            quote!(if r == vk::Result::INCOMPLETE {
-                continue;
+            quote!({
+                #fp(#(#call_args)*);
+                vk::Result::SUCCESS
             })
-        } else {
-            quote!()
         };
-        quote! {
-            #(#pre)*
-            loop {
-                let mut count: #count_ty = 0;
-                let items_ptr: *mut #elem = core::ptr::null_mut();
-                // SAFETY: the first call only writes the count.
-                #check
-                let mut items: Vec<#elem> = Vec::with_capacity(count as usize);
-                items.resize_with(count as usize, Default::default);
-                let items_ptr = items.as_mut_ptr();
-                // SAFETY: `items` holds `count` elements for the second call.
-                #check
-                #repeat
-                items.truncate(count as usize);
-                return Ok(#ret_expr);
+        // SAFETY: the closure calls the enumeration command with the count and the
+        // array `two_call` gives it; every other argument comes from a live wrapper or
+        // a reference that outlives the call.
+        let enumerate = quote! {
+            unsafe {
+                crate::support::two_call(|count: &mut #count_ty, items_ptr: *mut #elem| #call)
+            }
+        };
+        if ret_expr.to_string() == "items" {
+            quote!(#(#pre)* #enumerate)
+        } else {
+            quote! {
+                #(#pre)*
+                let items = #enumerate?;
+                Ok(#ret_expr)
             }
         }
     } else if cmd.return_type == "VkResult" {
@@ -1240,6 +1243,8 @@ fn emit_command(
             #ok
         }
     } else if cmd.return_type == "void" {
+        // A unit result is left out, as hand-written code would.
+        let unit_free_ret = (ret_expr.to_string() != "()").then_some(&ret_expr);
         quote! {
             #(#pre)*
             // SAFETY: every handle argument comes from a live wrapper, every pointer from
@@ -1248,7 +1253,7 @@ fn emit_command(
             unsafe { #fp(#(#call_args)*) };
             #(#post)*
             #(#retain)*
-            #ret_expr
+            #unit_free_ret
         }
     } else {
         let rt = ash_type(model, &cx.facts, &cmd.return_type).unwrap_or(quote!(()));
@@ -1489,20 +1494,14 @@ fn emit_command(
             }
         }
     };
-    let validator = validator.map(|v| in_impl(plan, cmd, &cfg, v));
-    (in_impl(plan, cmd, &cfg, method), validator)
+    (impl_header(plan, cmd, &cfg), method, validator)
 }
 
-/// `item` in an `impl` block of the command's receiver (a recorder in the states the
-/// command is allowed in, for recorded commands).
-fn in_impl(
-    plan: &Plan,
-    cmd: &CommandDef,
-    cfg: &Option<TokenStream>,
-    item: TokenStream,
-) -> TokenStream {
+/// The `impl` block header a command's methods go in: its receiver (a recorder in the
+/// states the command is allowed in, for recorded commands), under its `cfg`.
+fn impl_header(plan: &Plan, cmd: &CommandDef, cfg: &Option<TokenStream>) -> TokenStream {
     match plan.receiver.as_str() {
-        "Entry" => quote!(#cfg impl Entry { #item }),
+        "Entry" => quote!(#cfg impl Entry),
         "VkCommandBuffer" if recorded(plan) => {
             let state = match (cmd.renderpass.as_deref(), plan.name.as_str()) {
                 (
@@ -1517,12 +1516,32 @@ fn in_impl(
                 (Some("outside"), _) => quote!(impl<'c> Recorder<'c, Outside>),
                 _ => quote!(impl<'c, S: State> Recorder<'c, S>),
             };
-            quote!(#cfg #state { #item })
+            quote!(#cfg #state)
         }
         r => {
             let w = type_ident(r);
-            quote!(#cfg impl #w { #item })
+            quote!(#cfg impl #w)
         }
+    }
+}
+
+/// Items grouped into one `impl` block per header, in the order headers first appear.
+#[derive(Default)]
+struct ImplBlocks(Vec<(String, TokenStream, Vec<TokenStream>)>);
+
+impl ImplBlocks {
+    fn push(&mut self, header: TokenStream, item: TokenStream) {
+        let key = header.to_string();
+        match self.0.iter_mut().find(|(k, _, _)| *k == key) {
+            Some((_, _, items)) => items.push(item),
+            None => self.0.push((key, header, vec![item])),
+        }
+    }
+
+    fn render(self) -> impl Iterator<Item = TokenStream> {
+        self.0
+            .into_iter()
+            .map(|(_, header, items)| quote!(#header { #(#items)* }))
     }
 }
 
