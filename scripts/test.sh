@@ -20,3 +20,6 @@ cargo test -p tuff-tests --features runtime_implicit_validations --test implicit
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 bash scripts/valgrind.sh
+# The generator outside the emitted subset: another registry and every extension
+# ash has, regenerated into scratch crates and compiled (scripts/wide-check.sh).
+bash scripts/wide-check.sh 1.4.309 all-ash-exts

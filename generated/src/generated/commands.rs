@@ -60,15 +60,15 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
     ) -> Result<(u32, vk::Result)> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .acquire_next_image2_khr;
         let mut out: u32 = Default::default();
         let r = unsafe {
-            (ext_table
-                .acquire_next_image2_khr)(
+            fp(
                 self.raw(),
                 acquire_info as *const AcquireNextImageInfoKHR<'a> as *const _,
                 &mut out,
@@ -157,15 +157,15 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
             }
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .acquire_next_image_khr;
         let mut out: u32 = Default::default();
         let r = unsafe {
-            (ext_table
-                .acquire_next_image_khr)(
+            fp(
                 self.raw(),
                 swapchain.raw(),
                 timeout,
@@ -243,22 +243,17 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
                 );
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .create_swapchain_khr;
         let mut create_info = *create_info;
         create_info.as_raw_mut().surface = surface.raw();
         let mut out = vk::SwapchainKHR::null();
         let r = unsafe {
-            (ext_table
-                .create_swapchain_khr)(
-                self.raw(),
-                create_info.as_raw(),
-                core::ptr::null(),
-                &mut out,
-            )
+            fp(self.raw(), create_info.as_raw(), core::ptr::null(), &mut out)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -278,14 +273,14 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
         &self,
         device_group_present_capabilities: &mut DeviceGroupPresentCapabilitiesKHR<'a>,
     ) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .get_device_group_present_capabilities_khr;
         let r = unsafe {
-            (ext_table
-                .get_device_group_present_capabilities_khr)(
+            fp(
                 self.raw(),
                 device_group_present_capabilities
                     as *mut DeviceGroupPresentCapabilitiesKHR<'a> as *mut _,
@@ -342,20 +337,14 @@ The caller upholds the rules that [`Self::get_device_group_surface_present_modes
             syncs.push(surface.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .get_device_group_surface_present_modes_khr;
         let mut out: vk::DeviceGroupPresentModeFlagsKHR = Default::default();
-        let r = unsafe {
-            (ext_table
-                .get_device_group_surface_present_modes_khr)(
-                self.raw(),
-                surface.raw(),
-                &mut out,
-            )
-        };
+        let r = unsafe { fp(self.raw(), surface.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -394,14 +383,14 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
         &self,
         swapchain: &SwapchainKHR,
     ) -> Result<Vec<Image>> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .get_swapchain_images_khr;
         let items = unsafe {
-            crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Image| (ext_table
-                .get_swapchain_images_khr)(
+            crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Image| fp(
                 self.raw(),
                 swapchain.raw(),
                 count,
@@ -4349,19 +4338,16 @@ The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] chec
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .device()
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .cmd_begin_debug_utils_label_ext;
         Ok({
             unsafe {
-                (ext_table
-                    .cmd_begin_debug_utils_label_ext)(
-                    self.raw(),
-                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
-                )
+                fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
         })
     }
@@ -4393,14 +4379,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .device()
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .cmd_end_debug_utils_label_ext;
         Ok({
-            unsafe { (ext_table.cmd_end_debug_utils_label_ext)(self.raw()) };
+            unsafe { fp(self.raw()) };
         })
     }
     /**`vkCmdInsertDebugUtilsLabelEXT`
@@ -4436,19 +4423,16 @@ The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] che
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .device()
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .cmd_insert_debug_utils_label_ext;
         Ok({
             unsafe {
-                (ext_table
-                    .cmd_insert_debug_utils_label_ext)(
-                    self.raw(),
-                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
-                )
+                fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
         })
     }
@@ -9119,15 +9103,15 @@ The caller upholds the rules that [`Self::create_debug_utils_messenger_ext`] che
         &self,
         create_info: &DebugUtilsMessengerCreateInfoEXT<'a>,
     ) -> Result<DebugUtilsMessengerEXT> {
-        let ext_table = self
+        let fp = self
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .create_debug_utils_messenger_ext;
         let mut out = vk::DebugUtilsMessengerEXT::null();
         let r = unsafe {
-            (ext_table
-                .create_debug_utils_messenger_ext)(
+            fp(
                 self.raw(),
                 create_info as *const DebugUtilsMessengerCreateInfoEXT<'a> as *const _,
                 core::ptr::null(),
@@ -9189,15 +9173,15 @@ The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] check
         message_types: vk::DebugUtilsMessageTypeFlagsEXT,
         callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
     ) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .submit_debug_utils_message_ext;
         Ok({
             unsafe {
-                (ext_table
-                    .submit_debug_utils_message_ext)(
+                fp(
                     self.raw(),
                     message_severity,
                     message_types,
@@ -10285,15 +10269,15 @@ The caller upholds the rules that [`Self::create_metal_surface_ext`] checks at r
         &self,
         create_info: &MetalSurfaceCreateInfoEXT<'a>,
     ) -> Result<SurfaceKHR> {
-        let ext_table = self
+        let fp = self
             .ext()
             .ext_metal_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_metal_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_metal_surface"))?
+            .create_metal_surface_ext;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table
-                .create_metal_surface_ext)(
+            fp(
                 self.raw(),
                 create_info as *const MetalSurfaceCreateInfoEXT<'a> as *const _,
                 core::ptr::null(),
@@ -10340,15 +10324,15 @@ The caller upholds the rules that [`Self::create_wayland_surface_khr`] checks at
         &self,
         create_info: &WaylandSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_wayland_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?
+            .create_wayland_surface_khr;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table
-                .create_wayland_surface_khr)(
+            fp(
                 self.raw(),
                 create_info as *const WaylandSurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -10395,15 +10379,15 @@ The caller upholds the rules that [`Self::create_win32_surface_khr`] checks at r
         &self,
         create_info: &Win32SurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_win32_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?
+            .create_win32_surface_khr;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table
-                .create_win32_surface_khr)(
+            fp(
                 self.raw(),
                 create_info as *const Win32SurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -10450,15 +10434,15 @@ The caller upholds the rules that [`Self::create_xcb_surface_khr`] checks at run
         &self,
         create_info: &XcbSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_xcb_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?
+            .create_xcb_surface_khr;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table
-                .create_xcb_surface_khr)(
+            fp(
                 self.raw(),
                 create_info as *const XcbSurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -10505,15 +10489,15 @@ The caller upholds the rules that [`Self::create_xlib_surface_khr`] checks at ru
         &self,
         create_info: &XlibSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        let ext_table = self
+        let fp = self
             .ext()
             .khr_xlib_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))?
+            .create_xlib_surface_khr;
         let mut out = vk::SurfaceKHR::null();
         let r = unsafe {
-            (ext_table
-                .create_xlib_surface_khr)(
+            fp(
                 self.raw(),
                 create_info as *const XlibSurfaceCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
@@ -10627,15 +10611,15 @@ The caller upholds the rules that [`Self::get_physical_device_present_rectangles
             syncs.push(surface.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .get_physical_device_present_rectangles_khr;
         unsafe {
-            crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Rect2D| (ext_table
-                .get_physical_device_present_rectangles_khr)(
+            crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Rect2D| fp(
                 self.raw(),
                 surface.raw(),
                 count,
@@ -10680,21 +10664,15 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
+            .get_physical_device_surface_capabilities_khr;
         let mut out: vk::SurfaceCapabilitiesKHR = Default::default();
-        let r = unsafe {
-            (ext_table
-                .get_physical_device_surface_capabilities_khr)(
-                self.raw(),
-                surface.raw(),
-                &mut out,
-            )
-        };
+        let r = unsafe { fp(self.raw(), surface.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -10735,18 +10713,18 @@ The caller upholds the rules that [`Self::get_physical_device_surface_formats_kh
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
+            .get_physical_device_surface_formats_khr;
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::SurfaceFormatKHR|
-            (ext_table
-                .get_physical_device_surface_formats_khr)(
+            fp(
                 self.raw(),
                 surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
                 count,
@@ -10789,18 +10767,18 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
+            .get_physical_device_surface_present_modes_khr;
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::PresentModeKHR|
-            (ext_table
-                .get_physical_device_surface_present_modes_khr)(
+            fp(
                 self.raw(),
                 surface.map_or(vk::SurfaceKHR::null(), |h| h.raw()),
                 count,
@@ -10849,22 +10827,15 @@ The caller upholds the rules that [`Self::get_physical_device_surface_support_kh
         queue_family_index: u32,
         surface: &SurfaceKHR,
     ) -> Result<vk::Bool32> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
+            .get_physical_device_surface_support_khr;
         let mut out: vk::Bool32 = Default::default();
-        let r = unsafe {
-            (ext_table
-                .get_physical_device_surface_support_khr)(
-                self.raw(),
-                queue_family_index,
-                surface.raw(),
-                &mut out,
-            )
-        };
+        let r = unsafe { fp(self.raw(), queue_family_index, surface.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -10887,20 +10858,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         queue_family_index: u32,
     ) -> Result<vk::Bool32> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_win32_surface
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?
+            .get_physical_device_win32_presentation_support_khr;
         Ok({
-            let r = unsafe {
-                (ext_table
-                    .get_physical_device_win32_presentation_support_khr)(
-                    self.raw(),
-                    queue_family_index,
-                )
-            };
+            let r = unsafe { fp(self.raw(), queue_family_index) };
             r
         })
     }
@@ -10920,19 +10886,16 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
         &self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .queue_begin_debug_utils_label_ext;
         Ok({
             unsafe {
-                (ext_table
-                    .queue_begin_debug_utils_label_ext)(
-                    self.raw(),
-                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
-                )
+                fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
         })
     }
@@ -10947,14 +10910,15 @@ The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .queue_end_debug_utils_label_ext;
         Ok({
-            unsafe { (ext_table.queue_end_debug_utils_label_ext)(self.raw()) };
+            unsafe { fp(self.raw()) };
         })
     }
     /**`vkQueueInsertDebugUtilsLabelEXT`
@@ -10970,19 +10934,16 @@ The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://re
         &self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .queue_insert_debug_utils_label_ext;
         Ok({
             unsafe {
-                (ext_table
-                    .queue_insert_debug_utils_label_ext)(
-                    self.raw(),
-                    label_info as *const DebugUtilsLabelEXT<'a> as *const _,
-                )
+                fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
         })
     }
@@ -11482,12 +11443,13 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
             }
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .parent()
             .ext()
             .khr_swapchain
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
+            .queue_present_khr;
         let device = self.parent();
         let mut kept = Vec::new();
         unsafe {
@@ -11501,11 +11463,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
             crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()),
         );
         let r = unsafe {
-            (ext_table
-                .queue_present_khr)(
-                self.raw(),
-                present_info as *const PresentInfoKHR<'a> as *const _,
-            )
+            fp(self.raw(), present_info as *const PresentInfoKHR<'a> as *const _)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -11633,14 +11591,14 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
                 );
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .set_debug_utils_object_name_ext;
         let r = unsafe {
-            (ext_table
-                .set_debug_utils_object_name_ext)(
+            fp(
                 self.raw(),
                 name_info as *const DebugUtilsObjectNameInfoEXT<'a> as *const _,
             )
@@ -11706,17 +11664,14 @@ The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] check
                 );
             tuff_runtime::lock_all(syncs)
         };
-        let ext_table = self
+        let fp = self
             .ext()
             .ext_debug_utils
             .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?;
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
+            .set_debug_utils_object_tag_ext;
         let r = unsafe {
-            (ext_table
-                .set_debug_utils_object_tag_ext)(
-                self.raw(),
-                tag_info as *const DebugUtilsObjectTagInfoEXT<'a> as *const _,
-            )
+            fp(self.raw(), tag_info as *const DebugUtilsObjectTagInfoEXT<'a> as *const _)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));

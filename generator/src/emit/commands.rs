@@ -617,14 +617,17 @@ fn emit_command(
     let (table_expr, ext_check) = match table(model, &plan.name) {
         Some(Table::Core(m)) => {
             let fp = ident(&format!("fp_v1_{m}"));
-            (quote!(#device_path.fns().#fp()), quote!())
+            (Some(quote!(#device_path.fns().#fp())), quote!())
         }
         Some(Table::Extension(e)) => {
             let fe = ident(&super::names::feature(&e));
             let msg = e.clone();
+            let field = f.clone();
+            // The function pointer is copied out, so that no borrow of the receiver's
+            // table is held across what the call does to the receiver.
             (
-                quote!(ext_table),
-                quote!(let ext_table = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?;),
+                None,
+                quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?.#field;),
             )
         }
         None => return (quote!(), quote!(), None),
@@ -839,8 +842,21 @@ fn emit_command(
                 } else {
                     ty
                 };
-                pre.push(quote!(let mut out: #ty = Default::default();));
-                call_args.push(quote!(&mut out,));
+                // A pointer typedef (`VkRemoteAddressNV`, `void*`) is spelled by ash
+                // without its pointer, so the output is a pointer to it, written
+                // through the `void**` the command takes.
+                let pointer_typedef = model.types.get(&p.type_name).is_some_and(|t| {
+                    t.category.as_deref() == Some("basetype") && t.code.contains('*')
+                });
+                let ty = if pointer_typedef {
+                    pre.push(quote!(let mut out: *mut #ty = core::ptr::null_mut();));
+                    call_args.push(quote!(core::ptr::addr_of_mut!(out).cast(),));
+                    quote!(*mut #ty)
+                } else {
+                    pre.push(quote!(let mut out: #ty = Default::default();));
+                    call_args.push(quote!(&mut out,));
+                    ty
+                };
                 ret_ty = ty;
                 ret_expr = quote!(out);
             }
@@ -1165,7 +1181,10 @@ fn emit_command(
             cbs
         });
     }
-    let fp = quote!((#table_expr.#f));
+    let fp = match &table_expr {
+        Some(table) => quote!((#table.#f)),
+        None => quote!(fp),
+    };
     let success: Vec<String> = cmd
         .successcodes
         .as_deref()

@@ -148,6 +148,9 @@ fn member_shape(
     if m.selector.is_some() {
         return Member::Unsupported("a union member chosen by another member".into());
     }
+    if m.bitfield.is_some() {
+        return Member::Unsupported("a C bitfield, which ash packs with its neighbours".into());
+    }
     let first_len = p.len.first().cloned();
     let count_of = |e: &Option<LenEntry>| -> Option<String> {
         match e {

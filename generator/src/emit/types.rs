@@ -41,9 +41,13 @@ impl TypeFacts {
             self.lifetime.insert(name.to_owned(), v);
             return v;
         }
+        // ash gives a struct a lifetime for any pointer member, but a union only
+        // through a member type that has one (`PerformanceValueDataINTEL`, with a
+        // string pointer, has none).
+        let is_union = t.category.as_deref() == Some("union");
         let members = t.members.clone();
         let v = members.iter().any(|m| {
-            m.pointers > 0
+            (m.pointers > 0 && !is_union)
                 || (depth < 16
                     && matches!(model.category(&m.type_name), Some("struct" | "union"))
                     && self.lifetime_of(model, &m.type_name, depth + 1))
@@ -142,6 +146,15 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
                 Some("funcpointer") => {
                     let id = ident(name);
                     Some(quote!(vk::#id))
+                }
+                // The video codecs' own types (video.xml), in ash's `native` module.
+                None if t
+                    .bit_values
+                    .as_deref()
+                    .is_some_and(|header| header.starts_with("vk_video/")) =>
+                {
+                    let id = ident(name);
+                    Some(quote!(vk::native::#id))
                 }
                 None if t.name.chars().next().is_some_and(char::is_alphabetic) => {
                     // Platform types (Display, HWND, ...) ash re-exports under vk.

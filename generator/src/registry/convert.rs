@@ -243,6 +243,9 @@ fn declaration(code: &str, type_name: &str, name: &str) -> Field {
             .strip_prefix('[')
             .and_then(|rest| rest.split_once(']'))
             .map(|(size, _)| size.trim().to_owned()),
+        bitfield: after_name
+            .strip_prefix(':')
+            .and_then(|width| width.trim().parse().ok()),
         ..Field::default()
     }
 }
@@ -398,6 +401,14 @@ fn convert_requires(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn reads_bitfield_widths() {
+        let f = declaration("uint32_t                 mask:8", "uint32_t", "mask");
+        assert_eq!(f.bitfield, Some(8));
+        let g = declaration("uint32_t mask", "uint32_t", "mask");
+        assert_eq!(g.bitfield, None);
+    }
 
     #[test]
     fn reads_const_pointers_and_arrays() {

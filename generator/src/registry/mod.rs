@@ -92,6 +92,8 @@ pub struct Field {
     pub values: Option<String>,
     /// `deprecated`, as written.
     pub deprecated: Option<String>,
+    /// For a C bitfield (`uint32_t mask:8`): its width in bits.
+    pub bitfield: Option<u32>,
 }
 
 /// One `<enums>` group.

@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# Wide-configuration check: regenerate the tuff crate from inputs other than the
+# pinned ones, each into its own scratch workspace, and `cargo check` the result with
+# every feature on. It guards the generator outside the emitted subset: a change that
+# breaks what another registry or a wider config emits fails here.
+#
+# Configurations (one line each in the table below):
+#   1.4.309        the newest registry with validusage.json, pinned config
+#   all-ash-exts   the pinned registry with every extension it shares with the
+#                  registry ash 0.38 was generated from (1.3.281), except those
+#                  that are provisional in the pinned registry: their items changed
+#                  before ash's registry (VK_KHR_video_encode_queue's members, say)
+#
+# Usage: bash scripts/wide-check.sh [NAME ...]   (default: all)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+registry="$root/../shared/registry"
+scratch="$(mktemp -d)"
+[ -n "${WIDE_KEEP:-}" ] && echo "wide-check: scratch kept in $scratch" || trap 'rm -rf "$scratch"' EXIT
+# One target folder for every configuration, so ash and friends build once.
+export CARGO_TARGET_DIR="$root/target/wide"
+
+cargo build -q --manifest-path "$root/Cargo.toml" -p tuff-gen
+gen="$CARGO_TARGET_DIR/debug/tuff-gen"
+
+# A workspace like the repository's, holding a copy of the tuff crate (its
+# hand-written modules) and of the runtime it depends on.
+workspace() {
+    local dir="$1"
+    mkdir -p "$dir"
+    sed -n '/^\[workspace.package\]/,/^$/p' "$root/Cargo.toml" >"$dir/ws-package.toml"
+    {
+        printf '[workspace]\nresolver = "2"\nmembers = ["generated", "runtime"]\n\n'
+        cat "$dir/ws-package.toml"
+    } >"$dir/Cargo.toml"
+    rm "$dir/ws-package.toml"
+    cp "$root/Cargo.lock" "$dir/"
+    mkdir -p "$dir/generated" "$dir/runtime"
+    cp -r "$root/generated/src" "$root/generated/Cargo.toml" "$dir/generated/"
+    cp -r "$root/runtime/src" "$root/runtime/Cargo.toml" "$dir/runtime/"
+}
+
+# The extensions of the pinned registry that the 1.3.281 registry (ash 0.38's) also
+# has, supported for Vulkan and not provisional in the pinned one.
+all_ash_extensions() {
+    python3 - "$root/vk.xml" "$registry/1.3.281/vk.xml" <<'EOF'
+import sys, xml.etree.ElementTree as ET
+def exts(path):
+    out = {}
+    for e in ET.parse(path).getroot().iter("extension"):
+        if "vulkan" in (e.get("supported") or "").split(","):
+            out[e.get("name")] = e
+    return out
+pinned, ash = exts(sys.argv[1]), exts(sys.argv[2])
+names = sorted(n for n in pinned if n in ash and pinned[n].get("provisional") != "true")
+print("\n".join(names))
+EOF
+}
+
+check() {
+    local name="$1" dir="$scratch/$1"
+    shift
+    workspace "$dir"
+    local start=$SECONDS
+    "$gen" "$@" --out "$dir/generated" >"$dir/gen.log" 2>&1 || {
+        cat "$dir/gen.log"
+        echo "wide-check: $name: tuff-gen failed" >&2
+        return 1
+    }
+    if ! cargo check -q --manifest-path "$dir/Cargo.toml" -p tuff \
+        --features all_extensions,runtime_implicit_validations,multi_thread 2>"$dir/check.log"; then
+        grep -E '^error' "$dir/check.log" | sort | uniq -c | sort -rn | head -20 >&2
+        echo "wide-check: $name: the generated crate does not compile ($(grep -c '^error' "$dir/check.log") errors)" >&2
+        return 1
+    fi
+    echo "wide-check: $name: ok ($(cat "$dir"/generated/src/generated/*.rs | wc -l) generated lines, $((SECONDS - start)) s)"
+}
+
+names=("$@")
+[ ${#names[@]} -gt 0 ] || names=(1.4.309)
+status=0
+for name in "${names[@]}"; do
+    case "$name" in
+    1.4.309)
+        check "$name" --registry "$registry/1.4.309/vk.xml" || status=1
+        ;;
+    all-ash-exts)
+        cfg="$scratch/all.toml"
+        {
+            echo 'api_version = "1.3"'
+            echo 'extensions = ['
+            all_ash_extensions | sed 's/.*/    "&",/'
+            echo ']'
+        } >"$cfg"
+        check "$name" --config "$cfg" || status=1
+        ;;
+    *)
+        echo "wide-check: unknown configuration $name (known: 1.4.309 all-ash-exts)" >&2
+        status=1
+        ;;
+    esac
+done
+exit $status
