@@ -231,7 +231,7 @@ fn the_newer_registry_runs_without_validusage() {
 
 #[test]
 fn the_report_tallies_only_the_records_handed_to_it() {
-    use tuff_gen::emit::{Record, Settlement};
+    use tuff_gen::plan::{Record, Settlement};
     use tuff_gen::report;
     let l = pinned();
     let none = report::build(&l.model, &l.validity, &[]);

@@ -8,8 +8,13 @@
 //! 2. [`model`]: resolve handles, commands, structs and the conditions under which
 //!    each exists, and select the emitted API from the [`config`].
 //! 3. [`validity`]: derive every implicit rule, attach and classify the explicit ones.
-//! 4. [`emit`]: write code, recording how it settles each rule.
-//! 5. [`report`]: tally the records into `VALIDATION.md`, `validation.json` and an SVG.
+//! 4. [`plan`]: decide, once, every command's and struct's shape, the dynamic checks,
+//!    and how each rule is settled.
+//! 5. [`emit`]: render the plans as Rust; [`report`]: tally the plans' records into
+//!    `VALIDATION.md`, `validation.json` and an SVG.
+//!
+//! Each pass imports only those before it ([`names`] is the shared spelling of
+//! registry names in Rust); `tests/generator_layers.rs` holds that.
 //!
 //! ```no_run
 //! use tuff_gen::{generate, Options};
@@ -26,7 +31,9 @@ pub mod config;
 pub mod emit;
 pub mod error;
 pub mod model;
+pub mod names;
 pub mod output;
+pub mod plan;
 pub mod registry;
 pub mod report;
 pub mod validity;
@@ -106,8 +113,10 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     }
     let model = model::Model::build(&reg, &config, &opts.config)?;
     let validity = validity::analyze(&model, vu.as_ref());
-    let emission = emit::emit(&model, &validity, &config);
-    let report = report::build(&model, &validity, &emission.records);
+    let cx = plan::Context::new(&model, &validity);
+    let plans = plan::Plans::build(&cx);
+    let emission = emit::emit(&plans, &config);
+    let report = report::build(&model, &validity, &plans.records);
     let mut files = emission.files;
     files.extend(report::render(&report));
     Ok(Generation {

@@ -3,10 +3,11 @@
 //! clone to go destroys or frees the handle, so children keep parents alive and a
 //! command buffer or a pending submission that holds a clone keeps what it uses alive.
 
-use super::names::{
+use crate::names::{
     ash_extension_module, cfg_of, command_fn, feature, ident, level, type_ident, Level,
 };
-use super::Context;
+use crate::plan::commands::parent_of;
+use crate::plan::Context;
 use proc_macro2::TokenStream;
 use quote::quote;
 
@@ -18,12 +19,6 @@ pub fn emitted_handles(cx: &Context) -> Vec<String> {
         .filter(|n| cx.model.emitted.contains(*n))
         .cloned()
         .collect()
-}
-
-/// The parent a wrapper holds: the handle it is created from (the pool for command
-/// buffers and descriptor sets).
-pub fn parent_of(cx: &Context, handle: &str) -> Option<String> {
-    cx.model.handles.get(handle)?.parent_chain.first().cloned()
 }
 
 /// `.parent()` steps from `from` up to the wrapper of type `to`, or `None`.
@@ -57,7 +52,7 @@ pub fn extensions_at(cx: &Context, at: Level) -> Vec<String> {
         {
             continue;
         }
-        if let Some(super::names::Table::Extension(e)) = super::names::table(cx.model, &c.name) {
+        if let Some(crate::names::Table::Extension(e)) = crate::names::table(cx.model, &c.name) {
             if !exts.contains(&e) {
                 exts.push(e);
             }
@@ -391,7 +386,7 @@ fn emit_device(cx: &Context) -> TokenStream {
 fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     let model = cx.model;
     let id = type_ident(name);
-    let inner = ident(&format!("{}Inner", super::names::type_name(name)));
+    let inner = ident(&format!("{}Inner", crate::names::type_name(name)));
     let cfg = cfg_of(model, model.condition(name));
     let handle = &model.handles[name];
     let parent = parent_of(cx, name);
@@ -472,12 +467,12 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     let drop_impl = destroy.as_ref().and_then(|d| {
         let cmd = &model.commands[d];
         let device_path = inner_path(cx, name, &cmd.params[0].type_name)?;
-        let table = match super::names::table(model, d)? {
-            super::names::Table::Core(m) => {
+        let table = match crate::names::table(model, d)? {
+            crate::names::Table::Core(m) => {
                 let fp = ident(&format!("fp_v1_{m}"));
                 quote!(self #device_path.fns().#fp())
             }
-            super::names::Table::Extension(e) => {
+            crate::names::Table::Extension(e) => {
                 let f = ident(&feature(e.as_str()));
                 quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
             }

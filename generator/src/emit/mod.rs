@@ -1,64 +1,22 @@
-//! Emit pass: one emitter per kind of item writes Rust into `generated/`, and records,
-//! for every rule it touches, how the emitted code settles it. The report is tallied
-//! from these records alone, so it cannot claim more than the code does.
+//! Emit pass: renderers, one per kind of output, that turn the [`Plans`] into Rust
+//! under `generated/src/generated/`. They decide nothing the report reads: the
+//! settlement of every rule is in the plans, so docs, code and report agree.
 
 mod api_info;
 pub mod checks;
 pub mod commands;
 pub mod handles;
-pub mod names;
 pub mod reach;
-pub mod settle;
-pub mod shape;
 pub mod structs;
 pub mod sync;
-pub mod types;
 
 use crate::config::Config;
 use crate::model::Model;
-use crate::validity::Validity;
+use crate::names;
+use crate::plan::{Plans, Settlement};
 use proc_macro2::TokenStream;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
-/// How emitted code settles one rule.
-#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
-#[serde(tag = "status", content = "mechanism", rename_all = "lowercase")]
-pub enum Settlement {
-    /// Enforced by types at compile time; the text names the mechanism.
-    Static(String),
-    /// Checked at run time; the text names the check.
-    Dynamic(String),
-    /// Left to the user; the text says why.
-    User(String),
-}
-
-impl Settlement {
-    /// `static`, `dynamic` or `user`.
-    pub fn status(&self) -> &'static str {
-        match self {
-            Settlement::Static(_) => "static",
-            Settlement::Dynamic(_) => "dynamic",
-            Settlement::User(_) => "user",
-        }
-    }
-
-    /// The mechanism or reason.
-    pub fn mechanism(&self) -> &str {
-        match self {
-            Settlement::Static(m) | Settlement::Dynamic(m) | Settlement::User(m) => m,
-        }
-    }
-}
-
-/// An emitter's statement about one rule.
-#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
-pub struct Record {
-    /// The rule.
-    pub vuid: String,
-    /// How it is settled.
-    pub settlement: Settlement,
-}
-
 /// One file of the output, relative to the output folder.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct OutputFile {
@@ -68,34 +26,18 @@ pub struct OutputFile {
     pub contents: String,
 }
 
-/// What the emitters produced.
+/// What the renderers produced.
 #[derive(Debug, Clone, Default)]
 pub struct Emission {
     /// Source files.
     pub files: Vec<OutputFile>,
-    /// Settlement records, from every emitter.
-    pub records: Vec<Record>,
-}
-
-/// What every emitter reads.
-pub struct Context<'m> {
-    /// The model.
-    pub model: &'m Model,
-    /// The rules.
-    pub validity: &'m Validity,
-    /// Facts about structs.
-    pub facts: types::TypeFacts,
-    /// The structs whose walk can find a handle (see `reach`).
-    pub reaching: std::collections::BTreeSet<String>,
-    /// Records by item, for the docs.
-    pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
 }
 
 /// The rules of an item as a doc section: a link to the specification's reference
 /// page, each rule the wrappers settle with how, and a count of those left to the
 /// caller by reason (`validation.json` lists them one by one).
-pub(crate) fn doc_rules(cx: &Context, item: &str) -> String {
-    let Some(rules) = cx.by_item.get(item) else {
+pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
+    let Some(rules) = plans.by_item.get(item) else {
         return String::new();
     };
     let mut s = format!(
@@ -161,60 +103,30 @@ fn format(tokens: TokenStream, header: &str) -> String {
     format!("{header}\n\n{text}")
 }
 
-/// Run every emitter.
-pub fn emit(model: &Model, validity: &Validity, config: &Config) -> Emission {
-    let mut cx = Context {
-        model,
-        validity,
-        facts: types::TypeFacts::new(model),
-        reaching: Default::default(),
-        by_item: BTreeMap::new(),
-    };
-    cx.reaching = reach::reaching(&cx);
-    let records = {
-        let plans = commands::plans(&cx);
-        let ok: Vec<&commands::Plan> = plans.iter().filter_map(|(_, p)| p.as_ref().ok()).collect();
-        let checker = checks::Checker::new(&cx, &ok);
-        settle::records(&cx, &checker)
-    };
-    let item_of: BTreeMap<&str, &str> = validity
-        .rules
-        .iter()
-        .map(|r| (r.vuid.as_str(), r.item.as_str()))
-        .collect();
-    for r in &records {
-        if let Some(item) = item_of.get(r.vuid.as_str()) {
-            cx.by_item
-                .entry((*item).to_owned())
-                .or_default()
-                .push((r.vuid.clone(), r.settlement.clone()));
-        }
-    }
+/// Run every renderer over the plans.
+pub fn emit(plans: &Plans, config: &Config) -> Emission {
+    let cx = plans.cx;
     let mut emission = Emission::default();
-    api_info::emit(model, config, &mut emission);
-    let header = HEADER;
-    let plans = commands::plans(&cx);
-    let ok: Vec<&commands::Plan> = plans.iter().filter_map(|(_, p)| p.as_ref().ok()).collect();
-    let checker = checks::Checker::new(&cx, &ok);
-    let (commands, command_checks) = commands::emit(&cx, &checker, &ok);
+    api_info::emit(cx.model, config, &mut emission);
+    let ok = plans.ok();
+    let (commands, command_checks) = commands::emit(plans, &ok);
     for (path, tokens) in [
-        ("src/generated/handles.rs", handles::emit(&cx)),
-        ("src/generated/structs.rs", structs::emit(&cx)),
+        ("src/generated/handles.rs", handles::emit(cx)),
+        ("src/generated/structs.rs", structs::emit(plans)),
         ("src/generated/commands.rs", commands),
         ("src/generated/command_checks.rs", command_checks),
-        ("src/generated/checks.rs", checker.emit()),
-        ("src/generated/reach.rs", reach::emit(&cx)),
+        ("src/generated/checks.rs", checks::emit(&plans.checker)),
+        ("src/generated/reach.rs", reach::emit(cx)),
     ] {
         emission.files.push(OutputFile {
             path: path.into(),
-            contents: format(tokens, header),
+            contents: format(tokens, HEADER),
         });
     }
     emission.files.push(OutputFile {
         path: "Cargo.toml".into(),
-        contents: cargo_toml(model),
+        contents: cargo_toml(cx.model),
     });
-    emission.records = records;
     emission
 }
 

@@ -4,61 +4,13 @@
 //! keeps alive every live object the walk finds, so none goes while Vulkan may
 //! still use it; the walk is derived from the model, not listed by hand.
 
-use super::checks::{snake, struct_type_value};
-use super::names::{cfg_of, field_ident, ident, type_ident};
-use super::shape::{struct_members, Member};
-use super::Context;
+use crate::names::{cfg_of, field_ident, ident, type_ident};
+use crate::plan::checks::{snake, struct_type_value};
+use crate::plan::reach::extenders;
+use crate::plan::shape::{struct_members, Member};
+use crate::plan::Context;
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
-use std::collections::BTreeSet;
-
-/// The structs of the emitted API whose walk can find a handle.
-pub fn reaching(cx: &Context) -> BTreeSet<String> {
-    let model = cx.model;
-    let candidates: Vec<&String> = model
-        .emitted
-        .iter()
-        .filter(|n| model.category(n) == Some("struct") && cx.facts.is_safe(n))
-        .filter(|n| model.types[*n].alias.is_none())
-        .collect();
-    let mut found = BTreeSet::new();
-    // A fixed point: a struct reaches a handle when a member is one, or leads to a
-    // struct that reaches one.
-    loop {
-        let before = found.len();
-        for name in &candidates {
-            if found.contains(*name) {
-                continue;
-            }
-            let hit = struct_members(model, &cx.facts, name)
-                .iter()
-                .any(|(m, s)| match s {
-                    Member::Handle { .. } | Member::HandleSlice { .. } => true,
-                    Member::StructRef { .. }
-                    | Member::Nested
-                    | Member::Slice { safe: true, .. } => found.contains(&m.type_name),
-                    Member::PNext => extenders(cx, name).any(|e| found.contains(e)),
-                    _ => false,
-                });
-            if hit {
-                found.insert((*name).clone());
-            }
-        }
-        if found.len() == before {
-            return found;
-        }
-    }
-}
-
-/// The emitted structs that may extend `head`'s chain.
-fn extenders<'a>(cx: &'a Context, head: &'a str) -> impl Iterator<Item = &'a String> + 'a {
-    cx.model.types.values().filter_map(move |t| {
-        (cx.model.emitted.contains(&t.name)
-            && t.alias.is_none()
-            && t.struct_extends.iter().any(|h| h == head))
-        .then_some(&t.name)
-    })
-}
 
 /// The walk function of `name`, as a path from the generated crate's root.
 pub fn walk_fn(name: &str) -> TokenStream {

@@ -4,10 +4,11 @@
 //! at the call is free and a slice of safe structs is a valid C array. `pNext` chains
 //! are typed: `push_next` accepts only structs that `structextends` the head.
 
-use super::names::{cfg_of, field_ident, type_ident};
-use super::shape::{count_groups, struct_members, CountGroup, Member};
-use super::types::{array_size, ash_type, TypeFacts};
-use super::{doc_rules, Context};
+use super::doc_rules;
+use crate::names::{cfg_of, field_ident, type_ident};
+use crate::plan::shape::{count_groups, struct_members, CountGroup, Member};
+use crate::plan::types::{array_size, ash_type, TypeFacts};
+use crate::plan::{Context, Plans};
 use crate::registry::Field;
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -27,10 +28,11 @@ pub fn safe_structs(cx: &Context) -> Vec<String> {
         .collect()
 }
 
-pub(super) fn emit(cx: &Context) -> TokenStream {
+pub(super) fn emit(plans: &Plans) -> TokenStream {
+    let cx = plans.cx;
     let mut items = Vec::new();
     for name in safe_structs(cx) {
-        items.push(emit_struct(cx, &name));
+        items.push(emit_struct(plans, &name));
     }
     quote! {
         //! Safe counterparts of the registry's structs that carry handles, pointers or
@@ -43,7 +45,8 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
     }
 }
 
-fn emit_struct(cx: &Context, name: &str) -> TokenStream {
+fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
+    let cx = plans.cx;
     let model = cx.model;
     let facts: &TypeFacts = &cx.facts;
     let t = &model.types[name];
@@ -67,7 +70,7 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
     let returned_only = t.returned_only;
     for (m, shape) in &members {
         let f = field_ident(&m.name);
-        let setter = field_ident(&super::names::param(&m.name));
+        let setter = field_ident(&crate::names::param(&m.name));
         let doc = format!("Sets `{}`.", m.name);
         let ty = ash_type(model, facts, &m.type_name);
         if returned_only && !matches!(shape, Member::PNext) {
@@ -255,10 +258,10 @@ fn emit_struct(cx: &Context, name: &str) -> TokenStream {
         }
     }
     let has_next = members.iter().any(|(_, s)| matches!(s, Member::PNext));
-    let rules = doc_rules(cx, name);
+    let rules = doc_rules(plans, name);
     let doc = format!(
         "Safe counterpart of [`vk::{}`].{rules}",
-        super::names::type_name(name)
+        crate::names::type_name(name)
     );
     let mut parts = Vec::new();
     let new_fn = if ctor_args.is_empty() {
@@ -392,7 +395,7 @@ fn array_setter(
     array_tys: &[(String, TokenStream)],
 ) -> Option<TokenStream> {
     let f = field_ident(&m.name);
-    let setter = field_ident(&super::names::param(&m.name));
+    let setter = field_ident(&crate::names::param(&m.name));
     let c = field_ident(&array.count);
     let ty = &array.ty;
     let Some(g) = groups.iter().find(|g| g.holds(&m.name)) else {
@@ -498,12 +501,12 @@ fn lead_setter(
                 .1
         })
         .collect();
-    let setter = field_ident(&super::names::param(&first.name));
+    let setter = field_ident(&crate::names::param(&first.name));
     let c = field_ident(&g.count);
     let params: Vec<_> = g
         .leads
         .iter()
-        .map(|l| field_ident(&super::names::param(l)))
+        .map(|l| field_ident(&crate::names::param(l)))
         .collect();
     let fields: Vec<_> = g.leads.iter().map(|l| field_ident(l)).collect();
     let first_param = &params[0];
@@ -549,7 +552,7 @@ fn count_setter(m: &Field, ty: TokenStream, groups: &[CountGroup]) -> TokenStrea
         .find(|g| g.count == m.name)
         .expect("a group of this count");
     let f = field_ident(&m.name);
-    let setter = field_ident(&super::names::param(&m.name));
+    let setter = field_ident(&crate::names::param(&m.name));
     let arrays: Vec<_> = g.others("").map(|o| field_ident(o)).collect();
     let names: Vec<String> = g.others("").map(|o| format!("`{o}`")).collect();
     let doc = format!(

@@ -8,8 +8,9 @@ mod json;
 mod markdown;
 mod svg;
 
-use crate::emit::{OutputFile, Record, Settlement};
+use crate::emit::OutputFile;
 use crate::model::Model;
+use crate::plan::{Record, Settlement};
 use crate::validity::{Category, Rule, Validity};
 use std::collections::BTreeMap;
 

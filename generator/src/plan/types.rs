@@ -1,7 +1,7 @@
 //! Which registry types get safe counterparts, and the `ash` spelling of every type.
 
-use super::names::{ident, type_ident};
 use crate::model::Model;
+use crate::names::{ident, type_ident};
 use proc_macro2::TokenStream;
 use quote::quote;
 use std::collections::BTreeMap;
@@ -136,7 +136,7 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
                 }
                 Some("enum") if name.contains("FlagBits") => {
                     // ash has one type for a bitmask and its bits.
-                    let id = ident(&super::names::type_name(name).replace("FlagBits", "Flags"));
+                    let id = ident(&crate::names::type_name(name).replace("FlagBits", "Flags"));
                     Some(quote!(vk::#id))
                 }
                 Some("handle" | "enum" | "bitmask" | "basetype") => {

@@ -2,15 +2,19 @@
 //! settles it. The decisions read the same shapes and plans the emitters use.
 
 use super::checks::Checker;
-use super::commands::{handled_elsewhere, plans, Param, Plan};
+use super::commands::{handled_elsewhere, Param, Plan};
 use super::shape::{struct_members, Member};
 use super::{Context, Record, Settlement};
 use crate::validity::{Category, ImplicitKind};
 use std::collections::BTreeMap;
 
 /// Records for every rule of the emitted API.
-pub fn records(cx: &Context, checker: &Checker) -> Vec<Record> {
-    let plans: BTreeMap<String, Result<Plan, String>> = plans(cx).into_iter().collect();
+pub fn records(
+    cx: &Context,
+    checker: &Checker,
+    commands: &[(String, Result<Plan, String>)],
+) -> Vec<Record> {
+    let plans: BTreeMap<String, Result<Plan, String>> = commands.iter().cloned().collect();
     let derived: BTreeMap<&str, &crate::validity::DerivedRule> = cx
         .validity
         .derived

@@ -1,0 +1,305 @@
+//! Command plans: for every emitted command, the wrapper it becomes a method of and
+//! the shape of each parameter, or why it cannot be emitted safely.
+
+use super::Context;
+use crate::model::LenEntry;
+use crate::names::table;
+use crate::registry::CommandDef;
+
+/// How one parameter is taken and passed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Param {
+    /// The dispatchable handle: `self`.
+    Dispatch,
+    /// `pAllocator`: always NULL.
+    Allocator,
+    /// A count that a slice argument fills in.
+    Count,
+    /// A plain value.
+    Value,
+    /// A fixed-size array, by reference.
+    Array,
+    /// A handle, as a wrapper.
+    Handle {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of handles, as a slice of wrapper references.
+    HandleSlice,
+    /// One struct by reference.
+    StructRef {
+        /// May be null.
+        optional: bool,
+    },
+    /// An array of structs or values.
+    Slice,
+    /// Bytes sized by a count parameter.
+    Bytes,
+    /// Bytes Vulkan writes, sized by a count parameter.
+    BytesOut,
+    /// A `void*` whose layout another parameter describes (`pData` of an update
+    /// template): passed through as a raw pointer, which makes the method `unsafe`.
+    RawData,
+    /// A C string.
+    CStr {
+        /// May be null.
+        optional: bool,
+    },
+    /// A struct Vulkan fills in, whose `pNext` chain the caller builds.
+    InOut,
+    /// The value the command writes, returned.
+    Output,
+    /// The handle the command creates, returned as a wrapper.
+    Created,
+    /// Handles the command creates, one per element of an input array.
+    CreatedArray,
+    /// A count and an array filled in two calls, returned as a Vec.
+    Enumerated,
+    /// The count of an enumeration.
+    EnumCount,
+}
+
+/// A command's plan, or why it has none.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The command.
+    pub name: String,
+    /// The wrapper whose method it becomes.
+    pub receiver: String,
+    /// One shape per parameter.
+    pub params: Vec<Param>,
+}
+
+/// Commands that are emitted as part of something else (destroy and free run in
+/// `Drop`; begin and end of a command buffer are the recorder's typestate).
+pub fn handled_elsewhere(cx: &Context, name: &str) -> Option<&'static str> {
+    if cx
+        .model
+        .handles
+        .values()
+        .any(|h| h.destroyed_by.iter().any(|d| d == name))
+    {
+        return Some("destroy");
+    }
+    match name {
+        "vkBeginCommandBuffer" | "vkEndCommandBuffer" => Some("recorder"),
+        "vkGetInstanceProcAddr" | "vkGetDeviceProcAddr" => Some("loader"),
+        "vkMapMemory" | "vkUnmapMemory" | "vkMapMemory2KHR" => Some("mapping"),
+        _ => None,
+    }
+}
+
+/// The queue operations whose fence is required: it holds what they use until they
+/// complete, and `vkQueueSubmit*` and `vkQueueBindSparse` have no other completion a
+/// host can see.
+const SUBMITS_WITH_FENCE: &[&str] = &["vkQueueSubmit", "vkQueueSubmit2", "vkQueueBindSparse"];
+
+/// The parent a wrapper holds: the handle it is created from (the pool for command
+/// buffers and descriptor sets).
+pub fn parent_of(cx: &Context, handle: &str) -> Option<String> {
+    cx.model.handles.get(handle)?.parent_chain.first().cloned()
+}
+
+/// Whether a command is recorded into its command buffer (and so is a method of the
+/// recorder), rather than acting on the buffer itself.
+pub fn recorded(plan: &Plan) -> bool {
+    plan.receiver == "VkCommandBuffer" && plan.name.starts_with("vkCmd")
+}
+
+/// Plan a command, or say why it cannot be emitted safely.
+pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
+    let model = cx.model;
+    let cmd = &model.commands[name];
+    let first = cmd.params.first().ok_or("no parameters")?;
+    let receiver = if model.category(&first.type_name) == Some("handle")
+        && model.types[&first.type_name].dispatchable
+    {
+        first.type_name.clone()
+    } else {
+        "Entry".to_owned()
+    };
+    if table(model, name).is_none() {
+        return Err("no function table".into());
+    }
+    if let Some(path) = super::sync::unsupported_member(cx, name) {
+        return Err(format!(
+            "`{path}` is externally synchronized and the wrappers cannot lock it"
+        ));
+    }
+    let parsed: Vec<_> = cmd.params.iter().map(|p| model.parse_field(p)).collect();
+    // Counts named by another parameter's len.
+    let count_refs: Vec<(usize, String)> = parsed
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| match p.len.first() {
+            Some(LenEntry::Reference(parts)) if parts.len() == 1 => Some((i, parts[0].clone())),
+            _ => None,
+        })
+        .collect();
+    let mut params = Vec::new();
+    for (i, (p, pp)) in cmd.params.iter().zip(&parsed).enumerate() {
+        let category = model.category(&p.type_name);
+        let optional = pp.optional.first().copied().unwrap_or(false);
+        let is_count = count_refs.iter().any(|(_, c)| c == &p.name);
+        let shape = if i == 0 && receiver != "Entry" {
+            Param::Dispatch
+        } else if p.type_name == "VkAllocationCallbacks" {
+            Param::Allocator
+        } else if is_count && p.pointers == 0 {
+            Param::Count
+        } else if is_count && p.pointers == 1 && !p.is_const {
+            Param::EnumCount
+        } else if p.pointers == 0 {
+            if p.static_array.is_some() {
+                Param::Array
+            } else if category == Some("handle") {
+                // A submission's fence is required: it is what keeps the submitted
+                // command buffers alive until they complete.
+                let fence_of_submit =
+                    SUBMITS_WITH_FENCE.contains(&name) && p.type_name == "VkFence";
+                Param::Handle {
+                    optional: optional && !fence_of_submit,
+                }
+            } else if category.is_some() || super::shape::is_c_scalar(&p.type_name) {
+                if matches!(category, Some("struct" | "union"))
+                    && cx.facts.has_lifetime(&p.type_name)
+                {
+                    return Err(format!("`{}` by value with pointers", p.name));
+                }
+                Param::Value
+            } else {
+                return Err(format!("`{}` of type {}", p.name, p.type_name));
+            }
+        } else if p.pointers == 1 && p.is_const {
+            let len = pp.len.first();
+            match (len, category) {
+                (None, Some("struct")) => Param::StructRef { optional },
+                (None, Some("union")) if cx.facts.union_is_plain(model, &p.type_name) => {
+                    Param::StructRef { optional }
+                }
+                (Some(LenEntry::NullTerminated), None) if p.type_name == "char" => {
+                    Param::CStr { optional }
+                }
+                (Some(LenEntry::Reference(parts)), _) if parts.len() == 1 => match category {
+                    Some("handle") => Param::HandleSlice,
+                    _ if p.type_name == "void" => Param::Bytes,
+                    Some("struct") | Some("union") | Some(_) => Param::Slice,
+                    None if super::shape::is_c_scalar(&p.type_name) => Param::Slice,
+                    None => return Err(format!("`{}`: array of {}", p.name, p.type_name)),
+                },
+                (None, None) if p.type_name == "void" => Param::RawData,
+                _ => return Err(format!("`{}`: pointer with length {:?}", p.name, pp.len)),
+            }
+        } else if p.pointers == 1 && !p.is_const {
+            let len = pp.len.first();
+            let enumerated = matches!(len, Some(LenEntry::Reference(parts))
+                if parts.len() == 1 && cmd.params.iter().any(|q| q.name == parts[0] && q.pointers == 1));
+            match (len, category) {
+                (None, None)
+                    if p.type_name != "void" && !super::shape::is_c_scalar(&p.type_name) =>
+                {
+                    return Err(format!("`{}`: a window-system object", p.name))
+                }
+                (Some(LenEntry::Reference(parts)), None)
+                    if p.type_name == "void" && parts.len() == 1 && !enumerated =>
+                {
+                    Param::BytesOut
+                }
+                (None, Some("handle")) => Param::Created,
+                (_, Some("handle")) if !enumerated => Param::CreatedArray,
+                (_, _) if enumerated => Param::Enumerated,
+                (None, Some("struct")) if has_next(cx, &p.type_name) => Param::InOut,
+                (None, _) if p.type_name != "void" => Param::Output,
+                _ => return Err(format!("`{}`: output {:?}", p.name, pp.len)),
+            }
+        } else {
+            return Err(format!("`{}`: {} levels of pointer", p.name, p.pointers));
+        };
+        params.push(shape);
+    }
+    let outputs = params
+        .iter()
+        .filter(|p| {
+            matches!(
+                p,
+                Param::Output | Param::Created | Param::CreatedArray | Param::Enumerated
+            )
+        })
+        .count();
+    if outputs > 1 {
+        return Err("several outputs".into());
+    }
+    if params
+        .iter()
+        .any(|p| matches!(p, Param::Created | Param::CreatedArray))
+    {
+        let created = cmd
+            .params
+            .last()
+            .map(|p| p.type_name.clone())
+            .unwrap_or_default();
+        let parent = parent_of(cx, &created).unwrap_or_default();
+        if !(parent == receiver
+            || created == "VkInstance"
+            || parent_param(cx, cmd, &parent).is_some())
+        {
+            return Err(format!(
+                "creates a {created} whose parent {parent} it does not name"
+            ));
+        }
+        if params.iter().any(|p| matches!(p, Param::CreatedArray)) {
+            // The count lives in an input struct (`pAllocateInfo->commandBufferCount`)
+            // or is the length of an input array (`createInfoCount`).
+            let len = &parsed.last().map(|p| p.len.clone()).unwrap_or_default();
+            if !matches!(len.first(), Some(LenEntry::Reference(_))) {
+                return Err("created array without a length".into());
+            }
+        }
+    }
+    Ok(Plan {
+        name: name.to_owned(),
+        receiver,
+        params,
+    })
+}
+
+fn has_next(cx: &Context, name: &str) -> bool {
+    cx.model
+        .types
+        .get(name)
+        .is_some_and(|t| t.members.iter().any(|m| m.name == "pNext"))
+}
+
+/// A parameter (direct or a member of a struct parameter) of type `parent`.
+pub fn parent_param(
+    cx: &Context,
+    cmd: &CommandDef,
+    parent: &str,
+) -> Option<(String, Option<String>)> {
+    for p in &cmd.params {
+        if p.type_name == parent && p.pointers == 0 {
+            return Some((p.name.clone(), None));
+        }
+        if let Some(t) = cx.model.types.get(&p.type_name) {
+            if let Some(m) = t
+                .members
+                .iter()
+                .find(|m| m.type_name == parent && m.pointers == 0)
+            {
+                return Some((p.name.clone(), Some(m.name.clone())));
+            }
+        }
+    }
+    None
+}
+
+/// Every emitted command with its plan or the reason it has none.
+pub fn plans(cx: &Context) -> Vec<(String, Result<Plan, String>)> {
+    cx.model
+        .commands
+        .values()
+        .filter(|c| c.alias.is_none() && cx.model.emitted.contains(&c.name))
+        .filter(|c| handled_elsewhere(cx, &c.name).is_none())
+        .map(|c| (c.name.clone(), plan(cx, &c.name)))
+        .collect()
+}

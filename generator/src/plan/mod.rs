@@ -1,0 +1,141 @@
+//! Plan pass: decides, once, everything the renderers and the report read. For every
+//! emitted command its parameters' shapes ([`commands::Plan`]); for every struct its
+//! members' shapes ([`shape`]); the dynamic checks of commands and structs
+//! ([`checks::Checker`]); the host synchronization of each call ([`sync`]); which
+//! structs can reach a handle ([`reach`]); and for every rule of the emitted API how
+//! it is settled ([`settle`]). Renderers (`emit`) and the report are functions of
+//! [`Plans`]; nothing here imports them.
+
+pub mod checks;
+pub mod commands;
+pub mod reach;
+pub mod settle;
+pub mod shape;
+pub mod sync;
+pub mod types;
+
+use crate::model::Model;
+use crate::validity::Validity;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// How emitted code settles one rule.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+#[serde(tag = "status", content = "mechanism", rename_all = "lowercase")]
+pub enum Settlement {
+    /// Enforced by types at compile time; the text names the mechanism.
+    Static(String),
+    /// Checked at run time; the text names the check.
+    Dynamic(String),
+    /// Left to the user; the text says why.
+    User(String),
+}
+
+impl Settlement {
+    /// `static`, `dynamic` or `user`.
+    pub fn status(&self) -> &'static str {
+        match self {
+            Settlement::Static(_) => "static",
+            Settlement::Dynamic(_) => "dynamic",
+            Settlement::User(_) => "user",
+        }
+    }
+
+    /// The mechanism or reason.
+    pub fn mechanism(&self) -> &str {
+        match self {
+            Settlement::Static(m) | Settlement::Dynamic(m) | Settlement::User(m) => m,
+        }
+    }
+}
+
+/// The plan's statement about one rule.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct Record {
+    /// The rule.
+    pub vuid: String,
+    /// How it is settled.
+    pub settlement: Settlement,
+}
+
+/// What the plan is built from, and the facts every part of it reads.
+pub struct Context<'m> {
+    /// The model.
+    pub model: &'m Model,
+    /// The rules.
+    pub validity: &'m Validity,
+    /// Facts about structs.
+    pub facts: types::TypeFacts,
+    /// The structs whose walk can find a handle (see [`reach`]).
+    pub reaching: BTreeSet<String>,
+}
+
+impl<'m> Context<'m> {
+    /// The facts of `model` and `validity`.
+    pub fn new(model: &'m Model, validity: &'m Validity) -> Context<'m> {
+        let mut cx = Context {
+            model,
+            validity,
+            facts: types::TypeFacts::new(model),
+            reaching: BTreeSet::new(),
+        };
+        cx.reaching = reach::reaching(&cx);
+        cx
+    }
+}
+
+/// Every decision about the emitted API, made once.
+pub struct Plans<'c, 'm> {
+    /// What the plans were built from.
+    pub cx: &'c Context<'m>,
+    /// Every emitted command with its plan, or why it has none, in name order.
+    pub commands: Vec<(String, Result<commands::Plan, String>)>,
+    /// The dynamic checks of every command and struct.
+    pub checker: checks::Checker<'c, 'm>,
+    /// For every rule of the emitted API, how it is settled.
+    pub records: Vec<Record>,
+    /// The same records by the item (command or struct) each rule belongs to.
+    pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
+}
+
+impl<'c, 'm> Plans<'c, 'm> {
+    /// Plan every emitted command and struct, and settle every rule.
+    pub fn build(cx: &'c Context<'m>) -> Plans<'c, 'm> {
+        let commands = commands::plans(cx);
+        let ok: Vec<&commands::Plan> = commands
+            .iter()
+            .filter_map(|(_, p)| p.as_ref().ok())
+            .collect();
+        let checker = checks::Checker::new(cx, &ok);
+        let records = settle::records(cx, &checker, &commands);
+        let item_of: BTreeMap<&str, &str> = cx
+            .validity
+            .rules
+            .iter()
+            .map(|r| (r.vuid.as_str(), r.item.as_str()))
+            .collect();
+        let mut by_item: BTreeMap<String, Vec<(String, Settlement)>> = BTreeMap::new();
+        for r in &records {
+            if let Some(item) = item_of.get(r.vuid.as_str()) {
+                by_item
+                    .entry((*item).to_owned())
+                    .or_default()
+                    .push((r.vuid.clone(), r.settlement.clone()));
+            }
+        }
+        Plans {
+            cx,
+            commands,
+            checker,
+            records,
+            by_item,
+        }
+    }
+
+    /// The commands that have a plan.
+    pub fn ok(&self) -> Vec<&commands::Plan> {
+        self.commands
+            .iter()
+            .filter_map(|(_, p)| p.as_ref().ok())
+            .collect()
+    }
+}
