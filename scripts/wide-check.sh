@@ -73,7 +73,7 @@ check() {
         echo "wide-check: $name: the generated crate does not compile ($(grep -c '^error' "$dir/check.log") errors)" >&2
         return 1
     fi
-    echo "wide-check: $name: ok ($(cat "$dir"/generated/src/generated/*.rs | wc -l) generated lines, $((SECONDS - start)) s)"
+    echo "wide-check: $name: ok ($(find "$dir/generated/src/generated" -name "*.rs" -exec cat {} + | wc -l) generated lines, $((SECONDS - start)) s)"
 }
 
 names=("$@")

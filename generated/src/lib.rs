@@ -22,14 +22,14 @@
 #[path = "generated/api_info.rs"]
 pub mod api_info;
 #[cfg(feature = "runtime_implicit_validations")]
-#[path = "generated/checks.rs"]
+#[path = "generated/checks/mod.rs"]
 #[rustfmt::skip]
 mod checks;
 #[cfg(feature = "runtime_implicit_validations")]
 #[path = "generated/command_checks.rs"]
 #[rustfmt::skip]
 mod command_checks;
-#[path = "generated/commands.rs"]
+#[path = "generated/commands/mod.rs"]
 #[rustfmt::skip]
 mod commands;
 #[path = "generated/handles.rs"]
@@ -38,7 +38,7 @@ pub mod handles;
 #[path = "generated/reach.rs"]
 #[rustfmt::skip]
 mod reach;
-#[path = "generated/structs.rs"]
+#[path = "generated/structs/mod.rs"]
 #[rustfmt::skip]
 pub mod structs;
 

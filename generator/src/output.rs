@@ -149,20 +149,26 @@ pub fn check(out: &Path, files: &[OutputFile]) -> Result<()> {
     }
 }
 
-/// Files in the generated folder of `out` that are not among `files`, relative to `out`.
+/// Files in the generated folder of `out` (and its subfolders) that are not among
+/// `files`, relative to `out`.
 fn stale(out: &Path, files: &[OutputFile]) -> Result<Vec<std::path::PathBuf>> {
-    let dir = out.join(GENERATED_DIR);
-    let entries = match std::fs::read_dir(&dir) {
-        Ok(entries) => entries,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
-        Err(source) => return Err(Error::Write { path: dir, source }),
-    };
     let mut found = Vec::new();
-    for entry in entries {
-        let entry = entry.map_err(write_err(&dir))?;
-        let rel = Path::new(GENERATED_DIR).join(entry.file_name());
-        if entry.path().is_file() && !files.iter().any(|f| f.path == rel) {
-            found.push(rel);
+    let mut todo = vec![std::path::PathBuf::from(GENERATED_DIR)];
+    while let Some(rel_dir) = todo.pop() {
+        let dir = out.join(&rel_dir);
+        let entries = match std::fs::read_dir(&dir) {
+            Ok(entries) => entries,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => continue,
+            Err(source) => return Err(Error::Write { path: dir, source }),
+        };
+        for entry in entries {
+            let entry = entry.map_err(write_err(&dir))?;
+            let rel = rel_dir.join(entry.file_name());
+            if entry.path().is_dir() {
+                todo.push(rel);
+            } else if !files.iter().any(|f| f.path == rel) {
+                found.push(rel);
+            }
         }
     }
     found.sort();
@@ -292,7 +298,7 @@ mod tests {
     fn a_module_no_longer_generated_is_flagged_then_retired() {
         let dir = tempfile::tempdir().unwrap();
         let (old, kept) = (
-            file("src/generated/old.rs", "old\n"),
+            file("src/generated/sub/old.rs", "old\n"),
             file("src/generated/kept.rs", "kept\n"),
         );
         let hand = file("src/lib.rs", "hand-written\n");
@@ -300,11 +306,11 @@ mod tests {
         let text = check(dir.path(), std::slice::from_ref(&kept))
             .unwrap_err()
             .to_string();
-        assert!(text.contains("src/generated/old.rs: stale"), "{text}");
+        assert!(text.contains("src/generated/sub/old.rs: stale"), "{text}");
         // Outside the generated folder nothing is the generator's to judge.
         assert!(!text.contains("lib.rs"), "{text}");
         write_all(dir.path(), std::slice::from_ref(&kept)).unwrap();
-        assert!(!dir.path().join("src/generated/old.rs").exists());
+        assert!(!dir.path().join("src/generated/sub/old.rs").exists());
         assert!(dir.path().join("src/lib.rs").exists());
         check(dir.path(), &[kept]).unwrap();
     }

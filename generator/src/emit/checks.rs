@@ -9,8 +9,8 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 use std::collections::{BTreeMap, BTreeSet};
 
-/// `src/checks.rs`.
-pub fn emit(checker: &Checker) -> TokenStream {
+/// `checks/`: the shared scope code, the value checks and the struct checks.
+pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     let model = checker.cx.model;
     let mut needs: BTreeSet<String> = BTreeSet::new();
     let mut fns = Vec::new();
@@ -70,19 +70,43 @@ pub fn emit(checker: &Checker) -> TokenStream {
         }
     };
     let exts = origins.emit();
-    quote! {
+    let head = quote! {
         //! The dynamic checks of implicit rules, compiled in with
-        //! `runtime_implicit_validations`.
+        //! `runtime_implicit_validations`: the enabled versions and extensions here,
+        //! the checks of enum and flags values in `values`, those of each struct in
+        //! `struct_checks`.
         #![allow(dead_code, clippy::match_overlapping_arm, clippy::unnecessary_cast, clippy::match_same_arms)]
         use crate::validation::{fail, Scope};
         use crate::Result;
         use ash::vk;
+        mod struct_checks;
+        mod values;
+        pub(crate) use struct_checks::*;
+        pub(crate) use values::*;
         #exts
-        #(#values)*
         #members
         #chain
-        #(#fns)*
-    }
+    };
+    vec![
+        ("checks/mod.rs".to_owned(), head),
+        (
+            "checks/values.rs".to_owned(),
+            quote! {
+                //! The checks of enum and flags values: each value is one that the
+                //! versions and extensions enabled where the call runs define.
+                use super::*;
+                #(#values)*
+            },
+        ),
+        (
+            "checks/struct_checks.rs".to_owned(),
+            quote! {
+                //! The checks of each struct's implicit rules, over the ash struct.
+                use super::*;
+                #(#fns)*
+            },
+        ),
+    ]
 }
 
 /// The `pNext` walk: uniqueness of structure types, then each struct's own checks.

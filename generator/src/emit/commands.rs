@@ -245,8 +245,9 @@ fn kept_member(name: &str) -> Option<(&'static str, &'static str)> {
 
 /// The `commands` module, and the `command_checks` module with the named dynamic checks
 /// that its checked methods call.
-pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (TokenStream, TokenStream) {
-    let mut items = ImplBlocks::default();
+pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>, TokenStream) {
+    let mut modules: std::collections::BTreeMap<String, (Vec<String>, ImplBlocks)> =
+        Default::default();
     let mut validators = ImplBlocks::default();
     for plan in plans {
         let (header, item, validator) = emit_command(all, plan);
@@ -256,11 +257,24 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (TokenStream, TokenStream) {
         if let Some(v) = validator {
             validators.push(header.clone(), v);
         }
-        items.push(header, item);
+        // Core versions keep their recorded commands apart: Vulkan 1.0's alone would
+        // make one file of 6,000 lines.
+        let mut module = super::module_of(all.cx.model, &plan.name);
+        if recorded(plan) && module.starts_with("v1_") {
+            module.push_str("_recording");
+        }
+        let (names, blocks) = modules.entry(module).or_default();
+        names.push(plan.name.clone());
+        blocks.push(header, item);
     }
-    let (items, validators) = (items.render(), validators.render());
-    let commands = quote! {
-        //! Commands as methods on the wrappers they dispatch on.
+    let modules = modules
+        .into_iter()
+        .map(|(m, (names, blocks))| (m, (names, blocks.render().collect())))
+        .collect();
+    let validators = validators.render();
+    let head = quote! {
+        //! Commands as methods on the wrappers they dispatch on, one module per core
+        //! version and extension.
         #![allow(
             clippy::too_many_arguments,
             clippy::needless_lifetimes,
@@ -281,8 +295,15 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (TokenStream, TokenStream) {
         use crate::structs::*;
         use crate::{recorder::*, Entry, Error, Handle, Result};
         use ash::vk;
-        #(#items)*
     };
+    let commands = super::split(
+        all.cx.model,
+        "commands",
+        "The commands",
+        head,
+        modules,
+        false,
+    );
     let checks = quote! {
         //! The dynamic checks of each command, compiled in with
         //! `runtime_implicit_validations`: one `validate_*` method per checked command,

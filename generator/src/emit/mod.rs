@@ -93,6 +93,112 @@ pub const HEADER: &str =
 /// (`src/*.rs` around it) is hand-written and never touched by the generator.
 pub const GENERATED_DIR: &str = "src/generated";
 
+/// The generated module an item goes in: its core version (`v1_0`, ...) or the
+/// extension that first names it (`khr_swapchain`), read from its condition, so a
+/// reader finds an extension's items in one file.
+pub(crate) fn module_of(model: &Model, item: &str) -> String {
+    let condition = model.condition(item);
+    let tokens = |text: &str| -> Vec<String> {
+        text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .filter(|t| t.starts_with("VK_"))
+            .map(str::to_owned)
+            .collect()
+    };
+    // An item promoted to core (`VK_KHR_copy_commands2,VK_VERSION_1_3`) belongs to
+    // the oldest version that has it on its own.
+    let version = condition
+        .split(',')
+        .map(&tokens)
+        .filter(|t| t.len() == 1 && t[0].starts_with("VK_VERSION_"))
+        .map(|t| t[0].clone())
+        .min();
+    match version.or_else(|| tokens(condition).into_iter().next()) {
+        None => "v1_0".to_owned(),
+        Some(v) if v.starts_with("VK_VERSION_") => {
+            format!("v{}", v.trim_start_matches("VK_VERSION_"))
+        }
+        Some(ext) => names::feature(&ext),
+    }
+}
+
+/// What a module of [`module_of`] holds, for its doc line.
+fn module_title(module: &str) -> String {
+    if let Some(version) = module.strip_suffix("_recording") {
+        return format!("{}, recorded into command buffers", module_title(version));
+    }
+    match module.strip_prefix('v') {
+        Some(v) if v.starts_with(|c: char| c.is_ascii_digit()) => {
+            format!("Vulkan {}", v.replace('_', "."))
+        }
+        _ => format!("`VK_{}`", module.to_uppercase()),
+    }
+}
+
+/// The `cfg` of a whole extension module: its feature, when every item in it (named
+/// by `items`) exists only with that extension, so the module is empty without it.
+fn module_cfg(model: &Model, module: &str, items: &[String]) -> Option<TokenStream> {
+    let ext = model
+        .enabled
+        .iter()
+        .find(|e| !e.starts_with("VK_VERSION_") && names::feature(e) == module)?;
+    let needs_ext = |item: &String| {
+        model.condition(item).split(',').all(|alt| {
+            alt.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .any(|t| t == ext)
+        })
+    };
+    items.iter().all(needs_ext).then(|| {
+        let feature = names::feature(ext);
+        quote::quote!(#[cfg(feature = #feature)])
+    })
+}
+
+/// One generated folder of modules: `dir/mod.rs` with `head` (its docs, lints and
+/// imports, which the modules share through `use super::*`) and one file per core
+/// version and extension, with the items and the names of the registry items they
+/// come from. Versions come first, in order; `reexport` makes the modules' items the
+/// folder's own.
+pub(crate) fn split(
+    model: &Model,
+    dir: &str,
+    what: &str,
+    head: TokenStream,
+    modules: BTreeMap<String, (Vec<String>, Vec<TokenStream>)>,
+    reexport: bool,
+) -> Vec<(String, TokenStream)> {
+    let mut order: Vec<&String> = modules.keys().collect();
+    order.sort_by_key(|m| (!m.starts_with("v1_"), m.to_string()));
+    let decls = order.iter().map(|m| {
+        let id = names::ident(m);
+        let cfg = module_cfg(model, m, &modules[*m].0);
+        if reexport {
+            quote::quote!(#cfg mod #id; #cfg pub use #id::*;)
+        } else {
+            quote::quote!(#cfg mod #id;)
+        }
+    });
+    let mut out = vec![(
+        format!("{dir}/mod.rs"),
+        quote::quote! {
+            #head
+            #(#decls)*
+        },
+    )];
+    for m in order {
+        let doc = format!("{what} of {}.", module_title(m));
+        let items = &modules[m].1;
+        out.push((
+            format!("{dir}/{m}.rs"),
+            quote::quote! {
+                #![doc = #doc]
+                use super::*;
+                #(#items)*
+            },
+        ));
+    }
+    out
+}
+
 /// Format a generated module.
 fn format(tokens: TokenStream, header: &str) -> String {
     let text = match syn::parse2::<syn::File>(tokens.clone()) {
@@ -110,16 +216,17 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
     api_info::emit(cx.model, config, &mut emission);
     let ok = plans.ok();
     let (commands, command_checks) = commands::emit(plans, &ok);
-    for (path, tokens) in [
-        ("src/generated/handles.rs", handles::emit(cx)),
-        ("src/generated/structs.rs", structs::emit(plans)),
-        ("src/generated/commands.rs", commands),
-        ("src/generated/command_checks.rs", command_checks),
-        ("src/generated/checks.rs", checks::emit(&plans.checker)),
-        ("src/generated/reach.rs", reach::emit(cx)),
-    ] {
+    let mut files = vec![
+        ("handles.rs".to_owned(), handles::emit(cx)),
+        ("command_checks.rs".to_owned(), command_checks),
+        ("reach.rs".to_owned(), reach::emit(cx)),
+    ];
+    files.extend(checks::emit(&plans.checker));
+    files.extend(structs::emit(plans));
+    files.extend(commands);
+    for (path, tokens) in files {
         emission.files.push(OutputFile {
-            path: path.into(),
+            path: format!("{GENERATED_DIR}/{path}").into(),
             contents: format(tokens, HEADER),
         });
     }

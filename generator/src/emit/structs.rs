@@ -28,21 +28,28 @@ pub fn safe_structs(cx: &Context) -> Vec<String> {
         .collect()
 }
 
-pub(super) fn emit(plans: &Plans) -> TokenStream {
+/// `structs/`: one module per core version and extension, re-exported together.
+pub(super) fn emit(plans: &Plans) -> Vec<(String, TokenStream)> {
     let cx = plans.cx;
-    let mut items = Vec::new();
+    let mut modules: std::collections::BTreeMap<String, (Vec<String>, Vec<TokenStream>)> =
+        Default::default();
     for name in safe_structs(cx) {
+        let (names, items) = modules
+            .entry(super::module_of(cx.model, &name))
+            .or_default();
         items.push(emit_struct(plans, &name));
+        names.push(name);
     }
-    quote! {
+    let head = quote! {
         //! Safe counterparts of the registry's structs that carry handles, pointers or
-        //! an `sType`. Plain structs (`vk::Extent2D`, ...) are used as ash has them.
+        //! an `sType`, one module per core version and extension. Plain structs
+        //! (`vk::Extent2D`, ...) are used as ash has them.
         #![allow(clippy::needless_lifetimes, clippy::new_without_default, clippy::field_reassign_with_default, clippy::unnecessary_cast)]
         use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice};
         use ash::vk;
         use core::marker::PhantomData;
-        #(#items)*
-    }
+    };
+    super::split(cx.model, "structs", "The safe structs", head, modules, true)
 }
 
 fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
@@ -316,7 +323,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         #[repr(transparent)]
         #[derive(Clone, Copy)]
         pub struct #id<'a> {
-            raw: #raw_ty,
+            pub(super) raw: #raw_ty,
             _marker: PhantomData<&'a ()>,
         }
         safe_struct!(#cfg #id #borrows; #(#parts)*);
