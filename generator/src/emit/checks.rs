@@ -3,7 +3,7 @@
 
 use crate::names::ident;
 use crate::plan::checks::{enum_values, flag_bits, mentions, snake, struct_type_value, Checker};
-use crate::plan::types::ash_type;
+use crate::plan::types::spelled;
 use crate::plan::Context;
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
@@ -279,7 +279,7 @@ impl Origins {
 fn enum_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
     let model = cx.model;
     let f = ident(&format!("enum_{}", snake(t)));
-    let ty = ash_type(model, &cx.facts, t).unwrap_or(quote!(()));
+    let ty = spelled(model, &cx.facts, t);
     // Values grouped by the set of origins, as ranges of consecutive values.
     let mut by_origin: BTreeMap<Vec<u16>, Vec<i64>> = BTreeMap::new();
     for (n, o) in enum_values(model, t) {
@@ -317,7 +317,7 @@ fn enum_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
 fn flags_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
     let model = cx.model;
     let f = ident(&format!("flags_{}", snake(t)));
-    let ty = ash_type(model, &cx.facts, t).unwrap_or(quote!(()));
+    let ty = spelled(model, &cx.facts, t);
     let bits = flag_bits(model, t).unwrap_or_default();
     let mut by_origin: BTreeMap<Vec<u16>, u64> = BTreeMap::new();
     for (n, o) in enum_values(model, &bits) {

@@ -10,7 +10,7 @@ use crate::names::{command_fn, field_ident, ident, level, param, table, type_ide
 use crate::plan::checks::Checker;
 use crate::plan::commands::{parent_of, parent_param, recorded, Param, Plan};
 use crate::plan::shape::{struct_members, Member};
-use crate::plan::types::ash_type;
+use crate::plan::types::{ash_type, spelled};
 use crate::plan::Context;
 use crate::plan::Plans;
 use crate::registry::CommandDef;
@@ -441,12 +441,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 }
             }
             Param::Value => {
-                let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()));
+                let ty = spelled(model, &cx.facts, &p.type_name);
                 args.push(quote!(#name: #ty));
                 call_args.push(quote!(#name,));
             }
             Param::Array => {
-                let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()));
+                let ty = spelled(model, &cx.facts, &p.type_name);
                 let n = crate::plan::types::array_size(p.static_array.as_deref().unwrap_or("1"));
                 args.push(quote!(#name: &[#ty; #n]));
                 call_args.push(quote!(#name,));
@@ -531,7 +531,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 let ty = if model.category(&p.type_name) == Some("struct") {
                     safe_or_ash(cx, &p.type_name)
                 } else {
-                    ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()))
+                    spelled(model, &cx.facts, &p.type_name)
                 };
                 args.push(quote!(#name: &[#ty]));
                 call_args.push(quote!(#name.as_ptr().cast(),));
@@ -566,7 +566,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 call_args.push(quote!(#name as *mut #ty as *mut _,));
             }
             Param::Output => {
-                let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()));
+                let ty = spelled(model, &cx.facts, &p.type_name);
                 let ty = if cx.facts.has_lifetime(&p.type_name) {
                     let id = type_ident(&p.type_name);
                     quote!(vk::#id<'static>)
@@ -741,7 +741,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     let id = type_ident(&p.type_name);
                     quote!(vk::#id<'static>)
                 } else {
-                    ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(()))
+                    spelled(model, &cx.facts, &p.type_name)
                 };
                 call_args.push(quote!(items_ptr.cast(),));
                 two_call = Some(elem.clone());
@@ -1006,7 +1006,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             #unit_free_ret
         }
     } else {
-        let rt = ash_type(model, &cx.facts, &cmd.return_type).unwrap_or(quote!(()));
+        let rt = spelled(model, &cx.facts, &cmd.return_type);
         ret_ty = rt;
         quote! {
             #(#pre)*

@@ -7,7 +7,7 @@
 use super::doc_rules;
 use crate::names::{cfg_of, field_ident, type_ident};
 use crate::plan::shape::{count_groups, struct_members, CountGroup, Member};
-use crate::plan::types::{array_size, ash_type, TypeFacts};
+use crate::plan::types::{array_size, spelled, TypeFacts};
 use crate::plan::{Context, Plans};
 use crate::registry::Field;
 use proc_macro2::TokenStream;
@@ -79,7 +79,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         let f = field_ident(&m.name);
         let setter = field_ident(&crate::names::param(&m.name));
         let doc = format!("Sets `{}`.", m.name);
-        let ty = ash_type(model, facts, &m.type_name);
+        let ty = spelled(model, facts, &m.type_name);
         if returned_only && !matches!(shape, Member::PNext) {
             continue;
         }
@@ -95,10 +95,9 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
             | Member::CStrSlice { .. } => unreachable!("arrays are set above"),
             Member::PNext => {}
             Member::Value if groups.iter().any(|g| g.count == m.name) => {
-                setters.push(count_setter(m, ty.unwrap_or_else(|| quote!(u32)), &groups));
+                setters.push(count_setter(m, ty, &groups));
             }
             Member::Value => {
-                let ty = ty.unwrap_or_else(|| quote!(()));
                 setters.push(quote! {
                     #[doc = #doc]
                     #[inline]
@@ -109,7 +108,6 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                 });
             }
             Member::Array(size) => {
-                let ty = ty.unwrap_or_else(|| quote!(()));
                 let n = array_size(size);
                 setters.push(quote! {
                     #[doc = #doc]
@@ -228,7 +226,6 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                 });
             }
             Member::PlatformValue => {
-                let ty = ty.unwrap_or_else(|| quote!(()));
                 let doc = format!(
                     "Sets `{}`.\n\n# Safety\n\n`value` must name a live window-system object that outlives every Vulkan object created from this struct.",
                     m.name
@@ -243,7 +240,6 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                 });
             }
             Member::Platform => {
-                let ty = ty.unwrap_or_else(|| quote!(core::ffi::c_void));
                 let mutability = if m.is_const {
                     quote!(const)
                 } else {
@@ -362,7 +358,7 @@ fn array_param(cx: &Context, m: &Field, shape: &Member) -> Option<ArrayParam> {
             let elem = if *safe {
                 safe_or_ash(cx, &m.type_name)
             } else {
-                ash_type(cx.model, &cx.facts, &m.type_name).unwrap_or_else(|| quote!(()))
+                spelled(cx.model, &cx.facts, &m.type_name)
             };
             (count, quote!(&'a [#elem]))
         }

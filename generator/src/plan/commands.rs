@@ -136,6 +136,12 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             _ => None,
         })
         .collect();
+    for p in &cmd.params {
+        if p.type_name != "void" && super::types::ash_type(model, &cx.facts, &p.type_name).is_none()
+        {
+            return Err(format!("`{}`: ash has no type `{}`", p.name, p.type_name));
+        }
+    }
     let mut params = Vec::new();
     for (i, (p, pp)) in cmd.params.iter().zip(&parsed).enumerate() {
         let category = model.category(&p.type_name);

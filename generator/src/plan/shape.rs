@@ -145,6 +145,9 @@ fn member_shape(
         // array is unsupported stays zero, which every array allows when empty.
         return Member::Count;
     }
+    if m.type_name != "void" && super::types::ash_type(model, facts, &m.type_name).is_none() {
+        return Member::Unsupported(format!("ash has no type `{}`", m.type_name));
+    }
     if m.selector.is_some() {
         return Member::Unsupported("a union member chosen by another member".into());
     }

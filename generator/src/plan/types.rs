@@ -105,6 +105,16 @@ impl TypeFacts {
     }
 }
 
+/// [`ash_type`], for a renderer: the plan has already refused every item whose types
+/// ash cannot spell, so a `None` here is a generator bug, and it becomes a compile error
+/// in the generated crate that names the type rather than a silent `()`.
+pub fn spelled(model: &Model, facts: &TypeFacts, name: &str) -> TokenStream {
+    ash_type(model, facts, name).unwrap_or_else(|| {
+        let msg = format!("tuff-gen: no ash spelling for the registry type `{name}`");
+        quote!(compile_error!(#msg))
+    })
+}
+
 /// ash's spelling of a base type, without pointers: `u32`, `vk::Format`,
 /// `vk::BufferCreateInfo<'a>`. `None` for types ash lacks a name for here.
 pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStream> {
