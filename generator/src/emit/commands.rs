@@ -5,6 +5,7 @@
 //! the user, who can call it through ash on the raw handles.
 
 use super::structs::safe_or_ash;
+use crate::model::CommandDef;
 use crate::model::LenEntry;
 use crate::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
 use crate::plan::checks::Checker;
@@ -13,7 +14,6 @@ use crate::plan::shape::{struct_members, Member};
 use crate::plan::types::{ash_type, spelled};
 use crate::plan::Context;
 use crate::plan::Plans;
-use crate::registry::CommandDef;
 use proc_macro2::{Ident, TokenStream};
 use quote::{quote, ToTokens};
 
@@ -1385,7 +1385,7 @@ fn keep_expr(
 /// a barrier's image), looked up among the device's live objects.
 fn struct_retains(
     cx: &Context,
-    p: &crate::registry::Field,
+    p: &crate::model::Field,
     name: &Ident,
     slice: bool,
 ) -> Vec<TokenStream> {

@@ -5,11 +5,11 @@
 //! are typed: `push_next` accepts only structs that `structextends` the head.
 
 use super::doc_rules;
+use crate::model::Field;
 use crate::names::{cfg_of, field_ident, type_ident};
 use crate::plan::shape::{count_groups, struct_members, CountGroup, Member};
 use crate::plan::types::{array_size, spelled, TypeFacts};
 use crate::plan::{Context, Plans};
-use crate::registry::Field;
 use proc_macro2::TokenStream;
 use quote::quote;
 

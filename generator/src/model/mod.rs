@@ -12,10 +12,14 @@ pub mod expr;
 
 use crate::config::Config;
 use crate::error::{Error, Result};
-use crate::registry::{CommandDef, Field, Registry, TypeDef};
+use crate::registry::Registry;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
+/// The model keeps a command, a type and a member or parameter in the shape the
+/// registry pass reads them; later passes name them through the model, which owns
+/// what they mean once resolved (the parsed attributes are in [`ParsedField`]).
+pub use crate::registry::{CommandDef, Field, TypeDef};
 pub use attrs::{ExternSync, LenEntry};
 
 /// The resolved registry.

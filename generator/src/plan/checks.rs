@@ -377,7 +377,7 @@ impl<'c, 'm> Checker<'c, 'm> {
     fn struct_common_parent(
         &self,
         rule: &DerivedRule,
-        members: &[(crate::registry::Field, Member)],
+        members: &[(crate::model::Field, Member)],
     ) -> Option<(TokenStream, Vec<String>, String)> {
         let owner = owner_fn(rule.ancestor.as_deref()?)?;
         let vuid = rule.vuid.as_str();

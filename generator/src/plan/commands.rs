@@ -2,9 +2,9 @@
 //! the shape of each parameter, or why it cannot be emitted safely.
 
 use super::Context;
+use crate::model::CommandDef;
 use crate::model::LenEntry;
 use crate::names::table;
-use crate::registry::CommandDef;
 
 /// How one parameter is taken and passed.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -3,8 +3,8 @@
 //! report claims come from one decision.
 
 use super::types::TypeFacts;
+use crate::model::Field;
 use crate::model::{LenEntry, Model, ParsedField};
-use crate::registry::Field;
 
 /// How a member of a safe struct is set.
 #[derive(Debug, Clone, PartialEq, Eq)]
