@@ -243,3 +243,59 @@ fn no_generated_file_is_too_long() {
     assert!(files > 10, "only {files} generated files found");
     assert!(long.is_empty(), "{}", long.join("\n"));
 }
+
+/// Every `unsafe` block of the generated code says why it is sound: the statement it
+/// is in is preceded by a `// SAFETY:` comment (the generator writes them through a
+/// marker, since `quote!` drops comments).
+#[test]
+fn every_generated_unsafe_block_has_a_safety_comment() {
+    let mut todo =
+        vec![std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src/generated")];
+    let (mut blocks, mut bare) = (0, Vec::new());
+    while let Some(dir) = todo.pop() {
+        for entry in std::fs::read_dir(&dir).expect("generated/src/generated") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                todo.push(path);
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).expect("a file");
+            let lines: Vec<&str> = text.lines().collect();
+            for (i, line) in lines.iter().enumerate() {
+                if !line.contains("unsafe {") {
+                    continue;
+                }
+                blocks += 1;
+                // Up to the first line of the statement, then the line above it.
+                let mut start = i;
+                while start > 0 {
+                    let prev = lines[start - 1].trim_end();
+                    let ends = prev.trim_start().starts_with("//")
+                        || prev.trim().is_empty()
+                        || prev.ends_with([';', '{', '}', ',']);
+                    if ends {
+                        break;
+                    }
+                    start -= 1;
+                }
+                // A comment run above the statement that includes a SAFETY line.
+                let mut k = start;
+                let mut justified = false;
+                while k > 0 && lines[k - 1].trim_start().starts_with("//") {
+                    justified |= lines[k - 1].trim_start().starts_with("// SAFETY:");
+                    k -= 1;
+                }
+                if !justified {
+                    bare.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
+                }
+            }
+        }
+    }
+    assert!(blocks > 100, "only {blocks} unsafe blocks found");
+    assert!(
+        bare.is_empty(),
+        "{} unsafe blocks without a SAFETY comment:\n{}",
+        bare.len(),
+        bare.join("\n")
+    );
+}

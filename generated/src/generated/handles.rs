@@ -98,6 +98,10 @@ impl Drop for BufferInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -193,6 +197,10 @@ impl Drop for BufferViewInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -331,6 +339,10 @@ impl Drop for CommandBufferInner {
             return;
         };
         self.parent.free_deferred();
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -422,6 +434,9 @@ impl CommandPool {
     pub(crate) fn free_deferred(&self) {
         let raws = core::mem::take(&mut *self.inner.deferred.lock());
         if !raws.is_empty() {
+            // SAFETY: their wrappers are gone and no submission uses them (each waited for
+            // its fence before it went); the caller holds the pool
+            // (VUID-vkFreeCommandBuffers-commandPool-parameter's external synchronization).
             unsafe {
                 (self
                     .parent()
@@ -503,6 +518,10 @@ impl Drop for CommandPoolInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -602,6 +621,10 @@ impl Drop for DebugUtilsMessengerEXTInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (match self.parent.ext().ext_debug_utils.as_ref() {
                 Some(t) => t,
@@ -690,6 +713,8 @@ impl DescriptorPool {
     pub(crate) fn free_deferred(&self) {
         let raws = core::mem::take(&mut *self.inner.deferred.lock());
         if !raws.is_empty() {
+            // SAFETY: their wrappers are gone, so nothing records or submits them; the pool
+            // frees sets (only such sets are deferred) and the caller holds it.
             let _ = unsafe {
                 (self
                     .parent()
@@ -760,6 +785,10 @@ impl Drop for DescriptorPoolInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -875,6 +904,10 @@ impl Drop for DescriptorSetInner {
             return;
         };
         self.parent.free_deferred();
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             let _ = (self
                 .parent
@@ -976,6 +1009,10 @@ impl Drop for DescriptorSetLayoutInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1090,6 +1127,10 @@ impl Drop for DescriptorUpdateTemplateInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1140,6 +1181,7 @@ impl Device {
         raw: vk::Device,
         enabled: &[&core::ffi::CStr],
     ) -> Device {
+        // SAFETY: `raw` was just created from this physical device's instance.
         let fns = unsafe { ash::Device::load(physical.parent().fns().fp_v1_0(), raw) };
         #[allow(unused_mut)]
         let mut ext = DeviceExtensions::default();
@@ -1163,6 +1205,7 @@ impl Device {
         #[cfg(feature = "runtime_implicit_validations")]
         let exts = {
             let instance = physical.parent();
+            // SAFETY: the physical device is a live wrapper of its instance.
             let props = unsafe {
                 instance.fns().get_physical_device_properties(physical.raw())
             };
@@ -1267,6 +1310,9 @@ impl core::ops::Deref for Device {
 }
 impl Drop for DeviceInner {
     fn drop(&mut self) {
+        // SAFETY: every child holds a clone of the device, so none is left
+        // (VUID-vkDestroyDevice-device-00378); waiting for idle first means no submission
+        // is still executing (VUID-vkDestroyDevice-device-05137).
         unsafe {
             let _ = (self.fns.fp_v1_0().device_wait_idle)(self.raw);
             (self.fns.fp_v1_0().destroy_device)(self.raw, core::ptr::null());
@@ -1359,6 +1405,10 @@ impl Drop for DeviceMemoryInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1454,6 +1504,10 @@ impl Drop for EventInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1571,6 +1625,9 @@ impl Drop for FenceInner {
         }
         let submission = self.submission.lock().take();
         if let Some(sub) = submission.filter(|s| !s.is_complete()) {
+            // SAFETY: the fence belongs to this device; waiting is always valid. Its
+            // submission may still use what it keeps alive, so the wait comes before those
+            // objects go and before the fence does (VUID-vkDestroyFence-fence-01120).
             let r = unsafe {
                 (self
                     .parent
@@ -1590,6 +1647,10 @@ impl Drop for FenceInner {
                 core::mem::forget(sub);
             }
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1685,6 +1746,10 @@ impl Drop for FramebufferInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1786,6 +1851,10 @@ impl Drop for ImageInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1881,6 +1950,10 @@ impl Drop for ImageViewInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -1943,6 +2016,7 @@ impl Instance {
         enabled: &[&core::ffi::CStr],
         api_version: u32,
     ) -> Instance {
+        // SAFETY: `raw` was just created from `entry`'s loader.
         let fns = unsafe { ash::Instance::load(entry.fns().static_fn(), raw) };
         #[allow(unused_mut)]
         let mut ext = InstanceExtensions::default();
@@ -2054,6 +2128,8 @@ impl core::ops::Deref for Instance {
 }
 impl Drop for InstanceInner {
     fn drop(&mut self) {
+        // SAFETY: every child holds a clone of the instance, so none is left
+        // (VUID-vkDestroyInstance-instance-00629); no allocator was given.
         unsafe {
             (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null())
         };
@@ -2229,6 +2305,10 @@ impl Drop for PipelineInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -2324,6 +2404,10 @@ impl Drop for PipelineCacheInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -2419,6 +2503,10 @@ impl Drop for PipelineLayoutInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -2518,6 +2606,10 @@ impl Drop for PrivateDataSlotInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -2617,6 +2709,10 @@ impl Drop for QueryPoolInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -2744,6 +2840,9 @@ impl Drop for QueueInner {
         let _queue = self.sync.lock();
         let held = core::mem::take(&mut *self.unfenced.lock());
         if held.iter().any(|s| !s.is_complete()) {
+            // SAFETY: the queue belongs to this live device. What its fenceless operations
+            // use goes only once they are complete
+            // (VUID-vkDestroySemaphore-semaphore-01137).
             let r = unsafe { (self.parent.fns().fp_v1_0().queue_wait_idle)(self.raw) };
             if r == vk::Result::SUCCESS {
                 self.parent.live().ledger().retire_queue(self.raw);
@@ -2839,6 +2938,10 @@ impl Drop for RenderPassInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -2934,6 +3037,10 @@ impl Drop for SamplerInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -3029,6 +3136,10 @@ impl Drop for SamplerYcbcrConversionInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -3128,6 +3239,10 @@ impl Drop for SemaphoreInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -3223,6 +3338,10 @@ impl Drop for ShaderModuleInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (self
                 .parent
@@ -3322,6 +3441,10 @@ impl Drop for SurfaceKHRInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (match self.parent.ext().khr_surface.as_ref() {
                 Some(t) => t,
@@ -3423,6 +3546,10 @@ impl Drop for SwapchainKHRInner {
         if !self.destroy {
             return;
         }
+        // SAFETY: the last clone is gone, so no host reference is left, and every
+        // submission that used the object held a clone until its fence signalled; it is
+        // destroyed with the parent it came from and no allocator, as it was created
+        // without one.
         unsafe {
             (match self.parent.ext().khr_swapchain.as_ref() {
                 Some(t) => t,

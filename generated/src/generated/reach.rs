@@ -17,11 +17,13 @@ pub(crate) unsafe fn next(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the caller vouches for every node.
     for node in unsafe { crate::support::chain_nodes(p) } {
         #[allow(clippy::single_match)]
         match node.s_type.as_raw() {
             #[cfg(feature = "khr_swapchain")]
             1000060009 => {
+                // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     bind_image_memory_swapchain_info_khr(
                         &*(node as *const vk::BaseInStructure<'_>)
@@ -32,6 +34,7 @@ pub(crate) unsafe fn next(
                 }
             }
             1000070001 => {
+                // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     device_group_device_create_info(
                         &*(node as *const vk::BaseInStructure<'_>)
@@ -43,6 +46,7 @@ pub(crate) unsafe fn next(
             }
             #[cfg(feature = "khr_swapchain")]
             1000060008 => {
+                // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     image_swapchain_create_info_khr(
                         &*(node as *const vk::BaseInStructure<'_>)
@@ -53,6 +57,7 @@ pub(crate) unsafe fn next(
                 }
             }
             1000127001 => {
+                // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     memory_dedicated_allocate_info(
                         &*(node as *const vk::BaseInStructure<'_>)
@@ -63,6 +68,7 @@ pub(crate) unsafe fn next(
                 }
             }
             1000108003 => {
+                // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     render_pass_attachment_begin_info(
                         &*(node as *const vk::BaseInStructure<'_>)
@@ -73,6 +79,7 @@ pub(crate) unsafe fn next(
                 }
             }
             1000156001 => {
+                // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     sampler_ycbcr_conversion_info(
                         &*(node as *const vk::BaseInStructure<'_>)
@@ -130,6 +137,7 @@ pub(crate) unsafe fn bind_image_memory_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.image));
     out.extend(live.get(x.memory));
@@ -161,27 +169,35 @@ pub(crate) unsafe fn bind_sparse_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
                 crate::retention::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
             }),
     );
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(x.p_buffer_binds, x.buffer_bind_count)
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_buffer_memory_bind_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(x.p_image_opaque_binds, x.image_opaque_bind_count)
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_image_opaque_memory_bind_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(x.p_image_binds, x.image_bind_count)
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_image_memory_bind_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -303,7 +319,9 @@ pub(crate) unsafe fn command_buffer_begin_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored a reference that outlives `x`.
     if let Some(y) = unsafe { x.p_inheritance_info.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::command_buffer_inheritance_info(y, live, out) };
     }
 }
@@ -348,6 +366,7 @@ pub(crate) unsafe fn compute_pipeline_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
     unsafe { crate::reach::pipeline_shader_stage_create_info(&x.stage, live, out) };
     out.extend(live.get(x.layout));
     out.extend(live.get(x.base_pipeline_handle));
@@ -439,20 +458,24 @@ pub(crate) unsafe fn dependency_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(
             x.p_buffer_memory_barriers,
             x.buffer_memory_barrier_count,
         )
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::buffer_memory_barrier2(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(
             x.p_image_memory_barriers,
             x.image_memory_barrier_count,
         )
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::image_memory_barrier2(y, live, out) };
     }
 }
@@ -498,6 +521,7 @@ pub(crate) unsafe fn descriptor_set_allocate_info(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.descriptor_pool));
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -517,6 +541,7 @@ pub(crate) unsafe fn descriptor_set_layout_binding(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -536,7 +561,9 @@ pub(crate) unsafe fn descriptor_set_layout_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_bindings, x.binding_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::descriptor_set_layout_binding(y, live, out) };
     }
 }
@@ -567,6 +594,7 @@ pub(crate) unsafe fn device_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
 }
 ///The live objects a `VkDeviceGroupDeviceCreateInfo` names, directly or through what it points to.
@@ -581,6 +609,7 @@ pub(crate) unsafe fn device_group_device_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -603,7 +632,9 @@ pub(crate) unsafe fn device_image_memory_requirements(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored a reference that outlives `x`.
     if let Some(y) = unsafe { x.p_create_info.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::image_create_info(y, live, out) };
     }
 }
@@ -634,6 +665,7 @@ pub(crate) unsafe fn framebuffer_create_info(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.render_pass));
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -653,7 +685,9 @@ pub(crate) unsafe fn graphics_pipeline_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
     }
     out.extend(live.get(x.layout));
@@ -672,6 +706,7 @@ pub(crate) unsafe fn image_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
 }
 ///The live objects a `VkImageMemoryBarrier` names, directly or through what it points to.
@@ -757,6 +792,7 @@ pub(crate) unsafe fn image_view_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.image));
 }
@@ -786,6 +822,7 @@ pub(crate) unsafe fn memory_allocate_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
 }
 ///The live objects a `VkMemoryDedicatedAllocateInfo` names, directly or through what it points to.
@@ -815,6 +852,7 @@ pub(crate) unsafe fn pipeline_layout_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -849,12 +887,14 @@ pub(crate) unsafe fn present_info_khr(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
                 crate::retention::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
             }),
     );
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -874,6 +914,7 @@ pub(crate) unsafe fn render_pass_attachment_begin_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -893,6 +934,7 @@ pub(crate) unsafe fn render_pass_begin_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.render_pass));
     out.extend(live.get(x.framebuffer));
@@ -924,15 +966,21 @@ pub(crate) unsafe fn rendering_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(x.p_color_attachments, x.color_attachment_count)
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::rendering_attachment_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored a reference that outlives `x`.
     if let Some(y) = unsafe { x.p_depth_attachment.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::rendering_attachment_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored a reference that outlives `x`.
     if let Some(y) = unsafe { x.p_stencil_attachment.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::rendering_attachment_info(y, live, out) };
     }
 }
@@ -963,6 +1011,7 @@ pub(crate) unsafe fn sampler_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
 }
 ///The live objects a `VkSamplerYcbcrConversionInfo` names, directly or through what it points to.
@@ -1019,6 +1068,7 @@ pub(crate) unsafe fn semaphore_wait_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -1039,7 +1089,9 @@ pub(crate) unsafe fn sparse_buffer_memory_bind_info(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.buffer));
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_binds, x.bind_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_memory_bind(y, live, out) };
     }
 }
@@ -1070,7 +1122,9 @@ pub(crate) unsafe fn sparse_image_memory_bind_info(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.image));
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_binds, x.bind_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_image_memory_bind(y, live, out) };
     }
 }
@@ -1087,7 +1141,9 @@ pub(crate) unsafe fn sparse_image_opaque_memory_bind_info(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.image));
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_binds, x.bind_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_memory_bind(y, live, out) };
     }
 }
@@ -1117,18 +1173,21 @@ pub(crate) unsafe fn submit_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
                 crate::retention::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
             }),
     );
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
                 crate::retention::raw_slice(x.p_command_buffers, x.command_buffer_count)
             }),
     );
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
@@ -1151,28 +1210,34 @@ pub(crate) unsafe fn submit_info2(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(
             x.p_wait_semaphore_infos,
             x.wait_semaphore_info_count,
         )
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::semaphore_submit_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(
             x.p_command_buffer_infos,
             x.command_buffer_info_count,
         )
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::command_buffer_submit_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(
             x.p_signal_semaphore_infos,
             x.signal_semaphore_info_count,
         )
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::semaphore_submit_info(y, live, out) };
     }
 }
@@ -1205,14 +1270,19 @@ pub(crate) unsafe fn write_descriptor_set(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.dst_set));
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_image_info, x.descriptor_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::descriptor_image_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(x.p_buffer_info, x.descriptor_count)
     } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::descriptor_buffer_info(y, live, out) };
     }
+    // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {

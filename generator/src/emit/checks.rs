@@ -65,7 +65,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
             if ptr.is_null() || count == 0 {
                 return &[];
             }
-            // SAFETY: the caller promises `count` live elements at `ptr`.
+            __safety!("the caller promises `count` live elements at `ptr`.");
             unsafe { core::slice::from_raw_parts(ptr, count as usize) }
         }
     };
@@ -128,8 +128,10 @@ fn chain_fn(checker: &Checker) -> TokenStream {
         let lit = Literal::i32_unsuffixed(stype);
         arms.push(quote! {
             #cfg
-            // SAFETY: a node with this structure type is this struct.
-            #lit => #f(unsafe { &*(p as *const vk::#ty<'_>) }, s)?,
+            #lit => {
+                __safety!("a node with this structure type is this struct.");
+                #f(unsafe { &*(p as *const vk::#ty<'_>) }, s)?
+            }
         });
     }
     for t in model.types.values() {
@@ -147,8 +149,7 @@ fn chain_fn(checker: &Checker) -> TokenStream {
         /// rule), and each node's own checks.
         pub(crate) fn chain(next: *const core::ffi::c_void, s: &Scope<'_>, unique: Option<&'static str>) -> Result<()> {
             let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
-            // SAFETY: chains are built by `push_next` from safe structs, each a
-            // live struct that begins with `sType` and `pNext`.
+            __safety!("chains are built by `push_next` from safe structs, each a live struct that begins with `sType` and `pNext`.");
             for base in unsafe { crate::support::chain_nodes(next) } {
                 let p = base as *const vk::BaseInStructure<'_>;
                 let ty = base.s_type.as_raw();

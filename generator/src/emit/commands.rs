@@ -29,21 +29,29 @@ fn submit_parts(name: &str) -> (TokenStream, TokenStream) {
 /// The raw command buffers a submission command's infos name.
 fn submitted_command_buffers(name: &str) -> TokenStream {
     match name {
-        // SAFETY (both): the safe structs store every array with its length.
-        "vkQueueSubmit" => quote!(submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
-            })
-            .copied()
-            .collect()),
-        "vkQueueSubmit2" => quote!(submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
-            })
-            .map(|i| i.command_buffer)
-            .collect()),
+        "vkQueueSubmit" => quote!({
+            __safety!("the safe structs store every array with its length.");
+            submits
+                .iter()
+                .flat_map(|s| unsafe {
+                    crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+                })
+                .copied()
+                .collect()
+        }),
+        "vkQueueSubmit2" => quote!({
+            __safety!("the safe structs store every array with its length.");
+            submits
+                .iter()
+                .flat_map(|s| unsafe {
+                    crate::retention::raw_slice(
+                        s.p_command_buffer_infos,
+                        s.command_buffer_info_count,
+                    )
+                })
+                .map(|i| i.command_buffer)
+                .collect()
+        }),
         _ => quote!(smallvec::SmallVec::new()),
     }
 }
@@ -71,8 +79,7 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
             quote! {
                 for b in #batches {
                     let b = b.as_raw();
-                    // SAFETY: the safe structs store each array with its length and
-                    // chain only structs pushed through `push_next`.
+                    __safety!("the safe structs store each array with its length and chain only structs pushed through `push_next`.");
                     unsafe {
                         crate::submission::check_timeline_batch(
                             self.parent().live(),
@@ -167,7 +174,7 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
         )),
         "vkWaitSemaphores" => Some((
             quote! {
-                // SAFETY: the safe struct stores the array with its length.
+                __safety!("the safe struct stores the array with its length.");
                 let semaphores = unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
                 crate::submission::check_semaphore_type(self.live(), semaphores, true, "VUID-VkSemaphoreWaitInfo-pSemaphores-03256")?;
             },
@@ -191,7 +198,7 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
         )),
         "vkQueuePresentKHR" => Some((
             quote! {
-                // SAFETY: the safe struct stores the array with its length.
+                __safety!("the safe struct stores the array with its length.");
                 let waits = unsafe { crate::retention::raw_slice(present_info.p_wait_semaphores, present_info.wait_semaphore_count) };
                 crate::submission::check_semaphore_type(self.parent().live(), waits, false, "VUID-vkQueuePresentKHR-pWaitSemaphores-03267")?;
             },
@@ -221,7 +228,7 @@ fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
         )),
         "vkUpdateDescriptorSets" => Some((
             quote! {
-                // SAFETY: the safe struct is transparent over ash's.
+                __safety!("the safe struct is transparent over ash's.");
                 crate::retention::Live::check_writes(unsafe {
                     core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len())
                 })?;
@@ -792,7 +799,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 let device = self.parent();
                 let mut kept = Vec::new();
                 for s in #list {
-                    // SAFETY: the safe structs store every array with its length.
+                    __safety!("the safe structs store every array with its length.");
                     unsafe { #walk(s.as_raw(), device.live(), &mut kept) };
                 }
                 let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = #cbs;
@@ -805,7 +812,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             // its semaphores. The queue holds it until it is known complete.
             let device = self.parent();
             let mut kept = Vec::new();
-            // SAFETY: the safe struct stores every array with its length.
+            __safety!("the safe struct stores every array with its length.");
             unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
             self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()));
         }),
@@ -828,8 +835,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         "vkWaitSemaphores" => post.push(quote! {
             // Only a wait for all of them says each reached its value.
             if r == vk::Result::SUCCESS && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY) {
-                // SAFETY: the safe struct stores both arrays with their one length.
+                __safety!("the safe struct stores both arrays with their one length.");
                 let semaphores = unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+                __safety!("the same length, from the same safe struct.");
                 let values = unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
                 for (s, v) in semaphores.iter().zip(values) {
                     self.live().ledger().reached(*s, *v);
@@ -845,9 +853,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
         }),
         "vkUpdateDescriptorSets" => post.push(quote! {
-            // SAFETY: the safe structs are transparent over ash's, their setters keep
-            // every array that is set as long as the count, and `check_writes` refused
-            // a write whose type selects an array that is not set.
+            __safety!("the safe structs are transparent over ash's, their setters keep every array that is set as long as the count, and `check_writes` refused a write whose type selects an array that is not set.");
             unsafe {
                 self.live().write_sets(
                     core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len()),
@@ -856,8 +862,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
         }),
         "vkUpdateDescriptorSetWithTemplate" => post.push(quote! {
-            // SAFETY: the caller of this unsafe method vouches that `data` is laid out
-            // as the template's entries describe.
+            __safety!("the caller of this unsafe method vouches that `data` is laid out as the template's entries describe.");
             unsafe { self.live().write_template(descriptor_set.raw(), descriptor_update_template.entries(), data) };
         }),
         "vkGetFenceStatus" => post.push(quote!(if r == vk::Result::SUCCESS { fence.completed(); })),
@@ -882,7 +887,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         ret_expr = quote!({
             let template: DescriptorUpdateTemplate = #ret_expr;
             let raw = create_info.as_raw();
-            // SAFETY: the safe setter stored the entries with their count.
+            __safety!("the safe setter stored the entries with their count.");
             template.with_entries(unsafe { crate::retention::raw_slice(raw.p_descriptor_update_entries, raw.descriptor_update_entry_count) })
         });
     }
@@ -943,19 +948,18 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 vk::Result::SUCCESS
             })
         };
-        // SAFETY: the closure calls the enumeration command with the count and the
-        // array `two_call` gives it; every other argument comes from a live wrapper or
-        // a reference that outlives the call.
+        let safety = super::safety("the closure calls the enumeration command with the count and the array `two_call` gives it; every other argument comes from a live wrapper or a reference that outlives the call.");
         let enumerate = quote! {
             unsafe {
                 crate::support::two_call(|count: &mut #count_ty, items_ptr: *mut #elem| #call)
             }
         };
         if ret_expr.to_string() == "items" {
-            quote!(#(#pre)* #enumerate)
+            quote!(#(#pre)* #safety #enumerate)
         } else {
             quote! {
                 #(#pre)*
+                #safety
                 let items = #enumerate?;
                 Ok(#ret_expr)
             }
@@ -981,9 +985,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         quote! {
             #(#pre)*
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from
-            // a reference or slice that outlives the call, and every count from the
-            // length of the slice it sizes.
+            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call, and every count from the length of the slice it sizes.");
             let r = unsafe { #fp(#(#call_args)*) };
             if r.as_raw() < 0 {
                 return Err(#error);
@@ -997,9 +999,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let unit_free_ret = (ret_expr.to_string() != "()").then_some(&ret_expr);
         quote! {
             #(#pre)*
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from
-            // a reference or slice that outlives the call, and every count from the
-            // length of the slice it sizes.
+            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call, and every count from the length of the slice it sizes.");
             unsafe { #fp(#(#call_args)*) };
             #(#post)*
             #(#retain)*
@@ -1010,8 +1010,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         ret_ty = rt;
         quote! {
             #(#pre)*
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from
-            // a reference or slice that outlives the call.
+            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call.");
             let r = unsafe { #fp(#(#call_args)*) };
             #(#retain)*
             r
@@ -1234,9 +1233,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 #host_sync
                 #implicit_block
                 #always_code
-                // SAFETY: with runtime_implicit_validations the rules the unchecked call
-                // leaves to its caller were checked above; without it they are left to
-                // the user, as VALIDATION.md lists.
+                __safety!("with runtime_implicit_validations the rules the unchecked call leaves to its caller were checked above; without it they are left to the user, as VALIDATION.md lists.");
                 #call
             }
             #[doc = #unchecked_doc]
@@ -1343,8 +1340,7 @@ fn keep_expr(
         return Some(quote!({
             let live = #device_path.live();
             let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-            // SAFETY: the safe info stores every array with its length and chains
-            // only structs pushed through `push_next`.
+            __safety!("the safe info stores every array with its length and chains only structs pushed through `push_next`.");
             unsafe { #walk(#var.as_raw(), live, &mut kept) };
             (!kept.is_empty()).then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
         }));
@@ -1362,7 +1358,7 @@ fn keep_expr(
             Member::HandleSlice { count } => {
                 let c = field_ident(&count);
                 parts.push(quote! {
-                    // SAFETY: the safe setter stored this array with its length.
+                    __safety!("the safe setter stored this array with its length.");
                     kept.extend(live.keep(unsafe { crate::retention::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }));
                 });
             }
@@ -1402,8 +1398,10 @@ fn struct_retains(
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
-            // SAFETY: the safe structs store every pointer with its length.
-            for e in #elems { unsafe { #walk(e.as_raw(), live, &mut kept) }; }
+            for e in #elems {
+                __safety!("the safe structs store every pointer with its length.");
+                unsafe { #walk(e.as_raw(), live, &mut kept) };
+            }
             kept
         };
         for o in kept { self.retain(o); }

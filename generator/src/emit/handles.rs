@@ -176,7 +176,7 @@ fn emit_instance(cx: &Context) -> TokenStream {
         impl Instance {
             /// Wraps an instance created by [`Entry::create_instance`].
             pub(crate) fn from_created(entry: &Entry, raw: vk::Instance, enabled: &[&core::ffi::CStr], api_version: u32) -> Instance {
-                // SAFETY: `raw` was just created from `entry`'s loader.
+                __safety!("`raw` was just created from `entry`'s loader.");
                 let fns = unsafe { ash::Instance::load(entry.fns().static_fn(), raw) };
                 #[allow(unused_mut)]
                 let mut ext = InstanceExtensions::default();
@@ -233,8 +233,7 @@ fn emit_instance(cx: &Context) -> TokenStream {
         }
         impl Drop for InstanceInner {
             fn drop(&mut self) {
-                // SAFETY: every child holds a clone of the instance, so none is left
-                // (VUID-vkDestroyInstance-instance-00629); no allocator was given.
+                __safety!("every child holds a clone of the instance, so none is left (VUID-vkDestroyInstance-instance-00629); no allocator was given.");
                 unsafe { (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null()) };
             }
         }
@@ -271,7 +270,7 @@ fn emit_device(cx: &Context) -> TokenStream {
         }
         impl Device {
             pub(crate) fn from_created(physical: &PhysicalDevice, raw: vk::Device, enabled: &[&core::ffi::CStr]) -> Device {
-                // SAFETY: `raw` was just created from this physical device's instance.
+                __safety!("`raw` was just created from this physical device's instance.");
                 let fns = unsafe { ash::Device::load(physical.parent().fns().fp_v1_0(), raw) };
                 #[allow(unused_mut)]
                 let mut ext = DeviceExtensions::default();
@@ -280,7 +279,7 @@ fn emit_device(cx: &Context) -> TokenStream {
                 #[cfg(feature = "runtime_implicit_validations")]
                 let exts = {
                     let instance = physical.parent();
-                    // SAFETY: the physical device is a live wrapper of its instance.
+                    __safety!("the physical device is a live wrapper of its instance.");
                     let props = unsafe { instance.fns().get_physical_device_properties(physical.raw()) };
                     instance.exts().cap(vk::api_version_minor(props.api_version)).with(crate::checks::Exts::new(0, enabled))
                 };
@@ -371,9 +370,7 @@ fn emit_device(cx: &Context) -> TokenStream {
         }
         impl Drop for DeviceInner {
             fn drop(&mut self) {
-                // SAFETY: every child holds a clone of the device, so none is left
-                // (VUID-vkDestroyDevice-device-00378); waiting for idle first means no
-                // submission is still executing (VUID-vkDestroyDevice-device-05137).
+                __safety!("every child holds a clone of the device, so none is left (VUID-vkDestroyDevice-device-00378); waiting for idle first means no submission is still executing (VUID-vkDestroyDevice-device-05137).");
                 unsafe {
                     let _ = (self.fns.fp_v1_0().device_wait_idle)(self.raw);
                     (self.fns.fp_v1_0().destroy_device)(self.raw, core::ptr::null());
@@ -505,10 +502,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
         let fence_wait = (name == "VkFence").then(|| quote! {
             let submission = self.submission.lock().take();
             if let Some(sub) = submission.filter(|s| !s.is_complete()) {
-                // SAFETY: the fence belongs to this device; waiting is always valid.
-                // Its submission may still use what it keeps alive, so the wait comes
-                // before those objects go and before the fence does
-                // (VUID-vkDestroyFence-fence-01120).
+                __safety!("the fence belongs to this device; waiting is always valid. Its submission may still use what it keeps alive, so the wait comes before those objects go and before the fence does (VUID-vkDestroyFence-fence-01120).");
                 let r = unsafe {
                     (self.parent.fns().fp_v1_0().wait_for_fences)(self.parent.raw(), 1, &self.raw, vk::TRUE, u64::MAX)
                 };
@@ -558,10 +552,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
                     }
                     #guard
                     #fence_wait
-                    // SAFETY: the last clone is gone, so no host reference is left, and
-                    // every submission that used the object held a clone until its fence
-                    // signalled; it is destroyed with the parent it came from and no
-                    // allocator, as it was created without one.
+                    __safety!("the last clone is gone, so no host reference is left, and every submission that used the object held a clone until its fence signalled; it is destroyed with the parent it came from and no allocator, as it was created without one.");
                     unsafe { #call }
                 }
             }
@@ -598,9 +589,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
                     let _queue = self.sync.lock();
                     let held = core::mem::take(&mut *self.unfenced.lock());
                     if held.iter().any(|s| !s.is_complete()) {
-                        // SAFETY: the queue belongs to this live device. What its
-                        // fenceless operations use goes only once they are complete
-                        // (VUID-vkDestroySemaphore-semaphore-01137).
+                        __safety!("the queue belongs to this live device. What its fenceless operations use goes only once they are complete (VUID-vkDestroySemaphore-semaphore-01137).");
                         let r = unsafe { (self.parent.fns().fp_v1_0().queue_wait_idle)(self.raw) };
                         if r == vk::Result::SUCCESS {
                             self.parent.live().ledger().retire_queue(self.raw);
@@ -802,10 +791,7 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                     pub(crate) fn free_deferred(&self) {
                         let raws = core::mem::take(&mut *self.inner.deferred.lock());
                         if !raws.is_empty() {
-                            // SAFETY: their wrappers are gone and no submission uses them
-                            // (each waited for its fence before it went); the caller
-                            // holds the pool (VUID-vkFreeCommandBuffers-commandPool-parameter's
-                            // external synchronization).
+                            __safety!("their wrappers are gone and no submission uses them (each waited for its fence before it went); the caller holds the pool (VUID-vkFreeCommandBuffers-commandPool-parameter's external synchronization).");
                             unsafe {
                                 (self.parent().fns().fp_v1_0().free_command_buffers)(self.parent().raw(), self.raw(), raws.len() as u32, raws.as_ptr())
                             };
@@ -848,9 +834,7 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                 pub(crate) fn free_deferred(&self) {
                     let raws = core::mem::take(&mut *self.inner.deferred.lock());
                     if !raws.is_empty() {
-                        // SAFETY: their wrappers are gone, so nothing records or
-                        // submits them; the pool frees sets (only such sets are
-                        // deferred) and the caller holds it.
+                        __safety!("their wrappers are gone, so nothing records or submits them; the pool frees sets (only such sets are deferred) and the caller holds it.");
                         let _ = unsafe {
                             (self.parent().fns().fp_v1_0().free_descriptor_sets)(self.parent().raw(), self.raw(), raws.len() as u32, raws.as_ptr())
                         };

@@ -202,11 +202,66 @@ pub(crate) fn split(
 /// Format a generated module.
 fn format(tokens: TokenStream, header: &str) -> String {
     let text = match syn::parse2::<syn::File>(tokens.clone()) {
-        Ok(file) => prettyplease::unparse(&file),
+        Ok(file) => safety_comments(&prettyplease::unparse(&file)),
         // An emitter bug: keep the raw tokens so the compiler points at it.
         Err(e) => format!("compile_error!({:?});\n{tokens}", e.to_string()),
     };
     format!("{header}\n\n{text}")
+}
+
+/// A `// SAFETY:` comment for the statement that follows it in generated code.
+/// `quote!` drops comments, so a renderer writes this marker statement instead and
+/// [`format`] turns it into the comment.
+pub(crate) fn safety(text: &str) -> TokenStream {
+    quote::quote!(__safety!(#text);)
+}
+
+/// Replace every `__safety!("..");` line (as prettyplease prints it, on one line or
+/// spread over several) with `// SAFETY: ..` comment lines at the same indent.
+fn safety_comments(text: &str) -> String {
+    const MARK: &str = "__safety!(";
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find(MARK) {
+        let line_start = rest[..at].rfind('\n').map_or(0, |i| i + 1);
+        let indent = &rest[line_start..at];
+        // The argument is one string literal; its end is the first unescaped quote.
+        let open = at + MARK.len() + rest[at + MARK.len()..].find('"').unwrap_or(0);
+        let mut close = None;
+        let mut escaped = false;
+        for (i, c) in rest[open + 1..].char_indices() {
+            match c {
+                '\\' if !escaped => escaped = true,
+                '"' if !escaped => {
+                    close = Some(open + 1 + i);
+                    break;
+                }
+                _ => escaped = false,
+            }
+        }
+        let Some(close) = close else { break };
+        let Some(end) = rest[close..].find(");").map(|e| close + e + 2) else {
+            break;
+        };
+        let Ok(lit) = syn::parse_str::<syn::LitStr>(&rest[open..=close]) else {
+            break;
+        };
+        out.push_str(&rest[..line_start]);
+        let mut line = format!("{indent}// SAFETY:");
+        for word in lit.value().split_whitespace() {
+            if line.len() + 1 + word.len() > 92 && !line.trim_end().ends_with(':') {
+                out.push_str(&line);
+                out.push('\n');
+                line = format!("{indent}//");
+            }
+            line.push(' ');
+            line.push_str(word);
+        }
+        out.push_str(&line);
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// Run every renderer over the plans.
@@ -307,4 +362,35 @@ all_extensions = ["#,
         ));
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn safety_markers_become_comments() {
+        let tokens = quote::quote! {
+            fn f() {
+                __safety!("the list (each item checked before);\n it held \"quotes\" and a long enough text to wrap onto a second comment line here.");
+                unsafe { g() };
+            }
+        };
+        let text = format(tokens, "// header");
+        assert!(!text.contains("__safety"), "{text}");
+        let comments: Vec<&str> = text
+            .lines()
+            .filter(|l| l.trim_start().starts_with("//") && !l.starts_with("// header"))
+            .collect();
+        assert!(
+            comments[0]
+                .trim_start()
+                .starts_with("// SAFETY: the list (each item checked before);"),
+            "{text}"
+        );
+        assert!(comments.len() >= 2, "{text}");
+        assert!(comments.iter().all(|l| l.len() <= 92), "{text}");
+        assert!(text.contains("\"quotes\""), "{text}");
+        assert!(syn::parse_file(&text).is_ok(), "{text}");
+    }
 }

@@ -46,15 +46,16 @@ pub fn emit(cx: &Context) -> TokenStream {
                 Member::HandleSlice { count } => {
                     let c = field_ident(&count);
                     parts.push(quote! {
-                        // SAFETY: the safe setter stored this array with its length.
+                        __safety!("the safe setter stored this array with its length.");
                         out.extend(live.keep(unsafe { crate::retention::raw_slice(x.#field, x.#c) }));
                     });
                 }
                 Member::StructRef { .. } if found.contains(&m.type_name) => {
                     let g = inner();
                     parts.push(quote! {
-                        // SAFETY: the safe setter stored a reference that outlives `x`.
+                        __safety!("the safe setter stored a reference that outlives `x`.");
                         if let Some(y) = unsafe { x.#field.as_ref() } {
+                            __safety!("`y` is a live safe struct, as the walk requires.");
                             unsafe { #g(y, live, out) };
                         }
                     });
@@ -63,18 +64,25 @@ pub fn emit(cx: &Context) -> TokenStream {
                     let c = field_ident(&count);
                     let g = inner();
                     parts.push(quote! {
-                        // SAFETY: the safe setter stored this array with its length.
+                        __safety!("the safe setter stored this array with its length.");
                         for y in unsafe { crate::retention::raw_slice(x.#field, x.#c) } {
+                            __safety!("`y` is a live safe struct, as the walk requires.");
                             unsafe { #g(y, live, out) };
                         }
                     });
                 }
                 Member::Nested if found.contains(&m.type_name) => {
                     let g = inner();
-                    parts.push(quote!(unsafe { #g(&x.#field, live, out) };));
+                    parts.push(quote! {
+                        __safety!("a nested struct of a live struct, with the same guarantees.");
+                        unsafe { #g(&x.#field, live, out) };
+                    });
                 }
                 Member::PNext if extenders(cx, name).any(|e| found.contains(e)) => {
-                    parts.push(quote!(unsafe { next(x.p_next, live, out) };));
+                    parts.push(quote! {
+                        __safety!("the chain was built by `push_next` from live safe structs.");
+                        unsafe { next(x.p_next, live, out) };
+                    });
                 }
                 _ => {}
             }
@@ -99,8 +107,10 @@ pub fn emit(cx: &Context) -> TokenStream {
                 let lit = Literal::i32_unsuffixed(v);
                 arms.push(quote! {
                     #cfg
-                    // SAFETY: a node with this structure type is this struct.
-                    #lit => unsafe { #f(&*(node as *const vk::BaseInStructure<'_>).cast::<vk::#ty>(), live, out) },
+                    #lit => {
+                        __safety!("a node with this structure type is this struct.");
+                        unsafe { #f(&*(node as *const vk::BaseInStructure<'_>).cast::<vk::#ty>(), live, out) }
+                    }
                 });
             }
         }
@@ -120,7 +130,7 @@ pub fn emit(cx: &Context) -> TokenStream {
         /// `p` is null or a chain that `push_next` built from safe structs.
         #[allow(dead_code)]
         pub(crate) unsafe fn next(p: *const core::ffi::c_void, live: &Live, out: &mut Vec<Retained>) {
-            // SAFETY: the caller vouches for every node.
+            __safety!("the caller vouches for every node.");
             for node in unsafe { crate::support::chain_nodes(p) } {
                 #[allow(clippy::single_match)]
                 match node.s_type.as_raw() {

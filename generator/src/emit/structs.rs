@@ -293,12 +293,13 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         .map(|head| {
             let h = type_ident(head);
             let head_cfg = cfg_of(model, model.condition(head));
+            // SAFETY: the registry lists this struct in the head's `structextends`.
+            // One lifetime for both: a pushed struct holds the head's chain, so it
+            // must not outlive what the head borrows. (One line per pair in the
+            // output; the trait's docs say what an implementation promises.)
             quote! {
                 #cfg
                 #head_cfg
-                // SAFETY: the registry lists this struct in the head's `structextends`.
-                // One lifetime for both: a pushed struct holds the head's chain, so it
-                // must not outlive what the head borrows.
                 unsafe impl<'a> Extends<#h<'a>> for #id<'a> {}
             }
         })

@@ -269,7 +269,7 @@ impl<'c, 'm> Checker<'c, 'm> {
                         .map(|(c, needs, w)| {
                             (
                                 quote! {
-                                    // SAFETY: the safe setter stored this array and its count.
+                                    __safety!("the safe setter stored this array and its count.");
                                     for e in unsafe { members(v.#f, v.#n) } { #c }
                                 },
                                 needs,
@@ -331,14 +331,14 @@ impl<'c, 'm> Checker<'c, 'm> {
                 Member::Value | Member::Nested => quote!(crate::checks::#call(&v.#f, s)?;),
                 Member::StructRef { .. } => quote! {
                     if !v.#f.is_null() {
-                        // SAFETY: the safe setter stores a reference that outlives `v`.
+                        __safety!("the safe setter stores a reference that outlives `v`.");
                         crate::checks::#call(unsafe { &*v.#f }, s)?;
                     }
                 },
                 Member::Slice { count, .. } => {
                     let n = field_ident(count);
                     quote! {
-                        // SAFETY: the safe setter stored this array and its count.
+                        __safety!("the safe setter stored this array and its count.");
                         for e in unsafe { members(v.#f, v.#n) } {
                             crate::checks::#call(e, s)?;
                         }
@@ -399,7 +399,7 @@ impl<'c, 'm> Checker<'c, 'm> {
                 Member::HandleSlice { count } => {
                     let n = field_ident(count);
                     quote! {
-                        // SAFETY: the safe setter stored this HandleSlice and its count.
+                        __safety!("the safe setter stored this HandleSlice and its count.");
                         for h in unsafe { members(v.#f, v.#n) } {
                             if *h != Default::default() && !s.#owner(*h) {
                                 return Err(fail(#vuid, #msg.into()));

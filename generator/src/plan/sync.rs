@@ -30,13 +30,13 @@ pub(crate) fn member(command: &str, path: &str) -> Option<TokenStream> {
             syncs.extend(self.live().sync_of(vk::ObjectType::SWAPCHAIN_KHR, vk::Handle::as_raw(create_info.old_swapchain)));
         },
         ("vkQueuePresentKHR", "pPresentInfo->pWaitSemaphores[]") => quote! {
-            // SAFETY: the safe struct stores each array with its length.
+            __safety!("the safe struct stores each array with its length.");
             for s in unsafe { crate::retention::raw_slice(present_info.p_wait_semaphores, present_info.wait_semaphore_count) } {
                 syncs.extend(self.parent().live().sync_of(vk::ObjectType::SEMAPHORE, vk::Handle::as_raw(*s)));
             }
         },
         ("vkQueuePresentKHR", "pPresentInfo->pSwapchains[]") => quote! {
-            // SAFETY: the safe struct stores each array with its length.
+            __safety!("the safe struct stores each array with its length.");
             for s in unsafe { crate::retention::raw_slice(present_info.p_swapchains, present_info.swapchain_count) } {
                 syncs.extend(self.parent().live().sync_of(vk::ObjectType::SWAPCHAIN_KHR, vk::Handle::as_raw(*s)));
             }

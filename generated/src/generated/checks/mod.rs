@@ -201,6 +201,7 @@ unsafe fn members<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
     if ptr.is_null() || count == 0 {
         return &[];
     }
+    // SAFETY: the caller promises `count` live elements at `ptr`.
     unsafe { core::slice::from_raw_parts(ptr, count as usize) }
 }
 /// Structure types that may appear more than once in a chain.
@@ -213,6 +214,8 @@ pub(crate) fn chain(
     unique: Option<&'static str>,
 ) -> Result<()> {
     let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
+    // SAFETY: chains are built by `push_next` from safe structs, each a live struct that
+    // begins with `sType` and `pNext`.
     for base in unsafe { crate::support::chain_nodes(next) } {
         let p = base as *const vk::BaseInStructure<'_>;
         let ty = base.s_type.as_raw();
@@ -229,6 +232,7 @@ pub(crate) fn chain(
         }
         match ty {
             1000241002 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_attachment_description_stencil_layout(
                     unsafe {
                         &*(p as *const vk::AttachmentDescriptionStencilLayout<'_>)
@@ -237,18 +241,21 @@ pub(crate) fn chain(
                 )?
             }
             1000241001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_attachment_reference_stencil_layout(
                     unsafe { &*(p as *const vk::AttachmentReferenceStencilLayout<'_>) },
                     s,
                 )?
             }
             1000156002 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_bind_image_plane_memory_info(
                     unsafe { &*(p as *const vk::BindImagePlaneMemoryInfo<'_>) },
                     s,
                 )?
             }
             1000044004 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_command_buffer_inheritance_rendering_info(
                     unsafe {
                         &*(p as *const vk::CommandBufferInheritanceRenderingInfo<'_>)
@@ -258,6 +265,7 @@ pub(crate) fn chain(
             }
             #[cfg(feature = "ext_debug_utils")]
             1000128004 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_debug_utils_messenger_create_info_ext(
                     unsafe { &*(p as *const vk::DebugUtilsMessengerCreateInfoEXT<'_>) },
                     s,
@@ -265,12 +273,14 @@ pub(crate) fn chain(
             }
             #[cfg(feature = "ext_debug_utils")]
             1000128000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_debug_utils_object_name_info_ext(
                     unsafe { &*(p as *const vk::DebugUtilsObjectNameInfoEXT<'_>) },
                     s,
                 )?
             }
             1000161000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_descriptor_set_layout_binding_flags_create_info(
                     unsafe {
                         &*(p as *const vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>)
@@ -280,6 +290,7 @@ pub(crate) fn chain(
             }
             #[cfg(feature = "khr_swapchain")]
             1000060011 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_device_group_present_info_khr(
                     unsafe { &*(p as *const vk::DeviceGroupPresentInfoKHR<'_>) },
                     s,
@@ -287,90 +298,105 @@ pub(crate) fn chain(
             }
             #[cfg(feature = "khr_swapchain")]
             1000060012 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_device_group_swapchain_create_info_khr(
                     unsafe { &*(p as *const vk::DeviceGroupSwapchainCreateInfoKHR<'_>) },
                     s,
                 )?
             }
             1000113000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_export_fence_create_info(
                     unsafe { &*(p as *const vk::ExportFenceCreateInfo<'_>) },
                     s,
                 )?
             }
             1000072002 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_export_memory_allocate_info(
                     unsafe { &*(p as *const vk::ExportMemoryAllocateInfo<'_>) },
                     s,
                 )?
             }
             1000077000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_export_semaphore_create_info(
                     unsafe { &*(p as *const vk::ExportSemaphoreCreateInfo<'_>) },
                     s,
                 )?
             }
             1000072000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_external_memory_buffer_create_info(
                     unsafe { &*(p as *const vk::ExternalMemoryBufferCreateInfo<'_>) },
                     s,
                 )?
             }
             1000072001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_external_memory_image_create_info(
                     unsafe { &*(p as *const vk::ExternalMemoryImageCreateInfo<'_>) },
                     s,
                 )?
             }
             1000108001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_framebuffer_attachments_create_info(
                     unsafe { &*(p as *const vk::FramebufferAttachmentsCreateInfo<'_>) },
                     s,
                 )?
             }
             1000147000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_image_format_list_create_info(
                     unsafe { &*(p as *const vk::ImageFormatListCreateInfo<'_>) },
                     s,
                 )?
             }
             1000156003 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_image_plane_memory_requirements_info(
                     unsafe { &*(p as *const vk::ImagePlaneMemoryRequirementsInfo<'_>) },
                     s,
                 )?
             }
             1000246000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_image_stencil_usage_create_info(
                     unsafe { &*(p as *const vk::ImageStencilUsageCreateInfo<'_>) },
                     s,
                 )?
             }
             1000117002 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_image_view_usage_create_info(
                     unsafe { &*(p as *const vk::ImageViewUsageCreateInfo<'_>) },
                     s,
                 )?
             }
             1000060000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_memory_allocate_flags_info(
                     unsafe { &*(p as *const vk::MemoryAllocateFlagsInfo<'_>) },
                     s,
                 )?
             }
             1000314000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_memory_barrier2(
                     unsafe { &*(p as *const vk::MemoryBarrier2<'_>) },
                     s,
                 )?
             }
             1000127001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_memory_dedicated_allocate_info(
                     unsafe { &*(p as *const vk::MemoryDedicatedAllocateInfo<'_>) },
                     s,
                 )?
             }
             1000071000 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_physical_device_external_image_format_info(
                     unsafe {
                         &*(p as *const vk::PhysicalDeviceExternalImageFormatInfo<'_>)
@@ -379,6 +405,7 @@ pub(crate) fn chain(
                 )?
             }
             1000117003 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_pipeline_tessellation_domain_origin_state_create_info(
                     unsafe {
                         &*(p
@@ -390,6 +417,7 @@ pub(crate) fn chain(
                 )?
             }
             1000117001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_render_pass_input_attachment_aspect_create_info(
                     unsafe {
                         &*(p as *const vk::RenderPassInputAttachmentAspectCreateInfo<'_>)
@@ -398,24 +426,28 @@ pub(crate) fn chain(
                 )?
             }
             1000130001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_sampler_reduction_mode_create_info(
                     unsafe { &*(p as *const vk::SamplerReductionModeCreateInfo<'_>) },
                     s,
                 )?
             }
             1000207002 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_semaphore_type_create_info(
                     unsafe { &*(p as *const vk::SemaphoreTypeCreateInfo<'_>) },
                     s,
                 )?
             }
             16 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_shader_module_create_info(
                     unsafe { &*(p as *const vk::ShaderModuleCreateInfo<'_>) },
                     s,
                 )?
             }
             1000199001 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_subpass_description_depth_stencil_resolve(
                     unsafe {
                         &*(p as *const vk::SubpassDescriptionDepthStencilResolve<'_>)
@@ -424,6 +456,7 @@ pub(crate) fn chain(
                 )?
             }
             1000138002 => {
+                // SAFETY: a node with this structure type is this struct.
                 check_write_descriptor_set_inline_uniform_block(
                     unsafe {
                         &*(p as *const vk::WriteDescriptorSetInlineUniformBlock<'_>)

@@ -267,6 +267,7 @@ pub(crate) fn check_bind_sparse_info(
     v: &vk::BindSparseInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -278,6 +279,7 @@ pub(crate) fn check_bind_sparse_info(
             );
         }
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -289,12 +291,15 @@ pub(crate) fn check_bind_sparse_info(
             );
         }
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_buffer_binds, v.buffer_bind_count) } {
         crate::checks::check_sparse_buffer_memory_bind_info(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_image_opaque_binds, v.image_opaque_bind_count) } {
         crate::checks::check_sparse_image_opaque_memory_bind_info(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_image_binds, v.image_bind_count) } {
         crate::checks::check_sparse_image_memory_bind_info(e, s)?;
     }
@@ -343,6 +348,7 @@ pub(crate) fn check_blit_image_info2(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_regions, v.region_count) } {
         crate::checks::check_image_blit2(e, s)?;
     }
@@ -489,6 +495,7 @@ pub(crate) fn check_command_buffer_begin_info(
         "VUID-VkCommandBufferBeginInfo-flags-parameter",
     )?;
     if !v.p_inheritance_info.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_command_buffer_inheritance_info(
             unsafe { &*v.p_inheritance_info },
             s,
@@ -541,6 +548,7 @@ pub(crate) fn check_command_buffer_inheritance_rendering_info(
         s,
         "VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_color_attachment_formats, v.color_attachment_count) } {
         crate::checks::enum_format(
             *e,
@@ -711,6 +719,7 @@ pub(crate) fn check_copy_buffer_to_image_info2(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_regions, v.region_count) } {
         crate::checks::check_buffer_image_copy2(e, s)?;
     }
@@ -782,6 +791,7 @@ pub(crate) fn check_copy_image_info2(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_regions, v.region_count) } {
         crate::checks::check_image_copy2(e, s)?;
     }
@@ -823,6 +833,7 @@ pub(crate) fn check_copy_image_to_buffer_info2(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_regions, v.region_count) } {
         crate::checks::check_buffer_image_copy2(e, s)?;
     }
@@ -842,6 +853,7 @@ pub(crate) fn check_debug_utils_messenger_callback_data_ext(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_objects, v.object_count) } {
         crate::checks::check_debug_utils_object_name_info_ext(e, s)?;
     }
@@ -946,14 +958,17 @@ pub(crate) fn check_dependency_info(
         s,
         "VUID-VkDependencyInfo-dependencyFlags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_memory_barriers, v.memory_barrier_count) } {
         crate::checks::check_memory_barrier2(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_buffer_memory_barriers, v.buffer_memory_barrier_count)
     } {
         crate::checks::check_buffer_memory_barrier2(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_image_memory_barriers, v.image_memory_barrier_count)
     } {
@@ -996,6 +1011,7 @@ pub(crate) fn check_descriptor_pool_create_info(
         s,
         "VUID-VkDescriptorPoolCreateInfo-flags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_pool_sizes, v.pool_size_count) } {
         crate::checks::check_descriptor_pool_size(e, s)?;
     }
@@ -1040,6 +1056,7 @@ pub(crate) fn check_descriptor_set_allocate_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_set_layouts, v.descriptor_set_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -1075,6 +1092,7 @@ pub(crate) fn check_descriptor_set_layout_binding_flags_create_info(
     v: &vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_binding_flags, v.binding_count) } {
         crate::checks::flags_descriptor_binding_flags(
             *e,
@@ -1094,6 +1112,7 @@ pub(crate) fn check_descriptor_set_layout_create_info(
         s,
         "VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_bindings, v.binding_count) } {
         crate::checks::check_descriptor_set_layout_binding(e, s)?;
     }
@@ -1162,6 +1181,7 @@ pub(crate) fn check_descriptor_update_template_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_descriptor_update_entries, v.descriptor_update_entry_count)
     } {
@@ -1187,6 +1207,7 @@ pub(crate) fn check_device_buffer_memory_requirements(
     s: &Scope<'_>,
 ) -> Result<()> {
     if !v.p_create_info.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_buffer_create_info(unsafe { &*v.p_create_info }, s)?;
     }
     Ok(())
@@ -1209,6 +1230,7 @@ pub(crate) fn check_device_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_queue_create_infos, v.queue_create_info_count) } {
         crate::checks::check_device_queue_create_info(e, s)?;
     }
@@ -1260,6 +1282,7 @@ pub(crate) fn check_device_image_memory_requirements(
         "VUID-VkDeviceImageMemoryRequirements-planeAspect-parameter",
     )?;
     if !v.p_create_info.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_image_create_info(unsafe { &*v.p_create_info }, s)?;
     }
     Ok(())
@@ -1418,6 +1441,7 @@ pub(crate) fn check_framebuffer_attachment_image_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_view_formats, v.view_format_count) } {
         crate::checks::enum_format(
             *e,
@@ -1432,6 +1456,7 @@ pub(crate) fn check_framebuffer_attachments_create_info(
     v: &vk::FramebufferAttachmentsCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_attachment_image_infos, v.attachment_image_info_count)
     } {
@@ -1458,6 +1483,7 @@ pub(crate) fn check_framebuffer_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_attachments, v.attachment_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -1515,58 +1541,68 @@ pub(crate) fn check_graphics_pipeline_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_stages, v.stage_count) } {
         crate::checks::check_pipeline_shader_stage_create_info(e, s)?;
     }
     if !v.p_vertex_input_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_vertex_input_state_create_info(
             unsafe { &*v.p_vertex_input_state },
             s,
         )?;
     }
     if !v.p_input_assembly_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_input_assembly_state_create_info(
             unsafe { &*v.p_input_assembly_state },
             s,
         )?;
     }
     if !v.p_tessellation_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_tessellation_state_create_info(
             unsafe { &*v.p_tessellation_state },
             s,
         )?;
     }
     if !v.p_viewport_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_viewport_state_create_info(
             unsafe { &*v.p_viewport_state },
             s,
         )?;
     }
     if !v.p_rasterization_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_rasterization_state_create_info(
             unsafe { &*v.p_rasterization_state },
             s,
         )?;
     }
     if !v.p_multisample_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_multisample_state_create_info(
             unsafe { &*v.p_multisample_state },
             s,
         )?;
     }
     if !v.p_depth_stencil_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_depth_stencil_state_create_info(
             unsafe { &*v.p_depth_stencil_state },
             s,
         )?;
     }
     if !v.p_color_blend_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_color_blend_state_create_info(
             unsafe { &*v.p_color_blend_state },
             s,
         )?;
     }
     if !v.p_dynamic_state.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_pipeline_dynamic_state_create_info(
             unsafe { &*v.p_dynamic_state },
             s,
@@ -1669,6 +1705,7 @@ pub(crate) fn check_image_format_list_create_info(
     v: &vk::ImageFormatListCreateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_view_formats, v.view_format_count) } {
         crate::checks::enum_format(
             *e,
@@ -2321,6 +2358,7 @@ pub(crate) fn check_pipeline_color_blend_state_create_info(
         s,
         "VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_attachments, v.attachment_count) } {
         crate::checks::check_pipeline_color_blend_attachment_state(e, s)?;
     }
@@ -2365,6 +2403,7 @@ pub(crate) fn check_pipeline_dynamic_state_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_dynamic_states, v.dynamic_state_count) } {
         crate::checks::enum_dynamic_state(
             *e,
@@ -2404,6 +2443,7 @@ pub(crate) fn check_pipeline_layout_create_info(
         s,
         "VUID-VkPipelineLayoutCreateInfo-flags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_push_constant_ranges, v.push_constant_range_count) } {
         crate::checks::check_push_constant_range(e, s)?;
     }
@@ -2536,11 +2576,13 @@ pub(crate) fn check_pipeline_vertex_input_state_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_vertex_binding_descriptions, v.vertex_binding_description_count)
     } {
         crate::checks::check_vertex_input_binding_description(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_vertex_attribute_descriptions, v.vertex_attribute_description_count)
     } {
@@ -2587,6 +2629,7 @@ pub(crate) fn check_present_info_khr(
             ),
         );
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -2598,6 +2641,7 @@ pub(crate) fn check_present_info_khr(
             );
         }
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_swapchains, v.swapchain_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -2724,12 +2768,15 @@ pub(crate) fn check_render_pass_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_attachments, v.attachment_count) } {
         crate::checks::check_attachment_description(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_subpasses, v.subpass_count) } {
         crate::checks::check_subpass_description(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_dependencies, v.dependency_count) } {
         crate::checks::check_subpass_dependency(e, s)?;
     }
@@ -2754,12 +2801,15 @@ pub(crate) fn check_render_pass_create_info2(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_attachments, v.attachment_count) } {
         crate::checks::check_attachment_description2(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_subpasses, v.subpass_count) } {
         crate::checks::check_subpass_description2(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_dependencies, v.dependency_count) } {
         crate::checks::check_subpass_dependency2(e, s)?;
     }
@@ -2783,6 +2833,7 @@ pub(crate) fn check_render_pass_input_attachment_aspect_create_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_aspect_references, v.aspect_reference_count) } {
         crate::checks::check_input_attachment_aspect_reference(e, s)?;
     }
@@ -2850,16 +2901,19 @@ pub(crate) fn check_rendering_info(
         s,
         "VUID-VkRenderingInfo-flags-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_color_attachments, v.color_attachment_count) } {
         crate::checks::check_rendering_attachment_info(e, s)?;
     }
     if !v.p_depth_attachment.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_rendering_attachment_info(
             unsafe { &*v.p_depth_attachment },
             s,
         )?;
     }
     if !v.p_stencil_attachment.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_rendering_attachment_info(
             unsafe { &*v.p_stencil_attachment },
             s,
@@ -2909,6 +2963,7 @@ pub(crate) fn check_resolve_image_info2(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_regions, v.region_count) } {
         crate::checks::check_image_resolve2(e, s)?;
     }
@@ -3101,6 +3156,7 @@ pub(crate) fn check_sparse_buffer_memory_bind_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_binds, v.bind_count) } {
         crate::checks::check_sparse_memory_bind(e, s)?;
     }
@@ -3133,6 +3189,7 @@ pub(crate) fn check_sparse_image_memory_bind_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_binds, v.bind_count) } {
         crate::checks::check_sparse_image_memory_bind(e, s)?;
     }
@@ -3151,6 +3208,7 @@ pub(crate) fn check_sparse_image_opaque_memory_bind_info(
             ),
         );
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_binds, v.bind_count) } {
         crate::checks::check_sparse_memory_bind(e, s)?;
     }
@@ -3197,6 +3255,7 @@ pub(crate) fn check_stencil_op_state(
 }
 ///The implicit rules of `VkSubmitInfo` that are checked at run time.
 pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_wait_dst_stage_mask, v.wait_semaphore_count) } {
         crate::checks::flags_pipeline_stage_flags(
             *e,
@@ -3204,6 +3263,7 @@ pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result
             "VUID-VkSubmitInfo-pWaitDstStageMask-parameter",
         )?;
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3215,6 +3275,7 @@ pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result
             );
         }
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_command_buffers, v.command_buffer_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3226,6 +3287,7 @@ pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result
             );
         }
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3243,9 +3305,11 @@ pub(crate) fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result
 ///The implicit rules of `VkSubmitInfo2` that are checked at run time.
 pub(crate) fn check_submit_info2(v: &vk::SubmitInfo2<'_>, s: &Scope<'_>) -> Result<()> {
     crate::checks::flags_submit_flags(v.flags, s, "VUID-VkSubmitInfo2-flags-parameter")?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_wait_semaphore_infos, v.wait_semaphore_info_count) } {
         crate::checks::check_semaphore_submit_info(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe {
         members(v.p_signal_semaphore_infos, v.signal_semaphore_info_count)
     } {
@@ -3346,16 +3410,20 @@ pub(crate) fn check_subpass_description(
         s,
         "VUID-VkSubpassDescription-pipelineBindPoint-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_input_attachments, v.input_attachment_count) } {
         crate::checks::check_attachment_reference(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_color_attachments, v.color_attachment_count) } {
         crate::checks::check_attachment_reference(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_resolve_attachments, v.color_attachment_count) } {
         crate::checks::check_attachment_reference(e, s)?;
     }
     if !v.p_depth_stencil_attachment.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_attachment_reference(
             unsafe { &*v.p_depth_stencil_attachment },
             s,
@@ -3378,16 +3446,20 @@ pub(crate) fn check_subpass_description2(
         s,
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_input_attachments, v.input_attachment_count) } {
         crate::checks::check_attachment_reference2(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_color_attachments, v.color_attachment_count) } {
         crate::checks::check_attachment_reference2(e, s)?;
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_resolve_attachments, v.color_attachment_count) } {
         crate::checks::check_attachment_reference2(e, s)?;
     }
     if !v.p_depth_stencil_attachment.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_attachment_reference2(
             unsafe { &*v.p_depth_stencil_attachment },
             s,
@@ -3402,6 +3474,7 @@ pub(crate) fn check_subpass_description_depth_stencil_resolve(
     s: &Scope<'_>,
 ) -> Result<()> {
     if !v.p_depth_stencil_resolve_attachment.is_null() {
+        // SAFETY: the safe setter stores a reference that outlives `v`.
         crate::checks::check_attachment_reference2(
             unsafe { &*v.p_depth_stencil_resolve_attachment },
             s,
@@ -3579,6 +3652,7 @@ pub(crate) fn check_write_descriptor_set(
             ),
         );
     }
+    // SAFETY: the safe setter stored this HandleSlice and its count.
     for h in unsafe { members(v.p_texel_buffer_view, v.descriptor_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3590,6 +3664,7 @@ pub(crate) fn check_write_descriptor_set(
             );
         }
     }
+    // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_image_info, v.descriptor_count) } {
         crate::checks::check_descriptor_image_info(e, s)?;
     }

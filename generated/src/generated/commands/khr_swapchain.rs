@@ -53,6 +53,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 "VUID-vkAcquireNextImageKHR-semaphore-03265",
             )?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.acquire_next_image_khr_unchecked(swapchain, timeout, semaphore, fence)
         }
@@ -89,6 +92,9 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .acquire_next_image_khr;
         let mut out: u32 = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             fp(
                 self.raw(),
@@ -140,6 +146,9 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
             let r = self.validate_create_swapchain_khr(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
     }
     /**`vkCreateSwapchainKHR` without its dynamic checks.
@@ -177,6 +186,9 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         let mut create_info = *create_info;
         create_info.as_raw_mut().surface = surface.raw();
         let mut out = vk::SwapchainKHR::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             fp(self.raw(), create_info.as_raw(), core::ptr::null(), &mut out)
         };
@@ -206,6 +218,9 @@ The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.k
             let r = self.validate_get_swapchain_images_khr(swapchain);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
     }
     /**`vkGetSwapchainImagesKHR` without its dynamic checks.
@@ -224,6 +239,9 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .get_swapchain_images_khr;
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         let items = unsafe {
             crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Image| fp(
                 self.raw(),
@@ -261,6 +279,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(self.host_sync().clone());
+            // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
                 crate::retention::raw_slice(
                     present_info.p_wait_semaphores,
@@ -275,6 +294,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                             .sync_of(vk::ObjectType::SEMAPHORE, vk::Handle::as_raw(*s)),
                     );
             }
+            // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
                 crate::retention::raw_slice(
                     present_info.p_swapchains,
@@ -299,6 +319,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
             let r = self.validate_queue_present_khr(present_info);
             r?;
         }
+        // SAFETY: the safe struct stores the array with its length.
         let waits = unsafe {
             crate::retention::raw_slice(
                 present_info.p_wait_semaphores,
@@ -311,6 +332,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
             false,
             "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
         )?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.queue_present_khr_unchecked(present_info) }
     }
     /**`vkQueuePresentKHR` without its dynamic checks.
@@ -327,6 +351,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(self.host_sync().clone());
+            // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
                 crate::retention::raw_slice(
                     present_info.p_wait_semaphores,
@@ -341,6 +366,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
                             .sync_of(vk::ObjectType::SEMAPHORE, vk::Handle::as_raw(*s)),
                     );
             }
+            // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
                 crate::retention::raw_slice(
                     present_info.p_swapchains,
@@ -369,6 +395,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
             .queue_present_khr;
         let device = self.parent();
         let mut kept = Vec::new();
+        // SAFETY: the safe struct stores every array with its length.
         unsafe {
             crate::reach::present_info_khr(
                 present_info.as_raw(),
@@ -379,6 +406,9 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
         self.hold(
             crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()),
         );
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             fp(self.raw(), present_info as *const PresentInfoKHR<'a> as *const _)
         };

@@ -30,6 +30,9 @@ The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.
             let r = self.validate_allocate_command_buffers(allocate_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.allocate_command_buffers_unchecked(command_pool, allocate_info) }
     }
     /**`vkAllocateCommandBuffers` without its dynamic checks.
@@ -55,6 +58,9 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
             vk::CommandBuffer::null(); allocate_info.as_raw().command_buffer_count as
             usize
         ];
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -111,6 +117,9 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
             let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.allocate_descriptor_sets_unchecked(descriptor_pool, allocate_info)
         }
@@ -138,6 +147,9 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
             vk::DescriptorSet::null(); allocate_info.as_raw().descriptor_set_count as
             usize
         ];
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -183,6 +195,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_allocate_memory(allocate_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.allocate_memory_unchecked(allocate_info) }
     }
     /**`vkAllocateMemory` without its dynamic checks.
@@ -196,6 +211,9 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
         allocate_info: &MemoryAllocateInfo<'a>,
     ) -> Result<DeviceMemory> {
         let mut out = vk::DeviceMemory::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -252,6 +270,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
             let r = self.validate_bind_buffer_memory(buffer, memory);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
     }
     /**`vkBindBufferMemory` without its dynamic checks.
@@ -272,6 +293,9 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
             syncs.push(buffer.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -320,6 +344,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
             let r = self.validate_bind_image_memory(image, memory);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
     }
     /**`vkBindImageMemory` without its dynamic checks.
@@ -340,6 +367,9 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
             syncs.push(image.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -374,6 +404,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_buffer(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_buffer_unchecked(create_info) }
     }
     /**`vkCreateBuffer` without its dynamic checks.
@@ -387,6 +420,9 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time (th
         create_info: &BufferCreateInfo<'a>,
     ) -> Result<Buffer> {
         let mut out = vk::Buffer::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -423,6 +459,9 @@ The rules are on [`vkCreateBufferView`'s reference page](https://registry.khrono
             let r = self.validate_create_buffer_view(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_buffer_view_unchecked(create_info) }
     }
     /**`vkCreateBufferView` without its dynamic checks.
@@ -436,6 +475,9 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<BufferView> {
         let mut out = vk::BufferView::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -457,6 +499,8 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::buffer_view_create_info(
                             create_info.as_raw(),
@@ -493,6 +537,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_command_pool(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_command_pool_unchecked(create_info) }
     }
     /**`vkCreateCommandPool` without its dynamic checks.
@@ -506,6 +553,9 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
         let mut out = vk::CommandPool::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -557,6 +607,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
     }
     /**`vkCreateComputePipelines` without its dynamic checks.
@@ -571,6 +624,9 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -597,6 +653,8 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
                     {
                         let live = self.live();
                         let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and
+                        // chains only structs pushed through `push_next`.
                         unsafe {
                             crate::reach::compute_pipeline_create_info(
                                 info.as_raw(),
@@ -635,6 +693,9 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
             let r = self.validate_create_descriptor_pool(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_descriptor_pool_unchecked(create_info) }
     }
     /**`vkCreateDescriptorPool` without its dynamic checks.
@@ -648,6 +709,9 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
         create_info: &DescriptorPoolCreateInfo<'a>,
     ) -> Result<DescriptorPool> {
         let mut out = vk::DescriptorPool::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -684,6 +748,9 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
             let r = self.validate_create_descriptor_set_layout(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
     }
     /**`vkCreateDescriptorSetLayout` without its dynamic checks.
@@ -697,6 +764,9 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<DescriptorSetLayout> {
         let mut out = vk::DescriptorSetLayout::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -718,6 +788,8 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::descriptor_set_layout_create_info(
                             create_info.as_raw(),
@@ -751,6 +823,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_event(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_event_unchecked(create_info) }
     }
     /**`vkCreateEvent` without its dynamic checks.
@@ -764,6 +839,9 @@ The caller upholds the rules that [`Self::create_event`] checks at run time (tho
         create_info: &EventCreateInfo<'a>,
     ) -> Result<Event> {
         let mut out = vk::Event::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -797,6 +875,9 @@ The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org
             let r = self.validate_create_fence(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_fence_unchecked(create_info) }
     }
     /**`vkCreateFence` without its dynamic checks.
@@ -810,6 +891,9 @@ The caller upholds the rules that [`Self::create_fence`] checks at run time (tho
         create_info: &FenceCreateInfo<'a>,
     ) -> Result<Fence> {
         let mut out = vk::Fence::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -848,6 +932,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_framebuffer(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_framebuffer_unchecked(create_info) }
     }
     /**`vkCreateFramebuffer` without its dynamic checks.
@@ -861,6 +948,9 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<Framebuffer> {
         let mut out = vk::Framebuffer::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -882,6 +972,8 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::framebuffer_create_info(
                             create_info.as_raw(),
@@ -923,6 +1015,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 .validate_create_graphics_pipelines(pipeline_cache, create_infos);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
     }
     /**`vkCreateGraphicsPipelines` without its dynamic checks.
@@ -937,6 +1032,9 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -963,6 +1061,8 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
                     {
                         let live = self.live();
                         let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and
+                        // chains only structs pushed through `push_next`.
                         unsafe {
                             crate::reach::graphics_pipeline_create_info(
                                 info.as_raw(),
@@ -1000,6 +1100,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_image(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_image_unchecked(create_info) }
     }
     /**`vkCreateImage` without its dynamic checks.
@@ -1013,6 +1116,9 @@ The caller upholds the rules that [`Self::create_image`] checks at run time (tho
         create_info: &ImageCreateInfo<'a>,
     ) -> Result<Image> {
         let mut out = vk::Image::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1034,6 +1140,8 @@ The caller upholds the rules that [`Self::create_image`] checks at run time (tho
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::image_create_info(
                             create_info.as_raw(),
@@ -1068,6 +1176,9 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
             let r = self.validate_create_image_view(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_image_view_unchecked(create_info) }
     }
     /**`vkCreateImageView` without its dynamic checks.
@@ -1081,6 +1192,9 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<ImageView> {
         let mut out = vk::ImageView::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1102,6 +1216,8 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::image_view_create_info(
                             create_info.as_raw(),
@@ -1136,6 +1252,9 @@ The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khr
             let r = self.validate_create_pipeline_cache(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_pipeline_cache_unchecked(create_info) }
     }
     /**`vkCreatePipelineCache` without its dynamic checks.
@@ -1149,6 +1268,9 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
         create_info: &PipelineCacheCreateInfo<'a>,
     ) -> Result<PipelineCache> {
         let mut out = vk::PipelineCache::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1185,6 +1307,9 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
             let r = self.validate_create_pipeline_layout(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
     }
     /**`vkCreatePipelineLayout` without its dynamic checks.
@@ -1198,6 +1323,9 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<PipelineLayout> {
         let mut out = vk::PipelineLayout::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1219,6 +1347,8 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::pipeline_layout_create_info(
                             create_info.as_raw(),
@@ -1253,6 +1383,9 @@ The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos
             let r = self.validate_create_query_pool(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_query_pool_unchecked(create_info) }
     }
     /**`vkCreateQueryPool` without its dynamic checks.
@@ -1266,6 +1399,9 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
         create_info: &QueryPoolCreateInfo<'a>,
     ) -> Result<QueryPool> {
         let mut out = vk::QueryPool::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1302,6 +1438,9 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
             let r = self.validate_create_render_pass(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_render_pass_unchecked(create_info) }
     }
     /**`vkCreateRenderPass` without its dynamic checks.
@@ -1315,6 +1454,9 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
         let mut out = vk::RenderPass::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1353,6 +1495,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_sampler(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_sampler_unchecked(create_info) }
     }
     /**`vkCreateSampler` without its dynamic checks.
@@ -1366,6 +1511,9 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<Sampler> {
         let mut out = vk::Sampler::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1387,6 +1535,8 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::sampler_create_info(
                             create_info.as_raw(),
@@ -1421,6 +1571,9 @@ The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos
             let r = self.validate_create_semaphore(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_semaphore_unchecked(create_info) }
     }
     /**`vkCreateSemaphore` without its dynamic checks.
@@ -1434,6 +1587,9 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
         create_info: &SemaphoreCreateInfo<'a>,
     ) -> Result<Semaphore> {
         let mut out = vk::Semaphore::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1478,6 +1634,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_shader_module(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_shader_module_unchecked(create_info) }
     }
     /**`vkCreateShaderModule` without its dynamic checks.
@@ -1491,6 +1650,9 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<ShaderModule> {
         let mut out = vk::ShaderModule::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1522,6 +1684,9 @@ The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.
             syncs.extend(self.live().queue_syncs());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe { (self.fns().fp_v1_0().device_wait_idle)(self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -1548,6 +1713,9 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
             let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
     }
     /**`vkFlushMappedMemoryRanges` without its dynamic checks.
@@ -1560,6 +1728,9 @@ The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -1595,6 +1766,9 @@ The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://regi
             let r = self.validate_get_buffer_memory_requirements(buffer);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
     }
     /**`vkGetBufferMemoryRequirements` without its dynamic checks.
@@ -1608,6 +1782,9 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements`] check
         buffer: &Buffer,
     ) -> vk::MemoryRequirements {
         let mut out: vk::MemoryRequirements = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -1638,6 +1815,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_device_memory_commitment(memory);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
     }
     /**`vkGetDeviceMemoryCommitment` without its dynamic checks.
@@ -1651,6 +1831,9 @@ The caller upholds the rules that [`Self::get_device_memory_commitment`] checks 
         memory: &DeviceMemory,
     ) -> vk::DeviceSize {
         let mut out: vk::DeviceSize = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -1672,6 +1855,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     #[inline]
     pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
         let mut out = vk::Queue::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -1706,6 +1892,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_event_status(event);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_event_status_unchecked(event) }
     }
     /**`vkGetEventStatus` without its dynamic checks.
@@ -1718,6 +1907,9 @@ The caller upholds the rules that [`Self::get_event_status`] checks at run time:
         &self,
         event: &Event,
     ) -> Result<vk::Result> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
         };
@@ -1742,6 +1934,9 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
             let r = self.validate_get_fence_status(fence);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_fence_status_unchecked(fence) }
     }
     /**`vkGetFenceStatus` without its dynamic checks.
@@ -1754,6 +1949,9 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
         &self,
         fence: &Fence,
     ) -> Result<vk::Result> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
         };
@@ -1787,6 +1985,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_get_image_memory_requirements(image);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
     }
     /**`vkGetImageMemoryRequirements` without its dynamic checks.
@@ -1800,6 +2001,9 @@ The caller upholds the rules that [`Self::get_image_memory_requirements`] checks
         image: &Image,
     ) -> vk::MemoryRequirements {
         let mut out: vk::MemoryRequirements = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -1829,6 +2033,9 @@ The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https:/
             let r = self.validate_get_image_sparse_memory_requirements(image);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
     }
     /**`vkGetImageSparseMemoryRequirements` without its dynamic checks.
@@ -1841,6 +2048,9 @@ The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`]
         &self,
         image: &Image,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -1883,6 +2093,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
             let r = self.validate_get_image_subresource_layout(image, subresource);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
     }
     /**`vkGetImageSubresourceLayout` without its dynamic checks.
@@ -1897,6 +2110,9 @@ The caller upholds the rules that [`Self::get_image_subresource_layout`] checks 
         subresource: &vk::ImageSubresource,
     ) -> vk::SubresourceLayout {
         let mut out: vk::SubresourceLayout = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -1931,6 +2147,9 @@ The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.kh
             let r = self.validate_get_pipeline_cache_data(pipeline_cache);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
     }
     /**`vkGetPipelineCacheData` without its dynamic checks.
@@ -1943,6 +2162,9 @@ The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at ru
         &self,
         pipeline_cache: &PipelineCache,
     ) -> Result<Vec<u8>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|count: &mut usize, items_ptr: *mut u8| (self
                 .fns()
@@ -1984,6 +2206,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
             let r = self.validate_get_query_pool_results(query_pool, data, flags);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.get_query_pool_results_unchecked(
                 query_pool,
@@ -2010,6 +2235,9 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) -> Result<vk::Result> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2050,6 +2278,9 @@ The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registr
             let r = self.validate_get_render_area_granularity(render_pass);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
     }
     /**`vkGetRenderAreaGranularity` without its dynamic checks.
@@ -2063,6 +2294,9 @@ The caller upholds the rules that [`Self::get_render_area_granularity`] checks a
         render_pass: &RenderPass,
     ) -> vk::Extent2D {
         let mut out: vk::Extent2D = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -2090,6 +2324,9 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
             let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
     }
     /**`vkInvalidateMappedMemoryRanges` without its dynamic checks.
@@ -2102,6 +2339,9 @@ The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] chec
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2148,6 +2388,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
     }
     /**`vkMergePipelineCaches` without its dynamic checks.
@@ -2171,6 +2414,9 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2217,6 +2463,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             r?;
         }
         crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
     }
     /**`vkResetCommandPool` without its dynamic checks.
@@ -2236,6 +2485,9 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2286,6 +2538,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                     .into(),
             });
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
     }
     /**`vkResetDescriptorPool` without its dynamic checks.
@@ -2305,6 +2560,9 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2341,6 +2599,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             let r = self.validate_reset_event(event);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.reset_event_unchecked(event) }
     }
     /**`vkResetEvent` without its dynamic checks.
@@ -2356,6 +2617,9 @@ The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUI
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -2397,6 +2661,9 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
                 });
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.reset_fences_unchecked(fences) }
     }
     /**`vkResetFences` without its dynamic checks.
@@ -2418,6 +2685,9 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2453,6 +2723,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_set_event(event);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.set_event_unchecked(event) }
     }
     /**`vkSetEvent` without its dynamic checks.
@@ -2468,6 +2741,9 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -2497,12 +2773,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
                 .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
             r?;
         }
+        // SAFETY: the safe struct is transparent over ash's.
         crate::retention::Live::check_writes(unsafe {
             core::slice::from_raw_parts(
                 descriptor_writes.as_ptr().cast(),
                 descriptor_writes.len(),
             )
         })?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
         })
@@ -2518,6 +2798,9 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -2530,6 +2813,9 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
                 descriptor_copies.as_ptr().cast(),
             )
         };
+        // SAFETY: the safe structs are transparent over ash's, their setters keep every
+        // array that is set as long as the count, and `check_writes` refused a write whose
+        // type selects an array that is not set.
         unsafe {
             self.live()
                 .write_sets(
@@ -2566,6 +2852,9 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
             let r = self.validate_wait_for_fences(fences);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
     }
     /**`vkWaitForFences` without its dynamic checks.
@@ -2585,6 +2874,9 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -2639,6 +2931,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_device(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_device_unchecked(create_info) }
     }
     /**`vkCreateDevice` without its dynamic checks.
@@ -2652,6 +2947,9 @@ The caller upholds the rules that [`Self::create_device`] checks at run time (th
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
         let mut out = vk::Device::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .parent()
@@ -2690,6 +2988,9 @@ The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https
         &self,
         layer_name: Option<&core::ffi::CStr>,
     ) -> Result<Vec<vk::ExtensionProperties>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -2717,6 +3018,9 @@ The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://r
 - `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -2739,6 +3043,9 @@ The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://regist
     #[inline]
     pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
         let mut out: vk::PhysicalDeviceFeatures = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -2767,6 +3074,9 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
             let r = self.validate_get_physical_device_format_properties(format);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
     }
     /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
@@ -2780,6 +3090,9 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties`
         format: vk::Format,
     ) -> vk::FormatProperties {
         let mut out: vk::FormatProperties = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -2826,6 +3139,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.get_physical_device_image_format_properties_unchecked(
                 format,
@@ -2851,6 +3167,9 @@ The caller upholds the rules that [`Self::get_physical_device_image_format_prope
         flags: vk::ImageCreateFlags,
     ) -> Result<vk::ImageFormatProperties> {
         let mut out: vk::ImageFormatProperties = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .parent()
@@ -2884,6 +3203,9 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https:
         &self,
     ) -> vk::PhysicalDeviceMemoryProperties {
         let mut out: vk::PhysicalDeviceMemoryProperties = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -2904,6 +3226,9 @@ The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://regi
     #[inline]
     pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
         let mut out: vk::PhysicalDeviceProperties = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -2926,6 +3251,9 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
     pub fn get_physical_device_queue_family_properties(
         &self,
     ) -> Result<Vec<vk::QueueFamilyProperties>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -2982,6 +3310,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.get_physical_device_sparse_image_format_properties_unchecked(
                 format,
@@ -3006,6 +3337,9 @@ The caller upholds the rules that [`Self::get_physical_device_sparse_image_forma
         usage: vk::ImageUsageFlags,
         tiling: vk::ImageTiling,
     ) -> Result<Vec<vk::SparseImageFormatProperties>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -3052,6 +3386,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_instance(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_instance_unchecked(create_info) }
     }
     /**`vkCreateInstance` without its dynamic checks.
@@ -3065,6 +3402,9 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time (
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
         let mut out = vk::Instance::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -3101,6 +3441,9 @@ The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](htt
         &self,
         layer_name: Option<&core::ffi::CStr>,
     ) -> Result<Vec<vk::ExtensionProperties>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -3127,6 +3470,9 @@ The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https:/
     pub fn enumerate_instance_layer_properties(
         &self,
     ) -> Result<Vec<vk::LayerProperties>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -3150,6 +3496,9 @@ The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registr
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_physical_devices(&self) -> Result<Vec<PhysicalDevice>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         let items = unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -3204,6 +3553,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         crate::submission::check_fence(fence, &crate::submission::BIND_SPARSE)?;
         for b in bind_info {
             let b = b.as_raw();
+            // SAFETY: the safe structs store each array with its length and chain only
+            // structs pushed through `push_next`.
             unsafe {
                 crate::submission::check_timeline_batch(
                     self.parent().live(),
@@ -3220,6 +3571,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 )
             }?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
     }
     /**`vkQueueBindSparse` without its dynamic checks.
@@ -3240,6 +3594,9 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .parent()
@@ -3258,6 +3615,7 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
         let device = self.parent();
         let mut kept = Vec::new();
         for s in bind_info {
+            // SAFETY: the safe structs store every array with its length.
             unsafe {
                 crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept)
             };
@@ -3313,13 +3671,19 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             r?;
         }
         crate::submission::check_fence(fence, &crate::submission::SUBMIT)?;
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
-            })
-            .copied()
-            .collect();
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
+            // SAFETY: the safe structs store every array with its length.
+            submits
+                .iter()
+                .flat_map(|s| unsafe {
+                    crate::retention::raw_slice(
+                        s.p_command_buffers,
+                        s.command_buffer_count,
+                    )
+                })
+                .copied()
+                .collect()
+        };
         crate::submission::check_command_buffers(
             self.parent(),
             &cbs,
@@ -3327,6 +3691,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
         )?;
         for b in submits {
             let b = b.as_raw();
+            // SAFETY: the safe structs store each array with its length and chain only
+            // structs pushed through `push_next`.
             unsafe {
                 crate::submission::check_timeline_batch(
                     self.parent().live(),
@@ -3343,6 +3709,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
                 )
             }?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.queue_submit_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit` without its dynamic checks.
@@ -3363,6 +3732,9 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .parent()
@@ -3381,15 +3753,22 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
         let device = self.parent();
         let mut kept = Vec::new();
         for s in submits {
+            // SAFETY: the safe structs store every array with its length.
             unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
         }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
-            })
-            .copied()
-            .collect();
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
+            // SAFETY: the safe structs store every array with its length.
+            submits
+                .iter()
+                .flat_map(|s| unsafe {
+                    crate::retention::raw_slice(
+                        s.p_command_buffers,
+                        s.command_buffer_count,
+                    )
+                })
+                .copied()
+                .collect()
+        };
         let batches = crate::submission::submit_timeline_batches(device.live(), submits);
         crate::submission::submitted(
             device,
@@ -3416,6 +3795,9 @@ The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.o
             syncs.push(self.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe { (self.parent().fns().fp_v1_0().queue_wait_idle)(self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -3454,6 +3836,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             r?;
         }
         self.uses().check_reset(self.device(), self.parent().resets_buffers())?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.reset_command_buffer_unchecked(flags) }
     }
     /**`vkResetCommandBuffer` without its dynamic checks.
@@ -3473,6 +3858,9 @@ The caller upholds the rules that [`Self::reset_command_buffer`] checks at run t
             syncs.push(self.parent().host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self.device().fns().fp_v1_0().reset_command_buffer)(self.raw(), flags)
         };

@@ -31,6 +31,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_begin_query_unchecked(query_pool, query, flags) }
     }
     /**`vkCmdBeginQuery` without its dynamic checks.
@@ -45,6 +48,9 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
         query: u32,
         flags: vk::QueryControlFlags,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -93,6 +99,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_bind_descriptor_sets_unchecked(
                 pipeline_bind_point,
@@ -124,6 +133,9 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -171,6 +183,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
     }
     /**`vkCmdBindIndexBuffer` without its dynamic checks.
@@ -185,6 +200,9 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -222,6 +240,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
     }
     /**`vkCmdBindPipeline` without its dynamic checks.
@@ -235,6 +256,9 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -274,6 +298,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
         }
@@ -297,6 +324,9 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -333,6 +363,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_end_query_unchecked(query_pool, query) }
     }
     /**`vkCmdEndQuery` without its dynamic checks.
@@ -346,6 +379,9 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
         query_pool: &QueryPool,
         query: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -390,6 +426,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 51 (exp
                 });
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
     }
     /**`vkCmdExecuteCommands` without its dynamic checks.
@@ -413,6 +452,9 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
                 .iter()
                 .map(|h| h.raw())
                 .collect();
+            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+            // reference or slice that outlives the call, and every count from the length of
+            // the slice it sizes.
             unsafe {
                 (self
                     .device()
@@ -467,6 +509,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 39 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_pipeline_barrier_unchecked(
                 src_stage_mask,
@@ -493,6 +538,9 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -515,6 +563,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in buffer_memory_barriers.iter() {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
                 };
@@ -528,6 +577,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in image_memory_barriers.iter() {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
                 };
@@ -571,6 +621,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
     }
     /**`vkCmdPushConstants` without its dynamic checks.
@@ -586,6 +639,9 @@ The caller upholds the rules that [`Self::cmd_push_constants`] checks at run tim
         offset: u32,
         values: &[u8],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -621,6 +677,9 @@ The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.kh
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_blend_constants_unchecked(blend_constants) }
     }
     /**`vkCmdSetBlendConstants` without its dynamic checks.
@@ -633,6 +692,9 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
         &mut self,
         blend_constants: &[f32; 4usize],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -667,6 +729,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_set_depth_bias_unchecked(
                 depth_bias_constant_factor,
@@ -687,6 +752,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
         depth_bias_clamp: f32,
         depth_bias_slope_factor: f32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -725,6 +793,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds)
         }
@@ -740,6 +811,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
         min_depth_bounds: f32,
         max_depth_bounds: f32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -769,6 +843,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_line_width_unchecked(line_width) }
     }
     /**`vkCmdSetLineWidth` without its dynamic checks.
@@ -778,6 +855,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width)
         };
@@ -805,6 +885,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
     }
     /**`vkCmdSetScissor` without its dynamic checks.
@@ -818,6 +901,9 @@ The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: 
         first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -856,6 +942,9 @@ The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registr
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
     }
     /**`vkCmdSetStencilCompareMask` without its dynamic checks.
@@ -869,6 +958,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks 
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -902,6 +994,9 @@ The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_stencil_reference_unchecked(face_mask, reference) }
     }
     /**`vkCmdSetStencilReference` without its dynamic checks.
@@ -915,6 +1010,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at 
         face_mask: vk::StencilFaceFlags,
         reference: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -948,6 +1046,9 @@ The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_stencil_write_mask_unchecked(face_mask, write_mask) }
     }
     /**`vkCmdSetStencilWriteMask` without its dynamic checks.
@@ -961,6 +1062,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -996,6 +1100,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
     }
     /**`vkCmdSetViewport` without its dynamic checks.
@@ -1009,6 +1116,9 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
         first_viewport: u32,
         viewports: &[vk::Viewport],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1065,6 +1175,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_wait_events_unchecked(
                 events,
@@ -1098,6 +1211,9 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1121,6 +1237,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in buffer_memory_barriers.iter() {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
                 };
@@ -1134,6 +1251,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in image_memory_barriers.iter() {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
                 };
@@ -1172,6 +1290,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_write_timestamp_unchecked(pipeline_stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp` without its dynamic checks.
@@ -1186,6 +1307,9 @@ The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run ti
         query_pool: &QueryPool,
         query: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1233,6 +1357,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
             }
             self.skip_begin(false);
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
     }
     /**`vkCmdBeginRenderPass` without its dynamic checks.
@@ -1246,6 +1373,9 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1261,6 +1391,7 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(render_pass_begin) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
                 };
@@ -1318,6 +1449,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_blit_image_unchecked(
                 src_image,
@@ -1344,6 +1478,9 @@ The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1396,6 +1533,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
         }
@@ -1413,6 +1553,9 @@ The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run 
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1464,6 +1607,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_clear_depth_stencil_image_unchecked(
                 image,
@@ -1486,6 +1632,9 @@ The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1534,6 +1683,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
     }
     /**`vkCmdCopyBuffer` without its dynamic checks.
@@ -1548,6 +1700,9 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1604,6 +1759,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_copy_buffer_to_image_unchecked(
                 src_buffer,
@@ -1626,6 +1784,9 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1686,6 +1847,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_copy_image_unchecked(
                 src_image,
@@ -1710,6 +1874,9 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1768,6 +1935,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_copy_image_to_buffer_unchecked(
                 src_image,
@@ -1790,6 +1960,9 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1843,6 +2016,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_copy_query_pool_results_unchecked(
                 query_pool,
@@ -1871,6 +2047,9 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1917,6 +2096,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 61 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
         }
@@ -1933,6 +2115,9 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
         group_count_y: u32,
         group_count_z: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1965,6 +2150,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 60 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
     }
     /**`vkCmdDispatchIndirect` without its dynamic checks.
@@ -1978,6 +2166,9 @@ The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run 
         buffer: &Buffer,
         offset: vk::DeviceSize,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2017,6 +2208,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
     }
     /**`vkCmdFillBuffer` without its dynamic checks.
@@ -2032,6 +2226,9 @@ The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: 
         size: vk::DeviceSize,
         data: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2069,6 +2266,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent` without its dynamic checks.
@@ -2082,6 +2282,9 @@ The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: 
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2120,6 +2323,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
         }
@@ -2136,6 +2342,9 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
         first_query: u32,
         query_count: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2193,6 +2402,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_resolve_image_unchecked(
                 src_image,
@@ -2217,6 +2429,9 @@ The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2259,6 +2474,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 15 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdSetEvent` without its dynamic checks.
@@ -2272,6 +2490,9 @@ The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `V
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2312,6 +2533,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
     }
     /**`vkCmdUpdateBuffer` without its dynamic checks.
@@ -2326,6 +2550,9 @@ The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time
         dst_offset: vk::DeviceSize,
         data: &[u8],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2373,6 +2600,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
     }
     /**`vkCmdClearAttachments` without its dynamic checks.
@@ -2386,6 +2616,9 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2428,6 +2661,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 192 (ex
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_draw_unchecked(
                 vertex_count,
@@ -2450,6 +2686,9 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
         first_vertex: u32,
         first_instance: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2493,6 +2732,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_draw_indexed_unchecked(
                 index_count,
@@ -2517,6 +2759,9 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
         vertex_offset: i32,
         first_instance: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2562,6 +2807,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 200 (ex
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
         }
@@ -2579,6 +2827,9 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
         draw_count: u32,
         stride: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2624,6 +2875,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 198 (ex
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
     }
     /**`vkCmdDrawIndirect` without its dynamic checks.
@@ -2639,6 +2893,9 @@ The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time
         draw_count: u32,
         stride: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -2674,6 +2931,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_end_render_pass_unchecked() }
     }
     /**`vkCmdEndRenderPass` without its dynamic checks.
@@ -2683,6 +2943,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe { (self.device().fns().fp_v1_0().cmd_end_render_pass)(self.raw()) };
         self.into_state()
     }
@@ -2711,6 +2974,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_next_subpass_unchecked(contents) }
     }
     /**`vkCmdNextSubpass` without its dynamic checks.
@@ -2720,6 +2986,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
         };

@@ -22,6 +22,9 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
             let r = self.validate_bind_buffer_memory2(bind_infos);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.bind_buffer_memory2_unchecked(bind_infos) }
     }
     /**`vkBindBufferMemory2` without its dynamic checks.
@@ -34,6 +37,9 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -70,6 +76,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_bind_image_memory2(bind_infos);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.bind_image_memory2_unchecked(bind_infos) }
     }
     /**`vkBindImageMemory2` without its dynamic checks.
@@ -82,6 +91,9 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -117,6 +129,9 @@ The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://r
             let r = self.validate_create_descriptor_update_template(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_descriptor_update_template_unchecked(create_info) }
     }
     /**`vkCreateDescriptorUpdateTemplate` without its dynamic checks.
@@ -130,6 +145,9 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<DescriptorUpdateTemplate> {
         let mut out = vk::DescriptorUpdateTemplate::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -151,6 +169,8 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains
+                    // only structs pushed through `push_next`.
                     unsafe {
                         crate::reach::descriptor_update_template_create_info(
                             create_info.as_raw(),
@@ -164,6 +184,7 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
                 true,
             );
             let raw = create_info.as_raw();
+            // SAFETY: the safe setter stored the entries with their count.
             template
                 .with_entries(unsafe {
                     crate::retention::raw_slice(
@@ -195,6 +216,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_sampler_ycbcr_conversion(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
     }
     /**`vkCreateSamplerYcbcrConversion` without its dynamic checks.
@@ -208,6 +232,9 @@ The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] chec
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<SamplerYcbcrConversion> {
         let mut out = vk::SamplerYcbcrConversion::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -244,6 +271,9 @@ The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://reg
             let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
         })
@@ -259,6 +289,9 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
         info: &BufferMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -291,6 +324,9 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
                 .validate_get_descriptor_set_layout_support(create_info, support);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_descriptor_set_layout_support_unchecked(create_info, support)
         })
@@ -306,6 +342,9 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] ch
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -335,6 +374,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         remote_device_index: u32,
     ) -> vk::PeerMemoryFeatureFlags {
         let mut out: vk::PeerMemoryFeatureFlags = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -368,6 +410,9 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
             let r = self.validate_get_device_queue2(queue_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
     }
     /**`vkGetDeviceQueue2` without its dynamic checks.
@@ -381,6 +426,9 @@ The caller upholds the rules that [`Self::get_device_queue2`] checks at run time
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Queue {
         let mut out = vk::Queue::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -422,6 +470,9 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
                 .validate_get_image_memory_requirements2(info, memory_requirements);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_image_memory_requirements2_unchecked(info, memory_requirements)
         })
@@ -437,6 +488,9 @@ The caller upholds the rules that [`Self::get_image_memory_requirements2`] check
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -463,6 +517,9 @@ The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https:
         &self,
         info: &ImageSparseMemoryRequirementsInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -508,6 +565,9 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
             let r = self.validate_trim_command_pool(command_pool, flags);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
     }
     /**`vkTrimCommandPool` without its dynamic checks.
@@ -527,6 +587,9 @@ The caller upholds the rules that [`Self::trim_command_pool`] checks at run time
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -565,6 +628,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.update_descriptor_set_with_template_unchecked(
                 descriptor_set,
@@ -585,6 +651,9 @@ The caller upholds the rules that [`Self::update_descriptor_set_with_template`] 
         descriptor_update_template: &DescriptorUpdateTemplate,
         data: *const core::ffi::c_void,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -596,6 +665,8 @@ The caller upholds the rules that [`Self::update_descriptor_set_with_template`] 
                 data,
             )
         };
+        // SAFETY: the caller of this unsafe method vouches that `data` is laid out as the
+        // template's entries describe.
         unsafe {
             self.live()
                 .write_template(
@@ -617,6 +688,9 @@ The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registr
     #[inline]
     pub fn enumerate_instance_version(&self) -> Result<u32> {
         let mut out: u32 = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe { (self.fns().fp_v1_1().enumerate_instance_version)(&mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -638,6 +712,9 @@ The rules are on [`vkEnumeratePhysicalDeviceGroups`'s reference page](https://re
     pub fn enumerate_physical_device_groups(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceGroupProperties<'static>>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -673,6 +750,9 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_physical_device_external_buffer_properties_unchecked(
                 external_buffer_info,
@@ -691,6 +771,9 @@ The caller upholds the rules that [`Self::get_physical_device_external_buffer_pr
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -727,6 +810,9 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_physical_device_external_fence_properties_unchecked(
                 external_fence_info,
@@ -745,6 +831,9 @@ The caller upholds the rules that [`Self::get_physical_device_external_fence_pro
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -781,6 +870,9 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_physical_device_external_semaphore_properties_unchecked(
                 external_semaphore_info,
@@ -799,6 +891,9 @@ The caller upholds the rules that [`Self::get_physical_device_external_semaphore
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -826,6 +921,9 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
         &self,
         features: &mut PhysicalDeviceFeatures2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -861,6 +959,9 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_physical_device_format_properties2_unchecked(
                 format,
@@ -879,6 +980,9 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties2
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -917,6 +1021,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.get_physical_device_image_format_properties2_unchecked(
                 image_format_info,
@@ -935,6 +1042,9 @@ The caller upholds the rules that [`Self::get_physical_device_image_format_prope
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .parent()
@@ -971,6 +1081,9 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
                 .validate_get_physical_device_memory_properties2(memory_properties);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_physical_device_memory_properties2_unchecked(memory_properties)
         })
@@ -985,6 +1098,9 @@ The caller upholds the rules that [`Self::get_physical_device_memory_properties2
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -1014,6 +1130,9 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
             let r = self.validate_get_physical_device_properties2(properties);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
     }
     /**`vkGetPhysicalDeviceProperties2` without its dynamic checks.
@@ -1026,6 +1145,9 @@ The caller upholds the rules that [`Self::get_physical_device_properties2`] chec
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .parent()
@@ -1050,6 +1172,9 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
     pub fn get_physical_device_queue_family_properties2(
         &self,
     ) -> Result<Vec<vk::QueueFamilyProperties2<'static>>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -1091,6 +1216,9 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.get_physical_device_sparse_image_format_properties2_unchecked(
                 format_info,
@@ -1107,6 +1235,9 @@ The caller upholds the rules that [`Self::get_physical_device_sparse_image_forma
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,

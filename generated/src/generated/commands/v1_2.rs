@@ -23,6 +23,9 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
             let r = self.validate_create_render_pass2(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_render_pass2_unchecked(create_info) }
     }
     /**`vkCreateRenderPass2` without its dynamic checks.
@@ -36,6 +39,9 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
         let mut out = vk::RenderPass::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -67,6 +73,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> vk::DeviceAddress {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call.
         let r = unsafe {
             (self
                 .fns()
@@ -93,6 +101,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> u64 {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call.
         let r = unsafe {
             (self
                 .fns()
@@ -119,6 +129,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> u64 {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call.
         let r = unsafe {
             (self
                 .fns()
@@ -155,6 +167,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             true,
             "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
         )?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
     }
     /**`vkGetSemaphoreCounterValue` without its dynamic checks.
@@ -168,6 +183,9 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
         semaphore: &Semaphore,
     ) -> Result<u64> {
         let mut out: u64 = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -203,6 +221,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
             let r = self.validate_reset_query_pool(query_pool);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.reset_query_pool_unchecked(query_pool, first_query, query_count)
         })
@@ -219,6 +240,9 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
         first_query: u32,
         query_count: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -250,6 +274,9 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
             true,
             "VUID-VkSemaphoreSignalInfo-semaphore-03257",
         )?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.signal_semaphore_unchecked(signal_info) }
     }
     /**`vkSignalSemaphore` without its dynamic checks.
@@ -262,6 +289,9 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -295,6 +325,7 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
             let r = self.validate_wait_semaphores(wait_info);
             r?;
         }
+        // SAFETY: the safe struct stores the array with its length.
         let semaphores = unsafe {
             crate::retention::raw_slice(
                 wait_info.p_semaphores,
@@ -307,6 +338,9 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
             true,
             "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
         )?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
     }
     /**`vkWaitSemaphores` without its dynamic checks.
@@ -320,6 +354,9 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
     ) -> Result<vk::Result> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -336,12 +373,14 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         if r == vk::Result::SUCCESS
             && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY)
         {
+            // SAFETY: the safe struct stores both arrays with their one length.
             let semaphores = unsafe {
                 crate::retention::raw_slice(
                     wait_info.p_semaphores,
                     wait_info.semaphore_count,
                 )
             };
+            // SAFETY: the same length, from the same safe struct.
             let values = unsafe {
                 crate::retention::raw_slice(
                     wait_info.p_values,

@@ -35,6 +35,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
             }
             self.skip_begin(false);
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
         }
@@ -50,6 +53,9 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -65,6 +71,7 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(render_pass_begin) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
                 };
@@ -111,6 +118,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 205 (ex
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_draw_indexed_indirect_count_unchecked(
                 buffer,
@@ -137,6 +147,9 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
         max_draw_count: u32,
         stride: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -188,6 +201,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203 (ex
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_draw_indirect_count_unchecked(
                 buffer,
@@ -214,6 +230,9 @@ The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at ru
         max_draw_count: u32,
         stride: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -262,6 +281,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
     }
     /**`vkCmdEndRenderPass2` without its dynamic checks.
@@ -274,6 +296,9 @@ The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run t
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -317,6 +342,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
     }
     /**`vkCmdNextSubpass2` without its dynamic checks.
@@ -330,6 +358,9 @@ The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()

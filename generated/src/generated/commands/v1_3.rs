@@ -25,6 +25,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_private_data_slot(create_info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.create_private_data_slot_unchecked(create_info) }
     }
     /**`vkCreatePrivateDataSlot` without its dynamic checks.
@@ -38,6 +41,9 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<PrivateDataSlot> {
         let mut out = vk::PrivateDataSlot::null();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -78,6 +84,9 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_device_buffer_memory_requirements_unchecked(
                 info,
@@ -96,6 +105,9 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -131,6 +143,9 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
                 );
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_device_image_memory_requirements_unchecked(
                 info,
@@ -149,6 +164,9 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -180,6 +198,9 @@ The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](h
             let r = self.validate_get_device_image_sparse_memory_requirements(info);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
     }
     /**`vkGetDeviceImageSparseMemoryRequirements` without its dynamic checks.
@@ -192,6 +213,9 @@ The caller upholds the rules that [`Self::get_device_image_sparse_memory_require
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -235,6 +259,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_private_data(object_type, private_data_slot);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         Ok(unsafe {
             self.get_private_data_unchecked(
                 object_type,
@@ -256,6 +283,9 @@ The caller upholds the rules that [`Self::get_private_data`] checks at run time:
         private_data_slot: &PrivateDataSlot,
     ) -> u64 {
         let mut out: u64 = Default::default();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .fns()
@@ -295,6 +325,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_set_private_data(object_type, private_data_slot);
             r?;
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.set_private_data_unchecked(
                 object_type,
@@ -317,6 +350,9 @@ The caller upholds the rules that [`Self::set_private_data`] checks at run time:
         private_data_slot: &PrivateDataSlot,
         data: u64,
     ) -> Result<()> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .fns()
@@ -349,6 +385,9 @@ The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://
     pub fn get_physical_device_tool_properties(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceToolProperties<'static>>> {
+        // SAFETY: the closure calls the enumeration command with the count and the array
+        // `two_call` gives it; every other argument comes from a live wrapper or a
+        // reference that outlives the call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -405,21 +444,27 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             r?;
         }
         crate::submission::check_fence(fence, &crate::submission::SUBMIT2)?;
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(
-                    s.p_command_buffer_infos,
-                    s.command_buffer_info_count,
-                )
-            })
-            .map(|i| i.command_buffer)
-            .collect();
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
+            // SAFETY: the safe structs store every array with its length.
+            submits
+                .iter()
+                .flat_map(|s| unsafe {
+                    crate::retention::raw_slice(
+                        s.p_command_buffer_infos,
+                        s.command_buffer_info_count,
+                    )
+                })
+                .map(|i| i.command_buffer)
+                .collect()
+        };
         crate::submission::check_command_buffers(
             self.parent(),
             &cbs,
             &crate::submission::SUBMIT2,
         )?;
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.queue_submit2_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit2` without its dynamic checks.
@@ -440,6 +485,9 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         let r = unsafe {
             (self
                 .parent()
@@ -458,18 +506,22 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
         let device = self.parent();
         let mut kept = Vec::new();
         for s in submits {
+            // SAFETY: the safe structs store every array with its length.
             unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
         }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = submits
-            .iter()
-            .flat_map(|s| unsafe {
-                crate::retention::raw_slice(
-                    s.p_command_buffer_infos,
-                    s.command_buffer_info_count,
-                )
-            })
-            .map(|i| i.command_buffer)
-            .collect();
+        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
+            // SAFETY: the safe structs store every array with its length.
+            submits
+                .iter()
+                .flat_map(|s| unsafe {
+                    crate::retention::raw_slice(
+                        s.p_command_buffer_infos,
+                        s.command_buffer_info_count,
+                    )
+                })
+                .map(|i| i.command_buffer)
+                .collect()
+        };
         let batches = crate::submission::submit2_timeline_batches(
             device.live(),
             submits,

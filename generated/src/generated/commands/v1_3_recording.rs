@@ -31,6 +31,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             }
             self.skip_begin(false);
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
     }
     /**`vkCmdBeginRendering` without its dynamic checks.
@@ -43,6 +46,9 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -57,6 +63,7 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(rendering_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::rendering_info(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -89,6 +96,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
     }
     /**`vkCmdBlitImage2` without its dynamic checks.
@@ -101,6 +111,9 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -115,6 +128,7 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(blit_image_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::blit_image_info2(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -146,6 +160,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
     }
     /**`vkCmdCopyBuffer2` without its dynamic checks.
@@ -158,6 +175,9 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
         &mut self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -172,6 +192,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_buffer_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::copy_buffer_info2(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -206,6 +227,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
     }
     /**`vkCmdCopyBufferToImage2` without its dynamic checks.
@@ -218,6 +242,9 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -233,6 +260,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_buffer_to_image_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::copy_buffer_to_image_info2(e.as_raw(), live, &mut kept)
                 };
@@ -266,6 +294,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
     }
     /**`vkCmdCopyImage2` without its dynamic checks.
@@ -278,6 +309,9 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -292,6 +326,7 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_image_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::copy_image_info2(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -326,6 +361,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
     }
     /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
@@ -338,6 +376,9 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -353,6 +394,7 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(copy_image_to_buffer_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::copy_image_to_buffer_info2(e.as_raw(), live, &mut kept)
                 };
@@ -391,6 +433,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent2` without its dynamic checks.
@@ -404,6 +449,9 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -439,6 +487,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
     }
     /**`vkCmdResolveImage2` without its dynamic checks.
@@ -451,6 +502,9 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -465,6 +519,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(resolve_image_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
                     crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
                 };
@@ -503,6 +558,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
     }
     /**`vkCmdSetEvent2` without its dynamic checks.
@@ -516,6 +574,9 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -532,6 +593,7 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(dependency_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -576,6 +638,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_bind_vertex_buffers2_unchecked(
                 first_binding,
@@ -607,6 +672,9 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -644,6 +712,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_pipeline_barrier2_unchecked(dependency_info) }
     }
     /**`vkCmdPipelineBarrier2` without its dynamic checks.
@@ -656,6 +727,9 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
         &mut self,
         dependency_info: &DependencyInfo<'a>,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -670,6 +744,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in core::iter::once(dependency_info) {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -700,6 +775,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
     }
     /**`vkCmdSetCullMode` without its dynamic checks.
@@ -709,6 +787,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode)
         };
@@ -734,6 +815,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
     }
     /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
@@ -746,6 +830,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
         &mut self,
         depth_bias_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -778,6 +865,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
         }
@@ -792,6 +882,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
         &mut self,
         depth_bounds_test_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -822,6 +915,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
     }
     /**`vkCmdSetDepthCompareOp` without its dynamic checks.
@@ -834,6 +930,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at r
         &mut self,
         depth_compare_op: vk::CompareOp,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -863,6 +962,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
     }
     /**`vkCmdSetDepthTestEnable` without its dynamic checks.
@@ -875,6 +977,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
         &mut self,
         depth_test_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -904,6 +1009,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
     }
     /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
@@ -916,6 +1024,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
         &mut self,
         depth_write_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -946,6 +1057,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_front_face_unchecked(front_face) }
     }
     /**`vkCmdSetFrontFace` without its dynamic checks.
@@ -955,6 +1069,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face)
         };
@@ -983,6 +1100,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
         }
@@ -997,6 +1117,9 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
         &mut self,
         primitive_restart_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1030,6 +1153,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
     }
     /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
@@ -1042,6 +1168,9 @@ The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1074,6 +1203,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
         }
@@ -1088,6 +1220,9 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
         &mut self,
         rasterizer_discard_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1122,6 +1257,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
     }
     /**`vkCmdSetScissorWithCount` without its dynamic checks.
@@ -1134,6 +1272,9 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
         &mut self,
         scissors: &[vk::Rect2D],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1187,6 +1328,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe {
             self.cmd_set_stencil_op_unchecked(
                 face_mask,
@@ -1211,6 +1355,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
         depth_fail_op: vk::StencilOp,
         compare_op: vk::CompareOp,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1247,6 +1394,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
     }
     /**`vkCmdSetStencilTestEnable` without its dynamic checks.
@@ -1259,6 +1409,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
         &mut self,
         stencil_test_enable: vk::Bool32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1290,6 +1443,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
     }
     /**`vkCmdSetViewportWithCount` without its dynamic checks.
@@ -1302,6 +1458,9 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
         &mut self,
         viewports: &[vk::Viewport],
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1342,6 +1501,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
     }
     /**`vkCmdWaitEvents2` without its dynamic checks.
@@ -1362,6 +1524,9 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
             .iter()
             .map(|h| h.raw())
             .collect();
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1378,6 +1543,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
             let live = self.device().live();
             let mut kept = Vec::new();
             for e in dependency_infos.iter() {
+                // SAFETY: the safe structs store every pointer with its length.
                 unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
             }
             kept
@@ -1414,6 +1580,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
                 return;
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_write_timestamp2_unchecked(stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp2` without its dynamic checks.
@@ -1428,6 +1597,9 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
         query_pool: &QueryPool,
         query: u32,
     ) {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe {
             (self
                 .device()
@@ -1462,6 +1634,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
+        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
+        // its caller were checked above; without it they are left to the user, as
+        // VALIDATION.md lists.
         unsafe { self.cmd_end_rendering_unchecked() }
     }
     /**`vkCmdEndRendering` without its dynamic checks.
@@ -1471,6 +1646,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
+        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
+        // reference or slice that outlives the call, and every count from the length of the
+        // slice it sizes.
         unsafe { (self.device().fns().fp_v1_3().cmd_end_rendering)(self.raw()) };
         self.into_state()
     }
