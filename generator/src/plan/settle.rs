@@ -256,7 +256,16 @@ fn member_settlement(shape: &Member) -> Settlement {
             Settlement::User("a window-system value given through an unsafe setter".into())
         }
         Member::Unsupported(why) => Settlement::User(format!("not settable safely ({why})")),
-        _ => Settlement::User("not checked".into()),
+        // No catch-all: a new member shape must say here how its rules are settled.
+        Member::SType => Settlement::Static("the safe struct's constructor sets `sType`".into()),
+        Member::Count => Settlement::Static("filled in by the setter of the array it sizes".into()),
+        Member::PNext => Settlement::User(
+            "the `pNext` of a generic chain node (`VkBaseInStructure`); the wrappers pass none"
+                .into(),
+        ),
+        Member::UserData => Settlement::User(
+            "opaque user data handed back to a callback; Vulkan never reads through it".into(),
+        ),
     }
 }
 

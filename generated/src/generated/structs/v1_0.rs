@@ -119,7 +119,7 @@ The rules are on [`VkBaseInStructure`'s reference page](https://registry.khronos
 
 - `VUID-VkBaseInStructure-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not checked).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (the `pNext` of a generic chain node (`VkBaseInStructure`); the wrappers pass none).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BaseInStructure<'a> {
@@ -143,7 +143,7 @@ The rules are on [`VkBaseOutStructure`'s reference page](https://registry.khrono
 
 - `VUID-VkBaseOutStructure-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not checked).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (the `pNext` of a generic chain node (`VkBaseInStructure`); the wrappers pass none).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BaseOutStructure<'a> {
