@@ -287,3 +287,26 @@ fn config_missing_an_extension_dependency() {
         &["VK_KHR_swapchain", "needs", "VK_KHR_surface"],
     );
 }
+
+#[test]
+fn registry_with_a_malformed_dependency_expression() {
+    let c = case();
+    let text = std::fs::read_to_string(root().join("vk.xml")).unwrap();
+    let needle = r#"<require extension="VK_EXT_fragment_density_map">"#;
+    assert!(text.contains(needle));
+    let bad = text.replacen(
+        needle,
+        r#"<require extension="VK_EXT_fragment_density_map+(">"#,
+        1,
+    );
+    let vk = write(&c.dir, "vk.xml", &bad);
+    fails(
+        &c,
+        &["--registry", &vk, "--no-validusage"],
+        &[
+            "vk.xml: the condition of `",
+            "VK_EXT_fragment_density_map+(",
+            "does not parse",
+        ],
+    );
+}

@@ -150,21 +150,27 @@ fn the_malformed_vuid_of_1_3_239_is_explicit() {
 #[test]
 fn conditions_come_from_vk_xml() {
     let m = &pinned().model;
-    assert_eq!(m.condition("vkCmdDraw"), "core");
+    assert_eq!(m.condition("vkCmdDraw").text(), "core");
     // A promoted command exists with its version or with the extension whose alias
     // names it.
     assert_eq!(
-        m.condition("vkCmdBeginRendering"),
+        m.condition("vkCmdBeginRendering").text(),
         "VK_KHR_dynamic_rendering,VK_VERSION_1_3"
     );
-    assert_eq!(m.condition("vkCreateSwapchainKHR"), "VK_KHR_swapchain");
+    assert_eq!(
+        m.condition("vkCreateSwapchainKHR").text(),
+        "VK_KHR_swapchain"
+    );
     assert!(m.emitted.contains("vkCreateSwapchainKHR"));
     assert!(m.emitted.contains("vkCmdBeginRendering"));
     assert!(!m.emitted.contains("vkCmdDrawMeshTasksEXT"));
     // Same answer on the newer registry, whose validusage.json files everything
     // under `core`.
     let n = &newer().model;
-    assert_eq!(n.condition("vkCmdDrawMeshTasksEXT"), "VK_EXT_mesh_shader");
+    assert_eq!(
+        n.condition("vkCmdDrawMeshTasksEXT").text(),
+        "VK_EXT_mesh_shader"
+    );
     assert!(
         !n.emitted.contains("vkCmdPushDescriptorSet"),
         "1.4 is above the cap"

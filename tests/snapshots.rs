@@ -48,7 +48,7 @@ fn item_model(name: &str) -> ItemModel<'static> {
         .collect();
     ItemModel {
         name,
-        condition: m.condition(name),
+        condition: m.condition(name).text(),
         emitted: m.emitted.contains(name),
         returns: cmd.map(|c| c.return_type.as_str()),
         queues: cmd.and_then(|c| c.queues.as_deref()),

@@ -35,6 +35,17 @@ pub enum Error {
         /// What is missing or wrong.
         message: String,
     },
+    /// An item's condition, built from the registry's `depends` expressions, does
+    /// not parse.
+    #[error("vk.xml: the condition of `{item}` (`{condition}`) does not parse: {message}")]
+    BadCondition {
+        /// The type or command.
+        item: String,
+        /// The condition's text.
+        condition: String,
+        /// Where it is malformed.
+        message: String,
+    },
     /// `validusage.json` is not valid JSON.
     #[error("{path}:{line}:{column}: malformed JSON: {message}")]
     MalformedJson {

@@ -4,7 +4,7 @@
 //! the ones ash's own generator derives (snake case of the name without `vk`, `type`
 //! spelled `ty`).
 
-use crate::model::{expr, Model};
+use crate::model::{Condition, Model};
 use heck::ToSnakeCase;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -87,7 +87,7 @@ pub fn ash_extension_module(ext: &str) -> TokenStream {
 /// The `#[cfg]` under which an item with this condition exists in the generated
 /// crate: the smallest sets of the config's extensions that make the condition hold
 /// (with every core version up to the cap enabled). `None` when core alone suffices.
-pub fn cfg_of(model: &Model, condition: &str) -> Option<TokenStream> {
+pub fn cfg_of(model: &Model, condition: &Condition) -> Option<TokenStream> {
     let sets = minimal_feature_sets(model, condition);
     if sets.iter().any(BTreeSet::is_empty) {
         return None;
@@ -109,14 +109,15 @@ pub fn cfg_of(model: &Model, condition: &str) -> Option<TokenStream> {
 }
 
 /// The extensions of the config, each set minimal, under which `condition` holds.
-pub fn minimal_feature_sets(model: &Model, condition: &str) -> Vec<BTreeSet<String>> {
+pub fn minimal_feature_sets(model: &Model, condition: &Condition) -> Vec<BTreeSet<String>> {
     let versions: BTreeSet<String> = model
         .enabled
         .iter()
         .filter(|n| n.starts_with("VK_VERSION_"))
         .cloned()
         .collect();
-    if condition == "core" || expr::eval(condition, &versions) {
+    let expr = condition.expr();
+    if expr.eval(&versions) {
         return vec![BTreeSet::new()];
     }
     let fixed = |n: &str| {
@@ -128,12 +129,12 @@ pub fn minimal_feature_sets(model: &Model, condition: &str) -> Vec<BTreeSet<Stri
             None
         }
     };
-    if let Some(sets) = expr::minimal_sets(condition, &fixed) {
+    if let Some(sets) = expr.minimal_sets(&fixed) {
         return sets;
     }
     // A negation (validusage.json's keys only): search subsets of the names it
-    // mentions, as tokens.
-    let mentioned = expr::names(condition);
+    // mentions.
+    let mentioned = expr.names();
     let exts: Vec<&String> = model
         .enabled
         .iter()
@@ -155,7 +156,7 @@ pub fn minimal_feature_sets(model: &Model, condition: &str) -> Vec<BTreeSet<Stri
         }
         let mut names = versions.clone();
         names.extend(set.iter().cloned());
-        if expr::eval(condition, &names) {
+        if expr.eval(&names) {
             found.push(set);
         }
     }
@@ -200,20 +201,19 @@ pub fn level(model: &Model, command: &str) -> Level {
 /// that has it, else the first enabled extension that does.
 pub fn table(model: &Model, command: &str) -> Option<Table> {
     let condition = model.condition(command);
-    if condition == "core" {
+    if condition.is_core() {
         return Some(Table::Core(0));
     }
-    let alternatives: Vec<&str> = condition.split(',').collect();
-    let mut best: Option<u32> = None;
-    for alt in &alternatives {
-        if let Some(minor) = alt.strip_prefix("VK_VERSION_1_") {
-            if let Ok(m) = minor.parse::<u32>() {
-                if model.enabled.contains(*alt) {
-                    best = Some(best.map_or(m, |b| b.min(m)));
-                }
+    let alternatives = condition.expr().alternatives();
+    let best = alternatives
+        .iter()
+        .filter_map(|alt| match alt {
+            crate::model::expr::Expr::Name(n) if model.enabled.contains(n) => {
+                n.strip_prefix("VK_VERSION_1_")?.parse::<u32>().ok()
             }
-        }
-    }
+            _ => None,
+        })
+        .min();
     if let Some(m) = best {
         return Some(Table::Core(m));
     }
@@ -225,7 +225,7 @@ pub fn table(model: &Model, command: &str) -> Option<Table> {
             set.into_iter().find(|e| {
                 alternatives
                     .iter()
-                    .any(|a| a.split('+').next() == Some(e.as_str()))
+                    .any(|a| a.first_name() == Some(e.as_str()))
             })
         })
         .map(Table::Extension)

@@ -97,27 +97,23 @@ pub const GENERATED_DIR: &str = "src/generated";
 /// extension that first names it (`khr_swapchain`), read from its condition, so a
 /// reader finds an extension's items in one file.
 pub(crate) fn module_of(model: &Model, item: &str) -> String {
-    let condition = model.condition(item);
-    let tokens = |text: &str| -> Vec<String> {
-        text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-            .filter(|t| t.starts_with("VK_"))
-            .map(str::to_owned)
-            .collect()
-    };
+    let expr = model.condition(item).expr();
     // An item promoted to core (`VK_KHR_copy_commands2,VK_VERSION_1_3`) belongs to
     // the oldest version that has it on its own.
-    let version = condition
-        .split(',')
-        .map(&tokens)
-        .filter(|t| t.len() == 1 && t[0].starts_with("VK_VERSION_"))
-        .map(|t| t[0].clone())
+    let version = expr
+        .alternatives()
+        .iter()
+        .filter_map(|alt| match alt {
+            crate::model::expr::Expr::Name(n) if n.starts_with("VK_VERSION_") => Some(n),
+            _ => None,
+        })
         .min();
-    match version.or_else(|| tokens(condition).into_iter().next()) {
-        None => "v1_0".to_owned(),
+    match version.map(String::as_str).or_else(|| expr.first_name()) {
+        None | Some("core") => "v1_0".to_owned(),
         Some(v) if v.starts_with("VK_VERSION_") => {
             format!("v{}", v.trim_start_matches("VK_VERSION_"))
         }
-        Some(ext) => names::feature(&ext),
+        Some(ext) => names::feature(ext),
     }
 }
 
@@ -142,10 +138,12 @@ fn module_cfg(model: &Model, module: &str, items: &[String]) -> Option<TokenStre
         .iter()
         .find(|e| !e.starts_with("VK_VERSION_") && names::feature(e) == module)?;
     let needs_ext = |item: &String| {
-        model.condition(item).split(',').all(|alt| {
-            alt.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-                .any(|t| t == ext)
-        })
+        model
+            .condition(item)
+            .expr()
+            .alternatives()
+            .iter()
+            .all(|alt| alt.names().contains(ext.as_str()))
     };
     items.iter().all(needs_ext).then(|| {
         let feature = names::feature(ext);

@@ -4,40 +4,138 @@
 
 use std::collections::BTreeSet;
 
-/// Evaluate `expr` with the given names enabled. `core` is always true. A malformed
-/// expression (unbalanced parentheses) evaluates what it can and never panics.
-pub fn eval(expr: &str, enabled: &BTreeSet<String>) -> bool {
-    let tokens = tokenize(expr);
-    let mut p = Parser {
-        t: &tokens,
-        pos: 0,
-        depth: 0,
-        en: enabled,
-    };
-    p.or()
+/// A parsed dependency expression. `core` is a name that is always true.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Expr {
+    /// A version or extension name (or `core`).
+    Name(String),
+    /// Every operand holds (`+`).
+    All(Vec<Expr>),
+    /// Some operand holds (`,`).
+    Any(Vec<Expr>),
+    /// The operand does not hold (`!`, validusage.json's keys only).
+    Not(Box<Expr>),
 }
 
-/// The names an expression mentions.
-pub fn names(expr: &str) -> BTreeSet<&str> {
-    tokenize(expr)
-        .into_iter()
-        .filter_map(|t| match t {
-            Tok::Name(n) => Some(n),
-            _ => None,
+impl Expr {
+    /// Parse an expression, or say where it is malformed.
+    pub fn parse(text: &str) -> Result<Expr, String> {
+        let tokens = tokenize(text);
+        let mut p = Tree {
+            t: &tokens,
+            pos: 0,
+            depth: 0,
+        };
+        let e = p.or()?;
+        match tokens.get(p.pos) {
+            None => Ok(e),
+            Some(t) => Err(format!("unexpected {t:?} at token {}", p.pos + 1)),
+        }
+    }
+
+    /// Whether the expression holds with the given names enabled.
+    pub fn eval(&self, enabled: &BTreeSet<String>) -> bool {
+        match self {
+            Expr::Name(n) => n == "core" || enabled.contains(n),
+            Expr::All(v) => v.iter().all(|e| e.eval(enabled)),
+            Expr::Any(v) => v.iter().any(|e| e.eval(enabled)),
+            Expr::Not(e) => !e.eval(enabled),
+        }
+    }
+
+    /// The names the expression mentions.
+    pub fn names(&self) -> BTreeSet<&str> {
+        let mut out = BTreeSet::new();
+        self.collect_names(&mut out);
+        out
+    }
+
+    fn collect_names<'a>(&'a self, out: &mut BTreeSet<&'a str>) {
+        match self {
+            Expr::Name(n) => {
+                out.insert(n.as_str());
+            }
+            Expr::All(v) | Expr::Any(v) => v.iter().for_each(|e| e.collect_names(out)),
+            Expr::Not(e) => e.collect_names(out),
+        }
+    }
+
+    /// The top-level alternatives: the operands of an `Any`, else the expression.
+    pub fn alternatives(&self) -> &[Expr] {
+        match self {
+            Expr::Any(v) => v,
+            other => std::slice::from_ref(other),
+        }
+    }
+
+    /// The name an alternative starts with (`VK_KHR_a` for `VK_KHR_a+VK_KHR_b`).
+    pub fn first_name(&self) -> Option<&str> {
+        match self {
+            Expr::Name(n) => Some(n),
+            Expr::All(v) | Expr::Any(v) => v.first().and_then(Expr::first_name),
+            Expr::Not(_) => None,
+        }
+    }
+
+    /// The minimal sets of names whose presence together makes the expression true,
+    /// where `fixed` settles the names it knows (an enabled version: true; a name
+    /// that cannot be enabled: false) and leaves the others open. Exact, with no cap
+    /// on how many names take part (the disjunctive normal form). `None` when the
+    /// expression has a negation.
+    pub fn minimal_sets(
+        &self,
+        fixed: &dyn Fn(&str) -> Option<bool>,
+    ) -> Option<Vec<BTreeSet<String>>> {
+        Some(match self {
+            Expr::Name(n) => match fixed(n) {
+                Some(true) => vec![BTreeSet::new()],
+                Some(false) => Vec::new(),
+                None => vec![BTreeSet::from([n.clone()])],
+            },
+            Expr::Any(v) => {
+                let mut sets = Vec::new();
+                for e in v {
+                    sets.extend(e.minimal_sets(fixed)?);
+                }
+                minimize(sets)
+            }
+            Expr::All(v) => {
+                let mut sets = vec![BTreeSet::new()];
+                for e in v {
+                    let right = e.minimal_sets(fixed)?;
+                    let mut product = Vec::with_capacity(sets.len() * right.len());
+                    for l in &sets {
+                        for r in &right {
+                            product.push(l.union(r).cloned().collect());
+                        }
+                    }
+                    sets = minimize(product);
+                }
+                sets
+            }
+            Expr::Not(_) => return None,
         })
-        .collect()
+    }
 }
 
-/// Nesting deeper than this (in parentheses or `!`) evaluates to false rather than
-/// recursing further: real registries nest a few levels.
+/// Evaluate the text of an expression with the given names enabled; a malformed
+/// expression is false.
+pub fn eval(expr: &str, enabled: &BTreeSet<String>) -> bool {
+    Expr::parse(expr).is_ok_and(|e| e.eval(enabled))
+}
+
+/// [`Expr::minimal_sets`] of the text of an expression; `None` when it does not
+/// parse or has a negation.
+pub fn minimal_sets(
+    expr: &str,
+    fixed: &dyn Fn(&str) -> Option<bool>,
+) -> Option<Vec<BTreeSet<String>>> {
+    Expr::parse(expr).ok()?.minimal_sets(fixed)
+}
+
+/// Nesting deeper than this (in parentheses or `!`) is refused rather than recursed
+/// into: real registries nest a few levels.
 const MAX_DEPTH: usize = 64;
-
-struct Parser<'a> {
-    t: &'a [Tok<'a>],
-    pos: usize,
-    depth: usize,
-    en: &'a BTreeSet<String>,
-}
 
 #[derive(Debug, PartialEq)]
 enum Tok<'a> {
@@ -76,78 +174,6 @@ fn tokenize(expr: &str) -> Vec<Tok<'_>> {
     out
 }
 
-impl Parser<'_> {
-    fn or(&mut self) -> bool {
-        let mut value = self.and();
-        while self.t.get(self.pos) == Some(&Tok::Or) {
-            self.pos += 1;
-            value |= self.and();
-        }
-        value
-    }
-
-    fn and(&mut self) -> bool {
-        let mut value = self.atom();
-        while self.t.get(self.pos) == Some(&Tok::And) {
-            self.pos += 1;
-            value &= self.atom();
-        }
-        value
-    }
-
-    fn atom(&mut self) -> bool {
-        if self.depth > MAX_DEPTH {
-            self.pos = self.t.len();
-            return false;
-        }
-        let token = self.t.get(self.pos);
-        self.pos += 1;
-        match token {
-            Some(Tok::Open) => {
-                self.depth += 1;
-                let v = self.or();
-                self.depth -= 1;
-                if self.t.get(self.pos) == Some(&Tok::Close) {
-                    self.pos += 1;
-                }
-                v
-            }
-            Some(Tok::Not) => {
-                self.depth += 1;
-                let v = !self.atom();
-                self.depth -= 1;
-                v
-            }
-            Some(Tok::Name(n)) => *n == "core" || self.en.contains(*n),
-            _ => false,
-        }
-    }
-}
-
-/// The minimal sets of names whose presence together makes `expr` true, where
-/// `fixed` settles the names it knows (an enabled version: true; a name that cannot
-/// be enabled: false) and leaves the others open. Exact, with no cap on how many
-/// names take part: the expression is put in disjunctive normal form. `None` for an
-/// expression with a negation (only validusage.json's condition keys have one) or
-/// one that does not parse.
-pub fn minimal_sets(
-    expr: &str,
-    fixed: &dyn Fn(&str) -> Option<bool>,
-) -> Option<Vec<BTreeSet<String>>> {
-    let tokens = tokenize(expr);
-    let mut d = Dnf {
-        t: &tokens,
-        pos: 0,
-        depth: 0,
-        fixed,
-    };
-    let sets = d.or()?;
-    if d.pos != tokens.len() {
-        return None;
-    }
-    Some(minimize(sets))
-}
-
 /// Drops every set that holds another one, and duplicates.
 fn minimize(mut sets: Vec<BTreeSet<String>>) -> Vec<BTreeSet<String>> {
     sets.sort_by_key(BTreeSet::len);
@@ -160,42 +186,43 @@ fn minimize(mut sets: Vec<BTreeSet<String>>) -> Vec<BTreeSet<String>> {
     out
 }
 
-struct Dnf<'a> {
+/// The parser: `,` over `+` over atoms (a name, a parenthesised expression, `!`).
+struct Tree<'a> {
     t: &'a [Tok<'a>],
     pos: usize,
     depth: usize,
-    fixed: &'a dyn Fn(&str) -> Option<bool>,
 }
 
-impl Dnf<'_> {
-    fn or(&mut self) -> Option<Vec<BTreeSet<String>>> {
-        let mut sets = self.and()?;
+impl Tree<'_> {
+    fn or(&mut self) -> Result<Expr, String> {
+        let mut v = vec![self.and()?];
         while self.t.get(self.pos) == Some(&Tok::Or) {
             self.pos += 1;
-            sets.extend(self.and()?);
+            v.push(self.and()?);
         }
-        Some(minimize(sets))
+        Ok(if v.len() == 1 {
+            v.remove(0)
+        } else {
+            Expr::Any(v)
+        })
     }
 
-    fn and(&mut self) -> Option<Vec<BTreeSet<String>>> {
-        let mut sets = self.atom()?;
+    fn and(&mut self) -> Result<Expr, String> {
+        let mut v = vec![self.atom()?];
         while self.t.get(self.pos) == Some(&Tok::And) {
             self.pos += 1;
-            let right = self.atom()?;
-            let mut product = Vec::with_capacity(sets.len() * right.len());
-            for l in &sets {
-                for r in &right {
-                    product.push(l.union(r).cloned().collect());
-                }
-            }
-            sets = minimize(product);
+            v.push(self.atom()?);
         }
-        Some(sets)
+        Ok(if v.len() == 1 {
+            v.remove(0)
+        } else {
+            Expr::All(v)
+        })
     }
 
-    fn atom(&mut self) -> Option<Vec<BTreeSet<String>>> {
+    fn atom(&mut self) -> Result<Expr, String> {
         if self.depth > MAX_DEPTH {
-            return None;
+            return Err(format!("nested deeper than {MAX_DEPTH} levels"));
         }
         let token = self.t.get(self.pos);
         self.pos += 1;
@@ -204,15 +231,21 @@ impl Dnf<'_> {
                 self.depth += 1;
                 let v = self.or()?;
                 self.depth -= 1;
-                (self.t.get(self.pos) == Some(&Tok::Close)).then(|| self.pos += 1)?;
-                Some(v)
+                if self.t.get(self.pos) != Some(&Tok::Close) {
+                    return Err(format!("`(` without `)` before token {}", self.pos + 1));
+                }
+                self.pos += 1;
+                Ok(v)
             }
-            Some(Tok::Name(n)) => Some(match (self.fixed)(n) {
-                Some(true) => vec![BTreeSet::new()],
-                Some(false) => Vec::new(),
-                None => vec![BTreeSet::from([n.to_string()])],
-            }),
-            _ => None,
+            Some(Tok::Not) => {
+                self.depth += 1;
+                let v = self.atom()?;
+                self.depth -= 1;
+                Ok(Expr::Not(Box::new(v)))
+            }
+            Some(Tok::Name(n)) => Ok(Expr::Name((*n).to_owned())),
+            Some(t) => Err(format!("unexpected {t:?} at token {}", self.pos)),
+            None => Err("the expression ends where a name is expected".into()),
         }
     }
 }
@@ -253,6 +286,27 @@ mod tests {
         assert_eq!(sets(&many.join(",")).len(), 20);
         assert_eq!(minimal_sets("!A", &open), None);
         assert_eq!(minimal_sets("(A", &open), None);
+    }
+
+    #[test]
+    fn parses_once_into_a_tree() {
+        let e = Expr::parse("VK_KHR_a+VK_KHR_b,(VK_VERSION_1_1)").expect("parses");
+        let name = |n: &str| Expr::Name(n.to_owned());
+        assert_eq!(
+            e,
+            Expr::Any(vec![
+                Expr::All(vec![name("VK_KHR_a"), name("VK_KHR_b")]),
+                name("VK_VERSION_1_1"),
+            ])
+        );
+        assert_eq!(e.alternatives().len(), 2);
+        assert_eq!(e.alternatives()[0].first_name(), Some("VK_KHR_a"));
+        assert_eq!(e.names().len(), 3);
+        assert!(e.eval(&set(&["VK_VERSION_1_1"])));
+        assert!(!e.eval(&set(&["VK_KHR_a"])));
+        for bad in ["", "(A", "A)", "A+", ",A", "A B("] {
+            assert!(Expr::parse(bad).is_err(), "{bad:?} parsed");
+        }
     }
 
     #[test]

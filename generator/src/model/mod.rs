@@ -22,6 +22,39 @@ use std::path::Path;
 pub use crate::registry::{CommandDef, Field, TypeDef};
 pub use attrs::{ExternSync, LenEntry};
 
+/// When an item exists: the expression as the model writes it (what the report
+/// shows) and its parse, so no pass re-reads the text.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Condition {
+    text: String,
+    expr: expr::Expr,
+}
+
+impl Condition {
+    /// Parse the text of a condition.
+    pub fn parse(text: &str) -> std::result::Result<Condition, String> {
+        Ok(Condition {
+            text: text.to_owned(),
+            expr: expr::Expr::parse(text)?,
+        })
+    }
+
+    /// The text, `core` for Vulkan 1.0.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// The parsed expression.
+    pub fn expr(&self) -> &expr::Expr {
+        &self.expr
+    }
+
+    /// Whether the item is in Vulkan 1.0.
+    pub fn is_core(&self) -> bool {
+        self.text == "core"
+    }
+}
+
 /// The resolved registry.
 #[derive(Debug, Clone)]
 pub struct Model {
@@ -42,9 +75,9 @@ pub struct Model {
     /// For each enum value, the features and extensions that add it
     /// (`VK_VERSION_1_0` for the values written in the group itself).
     pub enum_origins: BTreeMap<String, Vec<String>>,
-    /// For each type and command: the condition under which it exists, as a
-    /// vk.xml-style expression, or `core` for Vulkan 1.0.
-    pub conditions: BTreeMap<String, String>,
+    /// For each type and command: the condition under which it exists, parsed once
+    /// (`core` for Vulkan 1.0).
+    pub conditions: BTreeMap<String, Condition>,
     /// Items that exist in the all-extensions build of the vulkan API.
     pub required: BTreeSet<String>,
     /// Items of the emitted API: their condition holds with the config's versions
@@ -273,13 +306,19 @@ impl Model {
             }
         }
 
-        let conditions: BTreeMap<String, String> = alternatives
-            .iter()
-            .map(|(item, alts)| (item.clone(), condition_of(alts)))
-            .collect();
+        let mut conditions: BTreeMap<String, Condition> = BTreeMap::new();
+        for (item, alts) in &alternatives {
+            let text = condition_of(alts);
+            let condition = Condition::parse(&text).map_err(|message| Error::BadCondition {
+                item: item.clone(),
+                condition: text.clone(),
+                message,
+            })?;
+            conditions.insert(item.clone(), condition);
+        }
         let emitted = conditions
             .iter()
-            .filter(|(_, c)| expr::eval(c, &enabled))
+            .filter(|(_, c)| c.expr().eval(&enabled))
             .map(|(item, _)| item.clone())
             .collect();
 
@@ -367,8 +406,12 @@ impl Model {
     /// The condition of an item, `core` for items outside the registry's features
     /// and extensions (such as SPIR-V built-ins that validusage.json files as
     /// entities of their own).
-    pub fn condition(&self, item: &str) -> &str {
-        self.conditions.get(item).map_or("core", String::as_str)
+    pub fn condition(&self, item: &str) -> &Condition {
+        static CORE: std::sync::LazyLock<Condition> = std::sync::LazyLock::new(|| Condition {
+            text: "core".to_owned(),
+            expr: expr::Expr::Name("core".to_owned()),
+        });
+        self.conditions.get(item).unwrap_or(&CORE)
     }
 
     /// Whether an item is in the emitted API. Entities that are not registry items
