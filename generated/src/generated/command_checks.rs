@@ -3,7 +3,6 @@
 //! The dynamic checks of each command, compiled in with
 //! `runtime_implicit_validations`: one `validate_*` method per checked command,
 //! beside it on the same receiver, which the checked method calls first.
-#![allow(clippy::needless_lifetimes, clippy::unnecessary_cast)]
 use crate::handles::*;
 use crate::structs::*;
 use crate::validation::fail;

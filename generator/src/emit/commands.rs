@@ -282,22 +282,8 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
     let head = quote! {
         //! Commands as methods on the wrappers they dispatch on, one module per core
         //! version and extension.
-        #![allow(
-            clippy::too_many_arguments,
-            clippy::needless_lifetimes,
-            clippy::let_unit_value,
-            unused_mut,
-            clippy::unit_arg,
-            clippy::unused_unit,
-            clippy::extra_unused_lifetimes,
-            clippy::never_loop,
-            clippy::no_effect,
-            clippy::unnecessary_cast,
-            clippy::field_reassign_with_default,
-            clippy::let_and_return
-        )]
-        // Generated bodies are uniform rather than minimal: a `()` return, a lifetime
-        // or a cast that one command does not need stays, so the lints above are off.
+        #![allow(clippy::too_many_arguments)]
+        // Vulkan commands take as many parameters as the registry gives them.
         use crate::handles::*;
         use crate::structs::*;
         use crate::{recorder::*, Entry, Error, Handle, Result};
@@ -315,7 +301,6 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
         //! The dynamic checks of each command, compiled in with
         //! `runtime_implicit_validations`: one `validate_*` method per checked command,
         //! beside it on the same receiver, which the checked method calls first.
-        #![allow(clippy::needless_lifetimes, clippy::unnecessary_cast)]
         use crate::handles::*;
         use crate::structs::*;
         use crate::validation::fail;
@@ -442,7 +427,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 match user {
                     Some(u) => {
                         let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(u32));
-                        call_args.push(quote!(#u.len() as #ty,));
+                        if ty.to_string() == "usize" {
+                            call_args.push(quote!(#u.len(),));
+                        } else {
+                            call_args.push(quote!(#u.len() as #ty,));
+                        }
                     }
                     None => call_args.push(quote!(0,)),
                 }
@@ -1016,6 +1005,19 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             r
         }
     };
+    // Nothing kept after the call: its value is the body's.
+    let body = if retain.is_empty()
+        && matches!(cmd.return_type.as_str(), t if t != "VkResult" && t != "void")
+        && two_call.is_none()
+    {
+        quote! {
+            #(#pre)*
+            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call.");
+            unsafe { #fp(#(#call_args)*) }
+        }
+    } else {
+        body
+    };
     if two_call.is_some() {
         fallible = true;
     }
@@ -1026,11 +1028,22 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     };
     let host_sync = super::sync::host_syncs(cx, plan);
     let body = if fallible && cmd.return_type != "VkResult" && two_call.is_none() {
-        quote!(#host_sync #ext_check Ok({ #body }))
+        if ret_ty.to_string() == "()" {
+            // A unit result is not passed through `Ok(..)`.
+            quote!(#host_sync #ext_check { #body } Ok(()))
+        } else {
+            quote!(#host_sync #ext_check Ok({ #body }))
+        }
     } else {
         quote!(#host_sync #ext_check #body)
     };
-    let lt = if lifetimes { quote!(<'a>) } else { quote!() };
+    // `'a` is declared only where a parameter or the result names it.
+    let names_a = |t: &TokenStream| t.to_string().contains("'a");
+    let lt = if lifetimes && (args.iter().any(names_a) || names_a(&ret)) {
+        quote!(<'a>)
+    } else {
+        quote!()
+    };
     let mut self_ref = if plan.receiver == "VkCommandBuffer" {
         quote!(&mut self)
     } else {
@@ -1199,6 +1212,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             _ => {
                 let call = if fallible {
                     quote!(unsafe { self.#unchecked(#(#names),*) })
+                } else if ret.to_string() == "()" {
+                    quote!(unsafe { self.#unchecked(#(#names),*) }; Ok(()))
                 } else {
                     quote!(Ok(unsafe { self.#unchecked(#(#names),*) }))
                 };
@@ -1209,6 +1224,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 };
                 (ret_checked, quote!(r?;), call)
             }
+        };
+        // A transition that keeps nothing (the ends of a render pass) does not
+        // change the recorder it consumes before handing it on.
+        let unchecked_self = if transition.is_some() && !body.to_string().contains("self . retain")
+        {
+            quote!(self)
+        } else {
+            self_ref.clone()
         };
         let checked_arrow = if ret_checked.to_string() == "()" {
             quote!()
@@ -1225,9 +1248,15 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 }
             }
         });
+        // A transition changes the recorder it consumes only in its checks (to
+        // remember a refused begin), which exist only with the feature.
+        let mut_only_checked = transition
+            .is_some()
+            .then(|| quote!(#[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]));
         quote! {
             #[doc = #doc]
             #[inline]
+            #mut_only_checked
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #checked_arrow {
                 // Held across the checks too, so what they saw holds at the call.
                 #host_sync
@@ -1238,7 +1267,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
             #[doc = #unchecked_doc]
             #[inline]
-            pub unsafe fn #unchecked #lt(#self_ref, #(#args),*) #ret_arrow {
+            pub unsafe fn #unchecked #lt(#unchecked_self, #(#args),*) #ret_arrow {
                 #body
             }
         }

@@ -44,7 +44,6 @@ pub(super) fn emit(plans: &Plans) -> Vec<(String, TokenStream)> {
         //! Safe counterparts of the registry's structs that carry handles, pointers or
         //! an `sType`, one module per core version and extension. Plain structs
         //! (`vk::Extent2D`, ...) are used as ash has them.
-        #![allow(clippy::needless_lifetimes, clippy::new_without_default, clippy::field_reassign_with_default, clippy::unnecessary_cast)]
         use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice};
         use ash::vk;
         use core::marker::PhantomData;
@@ -131,7 +130,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     });
                 } else {
                     ctor_args.push(quote!(#setter: &'a #w));
-                    ctor_sets.push(quote!(raw.#f = #setter.raw();));
+                    ctor_sets.push(quote!(#f: #setter.raw()));
                     setters.push(quote! {
                         #[doc = #doc]
                         #[inline]
@@ -145,7 +144,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
             Member::Nested => {
                 let target = safe_or_ash(cx, &m.type_name);
                 ctor_args.push(quote!(#setter: #target));
-                ctor_sets.push(quote!(raw.#f = #setter.raw;));
+                ctor_sets.push(quote!(#f: #setter.raw));
                 setters.push(quote! {
                     #[doc = #doc]
                     #[inline]
@@ -169,7 +168,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     });
                 } else {
                     ctor_args.push(quote!(#setter: &'a #target));
-                    ctor_sets.push(quote!(raw.#f = { let value = #setter; #cast };));
+                    ctor_sets.push(quote!(#f: { let value = #setter; #cast }));
                     setters.push(quote! {
                         #[doc = #doc]
                         #[inline]
@@ -204,7 +203,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     });
                 } else {
                     ctor_args.push(quote!(#setter: &'a core::ffi::CStr));
-                    ctor_sets.push(quote!(raw.#f = #setter.as_ptr();));
+                    ctor_sets.push(quote!(#f: #setter.as_ptr()));
                     setters.push(quote! {
                         #[doc = #doc]
                         #[inline]
@@ -276,10 +275,10 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
             /// empty (and `sType` set).
             #[inline]
             pub fn new(#(#ctor_args),*) -> Self {
-                #[allow(unused_mut)]
-                let mut raw: #raw_ty = Default::default();
-                #(#ctor_sets)*
-                Self { raw, _marker: PhantomData }
+                Self {
+                    raw: vk::#id { #(#ctor_sets,)* ..Default::default() },
+                    _marker: PhantomData,
+                }
             }
         }
     };

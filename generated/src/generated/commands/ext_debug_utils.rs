@@ -47,14 +47,15 @@ The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] chec
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .cmd_begin_debug_utils_label_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
-        })
+        }
+        Ok(())
     }
     /**`vkCmdEndDebugUtilsLabelEXT`
 
@@ -94,12 +95,13 @@ The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .cmd_end_debug_utils_label_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
             unsafe { fp(self.raw()) };
-        })
+        }
+        Ok(())
     }
     /**`vkCmdInsertDebugUtilsLabelEXT`
 
@@ -144,14 +146,15 @@ The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] che
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .cmd_insert_debug_utils_label_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
-        })
+        }
+        Ok(())
     }
 }
 #[cfg(feature = "ext_debug_utils")]
@@ -273,7 +276,7 @@ The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] check
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .submit_debug_utils_message_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
@@ -286,7 +289,8 @@ The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] check
                         as *const _,
                 )
             };
-        })
+        }
+        Ok(())
     }
 }
 #[cfg(feature = "ext_debug_utils")]
@@ -311,14 +315,15 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .queue_begin_debug_utils_label_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
-        })
+        }
+        Ok(())
     }
     /**`vkQueueEndDebugUtilsLabelEXT`
 
@@ -338,12 +343,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .queue_end_debug_utils_label_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
             unsafe { fp(self.raw()) };
-        })
+        }
+        Ok(())
     }
     /**`vkQueueInsertDebugUtilsLabelEXT`
 
@@ -365,14 +371,15 @@ The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://re
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .queue_insert_debug_utils_label_ext;
-        Ok({
+        {
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call, and every count from the length of
             // the slice it sizes.
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
-        })
+        }
+        Ok(())
     }
 }
 #[cfg(feature = "ext_debug_utils")]

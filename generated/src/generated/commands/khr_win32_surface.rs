@@ -89,8 +89,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         Ok({
             // SAFETY: every handle argument comes from a live wrapper, every pointer from a
             // reference or slice that outlives the call.
-            let r = unsafe { fp(self.raw(), queue_family_index) };
-            r
+            unsafe { fp(self.raw(), queue_family_index) }
         })
     }
 }

@@ -2,20 +2,7 @@
 
 //! Commands as methods on the wrappers they dispatch on, one module per core
 //! version and extension.
-#![allow(
-    clippy::too_many_arguments,
-    clippy::needless_lifetimes,
-    clippy::let_unit_value,
-    unused_mut,
-    clippy::unit_arg,
-    clippy::unused_unit,
-    clippy::extra_unused_lifetimes,
-    clippy::never_loop,
-    clippy::no_effect,
-    clippy::unnecessary_cast,
-    clippy::field_reassign_with_default,
-    clippy::let_and_return
-)]
+#![allow(clippy::too_many_arguments)]
 use crate::handles::*;
 use crate::structs::*;
 use crate::{recorder::*, Entry, Error, Handle, Result};

@@ -2083,7 +2083,7 @@ The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://regist
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_image_subresource_layout<'a>(
+    pub fn get_image_subresource_layout(
         &self,
         image: &Image,
         subresource: &vk::ImageSubresource,
@@ -2104,7 +2104,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn get_image_subresource_layout_unchecked<'a>(
+    pub unsafe fn get_image_subresource_layout_unchecked(
         &self,
         image: &Image,
         subresource: &vk::ImageSubresource,
@@ -2247,7 +2247,7 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
                 query_pool.raw(),
                 first_query,
                 query_count,
-                data.len() as usize,
+                data.len(),
                 data.as_mut_ptr().cast(),
                 stride,
                 flags,
@@ -2783,9 +2783,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
-        })
+        };
+        Ok(())
     }
     /**`vkUpdateDescriptorSets` without its dynamic checks.
 

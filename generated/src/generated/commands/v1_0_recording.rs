@@ -79,7 +79,7 @@ The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_bind_descriptor_sets<'a>(
+    pub fn cmd_bind_descriptor_sets(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -118,7 +118,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
 
 The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_bind_descriptor_sets_unchecked<'a>(
+    pub unsafe fn cmd_bind_descriptor_sets_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -285,7 +285,7 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_bind_vertex_buffers<'a>(
+    pub fn cmd_bind_vertex_buffers(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -311,7 +311,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_bind_vertex_buffers_unchecked<'a>(
+    pub unsafe fn cmd_bind_vertex_buffers_unchecked(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -441,7 +441,7 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
         &mut self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
-        Ok({
+        {
             for h in command_buffers {
                 self.command_buffer().uses().executes(h.uses());
             }
@@ -466,7 +466,8 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
                     command_buffers.as_ptr(),
                 )
             };
-        })
+        }
+        Ok(())
     }
     /**`vkCmdPipelineBarrier`
 
@@ -877,7 +878,7 @@ The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_scissor<'a>(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
+    pub fn cmd_set_scissor(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_scissor(scissors);
@@ -896,7 +897,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_scissor_unchecked<'a>(
+    pub unsafe fn cmd_set_scissor_unchecked(
         &mut self,
         first_scissor: u32,
         scissors: &[vk::Rect2D],
@@ -1088,11 +1089,7 @@ The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_viewport<'a>(
-        &mut self,
-        first_viewport: u32,
-        viewports: &[vk::Viewport],
-    ) {
+    pub fn cmd_set_viewport(&mut self, first_viewport: u32, viewports: &[vk::Viewport]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_viewport(viewports);
@@ -1111,7 +1108,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_unchecked<'a>(
+    pub unsafe fn cmd_set_viewport_unchecked(
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
@@ -1343,6 +1340,7 @@ The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khro
 
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
+    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_begin_render_pass<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
@@ -1425,7 +1423,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_blit_image<'a>(
+    pub fn cmd_blit_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1469,7 +1467,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
 
 The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_blit_image_unchecked<'a>(
+    pub unsafe fn cmd_blit_image_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1519,7 +1517,7 @@ The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khro
 
 Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_clear_color_image<'a>(
+    pub fn cmd_clear_color_image(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -1546,7 +1544,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
 
 The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_clear_color_image_unchecked<'a>(
+    pub unsafe fn cmd_clear_color_image_unchecked(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -1592,7 +1590,7 @@ The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://regist
 
 Left to the caller (listed one by one in the crate's `validation.json`): 18 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_clear_depth_stencil_image<'a>(
+    pub fn cmd_clear_depth_stencil_image(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -1625,7 +1623,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
 
 The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_clear_depth_stencil_image_unchecked<'a>(
+    pub unsafe fn cmd_clear_depth_stencil_image_unchecked(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -1670,7 +1668,7 @@ The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_buffer<'a>(
+    pub fn cmd_copy_buffer(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -1694,7 +1692,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
 
 The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_copy_buffer_unchecked<'a>(
+    pub unsafe fn cmd_copy_buffer_unchecked(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -1739,7 +1737,7 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_buffer_to_image<'a>(
+    pub fn cmd_copy_buffer_to_image(
         &mut self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -1777,7 +1775,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
 
 The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image_unchecked<'a>(
+    pub unsafe fn cmd_copy_buffer_to_image_unchecked(
         &mut self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -1825,7 +1823,7 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 76 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_image<'a>(
+    pub fn cmd_copy_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1866,7 +1864,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
 
 The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_copy_image_unchecked<'a>(
+    pub unsafe fn cmd_copy_image_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1915,7 +1913,7 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_image_to_buffer<'a>(
+    pub fn cmd_copy_image_to_buffer(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1953,7 +1951,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
 
 The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_copy_image_to_buffer_unchecked<'a>(
+    pub unsafe fn cmd_copy_image_to_buffer_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -2380,7 +2378,7 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_resolve_image<'a>(
+    pub fn cmd_resolve_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -2421,7 +2419,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
 
 The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_resolve_image_unchecked<'a>(
+    pub unsafe fn cmd_resolve_image_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -2588,7 +2586,7 @@ The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_clear_attachments<'a>(
+    pub fn cmd_clear_attachments(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
@@ -2611,7 +2609,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_clear_attachments_unchecked<'a>(
+    pub unsafe fn cmd_clear_attachments_unchecked(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
@@ -2922,6 +2920,7 @@ The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
+    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
@@ -2942,7 +2941,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
+    pub unsafe fn cmd_end_render_pass_unchecked(self) -> Recorder<'c, Outside> {
         // SAFETY: every handle argument comes from a live wrapper, every pointer from a
         // reference or slice that outlives the call, and every count from the length of the
         // slice it sizes.

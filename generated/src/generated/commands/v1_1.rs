@@ -274,9 +274,10 @@ The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://reg
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
-        })
+        };
+        Ok(())
     }
     /**`vkGetBufferMemoryRequirements2` without its dynamic checks.
 
@@ -327,9 +328,10 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_descriptor_set_layout_support_unchecked(create_info, support)
-        })
+        };
+        Ok(())
     }
     /**`vkGetDescriptorSetLayoutSupport` without its dynamic checks.
 
@@ -473,9 +475,10 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_image_memory_requirements2_unchecked(info, memory_requirements)
-        })
+        };
+        Ok(())
     }
     /**`vkGetImageMemoryRequirements2` without its dynamic checks.
 
@@ -568,7 +571,8 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe { self.trim_command_pool_unchecked(command_pool, flags) })
+        unsafe { self.trim_command_pool_unchecked(command_pool, flags) };
+        Ok(())
     }
     /**`vkTrimCommandPool` without its dynamic checks.
 
@@ -631,13 +635,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.update_descriptor_set_with_template_unchecked(
                 descriptor_set,
                 descriptor_update_template,
                 data,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkUpdateDescriptorSetWithTemplate` without its dynamic checks.
 
@@ -753,12 +758,13 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_physical_device_external_buffer_properties_unchecked(
                 external_buffer_info,
                 external_buffer_properties,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkGetPhysicalDeviceExternalBufferProperties` without its dynamic checks.
 
@@ -813,12 +819,13 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_physical_device_external_fence_properties_unchecked(
                 external_fence_info,
                 external_fence_properties,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkGetPhysicalDeviceExternalFenceProperties` without its dynamic checks.
 
@@ -873,12 +880,13 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_physical_device_external_semaphore_properties_unchecked(
                 external_semaphore_info,
                 external_semaphore_properties,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkGetPhysicalDeviceExternalSemaphoreProperties` without its dynamic checks.
 
@@ -962,12 +970,13 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_physical_device_format_properties2_unchecked(
                 format,
                 format_properties,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkGetPhysicalDeviceFormatProperties2` without its dynamic checks.
 
@@ -1084,9 +1093,10 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_physical_device_memory_properties2_unchecked(memory_properties)
-        })
+        };
+        Ok(())
     }
     /**`vkGetPhysicalDeviceMemoryProperties2` without its dynamic checks.
 
@@ -1133,7 +1143,8 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe { self.get_physical_device_properties2_unchecked(properties) })
+        unsafe { self.get_physical_device_properties2_unchecked(properties) };
+        Ok(())
     }
     /**`vkGetPhysicalDeviceProperties2` without its dynamic checks.
 

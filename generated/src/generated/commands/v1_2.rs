@@ -75,7 +75,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> vk::DeviceAddress {
         // SAFETY: every handle argument comes from a live wrapper, every pointer from a
         // reference or slice that outlives the call.
-        let r = unsafe {
+        unsafe {
             (self
                 .fns()
                 .fp_v1_2()
@@ -83,8 +83,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 self.raw(),
                 info as *const BufferDeviceAddressInfo<'a> as *const _,
             )
-        };
-        r
+        }
     }
     /**`vkGetBufferOpaqueCaptureAddress`
 
@@ -103,7 +102,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> u64 {
         // SAFETY: every handle argument comes from a live wrapper, every pointer from a
         // reference or slice that outlives the call.
-        let r = unsafe {
+        unsafe {
             (self
                 .fns()
                 .fp_v1_2()
@@ -111,8 +110,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 self.raw(),
                 info as *const BufferDeviceAddressInfo<'a> as *const _,
             )
-        };
-        r
+        }
     }
     /**`vkGetDeviceMemoryOpaqueCaptureAddress`
 
@@ -131,7 +129,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> u64 {
         // SAFETY: every handle argument comes from a live wrapper, every pointer from a
         // reference or slice that outlives the call.
-        let r = unsafe {
+        unsafe {
             (self
                 .fns()
                 .fp_v1_2()
@@ -139,8 +137,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 self.raw(),
                 info as *const DeviceMemoryOpaqueCaptureAddressInfo<'a> as *const _,
             )
-        };
-        r
+        }
     }
     /**`vkGetSemaphoreCounterValue`
 
@@ -224,9 +221,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
-            self.reset_query_pool_unchecked(query_pool, first_query, query_count)
-        })
+        unsafe { self.reset_query_pool_unchecked(query_pool, first_query, query_count) };
+        Ok(())
     }
     /**`vkResetQueryPool` without its dynamic checks.
 

@@ -20,6 +20,7 @@ The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
+    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_begin_render_pass2<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
@@ -269,6 +270,7 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
+    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
@@ -293,7 +295,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run time: `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass2-bufferlevel`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_end_render_pass2_unchecked<'a>(
-        mut self,
+        self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
         // SAFETY: every handle argument comes from a live wrapper, every pointer from a

@@ -87,12 +87,13 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_device_buffer_memory_requirements_unchecked(
                 info,
                 memory_requirements,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkGetDeviceBufferMemoryRequirements` without its dynamic checks.
 
@@ -146,12 +147,13 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
         // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
         // its caller were checked above; without it they are left to the user, as
         // VALIDATION.md lists.
-        Ok(unsafe {
+        unsafe {
             self.get_device_image_memory_requirements_unchecked(
                 info,
                 memory_requirements,
             )
-        })
+        };
+        Ok(())
     }
     /**`vkGetDeviceImageMemoryRequirements` without its dynamic checks.
 

@@ -18,6 +18,7 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
+    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_begin_rendering<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
@@ -623,7 +624,7 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_bind_vertex_buffers2<'a>(
+    pub fn cmd_bind_vertex_buffers2(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -657,7 +658,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_bind_vertex_buffers2_unchecked<'a>(
+    pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -1249,7 +1250,7 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_scissor_with_count<'a>(&mut self, scissors: &[vk::Rect2D]) {
+    pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_scissor_with_count(scissors);
@@ -1268,7 +1269,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_scissor_with_count_unchecked<'a>(
+    pub unsafe fn cmd_set_scissor_with_count_unchecked(
         &mut self,
         scissors: &[vk::Rect2D],
     ) {
@@ -1435,7 +1436,7 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_viewport_with_count<'a>(&mut self, viewports: &[vk::Viewport]) {
+    pub fn cmd_set_viewport_with_count(&mut self, viewports: &[vk::Viewport]) {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_viewport_with_count(viewports);
@@ -1454,7 +1455,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_with_count_unchecked<'a>(
+    pub unsafe fn cmd_set_viewport_with_count_unchecked(
         &mut self,
         viewports: &[vk::Viewport],
     ) {
@@ -1625,6 +1626,7 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
+    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
@@ -1645,7 +1647,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
-    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
+    pub unsafe fn cmd_end_rendering_unchecked(self) -> Recorder<'c, Outside> {
         // SAFETY: every handle argument comes from a live wrapper, every pointer from a
         // reference or slice that outlives the call, and every count from the length of the
         // slice it sizes.

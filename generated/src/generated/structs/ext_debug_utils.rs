@@ -25,10 +25,13 @@ impl<'a> DebugUtilsLabelEXT<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(label_name: &'a core::ffi::CStr) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DebugUtilsLabelEXT<'a> = Default::default();
-        raw.p_label_name = label_name.as_ptr();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DebugUtilsLabelEXT {
+                p_label_name: label_name.as_ptr(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `pLabelName`.
     #[inline]
@@ -74,10 +77,13 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(message: &'a core::ffi::CStr) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DebugUtilsMessengerCallbackDataEXT<'a> = Default::default();
-        raw.p_message = message.as_ptr();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DebugUtilsMessengerCallbackDataEXT {
+                p_message: message.as_ptr(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]

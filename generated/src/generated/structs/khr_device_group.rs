@@ -30,10 +30,13 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(swapchain: &'a SwapchainKHR) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::AcquireNextImageInfoKHR<'a> = Default::default();
-        raw.swapchain = swapchain.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::AcquireNextImageInfoKHR {
+                swapchain: swapchain.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `swapchain`.
     #[inline]
@@ -92,10 +95,13 @@ impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(swapchain: &'a SwapchainKHR) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BindImageMemorySwapchainInfoKHR<'a> = Default::default();
-        raw.swapchain = swapchain.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BindImageMemorySwapchainInfoKHR {
+                swapchain: swapchain.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `swapchain`.
     #[inline]

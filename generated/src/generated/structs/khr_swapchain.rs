@@ -102,10 +102,13 @@ impl<'a> SwapchainCreateInfoKHR<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(surface: &'a SurfaceKHR) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SwapchainCreateInfoKHR<'a> = Default::default();
-        raw.surface = surface.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SwapchainCreateInfoKHR {
+                surface: surface.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]

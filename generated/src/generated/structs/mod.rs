@@ -3,12 +3,6 @@
 //! Safe counterparts of the registry's structs that carry handles, pointers or
 //! an `sType`, one module per core version and extension. Plain structs
 //! (`vk::Extent2D`, ...) are used as ash has them.
-#![allow(
-    clippy::needless_lifetimes,
-    clippy::new_without_default,
-    clippy::field_reassign_with_default,
-    clippy::unnecessary_cast
-)]
 use crate::{
     chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice,
 };

@@ -301,10 +301,13 @@ impl<'a> BufferMemoryBarrier<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BufferMemoryBarrier<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BufferMemoryBarrier {
+                buffer: buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcAccessMask`.
     #[inline]
@@ -375,10 +378,13 @@ impl<'a> BufferViewCreateInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BufferViewCreateInfo<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BufferViewCreateInfo {
+                buffer: buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]
@@ -433,10 +439,13 @@ impl<'a> CommandBufferAllocateInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(command_pool: &'a CommandPool) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CommandBufferAllocateInfo<'a> = Default::default();
-        raw.command_pool = command_pool.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CommandBufferAllocateInfo {
+                command_pool: command_pool.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `commandPool`.
     #[inline]
@@ -619,11 +628,14 @@ impl<'a> ComputePipelineCreateInfo<'a> {
         stage: PipelineShaderStageCreateInfo<'a>,
         layout: &'a PipelineLayout,
     ) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ComputePipelineCreateInfo<'a> = Default::default();
-        raw.stage = stage.raw;
-        raw.layout = layout.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ComputePipelineCreateInfo {
+                stage: stage.raw,
+                layout: layout.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]
@@ -681,11 +693,14 @@ impl<'a> CopyDescriptorSet<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_set: &'a DescriptorSet, dst_set: &'a DescriptorSet) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CopyDescriptorSet<'a> = Default::default();
-        raw.src_set = src_set.raw();
-        raw.dst_set = dst_set.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CopyDescriptorSet {
+                src_set: src_set.raw(),
+                dst_set: dst_set.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcSet`.
     #[inline]
@@ -787,11 +802,14 @@ impl<'a> DescriptorImageInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(sampler: &'a Sampler, image_view: &'a ImageView) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DescriptorImageInfo = Default::default();
-        raw.sampler = sampler.raw();
-        raw.image_view = image_view.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DescriptorImageInfo {
+                sampler: sampler.raw(),
+                image_view: image_view.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `sampler`.
     #[inline]
@@ -880,10 +898,13 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(descriptor_pool: &'a DescriptorPool) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DescriptorSetAllocateInfo<'a> = Default::default();
-        raw.descriptor_pool = descriptor_pool.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DescriptorSetAllocateInfo {
+                descriptor_pool: descriptor_pool.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `descriptorPool`.
     #[inline]
@@ -1171,10 +1192,13 @@ impl<'a> FramebufferCreateInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(render_pass: &'a RenderPass) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::FramebufferCreateInfo<'a> = Default::default();
-        raw.render_pass = render_pass.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::FramebufferCreateInfo {
+                render_pass: render_pass.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]
@@ -1548,10 +1572,13 @@ impl<'a> ImageMemoryBarrier<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ImageMemoryBarrier<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ImageMemoryBarrier {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcAccessMask`.
     #[inline]
@@ -1631,10 +1658,13 @@ impl<'a> ImageViewCreateInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ImageViewCreateInfo<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ImageViewCreateInfo {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]
@@ -1750,10 +1780,13 @@ impl<'a> MappedMemoryRange<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::MappedMemoryRange<'a> = Default::default();
-        raw.memory = memory.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::MappedMemoryRange {
+                memory: memory.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `memory`.
     #[inline]
@@ -2317,10 +2350,13 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(name: &'a core::ffi::CStr) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::PipelineShaderStageCreateInfo<'a> = Default::default();
-        raw.p_name = name.as_ptr();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::PipelineShaderStageCreateInfo {
+                p_name: name.as_ptr(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]
@@ -2581,11 +2617,14 @@ impl<'a> RenderPassBeginInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(render_pass: &'a RenderPass, framebuffer: &'a Framebuffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::RenderPassBeginInfo<'a> = Default::default();
-        raw.render_pass = render_pass.raw();
-        raw.framebuffer = framebuffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::RenderPassBeginInfo {
+                render_pass: render_pass.raw(),
+                framebuffer: framebuffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `renderPass`.
     #[inline]
@@ -2871,10 +2910,13 @@ impl<'a> SparseBufferMemoryBindInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SparseBufferMemoryBindInfo<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SparseBufferMemoryBindInfo {
+                buffer: buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `buffer`.
     #[inline]
@@ -2969,10 +3011,13 @@ impl<'a> SparseImageMemoryBindInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SparseImageMemoryBindInfo<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SparseImageMemoryBindInfo {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `image`.
     #[inline]
@@ -3011,10 +3056,13 @@ impl<'a> SparseImageOpaqueMemoryBindInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SparseImageOpaqueMemoryBindInfo<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SparseImageOpaqueMemoryBindInfo {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `image`.
     #[inline]
@@ -3300,10 +3348,13 @@ impl<'a> WriteDescriptorSet<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(dst_set: &'a DescriptorSet) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::WriteDescriptorSet<'a> = Default::default();
-        raw.dst_set = dst_set.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::WriteDescriptorSet {
+                dst_set: dst_set.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `dstSet`.
     #[inline]

@@ -56,11 +56,14 @@ impl<'a> BindBufferMemoryInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer, memory: &'a DeviceMemory) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BindBufferMemoryInfo<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        raw.memory = memory.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BindBufferMemoryInfo {
+                buffer: buffer.raw(),
+                memory: memory.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `buffer`.
     #[inline]
@@ -141,11 +144,14 @@ impl<'a> BindImageMemoryInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image, memory: &'a DeviceMemory) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BindImageMemoryInfo<'a> = Default::default();
-        raw.image = image.raw();
-        raw.memory = memory.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BindImageMemoryInfo {
+                image: image.raw(),
+                memory: memory.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `image`.
     #[inline]
@@ -213,10 +219,13 @@ impl<'a> BufferMemoryRequirementsInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BufferMemoryRequirementsInfo2<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BufferMemoryRequirementsInfo2 {
+                buffer: buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `buffer`.
     #[inline]
@@ -271,11 +280,14 @@ impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
         descriptor_set_layout: &'a DescriptorSetLayout,
         pipeline_layout: &'a PipelineLayout,
     ) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DescriptorUpdateTemplateCreateInfo<'a> = Default::default();
-        raw.descriptor_set_layout = descriptor_set_layout.raw();
-        raw.pipeline_layout = pipeline_layout.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DescriptorUpdateTemplateCreateInfo {
+                descriptor_set_layout: descriptor_set_layout.raw(),
+                pipeline_layout: pipeline_layout.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `flags`.
     #[inline]
@@ -769,10 +781,13 @@ impl<'a> ImageMemoryRequirementsInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ImageMemoryRequirementsInfo2<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ImageMemoryRequirementsInfo2 {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `image`.
     #[inline]
@@ -829,10 +844,13 @@ impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ImageSparseMemoryRequirementsInfo2<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ImageSparseMemoryRequirementsInfo2 {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `image`.
     #[inline]
@@ -1796,10 +1814,13 @@ impl<'a> SamplerYcbcrConversionInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(conversion: &'a SamplerYcbcrConversion) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SamplerYcbcrConversionInfo<'a> = Default::default();
-        raw.conversion = conversion.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SamplerYcbcrConversionInfo {
+                conversion: conversion.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `conversion`.
     #[inline]

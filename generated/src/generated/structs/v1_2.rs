@@ -208,10 +208,13 @@ impl<'a> BufferDeviceAddressInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BufferDeviceAddressInfo<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BufferDeviceAddressInfo {
+                buffer: buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `buffer`.
     #[inline]
@@ -339,10 +342,13 @@ impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DeviceMemoryOpaqueCaptureAddressInfo<'a> = Default::default();
-        raw.memory = memory.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DeviceMemoryOpaqueCaptureAddressInfo {
+                memory: memory.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `memory`.
     #[inline]
@@ -1787,10 +1793,13 @@ impl<'a> SemaphoreSignalInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SemaphoreSignalInfo<'a> = Default::default();
-        raw.semaphore = semaphore.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SemaphoreSignalInfo {
+                semaphore: semaphore.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `semaphore`.
     #[inline]

@@ -32,11 +32,14 @@ impl<'a> BlitImageInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_image: &'a Image, dst_image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BlitImageInfo2<'a> = Default::default();
-        raw.src_image = src_image.raw();
-        raw.dst_image = dst_image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BlitImageInfo2 {
+                src_image: src_image.raw(),
+                dst_image: dst_image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -197,10 +200,13 @@ impl<'a> BufferMemoryBarrier2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::BufferMemoryBarrier2<'a> = Default::default();
-        raw.buffer = buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::BufferMemoryBarrier2 {
+                buffer: buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcStageMask`.
     #[inline]
@@ -343,10 +349,13 @@ impl<'a> CommandBufferSubmitInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(command_buffer: &'a CommandBuffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CommandBufferSubmitInfo<'a> = Default::default();
-        raw.command_buffer = command_buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CommandBufferSubmitInfo {
+                command_buffer: command_buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `commandBuffer`.
     #[inline]
@@ -388,11 +397,14 @@ impl<'a> CopyBufferInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_buffer: &'a Buffer, dst_buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CopyBufferInfo2<'a> = Default::default();
-        raw.src_buffer = src_buffer.raw();
-        raw.dst_buffer = dst_buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CopyBufferInfo2 {
+                src_buffer: src_buffer.raw(),
+                dst_buffer: dst_buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcBuffer`.
     #[inline]
@@ -442,11 +454,14 @@ impl<'a> CopyBufferToImageInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_buffer: &'a Buffer, dst_image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CopyBufferToImageInfo2<'a> = Default::default();
-        raw.src_buffer = src_buffer.raw();
-        raw.dst_image = dst_image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CopyBufferToImageInfo2 {
+                src_buffer: src_buffer.raw(),
+                dst_image: dst_image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcBuffer`.
     #[inline]
@@ -503,11 +518,14 @@ impl<'a> CopyImageInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_image: &'a Image, dst_image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CopyImageInfo2<'a> = Default::default();
-        raw.src_image = src_image.raw();
-        raw.dst_image = dst_image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CopyImageInfo2 {
+                src_image: src_image.raw(),
+                dst_image: dst_image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -569,11 +587,14 @@ impl<'a> CopyImageToBufferInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_image: &'a Image, dst_buffer: &'a Buffer) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::CopyImageToBufferInfo2<'a> = Default::default();
-        raw.src_image = src_image.raw();
-        raw.dst_buffer = dst_buffer.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::CopyImageToBufferInfo2 {
+                src_image: src_image.raw(),
+                dst_buffer: dst_buffer.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -700,13 +721,16 @@ impl<'a> DeviceBufferMemoryRequirements<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(create_info: &'a BufferCreateInfo<'a>) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DeviceBufferMemoryRequirements<'a> = Default::default();
-        raw.p_create_info = {
-            let value = create_info;
-            value as *const BufferCreateInfo<'a> as *const _
-        };
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DeviceBufferMemoryRequirements {
+                p_create_info: {
+                    let value = create_info;
+                    value as *const BufferCreateInfo<'a> as *const _
+                },
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `pCreateInfo`.
     #[inline]
@@ -739,13 +763,16 @@ impl<'a> DeviceImageMemoryRequirements<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(create_info: &'a ImageCreateInfo<'a>) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::DeviceImageMemoryRequirements<'a> = Default::default();
-        raw.p_create_info = {
-            let value = create_info;
-            value as *const ImageCreateInfo<'a> as *const _
-        };
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::DeviceImageMemoryRequirements {
+                p_create_info: {
+                    let value = create_info;
+                    value as *const ImageCreateInfo<'a> as *const _
+                },
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `pCreateInfo`.
     #[inline]
@@ -926,10 +953,13 @@ impl<'a> ImageMemoryBarrier2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ImageMemoryBarrier2<'a> = Default::default();
-        raw.image = image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ImageMemoryBarrier2 {
+                image: image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcStageMask`.
     #[inline]
@@ -1959,11 +1989,14 @@ impl<'a> ResolveImageInfo2<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(src_image: &'a Image, dst_image: &'a Image) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::ResolveImageInfo2<'a> = Default::default();
-        raw.src_image = src_image.raw();
-        raw.dst_image = dst_image.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::ResolveImageInfo2 {
+                src_image: src_image.raw(),
+                dst_image: dst_image.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `srcImage`.
     #[inline]
@@ -2021,10 +2054,13 @@ impl<'a> SemaphoreSubmitInfo<'a> {
     /// empty (and `sType` set).
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
-        #[allow(unused_mut)]
-        let mut raw: vk::SemaphoreSubmitInfo<'a> = Default::default();
-        raw.semaphore = semaphore.raw();
-        Self { raw, _marker: PhantomData }
+        Self {
+            raw: vk::SemaphoreSubmitInfo {
+                semaphore: semaphore.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
     }
     ///Sets `semaphore`.
     #[inline]
