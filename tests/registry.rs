@@ -278,3 +278,53 @@ fn the_report_tallies_only_the_records_handed_to_it() {
     assert_eq!(settled.settlement.status(), "static");
     assert_eq!(settled.settlement.mechanism(), "takes &CommandBuffer");
 }
+
+/// The checks are data; what the renderer writes for each must agree with what the
+/// data says it reads, since the checked methods pass only those arguments and bind
+/// the scope only for checks that use it.
+#[test]
+fn rendered_checks_read_what_their_data_says() {
+    use tuff_gen::plan::{Context, Plans};
+    let l = pinned();
+    let cx = Context::new(&l.model, &l.validity);
+    let plans = Plans::build(&cx);
+    // The identifiers of the code, outside its string literals.
+    let words = |code: String| -> BTreeSet<String> {
+        let (mut text, mut in_str, mut escaped) = (String::new(), false, false);
+        for c in code.chars() {
+            match (in_str, c) {
+                (true, '\\') if !escaped => escaped = true,
+                (_, '"') if !escaped => {
+                    in_str = !in_str;
+                    text.push(' ');
+                }
+                (true, _) => escaped = false,
+                (false, c) => text.push(c),
+            }
+        }
+        text.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .map(str::to_owned)
+            .collect()
+    };
+    let mut checked = 0;
+    for plan in plans.ok() {
+        for check in plans.checker.command_checks(plan) {
+            checked += 1;
+            let code = words(tuff_gen::emit::checks::render(check).to_string());
+            for arg in check.reads() {
+                assert!(
+                    code.contains(arg),
+                    "{}: reads `{arg}` but its code does not: {check:?}",
+                    plan.name
+                );
+            }
+            assert_eq!(
+                check.uses_scope(),
+                code.contains("s"),
+                "{}: {check:?}",
+                plan.name
+            );
+        }
+    }
+    assert!(checked > 150, "only {checked} command checks");
+}

@@ -1,8 +1,11 @@
 //! Renders `src/checks.rs` from the planned checks: the checks of enum and flags
 //! values, of every struct, and of `pNext` chains.
 
-use crate::names::ident;
-use crate::plan::checks::{enum_values, flag_bits, mentions, snake, struct_type_value, Checker};
+use crate::names::{field_ident, ident};
+use crate::plan::checks::{
+    enum_values, flag_bits, snake, struct_type_value, Check, CheckKind, Checker, HandleAt, Place,
+    QueueOf, Seq, StructAt, ValueKind,
+};
 use crate::plan::types::spelled;
 use crate::plan::Context;
 use proc_macro2::{Literal, TokenStream};
@@ -15,7 +18,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     let mut needs: BTreeSet<String> = BTreeSet::new();
     let mut fns = Vec::new();
     for (name, checks) in &checker.struct_cache {
-        needs.extend(checks.iter().flat_map(|c| c.needs.clone()));
+        needs.extend(checks.iter().flat_map(Check::needs));
         let f = ident(&format!("check_{}", snake(name)));
         let ty = crate::names::type_ident(name);
         let lt = if checker.cx.facts.has_lifetime(name) {
@@ -24,9 +27,9 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
             quote!()
         };
         let cfg = crate::names::cfg_of(model, model.condition(name));
-        let codes = checks.iter().map(|c| &c.code);
+        let codes = checks.iter().map(render);
         // Named `_s` when no check reads the scope, so no binding is left unused.
-        let scope_param = if checks.iter().any(|c| mentions(&c.code, "s")) {
+        let scope_param = if checks.iter().any(Check::uses_scope) {
             quote!(s)
         } else {
             quote!(_s)
@@ -42,7 +45,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
         });
     }
     for c in checker.command_cache.values().flatten() {
-        needs.extend(c.needs.iter().cloned());
+        needs.extend(c.needs());
     }
     let origins = Origins::new(model, &needs);
     let mut values = Vec::new();
@@ -356,4 +359,227 @@ fn ranges(values: &[i64]) -> Vec<(i64, i64)> {
         }
     }
     out
+}
+
+/// The code of one check. It may read `s` (the scope), the method's arguments or
+/// `v` (the checked struct), and returns early with `?` or `Err`.
+pub fn render(check: &Check) -> TokenStream {
+    let vuid = check.vuid.as_deref().unwrap_or_default();
+    let fail = |msg: &str| quote!(return Err(fail(#vuid, #msg.into())););
+    match &check.kind {
+        CheckKind::Value { kind, at } => value(kind, place(at), vuid),
+        CheckKind::EachValue { kind, over } => {
+            let body = value(kind, quote!(*e), vuid);
+            match over {
+                Seq::MemberArray(m) => {
+                    let f = field_ident(m);
+                    quote!(for e in v.#f.iter() { #body })
+                }
+                Seq::MemberSlice { member, count } => {
+                    let (f, n) = (field_ident(member), field_ident(count));
+                    quote! {
+                        __safety!("the safe setter stored this array and its count.");
+                        for e in unsafe { members(v.#f, v.#n) } { #body }
+                    }
+                }
+                Seq::ArgSlice(a) => {
+                    let a = ident(a);
+                    quote!(for e in #a.iter() { #body })
+                }
+            }
+        }
+        CheckKind::FnPointerSet { member } => {
+            let f = field_ident(member);
+            let fail = fail(&format!("`{member}` is NULL"));
+            quote!(if v.#f.is_none() { #fail })
+        }
+        CheckKind::NonZero { at, msg } => {
+            let (at, fail) = (place(at), fail(msg));
+            quote!(if #at == 0 { #fail })
+        }
+        CheckKind::NotEmpty { at, msg } => {
+            let (at, fail) = (place(at), fail(msg));
+            quote!(if #at.is_empty() { #fail })
+        }
+        CheckKind::ZeroFlags { at, msg } => {
+            let (at, fail) = (place(at), fail(msg));
+            quote!(if #at.as_raw() != 0 { #fail })
+        }
+        CheckKind::OwnedBy { ancestor, handles } => {
+            let owner = ident(if ancestor == "VkInstance" {
+                "owned_by_instance"
+            } else {
+                "owned_by_device"
+            });
+            let each = handles.iter().map(|(at, msg)| {
+                let fail = fail(msg);
+                match at {
+                    HandleAt::Arg {
+                        name,
+                        optional: false,
+                    } => {
+                        let a = ident(name);
+                        quote!(if !s.#owner(#a.raw()) { #fail })
+                    }
+                    HandleAt::Arg {
+                        name,
+                        optional: true,
+                    } => {
+                        let a = ident(name);
+                        quote!(if let Some(h) = #a { if !s.#owner(h.raw()) { #fail } })
+                    }
+                    HandleAt::ArgSlice(name) => {
+                        let a = ident(name);
+                        quote!(for h in #a.iter() { if !s.#owner(h.raw()) { #fail } })
+                    }
+                    HandleAt::Member(m) => {
+                        let f = field_ident(m);
+                        quote!(if v.#f != Default::default() && !s.#owner(v.#f) { #fail })
+                    }
+                    HandleAt::MemberSlice { member, count } => {
+                        let (f, n) = (field_ident(member), field_ident(count));
+                        quote! {
+                            __safety!("the safe setter stored this HandleSlice and its count.");
+                            for h in unsafe { members(v.#f, v.#n) } {
+                                if *h != Default::default() && !s.#owner(*h) { #fail }
+                            }
+                        }
+                    }
+                }
+            });
+            quote!(#(#each)*)
+        }
+        CheckKind::QueueFlags { of, queues } => {
+            let needed = queue_flags(queues);
+            let (flags, msg) = match of {
+                QueueOf::Pool => (
+                    quote!(self.command_buffer().parent().queue_flags()),
+                    format!("the command buffer's pool does not support {queues} operations"),
+                ),
+                QueueOf::Queue => (
+                    quote!(self.queue_flags()),
+                    format!("the queue does not support {queues} operations"),
+                ),
+            };
+            let fail = fail(&msg);
+            quote!(if !crate::validation::supports(#flags, #needed) { #fail })
+        }
+        CheckKind::Level { primary } => {
+            let (want, level) = if *primary {
+                (quote!(vk::CommandBufferLevel::PRIMARY), "primary")
+            } else {
+                (quote!(vk::CommandBufferLevel::SECONDARY), "secondary")
+            };
+            let fail = fail(&format!(
+                "the command buffer is not a {level} command buffer"
+            ));
+            quote!(if self.command_buffer().level() != #want { #fail })
+        }
+        CheckKind::NestedStruct { ty, at } => {
+            let call = ident(&format!("check_{}", snake(ty)));
+            match at {
+                StructAt::Member(m) => {
+                    let f = field_ident(m);
+                    quote!(crate::checks::#call(&v.#f, s)?;)
+                }
+                StructAt::MemberRef(m) => {
+                    let f = field_ident(m);
+                    quote! {
+                        if !v.#f.is_null() {
+                            __safety!("the safe setter stores a reference that outlives `v`.");
+                            crate::checks::#call(unsafe { &*v.#f }, s)?;
+                        }
+                    }
+                }
+                StructAt::MemberSlice { member, count } => {
+                    let (f, n) = (field_ident(member), field_ident(count));
+                    quote! {
+                        __safety!("the safe setter stored this array and its count.");
+                        for e in unsafe { members(v.#f, v.#n) } {
+                            crate::checks::#call(e, s)?;
+                        }
+                    }
+                }
+                StructAt::Arg(a) => {
+                    let a = ident(a);
+                    quote!(crate::checks::#call(#a, s)?;)
+                }
+                StructAt::OptionalArg(a) => {
+                    let a = ident(a);
+                    quote!(if let Some(x) = #a { crate::checks::#call(x, s)?; })
+                }
+                StructAt::ArgByValue(a) => {
+                    let a = ident(a);
+                    quote!(crate::checks::#call(&#a, s)?;)
+                }
+                StructAt::ArgSlice(a) => {
+                    let a = ident(a);
+                    quote!(for x in #a.iter() { crate::checks::#call(x, s)?; })
+                }
+            }
+        }
+        CheckKind::Chain => {
+            let unique = match &check.vuid {
+                Some(v) => quote!(Some(#v)),
+                None => quote!(None),
+            };
+            quote!(crate::checks::chain(v.p_next, s, #unique)?;)
+        }
+    }
+}
+
+/// Where a checked value is, as an expression.
+fn place(at: &Place) -> TokenStream {
+    match at {
+        Place::Arg(a) => {
+            let a = ident(a);
+            quote!(#a)
+        }
+        Place::ArgMember(a, m) => {
+            let (a, m) = (ident(a), field_ident(m));
+            quote!(#a.#m)
+        }
+        Place::Member(m) => {
+            let f = field_ident(m);
+            quote!(v.#f)
+        }
+    }
+}
+
+/// The call of a value's check function.
+fn value(kind: &ValueKind, expr: TokenStream, vuid: &str) -> TokenStream {
+    match kind {
+        ValueKind::Enum(t) => {
+            let f = ident(&format!("enum_{}", snake(t)));
+            quote!(crate::checks::#f(#expr, s, #vuid)?;)
+        }
+        ValueKind::Flags(t) => {
+            let f = ident(&format!("flags_{}", snake(t)));
+            quote!(crate::checks::#f(#expr, s, #vuid)?;)
+        }
+        ValueKind::Struct(t) => {
+            let f = ident(&format!("check_{}", snake(t)));
+            quote!(crate::checks::#f(&#expr, s)?;)
+        }
+    }
+}
+
+/// `graphics,compute` as `vk::QueueFlags`.
+fn queue_flags(queues: &str) -> TokenStream {
+    let flags: Vec<TokenStream> = queues
+        .split(',')
+        .filter_map(|q| match q.trim() {
+            "graphics" => Some(quote!(vk::QueueFlags::GRAPHICS)),
+            "compute" => Some(quote!(vk::QueueFlags::COMPUTE)),
+            "transfer" => Some(quote!(vk::QueueFlags::TRANSFER)),
+            "sparse_binding" => Some(quote!(vk::QueueFlags::SPARSE_BINDING)),
+            "protected" => Some(quote!(vk::QueueFlags::PROTECTED)),
+            _ => None,
+        })
+        .collect();
+    if flags.is_empty() {
+        quote!(vk::QueueFlags::from_raw(u32::MAX))
+    } else {
+        quote!(#(#flags)|*)
+    }
 }

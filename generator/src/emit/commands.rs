@@ -1113,7 +1113,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .filter_map(|a| a.clone().into_iter().next())
             .map(TokenStream::from)
             .collect();
-        let codes = checks.iter().map(|c| &c.code);
+        let codes = checks.iter().map(super::checks::render);
         let scope = scope_expr(cx, plan, &device_path);
         let (always_code, always_vuids) = always.unwrap_or_default();
         let owned: Vec<String> = checks
@@ -1133,9 +1133,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
         ) + &safety.replace("\n\n# Safety\n\n", " ");
         // The scope is bound only when a check reads it.
-        let uses_scope = checks
-            .iter()
-            .any(|c| crate::plan::checks::mentions(&c.code, "s"));
+        let uses_scope = checks.iter().any(crate::plan::checks::Check::uses_scope);
         let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
         // The checks are a named method beside the command's, taking only the
         // arguments they read.
@@ -1146,7 +1144,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .filter(|(_, n)| {
                 checks
                     .iter()
-                    .any(|c| crate::plan::checks::mentions(&c.code, &n.to_string()))
+                    .any(|c| c.reads().contains(&n.to_string().as_str()))
             })
             .collect();
         let v_args = read.iter().map(|(a, _)| a);

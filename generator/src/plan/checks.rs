@@ -1,6 +1,6 @@
 //! The dynamic checks compiled in with `runtime_implicit_validations`: which implicit
-//! rules get one, the code of each, and `src/checks.rs`, which holds the checks of
-//! enum and flags values, of every struct, and of `pNext` chains.
+//! rules get one, and each check as data (a [`CheckKind`] with its VUID), which
+//! `emit::checks` renders into the checked methods and `checks/`.
 //!
 //! The settlement records read [`Checker::dynamic`], so a rule is reported as
 //! dynamically solved exactly when the emitted code checks it.
@@ -9,25 +9,253 @@ use super::commands::{Param, Plan};
 use super::shape::{struct_members, Member};
 use super::Context;
 use crate::model::LenEntry;
-use crate::names::{field_ident, ident, param};
+use crate::names::param;
 use crate::validity::{DerivedRule, ImplicitKind as K};
 use heck::ToSnakeCase;
-use proc_macro2::TokenStream;
-use quote::quote;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// One check: the rule it settles (none for a call into a nested struct's checks),
-/// what it does, and its code, which may use `s` (the scope) and `?`.
-#[derive(Clone)]
+/// what it does (for the report), and what it checks, as data that the `checks`
+/// renderer turns into code.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Check {
     /// The rule.
     pub vuid: Option<String>,
     /// What the check does, for the report.
     pub what: String,
-    /// The code.
-    pub code: TokenStream,
-    /// Enum and flags types whose value checks the code calls.
-    pub needs: Vec<String>,
+    /// The check.
+    pub kind: CheckKind,
+}
+
+/// Where a checked value is, in the scope of the check: a method argument (by its
+/// Rust name), a member of a struct argument, or a member of the struct being
+/// checked (`v`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// A method argument.
+    Arg(String),
+    /// A member of a struct argument.
+    ArgMember(String, String),
+    /// A member of the checked struct.
+    Member(String),
+}
+
+/// Values whose checks are generated functions.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ValueKind {
+    /// `enum_*`: one of the values the enabled versions and extensions define.
+    Enum(String),
+    /// `flags_*`: every bit set is one they define.
+    Flags(String),
+    /// `check_*`: a plain struct's own checks.
+    Struct(String),
+}
+
+/// A sequence whose elements are checked one by one.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Seq {
+    /// A fixed-size array member of the checked struct.
+    MemberArray(String),
+    /// An array member stored as a pointer with its count member.
+    MemberSlice {
+        /// The pointer member.
+        member: String,
+        /// The count member.
+        count: String,
+    },
+    /// A slice argument.
+    ArgSlice(String),
+}
+
+/// A handle (or handles) that must come from the object the scope names.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum HandleAt {
+    /// A wrapper argument, maybe optional.
+    Arg {
+        /// The argument.
+        name: String,
+        /// `Option<&T>`.
+        optional: bool,
+    },
+    /// A slice of wrapper arguments.
+    ArgSlice(String),
+    /// A raw handle member of the checked struct (null allowed).
+    Member(String),
+    /// An array of raw handles of the checked struct.
+    MemberSlice {
+        /// The pointer member.
+        member: String,
+        /// The count member.
+        count: String,
+    },
+}
+
+/// Where a nested struct whose checks are called is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum StructAt {
+    /// A struct member of the checked struct, by value.
+    Member(String),
+    /// A pointer member, maybe null.
+    MemberRef(String),
+    /// An array member with its count.
+    MemberSlice {
+        /// The pointer member.
+        member: String,
+        /// The count member.
+        count: String,
+    },
+    /// An argument by reference.
+    Arg(String),
+    /// An optional argument by reference.
+    OptionalArg(String),
+    /// An argument by value.
+    ArgByValue(String),
+    /// A slice argument.
+    ArgSlice(String),
+}
+
+/// Which queue flags a command's checks read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum QueueOf {
+    /// The family of the recording command buffer's pool.
+    Pool,
+    /// The family of the queue the method is called on.
+    Queue,
+}
+
+/// The kinds of dynamic check. The renderer in `emit::checks` writes each one; the
+/// failure message of those that fail with one is part of the data.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CheckKind {
+    /// A value's generated check function.
+    Value {
+        /// Which function.
+        kind: ValueKind,
+        /// Of what.
+        at: Place,
+    },
+    /// The same for every element of a sequence.
+    EachValue {
+        /// Which function.
+        kind: ValueKind,
+        /// Over what.
+        over: Seq,
+    },
+    /// A function-pointer member is set.
+    FnPointerSet {
+        /// The member.
+        member: String,
+    },
+    /// A count is not 0.
+    NonZero {
+        /// The count.
+        at: Place,
+        /// The failure.
+        msg: String,
+    },
+    /// A slice, or a flags value, is not empty.
+    NotEmpty {
+        /// The value.
+        at: Place,
+        /// The failure.
+        msg: String,
+    },
+    /// Reserved flags are 0.
+    ZeroFlags {
+        /// The value.
+        at: Place,
+        /// The failure.
+        msg: String,
+    },
+    /// Handles come from the device (`owned_by_device`) or instance the call is on.
+    OwnedBy {
+        /// `VkDevice` or `VkInstance`.
+        ancestor: String,
+        /// Each handle, with the failure naming it.
+        handles: Vec<(HandleAt, String)>,
+    },
+    /// The queue family supports the command's queue types.
+    QueueFlags {
+        /// Whose family.
+        of: QueueOf,
+        /// vk.xml's `queues`, `graphics,compute`.
+        queues: String,
+    },
+    /// The recording command buffer has this level.
+    Level {
+        /// Primary rather than secondary.
+        primary: bool,
+    },
+    /// A nested struct's own checks.
+    NestedStruct {
+        /// The struct type.
+        ty: String,
+        /// Where it is.
+        at: StructAt,
+    },
+    /// The `pNext` chain: each node's checks, and no structure type twice when the
+    /// rule's VUID is the check's.
+    Chain,
+}
+
+impl Check {
+    /// Enum and flags types whose value checks this check calls.
+    pub fn needs(&self) -> Vec<String> {
+        match &self.kind {
+            CheckKind::Value { kind, .. } | CheckKind::EachValue { kind, .. } => match kind {
+                ValueKind::Enum(t) | ValueKind::Flags(t) => vec![t.clone()],
+                ValueKind::Struct(_) => Vec::new(),
+            },
+            _ => Vec::new(),
+        }
+    }
+
+    /// Whether the check reads the scope (`s`): the enabled versions and extensions,
+    /// or which objects the device and instance own.
+    pub fn uses_scope(&self) -> bool {
+        !matches!(
+            self.kind,
+            CheckKind::FnPointerSet { .. }
+                | CheckKind::NonZero { .. }
+                | CheckKind::NotEmpty { .. }
+                | CheckKind::ZeroFlags { .. }
+                | CheckKind::QueueFlags { .. }
+                | CheckKind::Level { .. }
+        )
+    }
+
+    /// The method arguments the check reads, by their Rust names.
+    pub fn reads(&self) -> Vec<&str> {
+        match &self.kind {
+            CheckKind::Value { at, .. }
+            | CheckKind::NonZero { at, .. }
+            | CheckKind::NotEmpty { at, .. }
+            | CheckKind::ZeroFlags { at, .. } => match at {
+                Place::Arg(a) | Place::ArgMember(a, _) => vec![a.as_str()],
+                _ => Vec::new(),
+            },
+            CheckKind::EachValue {
+                over: Seq::ArgSlice(a),
+                ..
+            } => vec![a],
+            CheckKind::OwnedBy { handles, .. } => handles
+                .iter()
+                .filter_map(|(h, _)| match h {
+                    HandleAt::Arg { name, .. } | HandleAt::ArgSlice(name) => Some(name.as_str()),
+                    _ => None,
+                })
+                .collect(),
+            CheckKind::NestedStruct {
+                at:
+                    StructAt::Arg(a)
+                    | StructAt::OptionalArg(a)
+                    | StructAt::ArgByValue(a)
+                    | StructAt::ArgSlice(a),
+                ..
+            } => vec![a],
+            _ => Vec::new(),
+        }
+    }
 }
 
 /// Decides the checks of every emitted command and struct.
@@ -176,40 +404,21 @@ impl<'c, 'm> Checker<'c, 'm> {
         self.rules.get(item).map_or(&[], Vec::as_slice)
     }
 
-    /// The code that checks a value of an enum or flags type, or of a plain struct
-    /// with checks; `expr` is the value.
-    fn value_check(
-        &self,
-        type_name: &str,
-        expr: TokenStream,
-        vuid: &str,
-    ) -> Option<(TokenStream, Vec<String>, &'static str)> {
+    /// The check of a value of an enum or flags type, or of a plain struct with
+    /// checks, and what it does.
+    fn value_kind(&self, type_name: &str) -> Option<(ValueKind, &'static str)> {
         let model = self.cx.model;
         match model.category(type_name) {
             Some("enum") if !enum_values(model, type_name).is_empty() => {
-                let f = ident(&format!("enum_{}", snake(type_name)));
-                Some((
-                    quote!(crate::checks::#f(#expr, s, #vuid)?;),
-                    vec![type_name.to_owned()],
-                    ENUM_VALUE,
-                ))
+                Some((ValueKind::Enum(type_name.to_owned()), ENUM_VALUE))
             }
             Some("bitmask") if flag_bits(model, type_name).is_some() => {
-                let f = ident(&format!("flags_{}", snake(type_name)));
-                Some((
-                    quote!(crate::checks::#f(#expr, s, #vuid)?;),
-                    vec![type_name.to_owned()],
-                    FLAGS_VALUE,
-                ))
+                Some((ValueKind::Flags(type_name.to_owned()), FLAGS_VALUE))
             }
-            Some("struct") if self.checked.contains(type_name) => {
-                let f = ident(&format!("check_{}", snake(type_name)));
-                Some((
-                    quote!(crate::checks::#f(&#expr, s)?;),
-                    Vec::new(),
-                    "checks the struct's own rules",
-                ))
-            }
+            Some("struct") if self.checked.contains(type_name) => Some((
+                ValueKind::Struct(type_name.to_owned()),
+                "checks the struct's own rules",
+            )),
             _ => None,
         }
     }
@@ -232,78 +441,67 @@ impl<'c, 'm> Checker<'c, 'm> {
         for rule in self.rules_of(name) {
             let vuid = rule.vuid.as_str();
             let field = rule.field.as_deref().and_then(member);
-            let check = match (rule.kind, field) {
+            let check: Option<(CheckKind, String)> = match (rule.kind, field) {
                 (K::Parameter, Some((m, Member::Value)))
                     if model.category(&m.type_name) == Some("funcpointer") =>
                 {
-                    let f = field_ident(&m.name);
-                    let msg = format!("`{}` is NULL", m.name);
                     Some((
-                        quote!(if v.#f.is_none() { return Err(fail(#vuid, #msg.into())); }),
-                        Vec::new(),
+                        CheckKind::FnPointerSet {
+                            member: m.name.clone(),
+                        },
                         "checks the function pointer is set".to_owned(),
                     ))
                 }
                 (K::Parameter, Some((m, Member::Value))) => {
-                    let f = field_ident(&m.name);
-                    self.value_check(&m.type_name, quote!(v.#f), vuid)
-                        .map(|(c, n, w)| (c, n, w.to_owned()))
+                    self.value_kind(&m.type_name).map(|(kind, w)| {
+                        let at = Place::Member(m.name.clone());
+                        (CheckKind::Value { kind, at }, w.to_owned())
+                    })
                 }
                 (K::Parameter, Some((m, Member::Array(_)))) => {
-                    let f = field_ident(&m.name);
-                    self.value_check(&m.type_name, quote!(*e), vuid)
-                        .map(|(c, n, w)| {
-                            (
-                                quote!(for e in v.#f.iter() { #c }),
-                                n,
-                                format!("{w}, for each element"),
-                            )
-                        })
+                    self.value_kind(&m.type_name).map(|(kind, w)| {
+                        let over = Seq::MemberArray(m.name.clone());
+                        (
+                            CheckKind::EachValue { kind, over },
+                            format!("{w}, for each element"),
+                        )
+                    })
                 }
                 (K::Parameter, Some((m, Member::Slice { count, .. })))
                     if matches!(model.category(&m.type_name), Some("enum" | "bitmask")) =>
                 {
-                    let f = field_ident(&m.name);
-                    let n = field_ident(count);
-                    self.value_check(&m.type_name, quote!(*e), vuid)
-                        .map(|(c, needs, w)| {
-                            (
-                                quote! {
-                                    __safety!("the safe setter stored this array and its count.");
-                                    for e in unsafe { members(v.#f, v.#n) } { #c }
-                                },
-                                needs,
-                                format!("{w}, for each element"),
-                            )
-                        })
+                    self.value_kind(&m.type_name).map(|(kind, w)| {
+                        let over = Seq::MemberSlice {
+                            member: m.name.clone(),
+                            count: count.clone(),
+                        };
+                        (
+                            CheckKind::EachValue { kind, over },
+                            format!("{w}, for each element"),
+                        )
+                    })
                 }
-                (K::ArrayLength, Some((m, _))) if m.pointers == 0 => {
-                    let f = field_ident(&m.name);
-                    let msg = format!("`{}` is 0", m.name);
-                    Some((
-                        quote!(if v.#f == 0 { return Err(fail(#vuid, #msg.into())); }),
-                        Vec::new(),
-                        "checks the count is not 0".to_owned(),
-                    ))
-                }
-                (K::RequiredBitmask, Some((m, Member::Value))) => {
-                    let f = field_ident(&m.name);
-                    let msg = format!("`{}` is empty", m.name);
-                    Some((
-                        quote!(if v.#f.is_empty() { return Err(fail(#vuid, #msg.into())); }),
-                        Vec::new(),
-                        "checks the flags are not 0".to_owned(),
-                    ))
-                }
-                (K::ZeroBitmask, Some((m, Member::Value))) => {
-                    let f = field_ident(&m.name);
-                    let msg = format!("`{}` is not 0", m.name);
-                    Some((
-                        quote!(if v.#f.as_raw() != 0 { return Err(fail(#vuid, #msg.into())); }),
-                        Vec::new(),
-                        "checks the reserved flags are 0".to_owned(),
-                    ))
-                }
+                (K::ArrayLength, Some((m, _))) if m.pointers == 0 => Some((
+                    CheckKind::NonZero {
+                        at: Place::Member(m.name.clone()),
+                        msg: format!("`{}` is 0", m.name),
+                    },
+                    "checks the count is not 0".to_owned(),
+                )),
+                (K::RequiredBitmask, Some((m, Member::Value))) => Some((
+                    CheckKind::NotEmpty {
+                        at: Place::Member(m.name.clone()),
+                        msg: format!("`{}` is empty", m.name),
+                    },
+                    "checks the flags are not 0".to_owned(),
+                )),
+                (K::ZeroBitmask, Some((m, Member::Value))) => Some((
+                    CheckKind::ZeroFlags {
+                        at: Place::Member(m.name.clone()),
+                        msg: format!("`{}` is not 0", m.name),
+                    },
+                    "checks the reserved flags are 0".to_owned(),
+                )),
                 (K::Unique, _) => {
                     unique = Some(vuid.to_owned());
                     continue;
@@ -311,12 +509,11 @@ impl<'c, 'm> Checker<'c, 'm> {
                 (K::CommonParent, _) => self.struct_common_parent(rule, &members),
                 _ => None,
             };
-            if let Some((code, needs, what)) = check {
+            if let Some((kind, what)) = check {
                 out.push(Check {
                     vuid: Some(vuid.to_owned()),
                     what,
-                    code,
-                    needs,
+                    kind,
                 });
             }
         }
@@ -325,32 +522,22 @@ impl<'c, 'm> Checker<'c, 'm> {
             if !self.checked.contains(&m.type_name) {
                 continue;
             }
-            let f = field_ident(&m.name);
-            let call = ident(&format!("check_{}", snake(&m.type_name)));
-            let code = match shape {
-                Member::Value | Member::Nested => quote!(crate::checks::#call(&v.#f, s)?;),
-                Member::StructRef { .. } => quote! {
-                    if !v.#f.is_null() {
-                        __safety!("the safe setter stores a reference that outlives `v`.");
-                        crate::checks::#call(unsafe { &*v.#f }, s)?;
-                    }
+            let at = match shape {
+                Member::Value | Member::Nested => StructAt::Member(m.name.clone()),
+                Member::StructRef { .. } => StructAt::MemberRef(m.name.clone()),
+                Member::Slice { count, .. } => StructAt::MemberSlice {
+                    member: m.name.clone(),
+                    count: count.clone(),
                 },
-                Member::Slice { count, .. } => {
-                    let n = field_ident(count);
-                    quote! {
-                        __safety!("the safe setter stored this array and its count.");
-                        for e in unsafe { members(v.#f, v.#n) } {
-                            crate::checks::#call(e, s)?;
-                        }
-                    }
-                }
                 _ => continue,
             };
             out.push(Check {
                 vuid: None,
                 what: String::new(),
-                code,
-                needs: Vec::new(),
+                kind: CheckKind::NestedStruct {
+                    ty: m.type_name.clone(),
+                    at,
+                },
             });
         }
         let chain_checked = model
@@ -358,15 +545,10 @@ impl<'c, 'm> Checker<'c, 'm> {
             .get(name)
             .is_some_and(|e| e.iter().any(|x| self.checked.contains(x)));
         if unique.is_some() || chain_checked {
-            let u = match &unique {
-                Some(v) => quote!(Some(#v)),
-                None => quote!(None),
-            };
             out.push(Check {
                 vuid: unique,
                 what: "walks the chain and checks no structure type appears twice".into(),
-                code: quote!(crate::checks::chain(v.p_next, s, #u)?;),
-                needs: Vec::new(),
+                kind: CheckKind::Chain,
             });
         }
         out
@@ -378,41 +560,30 @@ impl<'c, 'm> Checker<'c, 'm> {
         &self,
         rule: &DerivedRule,
         members: &[(crate::model::Field, Member)],
-    ) -> Option<(TokenStream, Vec<String>, String)> {
-        let owner = owner_fn(rule.ancestor.as_deref()?)?;
-        let vuid = rule.vuid.as_str();
-        let mut code = Vec::new();
+    ) -> Option<(CheckKind, String)> {
+        let ancestor = rule.ancestor.clone()?;
+        owner_known(&ancestor)?;
+        let mut handles = Vec::new();
         for name in &rule.related {
             let (m, shape) = members.iter().find(|(m, _)| &m.name == name)?;
-            let f = field_ident(&m.name);
             let msg = format!(
-                "`{}` does not come from the {} the command is called on",
-                m.name,
-                rule.ancestor.as_deref()?
+                "`{}` does not come from the {ancestor} the command is called on",
+                m.name
             );
-            code.push(match shape {
-                Member::Handle { .. } => quote! {
-                    if v.#f != Default::default() && !s.#owner(v.#f) {
-                        return Err(fail(#vuid, #msg.into()));
-                    }
+            handles.push((
+                match shape {
+                    Member::Handle { .. } => HandleAt::Member(m.name.clone()),
+                    Member::HandleSlice { count } => HandleAt::MemberSlice {
+                        member: m.name.clone(),
+                        count: count.clone(),
+                    },
+                    _ => return None,
                 },
-                Member::HandleSlice { count } => {
-                    let n = field_ident(count);
-                    quote! {
-                        __safety!("the safe setter stored this HandleSlice and its count.");
-                        for h in unsafe { members(v.#f, v.#n) } {
-                            if *h != Default::default() && !s.#owner(*h) {
-                                return Err(fail(#vuid, #msg.into()));
-                            }
-                        }
-                    }
-                }
-                _ => return None,
-            });
+                msg,
+            ));
         }
         Some((
-            quote!(#(#code)*),
-            Vec::new(),
+            CheckKind::OwnedBy { ancestor, handles },
             "checks each handle was created from the device (or instance) the command is called on, so they share it".into(),
         ))
     }
@@ -425,16 +596,18 @@ impl<'c, 'm> Checker<'c, 'm> {
             let i = cmd.params.iter().position(|p| p.name == name)?;
             Some((i, plan.params.get(i)?))
         };
+        let rust = |i: usize| param(&cmd.params[i].name);
+        let queues = cmd.queues.clone().unwrap_or_default();
         let mut out = Vec::new();
         for rule in self.rules_of(&plan.name) {
             let vuid = rule.vuid.as_str();
             let field = rule.field.as_deref().and_then(arg);
-            let check: Option<(TokenStream, Vec<String>, String)> = match (rule.kind, field) {
+            let check: Option<(CheckKind, String)> = match (rule.kind, field) {
                 (K::Parameter, Some((i, Param::Value))) => {
-                    let p = &cmd.params[i];
-                    let a = ident(&param(&p.name));
-                    self.value_check(&p.type_name, quote!(#a), vuid)
-                        .map(|(c, n, w)| (c, n, w.to_owned()))
+                    self.value_kind(&cmd.params[i].type_name).map(|(kind, w)| {
+                        let at = Place::Arg(rust(i));
+                        (CheckKind::Value { kind, at }, w.to_owned())
+                    })
                 }
                 (K::Parameter, Some((i, Param::Slice)))
                     if matches!(
@@ -442,166 +615,118 @@ impl<'c, 'm> Checker<'c, 'm> {
                         Some("enum" | "bitmask")
                     ) =>
                 {
-                    let p = &cmd.params[i];
-                    let a = ident(&param(&p.name));
-                    self.value_check(&p.type_name, quote!(*e), vuid)
-                        .map(|(c, n, w)| {
-                            (
-                                quote!(for e in #a.iter() { #c }),
-                                n,
-                                format!("{w}, for each element"),
-                            )
-                        })
+                    self.value_kind(&cmd.params[i].type_name).map(|(kind, w)| {
+                        let over = Seq::ArgSlice(rust(i));
+                        (CheckKind::EachValue { kind, over }, format!("{w}, for each element"))
+                    })
                 }
-                (K::RequiredBitmask, Some((i, Param::Value))) => {
-                    let a = ident(&param(&cmd.params[i].name));
-                    let msg = format!("`{}` is empty", cmd.params[i].name);
-                    Some((
-                        quote!(if #a.is_empty() { return Err(fail(#vuid, #msg.into())); }),
-                        Vec::new(),
-                        "checks the flags are not 0".into(),
-                    ))
-                }
-                (K::ZeroBitmask, Some((i, Param::Value))) => {
-                    let a = ident(&param(&cmd.params[i].name));
-                    let msg = format!("`{}` is not 0", cmd.params[i].name);
-                    Some((
-                        quote!(if #a.as_raw() != 0 { return Err(fail(#vuid, #msg.into())); }),
-                        Vec::new(),
-                        "checks the reserved flags are 0".into(),
-                    ))
-                }
+                (K::RequiredBitmask, Some((i, Param::Value))) => Some((
+                    CheckKind::NotEmpty {
+                        at: Place::Arg(rust(i)),
+                        msg: format!("`{}` is empty", cmd.params[i].name),
+                    },
+                    "checks the flags are not 0".into(),
+                )),
+                (K::ZeroBitmask, Some((i, Param::Value))) => Some((
+                    CheckKind::ZeroFlags {
+                        at: Place::Arg(rust(i)),
+                        msg: format!("`{}` is not 0", cmd.params[i].name),
+                    },
+                    "checks the reserved flags are 0".into(),
+                )),
                 (K::ArrayLength, _) => self.command_array_length(plan, rule),
                 (K::Parent, Some((i, shape))) => {
-                    let owner = owner_fn(rule.ancestor.as_deref().unwrap_or_default());
+                    let ancestor = rule.ancestor.clone().unwrap_or_default();
                     let is_dispatch = rule.related.first() == cmd.params.first().map(|p| &p.name);
-                    match owner {
-                        Some(owner) if is_dispatch => {
-                            let a = ident(&param(&cmd.params[i].name));
-                            let msg = format!(
-                                "`{}` does not come from `{}`",
-                                cmd.params[i].name, rule.related[0]
-                            );
-                            handle_owned(shape, &a, &owner, vuid, &msg).map(|c| {
-                                (c, Vec::new(), "checks the handle was created, allocated or retrieved from the object the method is called on".into())
-                            })
-                        }
+                    let msg = format!(
+                        "`{}` does not come from `{}`",
+                        cmd.params[i].name,
+                        rule.related.first().map_or("", String::as_str)
+                    );
+                    match (owner_known(&ancestor), handle_at(shape, rust(i))) {
+                        (Some(()), Some(at)) if is_dispatch => Some((
+                            CheckKind::OwnedBy {
+                                ancestor,
+                                handles: vec![(at, msg)],
+                            },
+                            "checks the handle was created, allocated or retrieved from the object the method is called on".into(),
+                        )),
                         _ => None,
                     }
                 }
                 (K::CommonParent, _) => self.command_common_parent(plan, rule),
-                (K::CmdPool, _) => {
-                    let needed = queue_flags(cmd.queues.as_deref().unwrap_or_default());
-                    let msg = format!(
-                        "the command buffer's pool does not support {} operations",
-                        cmd.queues.as_deref().unwrap_or_default()
-                    );
-                    Some((
-                        quote! {
-                            if !crate::validation::supports(self.command_buffer().parent().queue_flags(), #needed) {
-                                return Err(fail(#vuid, #msg.into()));
-                            }
-                        },
-                        Vec::new(),
-                        "checks the queue flags of the pool's family, recorded when the pool was created".into(),
-                    ))
-                }
-                (K::QueueType, _) => {
-                    let needed = queue_flags(cmd.queues.as_deref().unwrap_or_default());
-                    let msg = format!(
-                        "the queue does not support {} operations",
-                        cmd.queues.as_deref().unwrap_or_default()
-                    );
-                    Some((
-                        quote! {
-                            if !crate::validation::supports(self.queue_flags(), #needed) {
-                                return Err(fail(#vuid, #msg.into()));
-                            }
-                        },
-                        Vec::new(),
-                        "checks the queue flags of the queue's family, recorded when the queue was retrieved".into(),
-                    ))
-                }
-                (K::BufferLevel, _) => {
-                    let level = cmd.cmdbufferlevel.as_deref().unwrap_or_default();
-                    let want = if level == "primary" {
-                        quote!(vk::CommandBufferLevel::PRIMARY)
-                    } else {
-                        quote!(vk::CommandBufferLevel::SECONDARY)
-                    };
-                    let msg = format!("the command buffer is not a {level} command buffer");
-                    Some((
-                        quote! {
-                            if self.command_buffer().level() != #want {
-                                return Err(fail(#vuid, #msg.into()));
-                            }
-                        },
-                        Vec::new(),
-                        "checks the level the command buffer was allocated with".into(),
-                    ))
-                }
+                (K::CmdPool, _) => Some((
+                    CheckKind::QueueFlags {
+                        of: QueueOf::Pool,
+                        queues: queues.clone(),
+                    },
+                    "checks the queue flags of the pool's family, recorded when the pool was created".into(),
+                )),
+                (K::QueueType, _) => Some((
+                    CheckKind::QueueFlags {
+                        of: QueueOf::Queue,
+                        queues: queues.clone(),
+                    },
+                    "checks the queue flags of the queue's family, recorded when the queue was retrieved".into(),
+                )),
+                (K::BufferLevel, _) => Some((
+                    CheckKind::Level {
+                        primary: cmd.cmdbufferlevel.as_deref() == Some("primary"),
+                    },
+                    "checks the level the command buffer was allocated with".into(),
+                )),
                 _ => None,
             };
-            if let Some((code, needs, what)) = check {
+            if let Some((kind, what)) = check {
                 out.push(Check {
                     vuid: Some(vuid.to_owned()),
                     what,
-                    code,
-                    needs,
+                    kind,
                 });
             }
         }
         // The checks of the structs it takes.
-        for (p, shape) in cmd.params.iter().zip(&plan.params) {
+        for (i, (p, shape)) in cmd.params.iter().zip(&plan.params).enumerate() {
             if !self.checked.contains(&p.type_name) {
                 continue;
             }
-            let a = ident(&param(&p.name));
-            let call = ident(&format!("check_{}", snake(&p.type_name)));
-            let code = match shape {
-                Param::StructRef { optional: true } => {
-                    quote!(if let Some(x) = #a { crate::checks::#call(x, s)?; })
-                }
-                Param::StructRef { optional: false } | Param::InOut => {
-                    quote!(crate::checks::#call(#a, s)?;)
-                }
-                Param::Value => quote!(crate::checks::#call(&#a, s)?;),
-                Param::Slice => quote!(for x in #a.iter() { crate::checks::#call(x, s)?; }),
+            let a = rust(i);
+            let at = match shape {
+                Param::StructRef { optional: true } => StructAt::OptionalArg(a),
+                Param::StructRef { optional: false } | Param::InOut => StructAt::Arg(a),
+                Param::Value => StructAt::ArgByValue(a),
+                Param::Slice => StructAt::ArgSlice(a),
                 _ => continue,
             };
             out.push(Check {
                 vuid: None,
                 what: String::new(),
-                code,
-                needs: Vec::new(),
+                kind: CheckKind::NestedStruct {
+                    ty: p.type_name.clone(),
+                    at,
+                },
             });
         }
         out
     }
 
-    fn command_array_length(
-        &self,
-        plan: &Plan,
-        rule: &DerivedRule,
-    ) -> Option<(TokenStream, Vec<String>, String)> {
+    fn command_array_length(&self, plan: &Plan, rule: &DerivedRule) -> Option<(CheckKind, String)> {
         let model = self.cx.model;
         let cmd = &model.commands[&plan.name];
         let field = rule.field.as_deref()?;
-        let vuid = rule.vuid.as_str();
         let msg = format!("`{field}` is 0");
-        let what = "checks the count is not 0".to_owned();
         if let Some((head, member)) = field.split_once("::") {
             // `pAllocateInfo::commandBufferCount`: a member of a struct parameter.
             let i = cmd.params.iter().position(|p| p.name == head)?;
             if !matches!(plan.params.get(i)?, Param::StructRef { optional: false }) {
                 return None;
             }
-            let a = ident(&param(head));
-            let m = field_ident(member);
             return Some((
-                quote!(if #a.#m == 0 { return Err(fail(#vuid, #msg.into())); }),
-                Vec::new(),
-                what,
+                CheckKind::NonZero {
+                    at: Place::ArgMember(param(head), member.to_owned()),
+                    msg,
+                },
+                "checks the count is not 0".to_owned(),
             ));
         }
         // A count filled in from the slices it sizes.
@@ -624,10 +749,11 @@ impl<'c, 'm> Checker<'c, 'm> {
                 Param::Slice | Param::HandleSlice | Param::Bytes | Param::BytesOut
             )
         })?;
-        let a = ident(&param(&slice.0.name));
         Some((
-            quote!(if #a.is_empty() { return Err(fail(#vuid, #msg.into())); }),
-            Vec::new(),
+            CheckKind::NotEmpty {
+                at: Place::Arg(param(&slice.0.name)),
+                msg,
+            },
             "checks the slice is not empty".into(),
         ))
     }
@@ -636,80 +762,43 @@ impl<'c, 'm> Checker<'c, 'm> {
         &self,
         plan: &Plan,
         rule: &DerivedRule,
-    ) -> Option<(TokenStream, Vec<String>, String)> {
+    ) -> Option<(CheckKind, String)> {
         let cmd = &self.cx.model.commands[&plan.name];
-        let owner = owner_fn(rule.ancestor.as_deref()?)?;
-        let vuid = rule.vuid.as_str();
-        let mut code = Vec::new();
+        let ancestor = rule.ancestor.clone()?;
+        owner_known(&ancestor)?;
+        let mut handles = Vec::new();
         for name in &rule.related {
             let i = cmd.params.iter().position(|p| &p.name == name)?;
             let shape = plan.params.get(i)?;
             if matches!(shape, Param::Dispatch) {
                 continue;
             }
-            let a = ident(&param(name));
-            let msg = format!(
-                "`{name}` does not come from the {} the command is called on",
-                rule.ancestor.as_deref()?
-            );
-            code.push(handle_owned(shape, &a, &owner, vuid, &msg)?);
+            let msg =
+                format!("`{name}` does not come from the {ancestor} the command is called on");
+            handles.push((handle_at(shape, param(name))?, msg));
         }
         Some((
-            quote!(#(#code)*),
-            Vec::new(),
+            CheckKind::OwnedBy { ancestor, handles },
             "checks each handle was created from the device (or instance) the method is called on, so they share it".into(),
         ))
     }
 }
 
-/// The scope method that says whether a handle comes from the ancestor.
-fn owner_fn(ancestor: &str) -> Option<proc_macro2::Ident> {
-    match ancestor {
-        "VkDevice" => Some(ident("owned_by_device")),
-        "VkInstance" => Some(ident("owned_by_instance")),
+/// Whether the scope can tell which objects the ancestor owns: a device or an
+/// instance.
+fn owner_known(ancestor: &str) -> Option<()> {
+    matches!(ancestor, "VkDevice" | "VkInstance").then_some(())
+}
+
+/// Where a wrapper argument of this shape is, for an ownership check.
+fn handle_at(shape: &Param, name: String) -> Option<HandleAt> {
+    match shape {
+        Param::Handle { optional } => Some(HandleAt::Arg {
+            name,
+            optional: *optional,
+        }),
+        Param::HandleSlice => Some(HandleAt::ArgSlice(name)),
         _ => None,
-    }
-}
-
-/// Code that fails unless the wrapper (or wrappers) `a` of `shape` come from the owner.
-fn handle_owned(
-    shape: &Param,
-    a: &proc_macro2::Ident,
-    owner: &proc_macro2::Ident,
-    vuid: &str,
-    msg: &str,
-) -> Option<TokenStream> {
-    Some(match shape {
-        Param::Handle { optional: false } => quote! {
-            if !s.#owner(#a.raw()) { return Err(fail(#vuid, #msg.into())); }
-        },
-        Param::Handle { optional: true } => quote! {
-            if let Some(h) = #a { if !s.#owner(h.raw()) { return Err(fail(#vuid, #msg.into())); } }
-        },
-        Param::HandleSlice => quote! {
-            for h in #a.iter() { if !s.#owner(h.raw()) { return Err(fail(#vuid, #msg.into())); } }
-        },
-        _ => return None,
-    })
-}
-
-/// `graphics,compute` as `vk::QueueFlags`.
-fn queue_flags(queues: &str) -> TokenStream {
-    let flags: Vec<TokenStream> = queues
-        .split(',')
-        .filter_map(|q| match q.trim() {
-            "graphics" => Some(quote!(vk::QueueFlags::GRAPHICS)),
-            "compute" => Some(quote!(vk::QueueFlags::COMPUTE)),
-            "transfer" => Some(quote!(vk::QueueFlags::TRANSFER)),
-            "sparse_binding" => Some(quote!(vk::QueueFlags::SPARSE_BINDING)),
-            "protected" => Some(quote!(vk::QueueFlags::PROTECTED)),
-            _ => None,
-        })
-        .collect();
-    if flags.is_empty() {
-        quote!(vk::QueueFlags::from_raw(u32::MAX))
-    } else {
-        quote!(#(#flags)|*)
     }
 }
 
@@ -750,13 +839,4 @@ pub(crate) fn flag_bits(model: &crate::model::Model, flags: &str) -> Option<Stri
     let t = model.types.get(flags)?;
     let bits = t.bit_values.clone()?;
     (!enum_values(model, &bits).is_empty()).then_some(bits)
-}
-
-/// Whether `code` names the identifier `name` anywhere, groups included.
-pub(crate) fn mentions(code: &TokenStream, name: &str) -> bool {
-    code.clone().into_iter().any(|t| match t {
-        proc_macro2::TokenTree::Ident(i) => i == name,
-        proc_macro2::TokenTree::Group(g) => mentions(&g.stream(), name),
-        _ => false,
-    })
 }
