@@ -404,3 +404,56 @@ pub(crate) unsafe fn two_call<T: Default, C: Copy + Default + TryFrom<usize> + T
         return Ok(items);
     }
 }
+
+/// What every wrapper of a child object (created from a device or an instance, or
+/// allocated from a pool) has besides its construction and parent, written once:
+/// the accessors of its shared state, [`Handle`] and `Deref` to the raw handle. The
+/// generated `handles` module invokes it after each such wrapper, as
+/// `child_handle!(Buffer);`, with the wrapper's `#[cfg]` first where it has one.
+macro_rules! child_handle {
+    ($(#[cfg($cfg:meta)])? $name:ident) => {
+        $(#[cfg($cfg)])?
+        impl $name {
+            /// The object's host synchronization: held by every call that the
+            /// specification says must not use the object from two threads at once.
+            #[inline]
+            #[allow(dead_code)]
+            pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
+                &self.inner.sync
+            }
+            /// Another object this one keeps alive (a swapchain for its images).
+            #[inline]
+            #[allow(dead_code)]
+            pub(crate) fn kept(&self) -> Option<&tuff_runtime::Retained> {
+                self.inner.keep.as_ref()
+            }
+            /// The address of the shared state, which identifies the object.
+            #[inline]
+            pub fn address(&self) -> usize {
+                tuff_runtime::Vrc::as_ptr(&self.inner) as usize
+            }
+            /// This wrapper as a type-erased reference that keeps it alive.
+            #[inline]
+            pub fn retained(&self) -> tuff_runtime::Retained {
+                self.inner.clone()
+            }
+        }
+        $(#[cfg($cfg)])?
+        impl $crate::Handle for $name {
+            type Raw = ash::vk::$name;
+            #[inline]
+            fn raw(&self) -> ash::vk::$name {
+                self.inner.raw
+            }
+        }
+        $(#[cfg($cfg)])?
+        impl core::ops::Deref for $name {
+            type Target = ash::vk::$name;
+            #[inline]
+            fn deref(&self) -> &ash::vk::$name {
+                &self.inner.raw
+            }
+        }
+    };
+}
+pub(crate) use child_handle;

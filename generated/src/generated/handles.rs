@@ -3,7 +3,7 @@
 //! Handle wrappers. Each derefs to its raw `ash::vk` handle, so anything the
 //! wrappers lack can still be called through ash.
 #![allow(clippy::new_without_default, clippy::let_and_return)]
-use crate::{Entry, Handle};
+use crate::{support::child_handle, Entry, Handle};
 use ash::vk;
 use tuff_runtime::{Retained, Vrc, Vutex};
 ///A `VkBuffer`. Clones share it; the last one to go calls `vkDestroyBuffer`, after every submission that used it has completed.
@@ -52,44 +52,8 @@ impl Buffer {
     pub(crate) fn retain_memory(&self, memory: Retained) {
         *self.inner.bound.lock() = Some(memory);
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Buffer {
-    type Raw = vk::Buffer;
-    #[inline]
-    fn raw(&self) -> vk::Buffer {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Buffer {
-    type Target = vk::Buffer;
-    #[inline]
-    fn deref(&self) -> &vk::Buffer {
-        &self.inner.raw
-    }
-}
+child_handle!(Buffer);
 impl Drop for BufferInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -151,44 +115,8 @@ impl BufferView {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for BufferView {
-    type Raw = vk::BufferView;
-    #[inline]
-    fn raw(&self) -> vk::BufferView {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for BufferView {
-    type Target = vk::BufferView;
-    #[inline]
-    fn deref(&self) -> &vk::BufferView {
-        &self.inner.raw
-    }
-}
+child_handle!(BufferView);
 impl Drop for BufferViewInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -287,44 +215,8 @@ impl CommandBuffer {
     pub fn is_executable(&self) -> bool {
         self.inner.uses.is_executable()
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for CommandBuffer {
-    type Raw = vk::CommandBuffer;
-    #[inline]
-    fn raw(&self) -> vk::CommandBuffer {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for CommandBuffer {
-    type Target = vk::CommandBuffer;
-    #[inline]
-    fn deref(&self) -> &vk::CommandBuffer {
-        &self.inner.raw
-    }
-}
+child_handle!(CommandBuffer);
 impl Drop for CommandBufferInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -472,44 +364,8 @@ impl CommandPool {
                 f.contains(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
             })
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for CommandPool {
-    type Raw = vk::CommandPool;
-    #[inline]
-    fn raw(&self) -> vk::CommandPool {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for CommandPool {
-    type Target = vk::CommandPool;
-    #[inline]
-    fn deref(&self) -> &vk::CommandPool {
-        &self.inner.raw
-    }
-}
+child_handle!(CommandPool);
 impl Drop for CommandPoolInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -573,46 +429,8 @@ impl DebugUtilsMessengerEXT {
     pub fn parent(&self) -> &Instance {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-#[cfg(feature = "ext_debug_utils")]
-impl Handle for DebugUtilsMessengerEXT {
-    type Raw = vk::DebugUtilsMessengerEXT;
-    #[inline]
-    fn raw(&self) -> vk::DebugUtilsMessengerEXT {
-        self.inner.raw
-    }
-}
-#[cfg(feature = "ext_debug_utils")]
-impl core::ops::Deref for DebugUtilsMessengerEXT {
-    type Target = vk::DebugUtilsMessengerEXT;
-    #[inline]
-    fn deref(&self) -> &vk::DebugUtilsMessengerEXT {
-        &self.inner.raw
-    }
-}
+child_handle!(#[cfg(feature = "ext_debug_utils")] DebugUtilsMessengerEXT);
 #[cfg(feature = "ext_debug_utils")]
 impl Drop for DebugUtilsMessengerEXTInner {
     fn drop(&mut self) {
@@ -739,44 +557,8 @@ impl DescriptorPool {
     pub(crate) fn has_sets(&self) -> bool {
         Vrc::strong_count(&self.inner.sets) > 1
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for DescriptorPool {
-    type Raw = vk::DescriptorPool;
-    #[inline]
-    fn raw(&self) -> vk::DescriptorPool {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for DescriptorPool {
-    type Target = vk::DescriptorPool;
-    #[inline]
-    fn deref(&self) -> &vk::DescriptorPool {
-        &self.inner.raw
-    }
-}
+child_handle!(DescriptorPool);
 impl Drop for DescriptorPoolInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -850,44 +632,8 @@ impl DescriptorSet {
         let _ = self.inner.token.set(token);
         self
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for DescriptorSet {
-    type Raw = vk::DescriptorSet;
-    #[inline]
-    fn raw(&self) -> vk::DescriptorSet {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for DescriptorSet {
-    type Target = vk::DescriptorSet;
-    #[inline]
-    fn deref(&self) -> &vk::DescriptorSet {
-        &self.inner.raw
-    }
-}
+child_handle!(DescriptorSet);
 impl Drop for DescriptorSetInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -963,44 +709,8 @@ impl DescriptorSetLayout {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for DescriptorSetLayout {
-    type Raw = vk::DescriptorSetLayout;
-    #[inline]
-    fn raw(&self) -> vk::DescriptorSetLayout {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for DescriptorSetLayout {
-    type Target = vk::DescriptorSetLayout;
-    #[inline]
-    fn deref(&self) -> &vk::DescriptorSetLayout {
-        &self.inner.raw
-    }
-}
+child_handle!(DescriptorSetLayout);
 impl Drop for DescriptorSetLayoutInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1081,44 +791,8 @@ impl DescriptorUpdateTemplate {
     pub(crate) fn entries(&self) -> &[vk::DescriptorUpdateTemplateEntry] {
         self.inner.entries.get().map_or(&[], Vec::as_slice)
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for DescriptorUpdateTemplate {
-    type Raw = vk::DescriptorUpdateTemplate;
-    #[inline]
-    fn raw(&self) -> vk::DescriptorUpdateTemplate {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for DescriptorUpdateTemplate {
-    type Target = vk::DescriptorUpdateTemplate;
-    #[inline]
-    fn deref(&self) -> &vk::DescriptorUpdateTemplate {
-        &self.inner.raw
-    }
-}
+child_handle!(DescriptorUpdateTemplate);
 impl Drop for DescriptorUpdateTemplateInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1359,44 +1033,8 @@ impl DeviceMemory {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for DeviceMemory {
-    type Raw = vk::DeviceMemory;
-    #[inline]
-    fn raw(&self) -> vk::DeviceMemory {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for DeviceMemory {
-    type Target = vk::DeviceMemory;
-    #[inline]
-    fn deref(&self) -> &vk::DeviceMemory {
-        &self.inner.raw
-    }
-}
+child_handle!(DeviceMemory);
 impl Drop for DeviceMemoryInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1458,44 +1096,8 @@ impl Event {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Event {
-    type Raw = vk::Event;
-    #[inline]
-    fn raw(&self) -> vk::Event {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Event {
-    type Target = vk::Event;
-    #[inline]
-    fn deref(&self) -> &vk::Event {
-        &self.inner.raw
-    }
-}
+child_handle!(Event);
 impl Drop for EventInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1577,44 +1179,8 @@ impl Fence {
             self.parent().live().ledger().retire(&sub);
         }
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Fence {
-    type Raw = vk::Fence;
-    #[inline]
-    fn raw(&self) -> vk::Fence {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Fence {
-    type Target = vk::Fence;
-    #[inline]
-    fn deref(&self) -> &vk::Fence {
-        &self.inner.raw
-    }
-}
+child_handle!(Fence);
 impl Drop for FenceInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1700,44 +1266,8 @@ impl Framebuffer {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Framebuffer {
-    type Raw = vk::Framebuffer;
-    #[inline]
-    fn raw(&self) -> vk::Framebuffer {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Framebuffer {
-    type Target = vk::Framebuffer;
-    #[inline]
-    fn deref(&self) -> &vk::Framebuffer {
-        &self.inner.raw
-    }
-}
+child_handle!(Framebuffer);
 impl Drop for FramebufferInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1805,44 +1335,8 @@ impl Image {
     pub(crate) fn retain_memory(&self, memory: Retained) {
         *self.inner.bound.lock() = Some(memory);
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Image {
-    type Raw = vk::Image;
-    #[inline]
-    fn raw(&self) -> vk::Image {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Image {
-    type Target = vk::Image;
-    #[inline]
-    fn deref(&self) -> &vk::Image {
-        &self.inner.raw
-    }
-}
+child_handle!(Image);
 impl Drop for ImageInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -1904,44 +1398,8 @@ impl ImageView {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for ImageView {
-    type Raw = vk::ImageView;
-    #[inline]
-    fn raw(&self) -> vk::ImageView {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for ImageView {
-    type Target = vk::ImageView;
-    #[inline]
-    fn deref(&self) -> &vk::ImageView {
-        &self.inner.raw
-    }
-}
+child_handle!(ImageView);
 impl Drop for ImageViewInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2174,44 +1632,8 @@ impl PhysicalDevice {
     pub fn parent(&self) -> &Instance {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for PhysicalDevice {
-    type Raw = vk::PhysicalDevice;
-    #[inline]
-    fn raw(&self) -> vk::PhysicalDevice {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for PhysicalDevice {
-    type Target = vk::PhysicalDevice;
-    #[inline]
-    fn deref(&self) -> &vk::PhysicalDevice {
-        &self.inner.raw
-    }
-}
+child_handle!(PhysicalDevice);
 #[cfg(feature = "runtime_implicit_validations")]
 impl Drop for PhysicalDeviceInner {
     fn drop(&mut self) {
@@ -2259,44 +1681,8 @@ impl Pipeline {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Pipeline {
-    type Raw = vk::Pipeline;
-    #[inline]
-    fn raw(&self) -> vk::Pipeline {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Pipeline {
-    type Target = vk::Pipeline;
-    #[inline]
-    fn deref(&self) -> &vk::Pipeline {
-        &self.inner.raw
-    }
-}
+child_handle!(Pipeline);
 impl Drop for PipelineInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2358,44 +1744,8 @@ impl PipelineCache {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for PipelineCache {
-    type Raw = vk::PipelineCache;
-    #[inline]
-    fn raw(&self) -> vk::PipelineCache {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for PipelineCache {
-    type Target = vk::PipelineCache;
-    #[inline]
-    fn deref(&self) -> &vk::PipelineCache {
-        &self.inner.raw
-    }
-}
+child_handle!(PipelineCache);
 impl Drop for PipelineCacheInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2457,44 +1807,8 @@ impl PipelineLayout {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for PipelineLayout {
-    type Raw = vk::PipelineLayout;
-    #[inline]
-    fn raw(&self) -> vk::PipelineLayout {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for PipelineLayout {
-    type Target = vk::PipelineLayout;
-    #[inline]
-    fn deref(&self) -> &vk::PipelineLayout {
-        &self.inner.raw
-    }
-}
+child_handle!(PipelineLayout);
 impl Drop for PipelineLayoutInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2560,44 +1874,8 @@ impl PrivateDataSlot {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for PrivateDataSlot {
-    type Raw = vk::PrivateDataSlot;
-    #[inline]
-    fn raw(&self) -> vk::PrivateDataSlot {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for PrivateDataSlot {
-    type Target = vk::PrivateDataSlot;
-    #[inline]
-    fn deref(&self) -> &vk::PrivateDataSlot {
-        &self.inner.raw
-    }
-}
+child_handle!(PrivateDataSlot);
 impl Drop for PrivateDataSlotInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2663,44 +1941,8 @@ impl QueryPool {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for QueryPool {
-    type Raw = vk::QueryPool;
-    #[inline]
-    fn raw(&self) -> vk::QueryPool {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for QueryPool {
-    type Target = vk::QueryPool;
-    #[inline]
-    fn deref(&self) -> &vk::QueryPool {
-        &self.inner.raw
-    }
-}
+child_handle!(QueryPool);
 impl Drop for QueryPoolInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2794,44 +2036,8 @@ impl Queue {
         };
         drop(done);
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Queue {
-    type Raw = vk::Queue;
-    #[inline]
-    fn raw(&self) -> vk::Queue {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Queue {
-    type Target = vk::Queue;
-    #[inline]
-    fn deref(&self) -> &vk::Queue {
-        &self.inner.raw
-    }
-}
+child_handle!(Queue);
 impl Drop for QueueInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2892,44 +2098,8 @@ impl RenderPass {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for RenderPass {
-    type Raw = vk::RenderPass;
-    #[inline]
-    fn raw(&self) -> vk::RenderPass {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for RenderPass {
-    type Target = vk::RenderPass;
-    #[inline]
-    fn deref(&self) -> &vk::RenderPass {
-        &self.inner.raw
-    }
-}
+child_handle!(RenderPass);
 impl Drop for RenderPassInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -2991,44 +2161,8 @@ impl Sampler {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Sampler {
-    type Raw = vk::Sampler;
-    #[inline]
-    fn raw(&self) -> vk::Sampler {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Sampler {
-    type Target = vk::Sampler;
-    #[inline]
-    fn deref(&self) -> &vk::Sampler {
-        &self.inner.raw
-    }
-}
+child_handle!(Sampler);
 impl Drop for SamplerInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3090,44 +2224,8 @@ impl SamplerYcbcrConversion {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for SamplerYcbcrConversion {
-    type Raw = vk::SamplerYcbcrConversion;
-    #[inline]
-    fn raw(&self) -> vk::SamplerYcbcrConversion {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for SamplerYcbcrConversion {
-    type Target = vk::SamplerYcbcrConversion;
-    #[inline]
-    fn deref(&self) -> &vk::SamplerYcbcrConversion {
-        &self.inner.raw
-    }
-}
+child_handle!(SamplerYcbcrConversion);
 impl Drop for SamplerYcbcrConversionInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3193,44 +2291,8 @@ impl Semaphore {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for Semaphore {
-    type Raw = vk::Semaphore;
-    #[inline]
-    fn raw(&self) -> vk::Semaphore {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for Semaphore {
-    type Target = vk::Semaphore;
-    #[inline]
-    fn deref(&self) -> &vk::Semaphore {
-        &self.inner.raw
-    }
-}
+child_handle!(Semaphore);
 impl Drop for SemaphoreInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3292,44 +2354,8 @@ impl ShaderModule {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-impl Handle for ShaderModule {
-    type Raw = vk::ShaderModule;
-    #[inline]
-    fn raw(&self) -> vk::ShaderModule {
-        self.inner.raw
-    }
-}
-impl core::ops::Deref for ShaderModule {
-    type Target = vk::ShaderModule;
-    #[inline]
-    fn deref(&self) -> &vk::ShaderModule {
-        &self.inner.raw
-    }
-}
+child_handle!(ShaderModule);
 impl Drop for ShaderModuleInner {
     fn drop(&mut self) {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -3393,46 +2419,8 @@ impl SurfaceKHR {
     pub fn parent(&self) -> &Instance {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-#[cfg(feature = "khr_surface")]
-impl Handle for SurfaceKHR {
-    type Raw = vk::SurfaceKHR;
-    #[inline]
-    fn raw(&self) -> vk::SurfaceKHR {
-        self.inner.raw
-    }
-}
-#[cfg(feature = "khr_surface")]
-impl core::ops::Deref for SurfaceKHR {
-    type Target = vk::SurfaceKHR;
-    #[inline]
-    fn deref(&self) -> &vk::SurfaceKHR {
-        &self.inner.raw
-    }
-}
+child_handle!(#[cfg(feature = "khr_surface")] SurfaceKHR);
 #[cfg(feature = "khr_surface")]
 impl Drop for SurfaceKHRInner {
     fn drop(&mut self) {
@@ -3497,46 +2485,8 @@ impl SwapchainKHR {
     pub fn parent(&self) -> &Device {
         &self.inner.parent
     }
-    /// The object's host synchronization: held by every call that the
-    /// specification says must not use the object from two threads at once.
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-        &self.inner.sync
-    }
-    /// Another object this one keeps alive (a swapchain for its images).
-    #[inline]
-    #[allow(dead_code)]
-    pub(crate) fn kept(&self) -> Option<&Retained> {
-        self.inner.keep.as_ref()
-    }
-    /// The address of the shared state, which identifies the object.
-    #[inline]
-    pub fn address(&self) -> usize {
-        Vrc::as_ptr(&self.inner) as usize
-    }
-    /// This wrapper as a type-erased reference that keeps it alive.
-    #[inline]
-    pub fn retained(&self) -> Retained {
-        self.inner.clone()
-    }
 }
-#[cfg(feature = "khr_swapchain")]
-impl Handle for SwapchainKHR {
-    type Raw = vk::SwapchainKHR;
-    #[inline]
-    fn raw(&self) -> vk::SwapchainKHR {
-        self.inner.raw
-    }
-}
-#[cfg(feature = "khr_swapchain")]
-impl core::ops::Deref for SwapchainKHR {
-    type Target = vk::SwapchainKHR;
-    #[inline]
-    fn deref(&self) -> &vk::SwapchainKHR {
-        &self.inner.raw
-    }
-}
+child_handle!(#[cfg(feature = "khr_swapchain")] SwapchainKHR);
 #[cfg(feature = "khr_swapchain")]
 impl Drop for SwapchainKHRInner {
     fn drop(&mut self) {

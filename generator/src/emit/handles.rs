@@ -88,7 +88,7 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         #![allow(clippy::new_without_default, clippy::let_and_return)]
         // `from_raw` binds the new wrapper before returning it because device objects
         // are listed among the live objects in between; others return it unchanged.
-        use crate::{Entry, Handle};
+        use crate::{support::child_handle, Entry, Handle};
         use ash::vk;
         use tuff_runtime::{Retained, Vrc, Vutex};
         #(#items)*
@@ -682,46 +682,8 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             #descriptor_pool_extra
             #pool_setter
             #extra_fns
-            /// The object's host synchronization: held by every call that the
-            /// specification says must not use the object from two threads at once.
-            #[inline]
-            #[allow(dead_code)]
-            pub(crate) fn host_sync(&self) -> &tuff_runtime::HostSync {
-                &self.inner.sync
-            }
-            /// Another object this one keeps alive (a swapchain for its images).
-            #[inline]
-            #[allow(dead_code)]
-            pub(crate) fn kept(&self) -> Option<&Retained> {
-                self.inner.keep.as_ref()
-            }
-            /// The address of the shared state, which identifies the object.
-            #[inline]
-            pub fn address(&self) -> usize {
-                Vrc::as_ptr(&self.inner) as usize
-            }
-            /// This wrapper as a type-erased reference that keeps it alive.
-            #[inline]
-            pub fn retained(&self) -> Retained {
-                self.inner.clone()
-            }
         }
-        #cfg
-        impl Handle for #id {
-            type Raw = vk::#id;
-            #[inline]
-            fn raw(&self) -> vk::#id {
-                self.inner.raw
-            }
-        }
-        #cfg
-        impl core::ops::Deref for #id {
-            type Target = vk::#id;
-            #[inline]
-            fn deref(&self) -> &vk::#id {
-                &self.inner.raw
-            }
-        }
+        child_handle!(#cfg #id);
         #drop_impl
     }
 }
