@@ -62,10 +62,9 @@ impl Drop for BufferInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -125,10 +124,9 @@ impl Drop for BufferViewInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -231,10 +229,9 @@ impl Drop for CommandBufferInner {
             return;
         };
         self.parent.free_deferred();
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -326,8 +323,8 @@ impl CommandPool {
     pub(crate) fn free_deferred(&self) {
         let raws = core::mem::take(&mut *self.inner.deferred.lock());
         if !raws.is_empty() {
-            // SAFETY: their wrappers are gone and no submission uses them (each waited for
-            // its fence before it went); the caller holds the pool
+            // SAFETY: their wrappers are gone and no submission uses them (each waited for its
+            // fence before it went); the caller holds the pool
             // (VUID-vkFreeCommandBuffers-commandPool-parameter's external synchronization).
             unsafe {
                 (self
@@ -374,10 +371,9 @@ impl Drop for CommandPoolInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -439,10 +435,9 @@ impl Drop for DebugUtilsMessengerEXTInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (match self.parent.ext().ext_debug_utils.as_ref() {
                 Some(t) => t,
@@ -531,8 +526,8 @@ impl DescriptorPool {
     pub(crate) fn free_deferred(&self) {
         let raws = core::mem::take(&mut *self.inner.deferred.lock());
         if !raws.is_empty() {
-            // SAFETY: their wrappers are gone, so nothing records or submits them; the pool
-            // frees sets (only such sets are deferred) and the caller holds it.
+            // SAFETY: their wrappers are gone, so nothing records or submits them; the pool frees
+            // sets (only such sets are deferred) and the caller holds it.
             let _ = unsafe {
                 (self
                     .parent()
@@ -567,10 +562,9 @@ impl Drop for DescriptorPoolInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -650,10 +644,9 @@ impl Drop for DescriptorSetInner {
             return;
         };
         self.parent.free_deferred();
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             let _ = (self
                 .parent
@@ -719,10 +712,9 @@ impl Drop for DescriptorSetLayoutInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -801,10 +793,9 @@ impl Drop for DescriptorUpdateTemplateInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -985,8 +976,8 @@ impl core::ops::Deref for Device {
 impl Drop for DeviceInner {
     fn drop(&mut self) {
         // SAFETY: every child holds a clone of the device, so none is left
-        // (VUID-vkDestroyDevice-device-00378); waiting for idle first means no submission
-        // is still executing (VUID-vkDestroyDevice-device-05137).
+        // (VUID-vkDestroyDevice-device-00378); waiting for idle first means no submission is still
+        // executing (VUID-vkDestroyDevice-device-05137).
         unsafe {
             let _ = (self.fns.fp_v1_0().device_wait_idle)(self.raw);
             (self.fns.fp_v1_0().destroy_device)(self.raw, core::ptr::null());
@@ -1043,10 +1034,9 @@ impl Drop for DeviceMemoryInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1106,10 +1096,9 @@ impl Drop for EventInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1191,9 +1180,9 @@ impl Drop for FenceInner {
         }
         let submission = self.submission.lock().take();
         if let Some(sub) = submission.filter(|s| !s.is_complete()) {
-            // SAFETY: the fence belongs to this device; waiting is always valid. Its
-            // submission may still use what it keeps alive, so the wait comes before those
-            // objects go and before the fence does (VUID-vkDestroyFence-fence-01120).
+            // SAFETY: the fence belongs to this device; waiting is always valid. Its submission may
+            // still use what it keeps alive, so the wait comes before those objects go and before
+            // the fence does (VUID-vkDestroyFence-fence-01120).
             let r = unsafe {
                 (self
                     .parent
@@ -1213,10 +1202,9 @@ impl Drop for FenceInner {
                 core::mem::forget(sub);
             }
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1276,10 +1264,9 @@ impl Drop for FramebufferInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1345,10 +1332,9 @@ impl Drop for ImageInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1408,10 +1394,9 @@ impl Drop for ImageViewInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1691,10 +1676,9 @@ impl Drop for PipelineInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1754,10 +1738,9 @@ impl Drop for PipelineCacheInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1817,10 +1800,9 @@ impl Drop for PipelineLayoutInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1884,10 +1866,9 @@ impl Drop for PrivateDataSlotInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -1951,10 +1932,9 @@ impl Drop for QueryPoolInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -2046,9 +2026,8 @@ impl Drop for QueueInner {
         let _queue = self.sync.lock();
         let held = core::mem::take(&mut *self.unfenced.lock());
         if held.iter().any(|s| !s.is_complete()) {
-            // SAFETY: the queue belongs to this live device. What its fenceless operations
-            // use goes only once they are complete
-            // (VUID-vkDestroySemaphore-semaphore-01137).
+            // SAFETY: the queue belongs to this live device. What its fenceless operations use goes
+            // only once they are complete (VUID-vkDestroySemaphore-semaphore-01137).
             let r = unsafe { (self.parent.fns().fp_v1_0().queue_wait_idle)(self.raw) };
             if r == vk::Result::SUCCESS {
                 self.parent.live().ledger().retire_queue(self.raw);
@@ -2108,10 +2087,9 @@ impl Drop for RenderPassInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -2171,10 +2149,9 @@ impl Drop for SamplerInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -2234,10 +2211,9 @@ impl Drop for SamplerYcbcrConversionInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -2301,10 +2277,9 @@ impl Drop for SemaphoreInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -2364,10 +2339,9 @@ impl Drop for ShaderModuleInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (self
                 .parent
@@ -2429,10 +2403,9 @@ impl Drop for SurfaceKHRInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (match self.parent.ext().khr_surface.as_ref() {
                 Some(t) => t,
@@ -2496,10 +2469,9 @@ impl Drop for SwapchainKHRInner {
         if !self.destroy {
             return;
         }
-        // SAFETY: the last clone is gone, so no host reference is left, and every
-        // submission that used the object held a clone until its fence signalled; it is
-        // destroyed with the parent it came from and no allocator, as it was created
-        // without one.
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
         unsafe {
             (match self.parent.ext().khr_swapchain.as_ref() {
                 Some(t) => t,

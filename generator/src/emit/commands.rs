@@ -282,6 +282,14 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
     let head = quote! {
         //! Commands as methods on the wrappers they dispatch on, one module per core
         //! version and extension.
+        //!
+        //! Every call into Vulkan here is sound for the same reasons, which its
+        //! `// SAFETY:` comment names in short: every handle argument comes from a live
+        //! wrapper (which keeps its parent alive), every pointer from a reference or
+        //! slice that outlives the call, and every count from the length of the slice
+        //! it sizes. A checked method calls its `_unchecked` twin after the checks that
+        //! `runtime_implicit_validations` compiles in; the rules it does not check are
+        //! listed, rule by rule, in `validation.json`.
         #![allow(clippy::too_many_arguments)]
         // Vulkan commands take as many parameters as the registry gives them.
         use crate::handles::*;
@@ -337,10 +345,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         (Level::Device, "VkQueue") => quote!(self.parent()),
         (Level::Device, _) => quote!(self.device()),
     };
-    let (table_expr, ext_check) = match table(model, &plan.name) {
+    let ext_check = match table(model, &plan.name) {
         Some(Table::Core(m)) => {
-            let fp = ident(&format!("fp_v1_{m}"));
-            (Some(quote!(#device_path.fns().#fp())), quote!())
+            // Copied out like an extension's, which keeps the call on one line.
+            let table = ident(&format!("fp_v1_{m}"));
+            quote!(let fp = #device_path.fns().#table().#f;)
         }
         Some(Table::Extension(e)) => {
             let fe = ident(&crate::names::feature(&e));
@@ -348,14 +357,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             let field = f.clone();
             // The function pointer is copied out, so that no borrow of the receiver's
             // table is held across what the call does to the receiver.
-            (
-                None,
-                quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?.#field;),
-            )
+            quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?.#field;)
         }
         None => return (quote!(), quote!(), None),
     };
-    let fallible_ext = !ext_check.is_empty();
+    let fallible_ext = matches!(table(model, &plan.name), Some(Table::Extension(_)));
     let mut args: Vec<TokenStream> = Vec::new(); // method parameters
     let mut pre: Vec<TokenStream> = Vec::new();
     let mut call_args: Vec<TokenStream> = Vec::new();
@@ -906,10 +912,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             cbs
         });
     }
-    let fp = match &table_expr {
-        Some(table) => quote!((#table.#f)),
-        None => quote!(fp),
-    };
+    let fp = quote!(fp);
     let success: Vec<String> = cmd
         .successcodes
         .as_deref()
@@ -937,7 +940,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 vk::Result::SUCCESS
             })
         };
-        let safety = super::safety("the closure calls the enumeration command with the count and the array `two_call` gives it; every other argument comes from a live wrapper or a reference that outlives the call.");
+        let safety = super::safety(
+            "`two_call` hands the command its count and array; other arguments as for any call.",
+        );
         let enumerate = quote! {
             unsafe {
                 crate::support::two_call(|count: &mut #count_ty, items_ptr: *mut #elem| #call)
@@ -974,7 +979,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         quote! {
             #(#pre)*
-            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call, and every count from the length of the slice it sizes.");
+            __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
             let r = unsafe { #fp(#(#call_args)*) };
             if r.as_raw() < 0 {
                 return Err(#error);
@@ -988,7 +993,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let unit_free_ret = (ret_expr.to_string() != "()").then_some(&ret_expr);
         quote! {
             #(#pre)*
-            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call, and every count from the length of the slice it sizes.");
+            __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
             unsafe { #fp(#(#call_args)*) };
             #(#post)*
             #(#retain)*
@@ -999,7 +1004,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         ret_ty = rt;
         quote! {
             #(#pre)*
-            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call.");
+            __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
             let r = unsafe { #fp(#(#call_args)*) };
             #(#retain)*
             r
@@ -1012,7 +1017,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     {
         quote! {
             #(#pre)*
-            __safety!("every handle argument comes from a live wrapper, every pointer from a reference or slice that outlives the call.");
+            __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
             unsafe { #fp(#(#call_args)*) }
         }
     } else {
@@ -1260,7 +1265,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 #host_sync
                 #implicit_block
                 #always_code
-                __safety!("with runtime_implicit_validations the rules the unchecked call leaves to its caller were checked above; without it they are left to the user, as VALIDATION.md lists.");
+                __safety!("checked above under runtime_implicit_validations, else the caller's.");
                 #call
             }
             #[doc = #unchecked_doc]

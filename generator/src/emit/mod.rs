@@ -247,7 +247,7 @@ fn safety_comments(text: &str) -> String {
         out.push_str(&rest[..line_start]);
         let mut line = format!("{indent}// SAFETY:");
         for word in lit.value().split_whitespace() {
-            if line.len() + 1 + word.len() > 92 && !line.trim_end().ends_with(':') {
+            if line.len() + 1 + word.len() > 100 && !line.trim_end().ends_with(':') {
                 out.push_str(&line);
                 out.push('\n');
                 line = format!("{indent}//");
@@ -387,7 +387,7 @@ mod tests {
             "{text}"
         );
         assert!(comments.len() >= 2, "{text}");
-        assert!(comments.iter().all(|l| l.len() <= 92), "{text}");
+        assert!(comments.iter().all(|l| l.len() <= 100), "{text}");
         assert!(text.contains("\"quotes\""), "{text}");
         assert!(syn::parse_file(&text).is_ok(), "{text}");
     }

@@ -214,8 +214,8 @@ pub(crate) fn chain(
     unique: Option<&'static str>,
 ) -> Result<()> {
     let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
-    // SAFETY: chains are built by `push_next` from safe structs, each a live struct that
-    // begins with `sType` and `pNext`.
+    // SAFETY: chains are built by `push_next` from safe structs, each a live struct that begins
+    // with `sType` and `pNext`.
     for base in unsafe { crate::support::chain_nodes(next) } {
         let p = base as *const vk::BaseInStructure<'_>;
         let ty = base.s_type.as_raw();

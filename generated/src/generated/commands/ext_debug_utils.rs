@@ -25,9 +25,7 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
             let r = self.validate_cmd_begin_debug_utils_label_ext();
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_begin_debug_utils_label_ext_unchecked(label_info) }
     }
     /**`vkCmdBeginDebugUtilsLabelEXT` without its dynamic checks.
@@ -48,9 +46,7 @@ The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] chec
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .cmd_begin_debug_utils_label_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
@@ -76,9 +72,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_cmd_end_debug_utils_label_ext();
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
     }
     /**`vkCmdEndDebugUtilsLabelEXT` without its dynamic checks.
@@ -96,9 +90,7 @@ The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .cmd_end_debug_utils_label_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw()) };
         }
         Ok(())
@@ -124,9 +116,7 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
             let r = self.validate_cmd_insert_debug_utils_label_ext();
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
     }
     /**`vkCmdInsertDebugUtilsLabelEXT` without its dynamic checks.
@@ -147,9 +137,7 @@ The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] che
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .cmd_insert_debug_utils_label_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
@@ -179,9 +167,7 @@ The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://reg
             let r = self.validate_create_debug_utils_messenger_ext(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_debug_utils_messenger_ext_unchecked(create_info) }
     }
     /**`vkCreateDebugUtilsMessengerEXT` without its dynamic checks.
@@ -201,9 +187,7 @@ The caller upholds the rules that [`Self::create_debug_utils_messenger_ext`] che
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .create_debug_utils_messenger_ext;
         let mut out = vk::DebugUtilsMessengerEXT::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
@@ -247,9 +231,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.submit_debug_utils_message_ext_unchecked(
                 message_severity,
@@ -277,9 +259,7 @@ The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] check
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .submit_debug_utils_message_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
@@ -316,9 +296,7 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .queue_begin_debug_utils_label_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
@@ -344,9 +322,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .queue_end_debug_utils_label_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw()) };
         }
         Ok(())
@@ -372,9 +348,7 @@ The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://re
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .queue_insert_debug_utils_label_ext;
         {
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
@@ -417,9 +391,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_set_debug_utils_object_name_ext(name_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.set_debug_utils_object_name_ext_unchecked(name_info) }
     }
     /**`vkSetDebugUtilsObjectNameEXT` without its dynamic checks.
@@ -451,9 +423,7 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .set_debug_utils_object_name_ext;
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
@@ -496,9 +466,7 @@ The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://regist
             let r = self.validate_set_debug_utils_object_tag_ext(tag_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.set_debug_utils_object_tag_ext_unchecked(tag_info) }
     }
     /**`vkSetDebugUtilsObjectTagEXT` without its dynamic checks.
@@ -530,9 +498,7 @@ The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] check
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_utils"))?
             .set_debug_utils_object_tag_ext;
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), tag_info as *const DebugUtilsObjectTagInfoEXT<'a> as *const _)
         };

@@ -31,9 +31,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             false,
             "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
         )?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.acquire_next_image2_khr_unchecked(acquire_info) }
     }
     /**`vkAcquireNextImage2KHR` without its dynamic checks.
@@ -53,9 +51,7 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .acquire_next_image2_khr;
         let mut out: u32 = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
@@ -87,9 +83,7 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .get_device_group_present_capabilities_khr;
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
@@ -130,9 +124,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_device_group_surface_present_modes_khr(surface);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
     }
     /**`vkGetDeviceGroupSurfacePresentModesKHR` without its dynamic checks.
@@ -158,9 +150,7 @@ The caller upholds the rules that [`Self::get_device_group_surface_present_modes
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .get_device_group_surface_present_modes_khr;
         let mut out: vk::DeviceGroupPresentModeFlagsKHR = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.raw(), surface.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -199,9 +189,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_get_physical_device_present_rectangles_khr(surface);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDevicePresentRectanglesKHR` without its dynamic checks.
@@ -227,9 +215,8 @@ The caller upholds the rules that [`Self::get_physical_device_present_rectangles
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .get_physical_device_present_rectangles_khr;
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Rect2D| fp(
                 self.raw(),

@@ -26,9 +26,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_get_physical_device_surface_capabilities_khr(surface);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR` without its dynamic checks.
@@ -49,9 +47,7 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
             .get_physical_device_surface_capabilities_khr;
         let mut out: vk::SurfaceCapabilitiesKHR = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.raw(), surface.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -81,9 +77,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_get_physical_device_surface_formats_khr(surface);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR` without its dynamic checks.
@@ -103,9 +97,8 @@ The caller upholds the rules that [`Self::get_physical_device_surface_formats_kh
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
             .get_physical_device_surface_formats_khr;
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -141,9 +134,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_get_physical_device_surface_present_modes_khr(surface);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR` without its dynamic checks.
@@ -163,9 +154,8 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
             .get_physical_device_surface_present_modes_khr;
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
@@ -201,9 +191,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_physical_device_surface_support_khr(surface);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_surface_support_khr_unchecked(
                 queue_family_index,
@@ -230,9 +218,7 @@ The caller upholds the rules that [`Self::get_physical_device_surface_support_kh
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
             .get_physical_device_surface_support_khr;
         let mut out: vk::Bool32 = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.raw(), queue_family_index, surface.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));

@@ -53,9 +53,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 "VUID-vkAcquireNextImageKHR-semaphore-03265",
             )?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.acquire_next_image_khr_unchecked(swapchain, timeout, semaphore, fence)
         }
@@ -92,9 +90,7 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .acquire_next_image_khr;
         let mut out: u32 = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
@@ -146,9 +142,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
             let r = self.validate_create_swapchain_khr(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
     }
     /**`vkCreateSwapchainKHR` without its dynamic checks.
@@ -186,9 +180,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         let mut create_info = *create_info;
         create_info.as_raw_mut().surface = surface.raw();
         let mut out = vk::SwapchainKHR::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), create_info.as_raw(), core::ptr::null(), &mut out)
         };
@@ -218,9 +210,7 @@ The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.k
             let r = self.validate_get_swapchain_images_khr(swapchain);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
     }
     /**`vkGetSwapchainImagesKHR` without its dynamic checks.
@@ -239,9 +229,8 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .get_swapchain_images_khr;
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         let items = unsafe {
             crate::support::two_call(|count: &mut u32, items_ptr: *mut vk::Image| fp(
                 self.raw(),
@@ -332,9 +321,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
             false,
             "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
         )?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_present_khr_unchecked(present_info) }
     }
     /**`vkQueuePresentKHR` without its dynamic checks.
@@ -406,9 +393,7 @@ The caller upholds the rules that [`Self::queue_present_khr`] checks at run time
         self.hold(
             crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()),
         );
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), present_info as *const PresentInfoKHR<'a> as *const _)
         };

@@ -24,9 +24,7 @@ The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.k
             let r = self.validate_create_win32_surface_khr(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_win32_surface_khr_unchecked(create_info) }
     }
     /**`vkCreateWin32SurfaceKHR` without its dynamic checks.
@@ -46,9 +44,7 @@ The caller upholds the rules that [`Self::create_win32_surface_khr`] checks at r
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?
             .create_win32_surface_khr;
         let mut out = vk::SurfaceKHR::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
@@ -87,8 +83,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?
             .get_physical_device_win32_presentation_support_khr;
         Ok({
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), queue_family_index) }
         })
     }

@@ -24,9 +24,7 @@ The rules are on [`vkCreateXcbSurfaceKHR`'s reference page](https://registry.khr
             let r = self.validate_create_xcb_surface_khr(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_xcb_surface_khr_unchecked(create_info) }
     }
     /**`vkCreateXcbSurfaceKHR` without its dynamic checks.
@@ -46,9 +44,7 @@ The caller upholds the rules that [`Self::create_xcb_surface_khr`] checks at run
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?
             .create_xcb_surface_khr;
         let mut out = vk::SurfaceKHR::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),

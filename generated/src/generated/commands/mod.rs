@@ -2,6 +2,14 @@
 
 //! Commands as methods on the wrappers they dispatch on, one module per core
 //! version and extension.
+//!
+//! Every call into Vulkan here is sound for the same reasons, which its
+//! `// SAFETY:` comment names in short: every handle argument comes from a live
+//! wrapper (which keeps its parent alive), every pointer from a reference or
+//! slice that outlives the call, and every count from the length of the slice
+//! it sizes. A checked method calls its `_unchecked` twin after the checks that
+//! `runtime_implicit_validations` compiles in; the rules it does not check are
+//! listed, rule by rule, in `validation.json`.
 #![allow(clippy::too_many_arguments)]
 use crate::handles::*;
 use crate::structs::*;

@@ -30,9 +30,7 @@ The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.
             let r = self.validate_allocate_command_buffers(allocate_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.allocate_command_buffers_unchecked(command_pool, allocate_info) }
     }
     /**`vkAllocateCommandBuffers` without its dynamic checks.
@@ -52,25 +50,15 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        let fp = self.fns().fp_v1_0().allocate_command_buffers;
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().command_pool = command_pool.raw();
         let mut out = vec![
             vk::CommandBuffer::null(); allocate_info.as_raw().command_buffer_count as
             usize
         ];
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .allocate_command_buffers)(
-                self.raw(),
-                allocate_info.as_raw(),
-                out.as_mut_ptr(),
-            )
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), allocate_info.as_raw(), out.as_mut_ptr()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -117,9 +105,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
             let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.allocate_descriptor_sets_unchecked(descriptor_pool, allocate_info)
         }
@@ -141,25 +127,15 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        let fp = self.fns().fp_v1_0().allocate_descriptor_sets;
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().descriptor_pool = descriptor_pool.raw();
         let mut out = vec![
             vk::DescriptorSet::null(); allocate_info.as_raw().descriptor_set_count as
             usize
         ];
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .allocate_descriptor_sets)(
-                self.raw(),
-                allocate_info.as_raw(),
-                out.as_mut_ptr(),
-            )
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), allocate_info.as_raw(), out.as_mut_ptr()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -195,9 +171,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_allocate_memory(allocate_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.allocate_memory_unchecked(allocate_info) }
     }
     /**`vkAllocateMemory` without its dynamic checks.
@@ -210,15 +184,11 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
         &self,
         allocate_info: &MemoryAllocateInfo<'a>,
     ) -> Result<DeviceMemory> {
+        let fp = self.fns().fp_v1_0().allocate_memory;
         let mut out = vk::DeviceMemory::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .allocate_memory)(
+            fp(
                 self.raw(),
                 allocate_info as *const MemoryAllocateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -270,9 +240,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
             let r = self.validate_bind_buffer_memory(buffer, memory);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
     }
     /**`vkBindBufferMemory` without its dynamic checks.
@@ -293,20 +261,9 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
             syncs.push(buffer.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .bind_buffer_memory)(
-                self.raw(),
-                buffer.raw(),
-                memory.raw(),
-                memory_offset,
-            )
-        };
+        let fp = self.fns().fp_v1_0().bind_buffer_memory;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), buffer.raw(), memory.raw(), memory_offset) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -344,9 +301,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
             let r = self.validate_bind_image_memory(image, memory);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
     }
     /**`vkBindImageMemory` without its dynamic checks.
@@ -367,15 +322,9 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
             syncs.push(image.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .bind_image_memory)(self.raw(), image.raw(), memory.raw(), memory_offset)
-        };
+        let fp = self.fns().fp_v1_0().bind_image_memory;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), image.raw(), memory.raw(), memory_offset) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -404,9 +353,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_buffer(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_buffer_unchecked(create_info) }
     }
     /**`vkCreateBuffer` without its dynamic checks.
@@ -419,15 +366,11 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time (th
         &self,
         create_info: &BufferCreateInfo<'a>,
     ) -> Result<Buffer> {
+        let fp = self.fns().fp_v1_0().create_buffer;
         let mut out = vk::Buffer::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_buffer)(
+            fp(
                 self.raw(),
                 create_info as *const BufferCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -459,9 +402,7 @@ The rules are on [`vkCreateBufferView`'s reference page](https://registry.khrono
             let r = self.validate_create_buffer_view(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_buffer_view_unchecked(create_info) }
     }
     /**`vkCreateBufferView` without its dynamic checks.
@@ -474,15 +415,11 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
         &self,
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<BufferView> {
+        let fp = self.fns().fp_v1_0().create_buffer_view;
         let mut out = vk::BufferView::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_buffer_view)(
+            fp(
                 self.raw(),
                 create_info as *const BufferViewCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -499,8 +436,8 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::buffer_view_create_info(
                             create_info.as_raw(),
@@ -537,9 +474,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_command_pool(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_command_pool_unchecked(create_info) }
     }
     /**`vkCreateCommandPool` without its dynamic checks.
@@ -552,15 +487,11 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
         &self,
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
+        let fp = self.fns().fp_v1_0().create_command_pool;
         let mut out = vk::CommandPool::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_command_pool)(
+            fp(
                 self.raw(),
                 create_info as *const CommandPoolCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -607,9 +538,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
     }
     /**`vkCreateComputePipelines` without its dynamic checks.
@@ -623,15 +552,11 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        let fp = self.fns().fp_v1_0().create_compute_pipelines;
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_compute_pipelines)(
+            fp(
                 self.raw(),
                 pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
                 create_infos.len() as u32,
@@ -653,8 +578,8 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
                     {
                         let live = self.live();
                         let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        // SAFETY: the safe info stores every array with its length and
-                        // chains only structs pushed through `push_next`.
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::compute_pipeline_create_info(
                                 info.as_raw(),
@@ -693,9 +618,7 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
             let r = self.validate_create_descriptor_pool(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_descriptor_pool_unchecked(create_info) }
     }
     /**`vkCreateDescriptorPool` without its dynamic checks.
@@ -708,15 +631,11 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
         &self,
         create_info: &DescriptorPoolCreateInfo<'a>,
     ) -> Result<DescriptorPool> {
+        let fp = self.fns().fp_v1_0().create_descriptor_pool;
         let mut out = vk::DescriptorPool::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_descriptor_pool)(
+            fp(
                 self.raw(),
                 create_info as *const DescriptorPoolCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -748,9 +667,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
             let r = self.validate_create_descriptor_set_layout(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
     }
     /**`vkCreateDescriptorSetLayout` without its dynamic checks.
@@ -763,15 +680,11 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<DescriptorSetLayout> {
+        let fp = self.fns().fp_v1_0().create_descriptor_set_layout;
         let mut out = vk::DescriptorSetLayout::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_descriptor_set_layout)(
+            fp(
                 self.raw(),
                 create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -788,8 +701,8 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::descriptor_set_layout_create_info(
                             create_info.as_raw(),
@@ -823,9 +736,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_event(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_event_unchecked(create_info) }
     }
     /**`vkCreateEvent` without its dynamic checks.
@@ -838,15 +749,11 @@ The caller upholds the rules that [`Self::create_event`] checks at run time (tho
         &self,
         create_info: &EventCreateInfo<'a>,
     ) -> Result<Event> {
+        let fp = self.fns().fp_v1_0().create_event;
         let mut out = vk::Event::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_event)(
+            fp(
                 self.raw(),
                 create_info as *const EventCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -875,9 +782,7 @@ The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org
             let r = self.validate_create_fence(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_fence_unchecked(create_info) }
     }
     /**`vkCreateFence` without its dynamic checks.
@@ -890,15 +795,11 @@ The caller upholds the rules that [`Self::create_fence`] checks at run time (tho
         &self,
         create_info: &FenceCreateInfo<'a>,
     ) -> Result<Fence> {
+        let fp = self.fns().fp_v1_0().create_fence;
         let mut out = vk::Fence::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_fence)(
+            fp(
                 self.raw(),
                 create_info as *const FenceCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -932,9 +833,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_framebuffer(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_framebuffer_unchecked(create_info) }
     }
     /**`vkCreateFramebuffer` without its dynamic checks.
@@ -947,15 +846,11 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
         &self,
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<Framebuffer> {
+        let fp = self.fns().fp_v1_0().create_framebuffer;
         let mut out = vk::Framebuffer::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_framebuffer)(
+            fp(
                 self.raw(),
                 create_info as *const FramebufferCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -972,8 +867,8 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::framebuffer_create_info(
                             create_info.as_raw(),
@@ -1015,9 +910,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 .validate_create_graphics_pipelines(pipeline_cache, create_infos);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
     }
     /**`vkCreateGraphicsPipelines` without its dynamic checks.
@@ -1031,15 +924,11 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
+        let fp = self.fns().fp_v1_0().create_graphics_pipelines;
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_graphics_pipelines)(
+            fp(
                 self.raw(),
                 pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
                 create_infos.len() as u32,
@@ -1061,8 +950,8 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
                     {
                         let live = self.live();
                         let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        // SAFETY: the safe info stores every array with its length and
-                        // chains only structs pushed through `push_next`.
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::graphics_pipeline_create_info(
                                 info.as_raw(),
@@ -1100,9 +989,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_image(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_image_unchecked(create_info) }
     }
     /**`vkCreateImage` without its dynamic checks.
@@ -1115,15 +1002,11 @@ The caller upholds the rules that [`Self::create_image`] checks at run time (tho
         &self,
         create_info: &ImageCreateInfo<'a>,
     ) -> Result<Image> {
+        let fp = self.fns().fp_v1_0().create_image;
         let mut out = vk::Image::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_image)(
+            fp(
                 self.raw(),
                 create_info as *const ImageCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1140,8 +1023,8 @@ The caller upholds the rules that [`Self::create_image`] checks at run time (tho
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::image_create_info(
                             create_info.as_raw(),
@@ -1176,9 +1059,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
             let r = self.validate_create_image_view(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_image_view_unchecked(create_info) }
     }
     /**`vkCreateImageView` without its dynamic checks.
@@ -1191,15 +1072,11 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
         &self,
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<ImageView> {
+        let fp = self.fns().fp_v1_0().create_image_view;
         let mut out = vk::ImageView::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_image_view)(
+            fp(
                 self.raw(),
                 create_info as *const ImageViewCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1216,8 +1093,8 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::image_view_create_info(
                             create_info.as_raw(),
@@ -1252,9 +1129,7 @@ The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khr
             let r = self.validate_create_pipeline_cache(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_pipeline_cache_unchecked(create_info) }
     }
     /**`vkCreatePipelineCache` without its dynamic checks.
@@ -1267,15 +1142,11 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
         &self,
         create_info: &PipelineCacheCreateInfo<'a>,
     ) -> Result<PipelineCache> {
+        let fp = self.fns().fp_v1_0().create_pipeline_cache;
         let mut out = vk::PipelineCache::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_pipeline_cache)(
+            fp(
                 self.raw(),
                 create_info as *const PipelineCacheCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1307,9 +1178,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
             let r = self.validate_create_pipeline_layout(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
     }
     /**`vkCreatePipelineLayout` without its dynamic checks.
@@ -1322,15 +1191,11 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
         &self,
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<PipelineLayout> {
+        let fp = self.fns().fp_v1_0().create_pipeline_layout;
         let mut out = vk::PipelineLayout::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_pipeline_layout)(
+            fp(
                 self.raw(),
                 create_info as *const PipelineLayoutCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1347,8 +1212,8 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::pipeline_layout_create_info(
                             create_info.as_raw(),
@@ -1383,9 +1248,7 @@ The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos
             let r = self.validate_create_query_pool(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_query_pool_unchecked(create_info) }
     }
     /**`vkCreateQueryPool` without its dynamic checks.
@@ -1398,15 +1261,11 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
         &self,
         create_info: &QueryPoolCreateInfo<'a>,
     ) -> Result<QueryPool> {
+        let fp = self.fns().fp_v1_0().create_query_pool;
         let mut out = vk::QueryPool::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_query_pool)(
+            fp(
                 self.raw(),
                 create_info as *const QueryPoolCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1438,9 +1297,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
             let r = self.validate_create_render_pass(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_render_pass_unchecked(create_info) }
     }
     /**`vkCreateRenderPass` without its dynamic checks.
@@ -1453,15 +1310,11 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
         &self,
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
+        let fp = self.fns().fp_v1_0().create_render_pass;
         let mut out = vk::RenderPass::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_render_pass)(
+            fp(
                 self.raw(),
                 create_info as *const RenderPassCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1495,9 +1348,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_sampler(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_sampler_unchecked(create_info) }
     }
     /**`vkCreateSampler` without its dynamic checks.
@@ -1510,15 +1361,11 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
         &self,
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<Sampler> {
+        let fp = self.fns().fp_v1_0().create_sampler;
         let mut out = vk::Sampler::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_sampler)(
+            fp(
                 self.raw(),
                 create_info as *const SamplerCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1535,8 +1382,8 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::sampler_create_info(
                             create_info.as_raw(),
@@ -1571,9 +1418,7 @@ The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos
             let r = self.validate_create_semaphore(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_semaphore_unchecked(create_info) }
     }
     /**`vkCreateSemaphore` without its dynamic checks.
@@ -1586,15 +1431,11 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
         &self,
         create_info: &SemaphoreCreateInfo<'a>,
     ) -> Result<Semaphore> {
+        let fp = self.fns().fp_v1_0().create_semaphore;
         let mut out = vk::Semaphore::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_semaphore)(
+            fp(
                 self.raw(),
                 create_info as *const SemaphoreCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1634,9 +1475,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_shader_module(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_shader_module_unchecked(create_info) }
     }
     /**`vkCreateShaderModule` without its dynamic checks.
@@ -1649,15 +1488,11 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
         &self,
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<ShaderModule> {
+        let fp = self.fns().fp_v1_0().create_shader_module;
         let mut out = vk::ShaderModule::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_shader_module)(
+            fp(
                 self.raw(),
                 create_info as *const ShaderModuleCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -1684,10 +1519,9 @@ The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.
             syncs.extend(self.live().queue_syncs());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe { (self.fns().fp_v1_0().device_wait_idle)(self.raw()) };
+        let fp = self.fns().fp_v1_0().device_wait_idle;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -1713,9 +1547,7 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
             let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
     }
     /**`vkFlushMappedMemoryRanges` without its dynamic checks.
@@ -1728,18 +1560,10 @@ The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_0().flush_mapped_memory_ranges;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .flush_mapped_memory_ranges)(
-                self.raw(),
-                memory_ranges.len() as u32,
-                memory_ranges.as_ptr().cast(),
-            )
+            fp(self.raw(), memory_ranges.len() as u32, memory_ranges.as_ptr().cast())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -1766,9 +1590,7 @@ The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://regi
             let r = self.validate_get_buffer_memory_requirements(buffer);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
     }
     /**`vkGetBufferMemoryRequirements` without its dynamic checks.
@@ -1781,16 +1603,10 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements`] check
         &self,
         buffer: &Buffer,
     ) -> vk::MemoryRequirements {
+        let fp = self.fns().fp_v1_0().get_buffer_memory_requirements;
         let mut out: vk::MemoryRequirements = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_buffer_memory_requirements)(self.raw(), buffer.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), buffer.raw(), &mut out) };
         out
     }
     /**`vkGetDeviceMemoryCommitment`
@@ -1815,9 +1631,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_device_memory_commitment(memory);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
     }
     /**`vkGetDeviceMemoryCommitment` without its dynamic checks.
@@ -1830,16 +1644,10 @@ The caller upholds the rules that [`Self::get_device_memory_commitment`] checks 
         &self,
         memory: &DeviceMemory,
     ) -> vk::DeviceSize {
+        let fp = self.fns().fp_v1_0().get_device_memory_commitment;
         let mut out: vk::DeviceSize = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_device_memory_commitment)(self.raw(), memory.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), memory.raw(), &mut out) };
         out
     }
     /**`vkGetDeviceQueue`
@@ -1854,16 +1662,10 @@ The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
+        let fp = self.fns().fp_v1_0().get_device_queue;
         let mut out = vk::Queue::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_device_queue)(self.raw(), queue_family_index, queue_index, &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), queue_family_index, queue_index, &mut out) };
         {
             let queue = Queue::from_raw(out, self, None, true);
             #[cfg(feature = "runtime_implicit_validations")]
@@ -1892,9 +1694,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_event_status(event);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_event_status_unchecked(event) }
     }
     /**`vkGetEventStatus` without its dynamic checks.
@@ -1907,12 +1707,9 @@ The caller upholds the rules that [`Self::get_event_status`] checks at run time:
         &self,
         event: &Event,
     ) -> Result<vk::Result> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self.fns().fp_v1_0().get_event_status)(self.raw(), event.raw())
-        };
+        let fp = self.fns().fp_v1_0().get_event_status;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -1934,9 +1731,7 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
             let r = self.validate_get_fence_status(fence);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_fence_status_unchecked(fence) }
     }
     /**`vkGetFenceStatus` without its dynamic checks.
@@ -1949,12 +1744,9 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
         &self,
         fence: &Fence,
     ) -> Result<vk::Result> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self.fns().fp_v1_0().get_fence_status)(self.raw(), fence.raw())
-        };
+        let fp = self.fns().fp_v1_0().get_fence_status;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), fence.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -1985,9 +1777,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_get_image_memory_requirements(image);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
     }
     /**`vkGetImageMemoryRequirements` without its dynamic checks.
@@ -2000,16 +1790,10 @@ The caller upholds the rules that [`Self::get_image_memory_requirements`] checks
         &self,
         image: &Image,
     ) -> vk::MemoryRequirements {
+        let fp = self.fns().fp_v1_0().get_image_memory_requirements;
         let mut out: vk::MemoryRequirements = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_image_memory_requirements)(self.raw(), image.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), image.raw(), &mut out) };
         out
     }
     /**`vkGetImageSparseMemoryRequirements`
@@ -2033,9 +1817,7 @@ The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https:/
             let r = self.validate_get_image_sparse_memory_requirements(image);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
     }
     /**`vkGetImageSparseMemoryRequirements` without its dynamic checks.
@@ -2048,23 +1830,15 @@ The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`]
         &self,
         image: &Image,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_0().get_image_sparse_memory_requirements;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::SparseImageMemoryRequirements|
             {
-                (self
-                    .fns()
-                    .fp_v1_0()
-                    .get_image_sparse_memory_requirements)(
-                    self.raw(),
-                    image.raw(),
-                    count,
-                    items_ptr.cast(),
-                );
+                fp(self.raw(), image.raw(), count, items_ptr.cast());
                 vk::Result::SUCCESS
             })
         }
@@ -2093,9 +1867,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
             let r = self.validate_get_image_subresource_layout(image, subresource);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
     }
     /**`vkGetImageSubresourceLayout` without its dynamic checks.
@@ -2109,15 +1881,11 @@ The caller upholds the rules that [`Self::get_image_subresource_layout`] checks 
         image: &Image,
         subresource: &vk::ImageSubresource,
     ) -> vk::SubresourceLayout {
+        let fp = self.fns().fp_v1_0().get_image_subresource_layout;
         let mut out: vk::SubresourceLayout = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_image_subresource_layout)(
+            fp(
                 self.raw(),
                 image.raw(),
                 subresource as *const vk::ImageSubresource as *const _,
@@ -2147,9 +1915,7 @@ The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.kh
             let r = self.validate_get_pipeline_cache_data(pipeline_cache);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
     }
     /**`vkGetPipelineCacheData` without its dynamic checks.
@@ -2162,14 +1928,11 @@ The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at ru
         &self,
         pipeline_cache: &PipelineCache,
     ) -> Result<Vec<u8>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_0().get_pipeline_cache_data;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
-            crate::support::two_call(|count: &mut usize, items_ptr: *mut u8| (self
-                .fns()
-                .fp_v1_0()
-                .get_pipeline_cache_data)(
+            crate::support::two_call(|count: &mut usize, items_ptr: *mut u8| fp(
                 self.raw(),
                 pipeline_cache.raw(),
                 count,
@@ -2206,9 +1969,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
             let r = self.validate_get_query_pool_results(query_pool, data, flags);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_query_pool_results_unchecked(
                 query_pool,
@@ -2235,14 +1996,10 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) -> Result<vk::Result> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_0().get_query_pool_results;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_query_pool_results)(
+            fp(
                 self.raw(),
                 query_pool.raw(),
                 first_query,
@@ -2278,9 +2035,7 @@ The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registr
             let r = self.validate_get_render_area_granularity(render_pass);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
     }
     /**`vkGetRenderAreaGranularity` without its dynamic checks.
@@ -2293,16 +2048,10 @@ The caller upholds the rules that [`Self::get_render_area_granularity`] checks a
         &self,
         render_pass: &RenderPass,
     ) -> vk::Extent2D {
+        let fp = self.fns().fp_v1_0().get_render_area_granularity;
         let mut out: vk::Extent2D = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .get_render_area_granularity)(self.raw(), render_pass.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), render_pass.raw(), &mut out) };
         out
     }
     /**`vkInvalidateMappedMemoryRanges`
@@ -2324,9 +2073,7 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
             let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
     }
     /**`vkInvalidateMappedMemoryRanges` without its dynamic checks.
@@ -2339,18 +2086,10 @@ The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] chec
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_0().invalidate_mapped_memory_ranges;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .invalidate_mapped_memory_ranges)(
-                self.raw(),
-                memory_ranges.len() as u32,
-                memory_ranges.as_ptr().cast(),
-            )
+            fp(self.raw(), memory_ranges.len() as u32, memory_ranges.as_ptr().cast())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -2388,9 +2127,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
     }
     /**`vkMergePipelineCaches` without its dynamic checks.
@@ -2410,23 +2147,14 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
             syncs.push(dst_cache.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        let fp = self.fns().fp_v1_0().merge_pipeline_caches;
         let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .merge_pipeline_caches)(
-                self.raw(),
-                dst_cache.raw(),
-                src_caches.len() as u32,
-                src_caches.as_ptr(),
-            )
+            fp(self.raw(), dst_cache.raw(), src_caches.len() as u32, src_caches.as_ptr())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -2463,9 +2191,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             r?;
         }
         crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
     }
     /**`vkResetCommandPool` without its dynamic checks.
@@ -2485,15 +2211,9 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .reset_command_pool)(self.raw(), command_pool.raw(), flags)
-        };
+        let fp = self.fns().fp_v1_0().reset_command_pool;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), command_pool.raw(), flags) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -2538,9 +2258,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                     .into(),
             });
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
     }
     /**`vkResetDescriptorPool` without its dynamic checks.
@@ -2560,15 +2278,9 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .reset_descriptor_pool)(self.raw(), descriptor_pool.raw(), flags)
-        };
+        let fp = self.fns().fp_v1_0().reset_descriptor_pool;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), descriptor_pool.raw(), flags) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -2599,9 +2311,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             let r = self.validate_reset_event(event);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_event_unchecked(event) }
     }
     /**`vkResetEvent` without its dynamic checks.
@@ -2617,10 +2327,9 @@ The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUI
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe { (self.fns().fp_v1_0().reset_event)(self.raw(), event.raw()) };
+        let fp = self.fns().fp_v1_0().reset_event;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -2661,9 +2370,7 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
                 });
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_fences_unchecked(fences) }
     }
     /**`vkResetFences` without its dynamic checks.
@@ -2681,19 +2388,13 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
             }
             tuff_runtime::lock_all(syncs)
         };
+        let fp = self.fns().fp_v1_0().reset_fences;
         let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .reset_fences)(self.raw(), fences.len() as u32, fences.as_ptr())
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), fences.len() as u32, fences.as_ptr()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -2723,9 +2424,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_set_event(event);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.set_event_unchecked(event) }
     }
     /**`vkSetEvent` without its dynamic checks.
@@ -2741,10 +2440,9 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe { (self.fns().fp_v1_0().set_event)(self.raw(), event.raw()) };
+        let fp = self.fns().fp_v1_0().set_event;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -2780,9 +2478,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
                 descriptor_writes.len(),
             )
         })?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
         };
@@ -2799,14 +2495,10 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_0().update_descriptor_sets;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .update_descriptor_sets)(
+            fp(
                 self.raw(),
                 descriptor_writes.len() as u32,
                 descriptor_writes.as_ptr().cast(),
@@ -2814,9 +2506,9 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
                 descriptor_copies.as_ptr().cast(),
             )
         };
-        // SAFETY: the safe structs are transparent over ash's, their setters keep every
-        // array that is set as long as the count, and `check_writes` refused a write whose
-        // type selects an array that is not set.
+        // SAFETY: the safe structs are transparent over ash's, their setters keep every array that
+        // is set as long as the count, and `check_writes` refused a write whose type selects an
+        // array that is not set.
         unsafe {
             self.live()
                 .write_sets(
@@ -2853,9 +2545,7 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
             let r = self.validate_wait_for_fences(fences);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
     }
     /**`vkWaitForFences` without its dynamic checks.
@@ -2870,25 +2560,15 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
         wait_all: vk::Bool32,
         timeout: u64,
     ) -> Result<vk::Result> {
+        let fp = self.fns().fp_v1_0().wait_for_fences;
         let fences_w: &[&Fence] = fences;
         let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .wait_for_fences)(
-                self.raw(),
-                fences.len() as u32,
-                fences.as_ptr(),
-                wait_all,
-                timeout,
-            )
+            fp(self.raw(), fences.len() as u32, fences.as_ptr(), wait_all, timeout)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -2932,9 +2612,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_device(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_device_unchecked(create_info) }
     }
     /**`vkCreateDevice` without its dynamic checks.
@@ -2947,16 +2625,11 @@ The caller upholds the rules that [`Self::create_device`] checks at run time (th
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
+        let fp = self.parent().fns().fp_v1_0().create_device;
         let mut out = vk::Device::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .create_device)(
+            fp(
                 self.raw(),
                 create_info as *const DeviceCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -2989,18 +2662,14 @@ The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https
         &self,
         layer_name: Option<&core::ffi::CStr>,
     ) -> Result<Vec<vk::ExtensionProperties>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.parent().fns().fp_v1_0().enumerate_device_extension_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::ExtensionProperties|
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .enumerate_device_extension_properties)(
+            fp(
                 self.raw(),
                 layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
                 count,
@@ -3019,18 +2688,14 @@ The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://r
 - `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.parent().fns().fp_v1_0().enumerate_device_layer_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::LayerProperties|
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .enumerate_device_layer_properties)(self.raw(), count, items_ptr.cast()))
+            fp(self.raw(), count, items_ptr.cast()))
         }
     }
     /**`vkGetPhysicalDeviceFeatures`
@@ -3043,17 +2708,10 @@ The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://regist
 - `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
+        let fp = self.parent().fns().fp_v1_0().get_physical_device_features;
         let mut out: vk::PhysicalDeviceFeatures = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_features)(self.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), &mut out) };
         out
     }
     /**`vkGetPhysicalDeviceFormatProperties`
@@ -3075,9 +2733,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
             let r = self.validate_get_physical_device_format_properties(format);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
     }
     /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
@@ -3090,17 +2746,10 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties`
         &self,
         format: vk::Format,
     ) -> vk::FormatProperties {
+        let fp = self.parent().fns().fp_v1_0().get_physical_device_format_properties;
         let mut out: vk::FormatProperties = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_format_properties)(self.raw(), format, &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), format, &mut out) };
         out
     }
     /**`vkGetPhysicalDeviceImageFormatProperties`
@@ -3140,9 +2789,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_image_format_properties_unchecked(
                 format,
@@ -3167,25 +2814,14 @@ The caller upholds the rules that [`Self::get_physical_device_image_format_prope
         usage: vk::ImageUsageFlags,
         flags: vk::ImageCreateFlags,
     ) -> Result<vk::ImageFormatProperties> {
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_0()
+            .get_physical_device_image_format_properties;
         let mut out: vk::ImageFormatProperties = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_image_format_properties)(
-                self.raw(),
-                format,
-                ty,
-                tiling,
-                usage,
-                flags,
-                &mut out,
-            )
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), format, ty, tiling, usage, flags, &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -3203,17 +2839,10 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https:
     pub fn get_physical_device_memory_properties(
         &self,
     ) -> vk::PhysicalDeviceMemoryProperties {
+        let fp = self.parent().fns().fp_v1_0().get_physical_device_memory_properties;
         let mut out: vk::PhysicalDeviceMemoryProperties = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_memory_properties)(self.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), &mut out) };
         out
     }
     /**`vkGetPhysicalDeviceProperties`
@@ -3226,17 +2855,10 @@ The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://regi
 - `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
+        let fp = self.parent().fns().fp_v1_0().get_physical_device_properties;
         let mut out: vk::PhysicalDeviceProperties = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .get_physical_device_properties)(self.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), &mut out) };
         out
     }
     /**`vkGetPhysicalDeviceQueueFamilyProperties`
@@ -3252,23 +2874,19 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
     pub fn get_physical_device_queue_family_properties(
         &self,
     ) -> Result<Vec<vk::QueueFamilyProperties>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_0()
+            .get_physical_device_queue_family_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::QueueFamilyProperties|
             {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .get_physical_device_queue_family_properties)(
-                    self.raw(),
-                    count,
-                    items_ptr.cast(),
-                );
+                fp(self.raw(), count, items_ptr.cast());
                 vk::Result::SUCCESS
             })
         }
@@ -3311,9 +2929,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_sparse_image_format_properties_unchecked(
                 format,
@@ -3338,19 +2954,19 @@ The caller upholds the rules that [`Self::get_physical_device_sparse_image_forma
         usage: vk::ImageUsageFlags,
         tiling: vk::ImageTiling,
     ) -> Result<Vec<vk::SparseImageFormatProperties>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_0()
+            .get_physical_device_sparse_image_format_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::SparseImageFormatProperties|
             {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_0()
-                    .get_physical_device_sparse_image_format_properties)(
+                fp(
                     self.raw(),
                     format,
                     ty,
@@ -3387,9 +3003,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_instance(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_instance_unchecked(create_info) }
     }
     /**`vkCreateInstance` without its dynamic checks.
@@ -3402,15 +3016,11 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time (
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
+        let fp = self.fns().fp_v1_0().create_instance;
         let mut out = vk::Instance::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_0()
-                .create_instance)(
+            fp(
                 create_info as *const InstanceCreateInfo<'a> as *const _,
                 core::ptr::null(),
                 &mut out,
@@ -3442,17 +3052,14 @@ The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](htt
         &self,
         layer_name: Option<&core::ffi::CStr>,
     ) -> Result<Vec<vk::ExtensionProperties>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_0().enumerate_instance_extension_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::ExtensionProperties|
-            (self
-                .fns()
-                .fp_v1_0()
-                .enumerate_instance_extension_properties)(
+            fp(
                 layer_name.map_or(core::ptr::null(), |s| s.as_ptr()),
                 count,
                 items_ptr.cast(),
@@ -3471,17 +3078,14 @@ The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https:/
     pub fn enumerate_instance_layer_properties(
         &self,
     ) -> Result<Vec<vk::LayerProperties>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_0().enumerate_instance_layer_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::LayerProperties|
-            (self
-                .fns()
-                .fp_v1_0()
-                .enumerate_instance_layer_properties)(count, items_ptr.cast()))
+            fp(count, items_ptr.cast()))
         }
     }
 }
@@ -3497,17 +3101,14 @@ The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registr
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_physical_devices(&self) -> Result<Vec<PhysicalDevice>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_0().enumerate_physical_devices;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         let items = unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::PhysicalDevice|
-            (self
-                .fns()
-                .fp_v1_0()
-                .enumerate_physical_devices)(self.raw(), count, items_ptr.cast()))
+            fp(self.raw(), count, items_ptr.cast()))
         }?;
         Ok(
             items
@@ -3554,8 +3155,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         crate::submission::check_fence(fence, &crate::submission::BIND_SPARSE)?;
         for b in bind_info {
             let b = b.as_raw();
-            // SAFETY: the safe structs store each array with its length and chain only
-            // structs pushed through `push_next`.
+            // SAFETY: the safe structs store each array with its length and chain only structs
+            // pushed through `push_next`.
             unsafe {
                 crate::submission::check_timeline_batch(
                     self.parent().live(),
@@ -3572,9 +3173,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 )
             }?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
     }
     /**`vkQueueBindSparse` without its dynamic checks.
@@ -3595,15 +3194,10 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_0().queue_bind_sparse;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .queue_bind_sparse)(
+            fp(
                 self.raw(),
                 bind_info.len() as u32,
                 bind_info.as_ptr().cast(),
@@ -3692,8 +3286,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
         )?;
         for b in submits {
             let b = b.as_raw();
-            // SAFETY: the safe structs store each array with its length and chain only
-            // structs pushed through `push_next`.
+            // SAFETY: the safe structs store each array with its length and chain only structs
+            // pushed through `push_next`.
             unsafe {
                 crate::submission::check_timeline_batch(
                     self.parent().live(),
@@ -3710,9 +3304,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
                 )
             }?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_submit_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit` without its dynamic checks.
@@ -3733,20 +3325,10 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_0().queue_submit;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_0()
-                .queue_submit)(
-                self.raw(),
-                submits.len() as u32,
-                submits.as_ptr().cast(),
-                fence.raw(),
-            )
+            fp(self.raw(), submits.len() as u32, submits.as_ptr().cast(), fence.raw())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -3796,10 +3378,9 @@ The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.o
             syncs.push(self.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe { (self.parent().fns().fp_v1_0().queue_wait_idle)(self.raw()) };
+        let fp = self.parent().fns().fp_v1_0().queue_wait_idle;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -3837,9 +3418,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             r?;
         }
         self.uses().check_reset(self.device(), self.parent().resets_buffers())?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_command_buffer_unchecked(flags) }
     }
     /**`vkResetCommandBuffer` without its dynamic checks.
@@ -3859,12 +3438,9 @@ The caller upholds the rules that [`Self::reset_command_buffer`] checks at run t
             syncs.push(self.parent().host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self.device().fns().fp_v1_0().reset_command_buffer)(self.raw(), flags)
-        };
+        let fp = self.device().fns().fp_v1_0().reset_command_buffer;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), flags) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }

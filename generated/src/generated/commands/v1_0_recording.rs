@@ -31,9 +31,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_begin_query_unchecked(query_pool, query, flags) }
     }
     /**`vkCmdBeginQuery` without its dynamic checks.
@@ -48,16 +46,9 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
         query: u32,
         flags: vk::QueryControlFlags,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_begin_query)(self.raw(), query_pool.raw(), query, flags)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_begin_query;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), query_pool.raw(), query, flags) };
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
     /**`vkCmdBindDescriptorSets`
@@ -99,9 +90,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_bind_descriptor_sets_unchecked(
                 pipeline_bind_point,
@@ -126,6 +115,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
         descriptor_sets: &[&DescriptorSet],
         dynamic_offsets: &[u32],
     ) {
+        let fp = self.device().fns().fp_v1_0().cmd_bind_descriptor_sets;
         for h in descriptor_sets {
             self.retain(h.retained());
         }
@@ -133,15 +123,9 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_bind_descriptor_sets)(
+            fp(
                 self.raw(),
                 pipeline_bind_point,
                 layout.raw(),
@@ -183,9 +167,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
     }
     /**`vkCmdBindIndexBuffer` without its dynamic checks.
@@ -200,16 +182,9 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_bind_index_buffer)(self.raw(), buffer.raw(), offset, index_type)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_bind_index_buffer;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), buffer.raw(), offset, index_type) };
         self.retain_with(buffer.address(), || buffer.retained());
     }
     /**`vkCmdBindPipeline`
@@ -240,9 +215,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
     }
     /**`vkCmdBindPipeline` without its dynamic checks.
@@ -256,16 +229,9 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_bind_pipeline)(self.raw(), pipeline_bind_point, pipeline.raw())
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_bind_pipeline;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), pipeline_bind_point, pipeline.raw()) };
         self.retain_with(pipeline.address(), || pipeline.retained());
     }
     /**`vkCmdBindVertexBuffers`
@@ -298,9 +264,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
         }
@@ -317,6 +281,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
         buffers: &[&Buffer],
         offsets: &[vk::DeviceSize],
     ) {
+        let fp = self.device().fns().fp_v1_0().cmd_bind_vertex_buffers;
         for h in buffers {
             self.retain(h.retained());
         }
@@ -324,15 +289,9 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_bind_vertex_buffers)(
+            fp(
                 self.raw(),
                 first_binding,
                 buffers.len() as u32,
@@ -363,9 +322,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_end_query_unchecked(query_pool, query) }
     }
     /**`vkCmdEndQuery` without its dynamic checks.
@@ -379,16 +336,9 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
         query_pool: &QueryPool,
         query: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_end_query)(self.raw(), query_pool.raw(), query)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_end_query;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), query_pool.raw(), query) };
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
     /**`vkCmdExecuteCommands`
@@ -426,9 +376,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 51 (exp
                 });
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
     }
     /**`vkCmdExecuteCommands` without its dynamic checks.
@@ -441,6 +389,7 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
         &mut self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
+        let fp = self.device().fns().fp_v1_0().cmd_execute_commands;
         {
             for h in command_buffers {
                 self.command_buffer().uses().executes(h.uses());
@@ -452,19 +401,9 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
                 .iter()
                 .map(|h| h.raw())
                 .collect();
-            // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-            // reference or slice that outlives the call, and every count from the length of
-            // the slice it sizes.
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
-                (self
-                    .device()
-                    .fns()
-                    .fp_v1_0()
-                    .cmd_execute_commands)(
-                    self.raw(),
-                    command_buffers.len() as u32,
-                    command_buffers.as_ptr(),
-                )
+                fp(self.raw(), command_buffers.len() as u32, command_buffers.as_ptr())
             };
         }
         Ok(())
@@ -510,9 +449,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 39 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_pipeline_barrier_unchecked(
                 src_stage_mask,
@@ -539,15 +476,10 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_pipeline_barrier;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_pipeline_barrier)(
+            fp(
                 self.raw(),
                 src_stage_mask,
                 dst_stage_mask,
@@ -622,9 +554,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
     }
     /**`vkCmdPushConstants` without its dynamic checks.
@@ -640,15 +570,10 @@ The caller upholds the rules that [`Self::cmd_push_constants`] checks at run tim
         offset: u32,
         values: &[u8],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_push_constants;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_push_constants)(
+            fp(
                 self.raw(),
                 layout.raw(),
                 stage_flags,
@@ -678,9 +603,7 @@ The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.kh
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_blend_constants_unchecked(blend_constants) }
     }
     /**`vkCmdSetBlendConstants` without its dynamic checks.
@@ -693,16 +616,9 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
         &mut self,
         blend_constants: &[f32; 4usize],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_blend_constants)(self.raw(), blend_constants)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_blend_constants;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), blend_constants) };
     }
     /**`vkCmdSetDepthBias`
 
@@ -730,9 +646,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_set_depth_bias_unchecked(
                 depth_bias_constant_factor,
@@ -753,15 +667,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
         depth_bias_clamp: f32,
         depth_bias_slope_factor: f32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_set_depth_bias;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_depth_bias)(
+            fp(
                 self.raw(),
                 depth_bias_constant_factor,
                 depth_bias_clamp,
@@ -794,9 +703,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds)
         }
@@ -812,16 +719,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
         min_depth_bounds: f32,
         max_depth_bounds: f32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_depth_bounds)(self.raw(), min_depth_bounds, max_depth_bounds)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_depth_bounds;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), min_depth_bounds, max_depth_bounds) };
     }
     /**`vkCmdSetLineWidth`
 
@@ -844,9 +744,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_line_width_unchecked(line_width) }
     }
     /**`vkCmdSetLineWidth` without its dynamic checks.
@@ -856,12 +754,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self.device().fns().fp_v1_0().cmd_set_line_width)(self.raw(), line_width)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_line_width;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), line_width) };
     }
     /**`vkCmdSetScissor`
 
@@ -886,9 +781,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
     }
     /**`vkCmdSetScissor` without its dynamic checks.
@@ -902,15 +795,10 @@ The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: 
         first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_set_scissor;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_scissor)(
+            fp(
                 self.raw(),
                 first_scissor,
                 scissors.len() as u32,
@@ -943,9 +831,7 @@ The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registr
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
     }
     /**`vkCmdSetStencilCompareMask` without its dynamic checks.
@@ -959,16 +845,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks 
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_stencil_compare_mask)(self.raw(), face_mask, compare_mask)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_stencil_compare_mask;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), face_mask, compare_mask) };
     }
     /**`vkCmdSetStencilReference`
 
@@ -995,9 +874,7 @@ The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_stencil_reference_unchecked(face_mask, reference) }
     }
     /**`vkCmdSetStencilReference` without its dynamic checks.
@@ -1011,16 +888,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at 
         face_mask: vk::StencilFaceFlags,
         reference: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_stencil_reference)(self.raw(), face_mask, reference)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_stencil_reference;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), face_mask, reference) };
     }
     /**`vkCmdSetStencilWriteMask`
 
@@ -1047,9 +917,7 @@ The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_stencil_write_mask_unchecked(face_mask, write_mask) }
     }
     /**`vkCmdSetStencilWriteMask` without its dynamic checks.
@@ -1063,16 +931,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_stencil_write_mask)(self.raw(), face_mask, write_mask)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_stencil_write_mask;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), face_mask, write_mask) };
     }
     /**`vkCmdSetViewport`
 
@@ -1097,9 +958,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
     }
     /**`vkCmdSetViewport` without its dynamic checks.
@@ -1113,15 +972,10 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
         first_viewport: u32,
         viewports: &[vk::Viewport],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_set_viewport;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_viewport)(
+            fp(
                 self.raw(),
                 first_viewport,
                 viewports.len() as u32,
@@ -1172,9 +1026,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_wait_events_unchecked(
                 events,
@@ -1201,6 +1053,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) {
+        let fp = self.device().fns().fp_v1_0().cmd_wait_events;
         for h in events {
             self.retain(h.retained());
         }
@@ -1208,15 +1061,9 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_wait_events)(
+            fp(
                 self.raw(),
                 events.len() as u32,
                 events.as_ptr(),
@@ -1287,9 +1134,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_write_timestamp_unchecked(pipeline_stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp` without its dynamic checks.
@@ -1304,21 +1149,9 @@ The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run ti
         query_pool: &QueryPool,
         query: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_write_timestamp)(
-                self.raw(),
-                pipeline_stage,
-                query_pool.raw(),
-                query,
-            )
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_write_timestamp;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), pipeline_stage, query_pool.raw(), query) };
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
 }
@@ -1355,9 +1188,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
             }
             self.skip_begin(false);
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
     }
     /**`vkCmdBeginRenderPass` without its dynamic checks.
@@ -1371,15 +1202,10 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_begin_render_pass;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_begin_render_pass)(
+            fp(
                 self.raw(),
                 render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
                 contents,
@@ -1447,9 +1273,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_blit_image_unchecked(
                 src_image,
@@ -1476,15 +1300,10 @@ The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_blit_image;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_blit_image)(
+            fp(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -1531,9 +1350,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
         }
@@ -1551,15 +1368,10 @@ The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run 
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_clear_color_image;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_clear_color_image)(
+            fp(
                 self.raw(),
                 image.raw(),
                 image_layout,
@@ -1605,9 +1417,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_clear_depth_stencil_image_unchecked(
                 image,
@@ -1630,15 +1440,10 @@ The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_clear_depth_stencil_image;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_clear_depth_stencil_image)(
+            fp(
                 self.raw(),
                 image.raw(),
                 image_layout,
@@ -1681,9 +1486,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
     }
     /**`vkCmdCopyBuffer` without its dynamic checks.
@@ -1698,15 +1501,10 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_copy_buffer;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_buffer)(
+            fp(
                 self.raw(),
                 src_buffer.raw(),
                 dst_buffer.raw(),
@@ -1757,9 +1555,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_copy_buffer_to_image_unchecked(
                 src_buffer,
@@ -1782,15 +1578,10 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_copy_buffer_to_image;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_buffer_to_image)(
+            fp(
                 self.raw(),
                 src_buffer.raw(),
                 dst_image.raw(),
@@ -1845,9 +1636,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_copy_image_unchecked(
                 src_image,
@@ -1872,15 +1661,10 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_copy_image;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_image)(
+            fp(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -1933,9 +1717,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_copy_image_to_buffer_unchecked(
                 src_image,
@@ -1958,15 +1740,10 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_copy_image_to_buffer;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_image_to_buffer)(
+            fp(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -2014,9 +1791,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_copy_query_pool_results_unchecked(
                 query_pool,
@@ -2045,15 +1820,10 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_copy_query_pool_results;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_copy_query_pool_results)(
+            fp(
                 self.raw(),
                 query_pool.raw(),
                 first_query,
@@ -2094,9 +1864,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 61 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
         }
@@ -2113,16 +1881,9 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
         group_count_y: u32,
         group_count_z: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_dispatch)(self.raw(), group_count_x, group_count_y, group_count_z)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_dispatch;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), group_count_x, group_count_y, group_count_z) };
     }
     /**`vkCmdDispatchIndirect`
 
@@ -2148,9 +1909,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 60 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
     }
     /**`vkCmdDispatchIndirect` without its dynamic checks.
@@ -2164,16 +1923,9 @@ The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run 
         buffer: &Buffer,
         offset: vk::DeviceSize,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_dispatch_indirect)(self.raw(), buffer.raw(), offset)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_dispatch_indirect;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), buffer.raw(), offset) };
         self.retain_with(buffer.address(), || buffer.retained());
     }
     /**`vkCmdFillBuffer`
@@ -2206,9 +1958,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
     }
     /**`vkCmdFillBuffer` without its dynamic checks.
@@ -2224,16 +1974,9 @@ The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: 
         size: vk::DeviceSize,
         data: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_fill_buffer)(self.raw(), dst_buffer.raw(), dst_offset, size, data)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_fill_buffer;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), dst_buffer.raw(), dst_offset, size, data) };
         self.retain_with(dst_buffer.address(), || dst_buffer.retained());
     }
     /**`vkCmdResetEvent`
@@ -2264,9 +2007,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent` without its dynamic checks.
@@ -2280,16 +2021,9 @@ The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: 
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_reset_event)(self.raw(), event.raw(), stage_mask)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_reset_event;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), event.raw(), stage_mask) };
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResetQueryPool`
@@ -2321,9 +2055,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
         }
@@ -2340,21 +2072,9 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
         first_query: u32,
         query_count: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_reset_query_pool)(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-            )
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_reset_query_pool;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
     /**`vkCmdResolveImage`
@@ -2400,9 +2120,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_resolve_image_unchecked(
                 src_image,
@@ -2427,15 +2145,10 @@ The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_resolve_image;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_resolve_image)(
+            fp(
                 self.raw(),
                 src_image.raw(),
                 src_image_layout,
@@ -2472,9 +2185,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 15 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdSetEvent` without its dynamic checks.
@@ -2488,16 +2199,9 @@ The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `V
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_set_event)(self.raw(), event.raw(), stage_mask)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_set_event;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), event.raw(), stage_mask) };
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdUpdateBuffer`
@@ -2531,9 +2235,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
     }
     /**`vkCmdUpdateBuffer` without its dynamic checks.
@@ -2548,15 +2250,10 @@ The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time
         dst_offset: vk::DeviceSize,
         data: &[u8],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_update_buffer;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_update_buffer)(
+            fp(
                 self.raw(),
                 dst_buffer.raw(),
                 dst_offset,
@@ -2598,9 +2295,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
     }
     /**`vkCmdClearAttachments` without its dynamic checks.
@@ -2614,15 +2309,10 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_clear_attachments;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_clear_attachments)(
+            fp(
                 self.raw(),
                 attachments.len() as u32,
                 attachments.as_ptr().cast(),
@@ -2659,9 +2349,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 192 (ex
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_draw_unchecked(
                 vertex_count,
@@ -2684,21 +2372,10 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
         first_vertex: u32,
         first_instance: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_draw;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw)(
-                self.raw(),
-                vertex_count,
-                instance_count,
-                first_vertex,
-                first_instance,
-            )
+            fp(self.raw(), vertex_count, instance_count, first_vertex, first_instance)
         };
     }
     /**`vkCmdDrawIndexed`
@@ -2730,9 +2407,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_draw_indexed_unchecked(
                 index_count,
@@ -2757,15 +2432,10 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
         vertex_offset: i32,
         first_instance: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_0().cmd_draw_indexed;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw_indexed)(
+            fp(
                 self.raw(),
                 index_count,
                 instance_count,
@@ -2805,9 +2475,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 200 (ex
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
         }
@@ -2825,22 +2493,9 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
         draw_count: u32,
         stride: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw_indexed_indirect)(
-                self.raw(),
-                buffer.raw(),
-                offset,
-                draw_count,
-                stride,
-            )
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_draw_indexed_indirect;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), buffer.raw(), offset, draw_count, stride) };
         self.retain_with(buffer.address(), || buffer.retained());
     }
     /**`vkCmdDrawIndirect`
@@ -2873,9 +2528,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 198 (ex
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
     }
     /**`vkCmdDrawIndirect` without its dynamic checks.
@@ -2891,16 +2544,9 @@ The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time
         draw_count: u32,
         stride: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_0()
-                .cmd_draw_indirect)(self.raw(), buffer.raw(), offset, draw_count, stride)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_draw_indirect;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), buffer.raw(), offset, draw_count, stride) };
         self.retain_with(buffer.address(), || buffer.retained());
     }
 }
@@ -2930,9 +2576,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_end_render_pass_unchecked() }
     }
     /**`vkCmdEndRenderPass` without its dynamic checks.
@@ -2942,10 +2586,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_end_render_pass_unchecked(self) -> Recorder<'c, Outside> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe { (self.device().fns().fp_v1_0().cmd_end_render_pass)(self.raw()) };
+        let fp = self.device().fns().fp_v1_0().cmd_end_render_pass;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw()) };
         self.into_state()
     }
     /**`vkCmdNextSubpass`
@@ -2973,9 +2616,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_next_subpass_unchecked(contents) }
     }
     /**`vkCmdNextSubpass` without its dynamic checks.
@@ -2985,11 +2626,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self.device().fns().fp_v1_0().cmd_next_subpass)(self.raw(), contents)
-        };
+        let fp = self.device().fns().fp_v1_0().cmd_next_subpass;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), contents) };
     }
 }

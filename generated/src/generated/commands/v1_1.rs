@@ -22,9 +22,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
             let r = self.validate_bind_buffer_memory2(bind_infos);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.bind_buffer_memory2_unchecked(bind_infos) }
     }
     /**`vkBindBufferMemory2` without its dynamic checks.
@@ -37,18 +35,10 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_1().bind_buffer_memory2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .bind_buffer_memory2)(
-                self.raw(),
-                bind_infos.len() as u32,
-                bind_infos.as_ptr().cast(),
-            )
+            fp(self.raw(), bind_infos.len() as u32, bind_infos.as_ptr().cast())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -76,9 +66,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_bind_image_memory2(bind_infos);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.bind_image_memory2_unchecked(bind_infos) }
     }
     /**`vkBindImageMemory2` without its dynamic checks.
@@ -91,18 +79,10 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_1().bind_image_memory2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .bind_image_memory2)(
-                self.raw(),
-                bind_infos.len() as u32,
-                bind_infos.as_ptr().cast(),
-            )
+            fp(self.raw(), bind_infos.len() as u32, bind_infos.as_ptr().cast())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -129,9 +109,7 @@ The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://r
             let r = self.validate_create_descriptor_update_template(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_descriptor_update_template_unchecked(create_info) }
     }
     /**`vkCreateDescriptorUpdateTemplate` without its dynamic checks.
@@ -144,15 +122,11 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
         &self,
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<DescriptorUpdateTemplate> {
+        let fp = self.fns().fp_v1_1().create_descriptor_update_template;
         let mut out = vk::DescriptorUpdateTemplate::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .create_descriptor_update_template)(
+            fp(
                 self.raw(),
                 create_info as *const DescriptorUpdateTemplateCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -169,8 +143,8 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
                 {
                     let live = self.live();
                     let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains
-                    // only structs pushed through `push_next`.
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::descriptor_update_template_create_info(
                             create_info.as_raw(),
@@ -216,9 +190,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_sampler_ycbcr_conversion(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
     }
     /**`vkCreateSamplerYcbcrConversion` without its dynamic checks.
@@ -231,15 +203,11 @@ The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] chec
         &self,
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<SamplerYcbcrConversion> {
+        let fp = self.fns().fp_v1_1().create_sampler_ycbcr_conversion;
         let mut out = vk::SamplerYcbcrConversion::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .create_sampler_ycbcr_conversion)(
+            fp(
                 self.raw(),
                 create_info as *const SamplerYcbcrConversionCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -271,9 +239,7 @@ The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://reg
             let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
         };
@@ -290,14 +256,10 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
         info: &BufferMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_1().get_buffer_memory_requirements2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_buffer_memory_requirements2)(
+            fp(
                 self.raw(),
                 info as *const BufferMemoryRequirementsInfo2<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -325,9 +287,7 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
                 .validate_get_descriptor_set_layout_support(create_info, support);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_descriptor_set_layout_support_unchecked(create_info, support)
         };
@@ -344,14 +304,10 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] ch
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_1().get_descriptor_set_layout_support;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_descriptor_set_layout_support)(
+            fp(
                 self.raw(),
                 create_info as *const DescriptorSetLayoutCreateInfo<'a> as *const _,
                 support as *mut DescriptorSetLayoutSupport<'a> as *mut _,
@@ -375,21 +331,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         local_device_index: u32,
         remote_device_index: u32,
     ) -> vk::PeerMemoryFeatureFlags {
+        let fp = self.fns().fp_v1_1().get_device_group_peer_memory_features;
         let mut out: vk::PeerMemoryFeatureFlags = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_device_group_peer_memory_features)(
-                self.raw(),
-                heap_index,
-                local_device_index,
-                remote_device_index,
-                &mut out,
-            )
+            fp(self.raw(), heap_index, local_device_index, remote_device_index, &mut out)
         };
         out
     }
@@ -412,9 +358,7 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
             let r = self.validate_get_device_queue2(queue_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
     }
     /**`vkGetDeviceQueue2` without its dynamic checks.
@@ -427,15 +371,11 @@ The caller upholds the rules that [`Self::get_device_queue2`] checks at run time
         &self,
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Queue {
+        let fp = self.fns().fp_v1_1().get_device_queue2;
         let mut out = vk::Queue::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_device_queue2)(
+            fp(
                 self.raw(),
                 queue_info as *const DeviceQueueInfo2<'a> as *const _,
                 &mut out,
@@ -472,9 +412,7 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
                 .validate_get_image_memory_requirements2(info, memory_requirements);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_image_memory_requirements2_unchecked(info, memory_requirements)
         };
@@ -491,14 +429,10 @@ The caller upholds the rules that [`Self::get_image_memory_requirements2`] check
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_1().get_image_memory_requirements2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .get_image_memory_requirements2)(
+            fp(
                 self.raw(),
                 info as *const ImageMemoryRequirementsInfo2<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -520,18 +454,15 @@ The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https:
         &self,
         info: &ImageSparseMemoryRequirementsInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_1().get_image_sparse_memory_requirements2;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::SparseImageMemoryRequirements2<'static>|
             {
-                (self
-                    .fns()
-                    .fp_v1_1()
-                    .get_image_sparse_memory_requirements2)(
+                fp(
                     self.raw(),
                     info as *const ImageSparseMemoryRequirementsInfo2<'a> as *const _,
                     count,
@@ -568,9 +499,7 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
             let r = self.validate_trim_command_pool(command_pool, flags);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.trim_command_pool_unchecked(command_pool, flags) };
         Ok(())
     }
@@ -591,15 +520,9 @@ The caller upholds the rules that [`Self::trim_command_pool`] checks at run time
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .trim_command_pool)(self.raw(), command_pool.raw(), flags)
-        };
+        let fp = self.fns().fp_v1_1().trim_command_pool;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), command_pool.raw(), flags) };
     }
     /**`vkUpdateDescriptorSetWithTemplate`
 
@@ -632,9 +555,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.update_descriptor_set_with_template_unchecked(
                 descriptor_set,
@@ -656,19 +577,10 @@ The caller upholds the rules that [`Self::update_descriptor_set_with_template`] 
         descriptor_update_template: &DescriptorUpdateTemplate,
         data: *const core::ffi::c_void,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_1().update_descriptor_set_with_template;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_1()
-                .update_descriptor_set_with_template)(
-                self.raw(),
-                descriptor_set.raw(),
-                descriptor_update_template.raw(),
-                data,
-            )
+            fp(self.raw(), descriptor_set.raw(), descriptor_update_template.raw(), data)
         };
         // SAFETY: the caller of this unsafe method vouches that `data` is laid out as the
         // template's entries describe.
@@ -692,11 +604,10 @@ The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registr
 - `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
     pub fn enumerate_instance_version(&self) -> Result<u32> {
+        let fp = self.fns().fp_v1_1().enumerate_instance_version;
         let mut out: u32 = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe { (self.fns().fp_v1_1().enumerate_instance_version)(&mut out) };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(&mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -717,17 +628,14 @@ The rules are on [`vkEnumeratePhysicalDeviceGroups`'s reference page](https://re
     pub fn enumerate_physical_device_groups(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceGroupProperties<'static>>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_1().enumerate_physical_device_groups;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::PhysicalDeviceGroupProperties<'static>|
-            (self
-                .fns()
-                .fp_v1_1()
-                .enumerate_physical_device_groups)(self.raw(), count, items_ptr.cast()))
+            fp(self.raw(), count, items_ptr.cast()))
         }
     }
 }
@@ -755,9 +663,7 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_external_buffer_properties_unchecked(
                 external_buffer_info,
@@ -777,15 +683,14 @@ The caller upholds the rules that [`Self::get_physical_device_external_buffer_pr
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_external_buffer_properties;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_external_buffer_properties)(
+            fp(
                 self.raw(),
                 external_buffer_info as *const PhysicalDeviceExternalBufferInfo<'a>
                     as *const _,
@@ -816,9 +721,7 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_external_fence_properties_unchecked(
                 external_fence_info,
@@ -838,15 +741,14 @@ The caller upholds the rules that [`Self::get_physical_device_external_fence_pro
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_external_fence_properties;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_external_fence_properties)(
+            fp(
                 self.raw(),
                 external_fence_info as *const PhysicalDeviceExternalFenceInfo<'a>
                     as *const _,
@@ -877,9 +779,7 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_external_semaphore_properties_unchecked(
                 external_semaphore_info,
@@ -899,15 +799,14 @@ The caller upholds the rules that [`Self::get_physical_device_external_semaphore
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_external_semaphore_properties;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_external_semaphore_properties)(
+            fp(
                 self.raw(),
                 external_semaphore_info as *const PhysicalDeviceExternalSemaphoreInfo<'a>
                     as *const _,
@@ -929,18 +828,10 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
         &self,
         features: &mut PhysicalDeviceFeatures2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_1().get_physical_device_features2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_features2)(
-                self.raw(),
-                features as *mut PhysicalDeviceFeatures2<'a> as *mut _,
-            )
+            fp(self.raw(), features as *mut PhysicalDeviceFeatures2<'a> as *mut _)
         };
     }
     /**`vkGetPhysicalDeviceFormatProperties2`
@@ -967,9 +858,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_format_properties2_unchecked(
                 format,
@@ -989,15 +878,10 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties2
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_1().get_physical_device_format_properties2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_format_properties2)(
+            fp(
                 self.raw(),
                 format,
                 format_properties as *mut FormatProperties2<'a> as *mut _,
@@ -1030,9 +914,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_image_format_properties2_unchecked(
                 image_format_info,
@@ -1051,15 +933,14 @@ The caller upholds the rules that [`Self::get_physical_device_image_format_prope
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_image_format_properties2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_image_format_properties2)(
+            fp(
                 self.raw(),
                 image_format_info as *const PhysicalDeviceImageFormatInfo2<'a>
                     as *const _,
@@ -1090,9 +971,7 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
                 .validate_get_physical_device_memory_properties2(memory_properties);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_memory_properties2_unchecked(memory_properties)
         };
@@ -1108,15 +987,10 @@ The caller upholds the rules that [`Self::get_physical_device_memory_properties2
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_1().get_physical_device_memory_properties2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_memory_properties2)(
+            fp(
                 self.raw(),
                 memory_properties as *mut PhysicalDeviceMemoryProperties2<'a> as *mut _,
             )
@@ -1140,9 +1014,7 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
             let r = self.validate_get_physical_device_properties2(properties);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_physical_device_properties2_unchecked(properties) };
         Ok(())
     }
@@ -1156,18 +1028,10 @@ The caller upholds the rules that [`Self::get_physical_device_properties2`] chec
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_1().get_physical_device_properties2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_properties2)(
-                self.raw(),
-                properties as *mut PhysicalDeviceProperties2<'a> as *mut _,
-            )
+            fp(self.raw(), properties as *mut PhysicalDeviceProperties2<'a> as *mut _)
         };
     }
     /**`vkGetPhysicalDeviceQueueFamilyProperties2`
@@ -1183,23 +1047,19 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
     pub fn get_physical_device_queue_family_properties2(
         &self,
     ) -> Result<Vec<vk::QueueFamilyProperties2<'static>>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_queue_family_properties2;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::QueueFamilyProperties2<'static>|
             {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_queue_family_properties2)(
-                    self.raw(),
-                    count,
-                    items_ptr.cast(),
-                );
+                fp(self.raw(), count, items_ptr.cast());
                 vk::Result::SUCCESS
             })
         }
@@ -1227,9 +1087,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_physical_device_sparse_image_format_properties2_unchecked(
                 format_info,
@@ -1246,19 +1104,19 @@ The caller upholds the rules that [`Self::get_physical_device_sparse_image_forma
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_sparse_image_format_properties2;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::SparseImageFormatProperties2<'static>|
             {
-                (self
-                    .parent()
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_sparse_image_format_properties2)(
+                fp(
                     self.raw(),
                     format_info as *const PhysicalDeviceSparseImageFormatInfo2<'a>
                         as *const _,

@@ -33,9 +33,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 65 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_dispatch_base_unchecked(
                 base_group_x,
@@ -62,15 +60,10 @@ The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time
         group_count_y: u32,
         group_count_z: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_1().cmd_dispatch_base;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_1()
-                .cmd_dispatch_base)(
+            fp(
                 self.raw(),
                 base_group_x,
                 base_group_y,
@@ -103,9 +96,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_device_mask_unchecked(device_mask) }
     }
     /**`vkCmdSetDeviceMask` without its dynamic checks.
@@ -115,11 +106,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self.device().fns().fp_v1_1().cmd_set_device_mask)(self.raw(), device_mask)
-        };
+        let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), device_mask) };
     }
 }

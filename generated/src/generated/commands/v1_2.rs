@@ -23,9 +23,7 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
             let r = self.validate_create_render_pass2(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_render_pass2_unchecked(create_info) }
     }
     /**`vkCreateRenderPass2` without its dynamic checks.
@@ -38,15 +36,11 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
         &self,
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
+        let fp = self.fns().fp_v1_2().create_render_pass2;
         let mut out = vk::RenderPass::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .create_render_pass2)(
+            fp(
                 self.raw(),
                 create_info as *const RenderPassCreateInfo2<'a> as *const _,
                 core::ptr::null(),
@@ -73,17 +67,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> vk::DeviceAddress {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_buffer_device_address)(
-                self.raw(),
-                info as *const BufferDeviceAddressInfo<'a> as *const _,
-            )
-        }
+        let fp = self.fns().fp_v1_2().get_buffer_device_address;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), info as *const BufferDeviceAddressInfo<'a> as *const _) }
     }
     /**`vkGetBufferOpaqueCaptureAddress`
 
@@ -100,17 +86,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> u64 {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_buffer_opaque_capture_address)(
-                self.raw(),
-                info as *const BufferDeviceAddressInfo<'a> as *const _,
-            )
-        }
+        let fp = self.fns().fp_v1_2().get_buffer_opaque_capture_address;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), info as *const BufferDeviceAddressInfo<'a> as *const _) }
     }
     /**`vkGetDeviceMemoryOpaqueCaptureAddress`
 
@@ -127,13 +105,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> u64 {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call.
+        let fp = self.fns().fp_v1_2().get_device_memory_opaque_capture_address;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_device_memory_opaque_capture_address)(
+            fp(
                 self.raw(),
                 info as *const DeviceMemoryOpaqueCaptureAddressInfo<'a> as *const _,
             )
@@ -164,9 +139,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             true,
             "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
         )?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
     }
     /**`vkGetSemaphoreCounterValue` without its dynamic checks.
@@ -179,16 +152,10 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
         &self,
         semaphore: &Semaphore,
     ) -> Result<u64> {
+        let fp = self.fns().fp_v1_2().get_semaphore_counter_value;
         let mut out: u64 = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .get_semaphore_counter_value)(self.raw(), semaphore.raw(), &mut out)
-        };
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe { fp(self.raw(), semaphore.raw(), &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -218,9 +185,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
             let r = self.validate_reset_query_pool(query_pool);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_query_pool_unchecked(query_pool, first_query, query_count) };
         Ok(())
     }
@@ -236,20 +201,9 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
         first_query: u32,
         query_count: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .reset_query_pool)(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-            )
-        };
+        let fp = self.fns().fp_v1_2().reset_query_pool;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
     }
     /**`vkSignalSemaphore`
 
@@ -270,9 +224,7 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
             true,
             "VUID-VkSemaphoreSignalInfo-semaphore-03257",
         )?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.signal_semaphore_unchecked(signal_info) }
     }
     /**`vkSignalSemaphore` without its dynamic checks.
@@ -285,17 +237,10 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_2().signal_semaphore;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .signal_semaphore)(
-                self.raw(),
-                signal_info as *const SemaphoreSignalInfo<'a> as *const _,
-            )
+            fp(self.raw(), signal_info as *const SemaphoreSignalInfo<'a> as *const _)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -334,9 +279,7 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
             true,
             "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
         )?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
     }
     /**`vkWaitSemaphores` without its dynamic checks.
@@ -350,14 +293,10 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
     ) -> Result<vk::Result> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_2().wait_semaphores;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_2()
-                .wait_semaphores)(
+            fp(
                 self.raw(),
                 wait_info as *const SemaphoreWaitInfo<'a> as *const _,
                 timeout,

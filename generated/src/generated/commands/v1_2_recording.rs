@@ -36,9 +36,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
             }
             self.skip_begin(false);
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
         }
@@ -54,15 +52,10 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_2().cmd_begin_render_pass2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_begin_render_pass2)(
+            fp(
                 self.raw(),
                 render_pass_begin as *const RenderPassBeginInfo<'a> as *const _,
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
@@ -119,9 +112,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 205 (ex
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_draw_indexed_indirect_count_unchecked(
                 buffer,
@@ -148,15 +139,10 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
         max_draw_count: u32,
         stride: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_2().cmd_draw_indexed_indirect_count;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_draw_indexed_indirect_count)(
+            fp(
                 self.raw(),
                 buffer.raw(),
                 offset,
@@ -202,9 +188,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203 (ex
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_draw_indirect_count_unchecked(
                 buffer,
@@ -231,15 +215,10 @@ The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at ru
         max_draw_count: u32,
         stride: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_2().cmd_draw_indirect_count;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_draw_indirect_count)(
+            fp(
                 self.raw(),
                 buffer.raw(),
                 offset,
@@ -283,9 +262,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
     }
     /**`vkCmdEndRenderPass2` without its dynamic checks.
@@ -298,18 +275,10 @@ The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run t
         self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_2().cmd_end_render_pass2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_end_render_pass2)(
-                self.raw(),
-                subpass_end_info as *const SubpassEndInfo<'a> as *const _,
-            )
+            fp(self.raw(), subpass_end_info as *const SubpassEndInfo<'a> as *const _)
         };
         self.into_state()
     }
@@ -344,9 +313,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
     }
     /**`vkCmdNextSubpass2` without its dynamic checks.
@@ -360,15 +327,10 @@ The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_2().cmd_next_subpass2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_2()
-                .cmd_next_subpass2)(
+            fp(
                 self.raw(),
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
                 subpass_end_info as *const SubpassEndInfo<'a> as *const _,

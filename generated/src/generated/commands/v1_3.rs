@@ -25,9 +25,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_private_data_slot(create_info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.create_private_data_slot_unchecked(create_info) }
     }
     /**`vkCreatePrivateDataSlot` without its dynamic checks.
@@ -40,15 +38,11 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
         &self,
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<PrivateDataSlot> {
+        let fp = self.fns().fp_v1_3().create_private_data_slot;
         let mut out = vk::PrivateDataSlot::null();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .create_private_data_slot)(
+            fp(
                 self.raw(),
                 create_info as *const PrivateDataSlotCreateInfo<'a> as *const _,
                 core::ptr::null(),
@@ -84,9 +78,7 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_device_buffer_memory_requirements_unchecked(
                 info,
@@ -106,14 +98,10 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_3().get_device_buffer_memory_requirements;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .get_device_buffer_memory_requirements)(
+            fp(
                 self.raw(),
                 info as *const DeviceBufferMemoryRequirements<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -144,9 +132,7 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
                 );
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_device_image_memory_requirements_unchecked(
                 info,
@@ -166,14 +152,10 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_3().get_device_image_memory_requirements;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .get_device_image_memory_requirements)(
+            fp(
                 self.raw(),
                 info as *const DeviceImageMemoryRequirements<'a> as *const _,
                 memory_requirements as *mut MemoryRequirements2<'a> as *mut _,
@@ -200,9 +182,7 @@ The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](h
             let r = self.validate_get_device_image_sparse_memory_requirements(info);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
     }
     /**`vkGetDeviceImageSparseMemoryRequirements` without its dynamic checks.
@@ -215,18 +195,15 @@ The caller upholds the rules that [`Self::get_device_image_sparse_memory_require
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.fns().fp_v1_3().get_device_image_sparse_memory_requirements;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::SparseImageMemoryRequirements2<'static>|
             {
-                (self
-                    .fns()
-                    .fp_v1_3()
-                    .get_device_image_sparse_memory_requirements)(
+                fp(
                     self.raw(),
                     info as *const DeviceImageMemoryRequirements<'a> as *const _,
                     count,
@@ -261,9 +238,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_private_data(object_type, private_data_slot);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe {
             self.get_private_data_unchecked(
                 object_type,
@@ -284,21 +259,11 @@ The caller upholds the rules that [`Self::get_private_data`] checks at run time:
         object_handle: u64,
         private_data_slot: &PrivateDataSlot,
     ) -> u64 {
+        let fp = self.fns().fp_v1_3().get_private_data;
         let mut out: u64 = Default::default();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .get_private_data)(
-                self.raw(),
-                object_type,
-                object_handle,
-                private_data_slot.raw(),
-                &mut out,
-            )
+            fp(self.raw(), object_type, object_handle, private_data_slot.raw(), &mut out)
         };
         out
     }
@@ -327,9 +292,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_set_private_data(object_type, private_data_slot);
             r?;
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.set_private_data_unchecked(
                 object_type,
@@ -352,20 +315,10 @@ The caller upholds the rules that [`Self::set_private_data`] checks at run time:
         private_data_slot: &PrivateDataSlot,
         data: u64,
     ) -> Result<()> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.fns().fp_v1_3().set_private_data;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .fns()
-                .fp_v1_3()
-                .set_private_data)(
-                self.raw(),
-                object_type,
-                object_handle,
-                private_data_slot.raw(),
-                data,
-            )
+            fp(self.raw(), object_type, object_handle, private_data_slot.raw(), data)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -387,22 +340,14 @@ The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://
     pub fn get_physical_device_tool_properties(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceToolProperties<'static>>> {
-        // SAFETY: the closure calls the enumeration command with the count and the array
-        // `two_call` gives it; every other argument comes from a live wrapper or a
-        // reference that outlives the call.
+        let fp = self.parent().fns().fp_v1_3().get_physical_device_tool_properties;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
         unsafe {
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::PhysicalDeviceToolProperties<'static>|
-            (self
-                .parent()
-                .fns()
-                .fp_v1_3()
-                .get_physical_device_tool_properties)(
-                self.raw(),
-                count,
-                items_ptr.cast(),
-            ))
+            fp(self.raw(), count, items_ptr.cast()))
         }
     }
 }
@@ -464,9 +409,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             &cbs,
             &crate::submission::SUBMIT2,
         )?;
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_submit2_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit2` without its dynamic checks.
@@ -487,20 +430,10 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.parent().fns().fp_v1_3().queue_submit2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            (self
-                .parent()
-                .fns()
-                .fp_v1_3()
-                .queue_submit2)(
-                self.raw(),
-                submits.len() as u32,
-                submits.as_ptr().cast(),
-                fence.raw(),
-            )
+            fp(self.raw(), submits.len() as u32, submits.as_ptr().cast(), fence.raw())
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));

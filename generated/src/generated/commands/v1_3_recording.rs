@@ -32,9 +32,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             }
             self.skip_begin(false);
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
     }
     /**`vkCmdBeginRendering` without its dynamic checks.
@@ -47,18 +45,10 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_begin_rendering;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_begin_rendering)(
-                self.raw(),
-                rendering_info as *const RenderingInfo<'a> as *const _,
-            )
+            fp(self.raw(), rendering_info as *const RenderingInfo<'a> as *const _)
         };
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -97,9 +87,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
     }
     /**`vkCmdBlitImage2` without its dynamic checks.
@@ -112,18 +100,10 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_blit_image2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_blit_image2)(
-                self.raw(),
-                blit_image_info as *const BlitImageInfo2<'a> as *const _,
-            )
+            fp(self.raw(), blit_image_info as *const BlitImageInfo2<'a> as *const _)
         };
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -161,9 +141,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
     }
     /**`vkCmdCopyBuffer2` without its dynamic checks.
@@ -176,18 +154,10 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
         &mut self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_copy_buffer2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_buffer2)(
-                self.raw(),
-                copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
-            )
+            fp(self.raw(), copy_buffer_info as *const CopyBufferInfo2<'a> as *const _)
         };
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -228,9 +198,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
     }
     /**`vkCmdCopyBufferToImage2` without its dynamic checks.
@@ -243,15 +211,10 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_copy_buffer_to_image2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_buffer_to_image2)(
+            fp(
                 self.raw(),
                 copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a>
                     as *const _,
@@ -295,9 +258,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
     }
     /**`vkCmdCopyImage2` without its dynamic checks.
@@ -310,18 +271,10 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_copy_image2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_image2)(
-                self.raw(),
-                copy_image_info as *const CopyImageInfo2<'a> as *const _,
-            )
+            fp(self.raw(), copy_image_info as *const CopyImageInfo2<'a> as *const _)
         };
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -362,9 +315,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
     }
     /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
@@ -377,15 +328,10 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_copy_image_to_buffer2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_copy_image_to_buffer2)(
+            fp(
                 self.raw(),
                 copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a>
                     as *const _,
@@ -434,9 +380,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent2` without its dynamic checks.
@@ -450,16 +394,9 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_reset_event2)(self.raw(), event.raw(), stage_mask)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_reset_event2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), event.raw(), stage_mask) };
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResolveImage2`
@@ -488,9 +425,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
     }
     /**`vkCmdResolveImage2` without its dynamic checks.
@@ -503,15 +438,10 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_resolve_image2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_resolve_image2)(
+            fp(
                 self.raw(),
                 resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
             )
@@ -559,9 +489,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
     }
     /**`vkCmdSetEvent2` without its dynamic checks.
@@ -575,15 +503,10 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_set_event2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_event2)(
+            fp(
                 self.raw(),
                 event.raw(),
                 dependency_info as *const DependencyInfo<'a> as *const _,
@@ -639,9 +562,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_bind_vertex_buffers2_unchecked(
                 first_binding,
@@ -666,6 +587,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
     ) {
+        let fp = self.device().fns().fp_v1_3().cmd_bind_vertex_buffers2;
         for h in buffers {
             self.retain(h.retained());
         }
@@ -673,15 +595,9 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_bind_vertex_buffers2)(
+            fp(
                 self.raw(),
                 first_binding,
                 buffers.len() as u32,
@@ -713,9 +629,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_pipeline_barrier2_unchecked(dependency_info) }
     }
     /**`vkCmdPipelineBarrier2` without its dynamic checks.
@@ -728,18 +642,10 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
         &mut self,
         dependency_info: &DependencyInfo<'a>,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_pipeline_barrier2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_pipeline_barrier2)(
-                self.raw(),
-                dependency_info as *const DependencyInfo<'a> as *const _,
-            )
+            fp(self.raw(), dependency_info as *const DependencyInfo<'a> as *const _)
         };
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -776,9 +682,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
     }
     /**`vkCmdSetCullMode` without its dynamic checks.
@@ -788,12 +692,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_cull_mode)(self.raw(), cull_mode)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), cull_mode) };
     }
     /**`vkCmdSetDepthBiasEnable`
 
@@ -816,9 +717,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
     }
     /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
@@ -831,16 +730,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
         &mut self,
         depth_bias_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_depth_bias_enable)(self.raw(), depth_bias_enable)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_bias_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_bias_enable) };
     }
     /**`vkCmdSetDepthBoundsTestEnable`
 
@@ -866,9 +758,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
         }
@@ -883,16 +773,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
         &mut self,
         depth_bounds_test_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_depth_bounds_test_enable)(self.raw(), depth_bounds_test_enable)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_bounds_test_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_bounds_test_enable) };
     }
     /**`vkCmdSetDepthCompareOp`
 
@@ -916,9 +799,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
     }
     /**`vkCmdSetDepthCompareOp` without its dynamic checks.
@@ -931,16 +812,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at r
         &mut self,
         depth_compare_op: vk::CompareOp,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_depth_compare_op)(self.raw(), depth_compare_op)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_compare_op;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_compare_op) };
     }
     /**`vkCmdSetDepthTestEnable`
 
@@ -963,9 +837,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
     }
     /**`vkCmdSetDepthTestEnable` without its dynamic checks.
@@ -978,16 +850,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
         &mut self,
         depth_test_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_depth_test_enable)(self.raw(), depth_test_enable)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_test_enable) };
     }
     /**`vkCmdSetDepthWriteEnable`
 
@@ -1010,9 +875,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
     }
     /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
@@ -1025,16 +888,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
         &mut self,
         depth_write_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_depth_write_enable)(self.raw(), depth_write_enable)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_write_enable) };
     }
     /**`vkCmdSetFrontFace`
 
@@ -1058,9 +914,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_front_face_unchecked(front_face) }
     }
     /**`vkCmdSetFrontFace` without its dynamic checks.
@@ -1070,12 +924,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self.device().fns().fp_v1_3().cmd_set_front_face)(self.raw(), front_face)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), front_face) };
     }
     /**`vkCmdSetPrimitiveRestartEnable`
 
@@ -1101,9 +952,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
         }
@@ -1118,16 +967,9 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
         &mut self,
         primitive_restart_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_primitive_restart_enable)(self.raw(), primitive_restart_enable)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_primitive_restart_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), primitive_restart_enable) };
     }
     /**`vkCmdSetPrimitiveTopology`
 
@@ -1154,9 +996,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
     }
     /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
@@ -1169,16 +1009,9 @@ The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_primitive_topology)(self.raw(), primitive_topology)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_primitive_topology;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), primitive_topology) };
     }
     /**`vkCmdSetRasterizerDiscardEnable`
 
@@ -1204,9 +1037,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
         }
@@ -1221,19 +1052,9 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
         &mut self,
         rasterizer_discard_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_rasterizer_discard_enable)(
-                self.raw(),
-                rasterizer_discard_enable,
-            )
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_rasterizer_discard_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), rasterizer_discard_enable) };
     }
     /**`vkCmdSetScissorWithCount`
 
@@ -1258,9 +1079,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
     }
     /**`vkCmdSetScissorWithCount` without its dynamic checks.
@@ -1273,20 +1092,9 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
         &mut self,
         scissors: &[vk::Rect2D],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_scissor_with_count)(
-                self.raw(),
-                scissors.len() as u32,
-                scissors.as_ptr().cast(),
-            )
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_scissor_with_count;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
     }
     /**`vkCmdSetStencilOp`
 
@@ -1329,9 +1137,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_set_stencil_op_unchecked(
                 face_mask,
@@ -1356,22 +1162,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
         depth_fail_op: vk::StencilOp,
         compare_op: vk::CompareOp,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        let fp = self.device().fns().fp_v1_3().cmd_set_stencil_op;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_stencil_op)(
-                self.raw(),
-                face_mask,
-                fail_op,
-                pass_op,
-                depth_fail_op,
-                compare_op,
-            )
+            fp(self.raw(), face_mask, fail_op, pass_op, depth_fail_op, compare_op)
         };
     }
     /**`vkCmdSetStencilTestEnable`
@@ -1395,9 +1189,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
     }
     /**`vkCmdSetStencilTestEnable` without its dynamic checks.
@@ -1410,16 +1202,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
         &mut self,
         stencil_test_enable: vk::Bool32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_stencil_test_enable)(self.raw(), stencil_test_enable)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_stencil_test_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), stencil_test_enable) };
     }
     /**`vkCmdSetViewportWithCount`
 
@@ -1444,9 +1229,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
     }
     /**`vkCmdSetViewportWithCount` without its dynamic checks.
@@ -1459,20 +1242,9 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
         &mut self,
         viewports: &[vk::Viewport],
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_set_viewport_with_count)(
-                self.raw(),
-                viewports.len() as u32,
-                viewports.as_ptr().cast(),
-            )
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_set_viewport_with_count;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
     }
     /**`vkCmdWaitEvents2`
 
@@ -1502,9 +1274,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
     }
     /**`vkCmdWaitEvents2` without its dynamic checks.
@@ -1518,6 +1288,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
     ) {
+        let fp = self.device().fns().fp_v1_3().cmd_wait_events2;
         for h in events {
             self.retain(h.retained());
         }
@@ -1525,15 +1296,9 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
             .iter()
             .map(|h| h.raw())
             .collect();
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_wait_events2)(
+            fp(
                 self.raw(),
                 events.len() as u32,
                 events.as_ptr(),
@@ -1581,9 +1346,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
                 return;
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_write_timestamp2_unchecked(stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp2` without its dynamic checks.
@@ -1598,16 +1361,9 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
         query_pool: &QueryPool,
         query: u32,
     ) {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe {
-            (self
-                .device()
-                .fns()
-                .fp_v1_3()
-                .cmd_write_timestamp2)(self.raw(), stage, query_pool.raw(), query)
-        };
+        let fp = self.device().fns().fp_v1_3().cmd_write_timestamp2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), stage, query_pool.raw(), query) };
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
 }
@@ -1636,9 +1392,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
-        // SAFETY: with runtime_implicit_validations the rules the unchecked call leaves to
-        // its caller were checked above; without it they are left to the user, as
-        // VALIDATION.md lists.
+        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_end_rendering_unchecked() }
     }
     /**`vkCmdEndRendering` without its dynamic checks.
@@ -1648,10 +1402,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_end_rendering_unchecked(self) -> Recorder<'c, Outside> {
-        // SAFETY: every handle argument comes from a live wrapper, every pointer from a
-        // reference or slice that outlives the call, and every count from the length of the
-        // slice it sizes.
-        unsafe { (self.device().fns().fp_v1_3().cmd_end_rendering)(self.raw()) };
+        let fp = self.device().fns().fp_v1_3().cmd_end_rendering;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw()) };
         self.into_state()
     }
 }
