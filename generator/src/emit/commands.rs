@@ -9,7 +9,9 @@ use crate::model::CommandDef;
 use crate::model::LenEntry;
 use crate::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
 use crate::plan::checks::Checker;
-use crate::plan::commands::{parent_of, parent_param, recorded, Param, Plan};
+use crate::plan::commands::{
+    parent_of, parent_param, recorded, Param, Plan, RecorderState, Transition,
+};
 use crate::plan::shape::{struct_members, Member};
 use crate::plan::types::{ash_type, spelled};
 use crate::plan::Context;
@@ -1054,11 +1056,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     } else {
         quote!(&self)
     };
-    let transition = match plan.name.as_str() {
-        "vkCmdBeginRenderPass" | "vkCmdBeginRenderPass2" => Some(quote!(InRenderPass)),
-        "vkCmdBeginRendering" => Some(quote!(InRendering)),
-        "vkCmdEndRenderPass" | "vkCmdEndRenderPass2" | "vkCmdEndRendering" => Some(quote!(Outside)),
-        _ => None,
+    // The state a transition leaves the recorder in, which the method returns.
+    let transition = match plan.transition {
+        Some(Transition::Begin(to)) => Some(ident(to.type_name())),
+        Some(Transition::End(_)) => Some(ident(RecorderState::Outside.type_name())),
+        Some(Transition::Within(_)) | None => None,
     };
     let (ret, body) = match &transition {
         Some(state) => {
@@ -1178,14 +1180,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         let (ret_checked, guard, call) = match (&transition, is_cmd) {
             (Some(state), _) => {
-                let begins = !matches!(
-                    plan.name.as_str(),
-                    "vkCmdEndRenderPass"
-                        | "vkCmdEndRenderPass2"
-                        | "vkCmdEndRendering"
-                        | "vkCmdNextSubpass"
-                        | "vkCmdNextSubpass2"
-                );
+                let begins = matches!(plan.transition, Some(Transition::Begin(_)));
                 let guard = if begins {
                     quote!(if !self.accept(r) { self.skip_begin(true); return self.into_state(); } self.skip_begin(false);)
                 } else {
@@ -1198,14 +1193,13 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 )
             }
             (None, true) if !fallible => {
-                let guard =
-                    if matches!(plan.name.as_str(), "vkCmdNextSubpass" | "vkCmdNextSubpass2") {
-                        quote!(let _ = self.accept(r); if self.begin_skipped() { return; })
-                    } else {
-                        quote!(if !self.accept(r) {
-                            return;
-                        })
-                    };
+                let guard = if matches!(plan.transition, Some(Transition::Within(_))) {
+                    quote!(let _ = self.accept(r); if self.begin_skipped() { return; })
+                } else {
+                    quote!(if !self.accept(r) {
+                        return;
+                    })
+                };
                 (
                     ret.clone(),
                     guard,
@@ -1284,17 +1278,13 @@ fn impl_header(plan: &Plan, cmd: &CommandDef, cfg: &Option<TokenStream>) -> Toke
     match plan.receiver.as_str() {
         "Entry" => quote!(#cfg impl Entry),
         "VkCommandBuffer" if recorded(plan) => {
-            let state = match (cmd.renderpass.as_deref(), plan.name.as_str()) {
-                (
-                    _,
-                    "vkCmdEndRenderPass"
-                    | "vkCmdEndRenderPass2"
-                    | "vkCmdNextSubpass"
-                    | "vkCmdNextSubpass2",
-                ) => quote!(impl<'c> Recorder<'c, InRenderPass>),
-                (_, "vkCmdEndRendering") => quote!(impl<'c> Recorder<'c, InRendering>),
-                (Some("inside"), _) => quote!(impl<'c, S: Inside> Recorder<'c, S>),
-                (Some("outside"), _) => quote!(impl<'c> Recorder<'c, Outside>),
+            let state = match (plan.transition, cmd.renderpass.as_deref()) {
+                (Some(Transition::End(from) | Transition::Within(from)), _) => {
+                    let from = ident(from.type_name());
+                    quote!(impl<'c> Recorder<'c, #from>)
+                }
+                (_, Some("inside")) => quote!(impl<'c, S: Inside> Recorder<'c, S>),
+                (_, Some("outside")) => quote!(impl<'c> Recorder<'c, Outside>),
                 _ => quote!(impl<'c, S: State> Recorder<'c, S>),
             };
             quote!(#cfg #state)

@@ -68,6 +68,66 @@ pub struct Plan {
     pub receiver: String,
     /// One shape per parameter.
     pub params: Vec<Param>,
+    /// How the command moves a recorder between render-pass states, if it does.
+    pub transition: Option<Transition>,
+}
+
+/// A recorder's render-pass state, as the recorder's type parameter names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RecorderState {
+    /// `Outside`: no render pass instance.
+    Outside,
+    /// `InRenderPass`: inside one begun by `vkCmdBeginRenderPass*`.
+    InRenderPass,
+    /// `InRendering`: inside dynamic rendering.
+    InRendering,
+}
+
+impl RecorderState {
+    /// The type's name in the generated crate.
+    pub fn type_name(self) -> &'static str {
+        match self {
+            RecorderState::Outside => "Outside",
+            RecorderState::InRenderPass => "InRenderPass",
+            RecorderState::InRendering => "InRendering",
+        }
+    }
+}
+
+/// How a recorded command changes the recorder's state: the recorder's typestate
+/// follows these, and a begin the checks refuse makes the matching end a no-op.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Transition {
+    /// Begins a render pass instance: from `Outside` into this state.
+    Begin(RecorderState),
+    /// Ends one: from this state to `Outside`.
+    End(RecorderState),
+    /// Stays in this state (the next subpass), skipped after a refused begin.
+    Within(RecorderState),
+}
+
+/// The commands that move a recorder, in one table.
+const TRANSITIONS: &[(&str, Transition)] = {
+    use RecorderState::*;
+    use Transition::*;
+    &[
+        ("vkCmdBeginRenderPass", Begin(InRenderPass)),
+        ("vkCmdBeginRenderPass2", Begin(InRenderPass)),
+        ("vkCmdBeginRendering", Begin(InRendering)),
+        ("vkCmdEndRenderPass", End(InRenderPass)),
+        ("vkCmdEndRenderPass2", End(InRenderPass)),
+        ("vkCmdEndRendering", End(InRendering)),
+        ("vkCmdNextSubpass", Within(InRenderPass)),
+        ("vkCmdNextSubpass2", Within(InRenderPass)),
+    ]
+};
+
+/// How `command` moves a recorder, from [`TRANSITIONS`].
+pub fn transition(command: &str) -> Option<Transition> {
+    TRANSITIONS
+        .iter()
+        .find(|(name, _)| *name == command)
+        .map(|(_, t)| *t)
 }
 
 /// Commands that are emitted as part of something else (destroy and free run in
@@ -266,6 +326,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         name: name.to_owned(),
         receiver,
         params,
+        transition: transition(name),
     })
 }
 
