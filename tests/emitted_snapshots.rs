@@ -189,26 +189,35 @@ fn enumeration() {
     );
 }
 
-/// The emitted code reads as written by hand: no function declares `-> ()`, no
-/// binding is made only to be discarded (`let _ = s;`), and no closure is called
-/// where it is written (checks are named `validate_*` methods).
-#[test]
-fn emitted_code_has_no_generator_noise() {
+/// Every generated file, recursively, with its text.
+fn generated_files() -> Vec<(PathBuf, String)> {
     let mut todo =
-        vec![std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src/generated")];
-    let mut found = Vec::new();
+        vec![PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../generated/src/generated")];
+    let mut out = Vec::new();
     while let Some(dir) = todo.pop() {
         for entry in std::fs::read_dir(&dir).expect("generated/src/generated") {
             let path = entry.expect("entry").path();
             if path.is_dir() {
                 todo.push(path);
-                continue;
+            } else {
+                let text = std::fs::read_to_string(&path).expect("a generated file");
+                out.push((path, text));
             }
-            let text = std::fs::read_to_string(&path).expect("a generated file");
-            for (i, line) in text.lines().enumerate() {
-                if line.contains("-> ()") || line.contains("let _ = s;") || line.contains("})()") {
-                    found.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
-                }
+        }
+    }
+    out
+}
+
+/// The emitted code reads as written by hand: no function declares `-> ()`, no
+/// binding is made only to be discarded (`let _ = s;`), and no closure is called
+/// where it is written (checks are named `validate_*` methods).
+#[test]
+fn emitted_code_has_no_generator_noise() {
+    let mut found = Vec::new();
+    for (path, text) in generated_files() {
+        for (i, line) in text.lines().enumerate() {
+            if line.contains("-> ()") || line.contains("let _ = s;") || line.contains("})()") {
+                found.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
             }
         }
     }
@@ -219,27 +228,15 @@ fn emitted_code_has_no_generator_noise() {
 /// item and an editor can open its file: no generated file above 5,000 lines.
 #[test]
 fn no_generated_file_is_too_long() {
-    let mut todo =
-        vec![std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src/generated")];
-    let mut files = 0;
+    let files = generated_files();
     let mut long = Vec::new();
-    while let Some(dir) = todo.pop() {
-        for entry in std::fs::read_dir(&dir).expect("generated/src/generated") {
-            let path = entry.expect("entry").path();
-            if path.is_dir() {
-                todo.push(path);
-                continue;
-            }
-            files += 1;
-            let lines = std::fs::read_to_string(&path)
-                .expect("a file")
-                .lines()
-                .count();
-            if lines > 5_000 {
-                long.push(format!("{}: {lines} lines", path.display()));
-            }
+    for (path, text) in &files {
+        let lines = text.lines().count();
+        if lines > 5_000 {
+            long.push(format!("{}: {lines} lines", path.display()));
         }
     }
+    let files = files.len();
     assert!(files > 10, "only {files} generated files found");
     assert!(long.is_empty(), "{}", long.join("\n"));
 }
@@ -249,45 +246,35 @@ fn no_generated_file_is_too_long() {
 /// marker, since `quote!` drops comments).
 #[test]
 fn every_generated_unsafe_block_has_a_safety_comment() {
-    let mut todo =
-        vec![std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src/generated")];
     let (mut blocks, mut bare) = (0, Vec::new());
-    while let Some(dir) = todo.pop() {
-        for entry in std::fs::read_dir(&dir).expect("generated/src/generated") {
-            let path = entry.expect("entry").path();
-            if path.is_dir() {
-                todo.push(path);
+    for (path, text) in generated_files() {
+        let lines: Vec<&str> = text.lines().collect();
+        for (i, line) in lines.iter().enumerate() {
+            if !line.contains("unsafe {") {
                 continue;
             }
-            let text = std::fs::read_to_string(&path).expect("a file");
-            let lines: Vec<&str> = text.lines().collect();
-            for (i, line) in lines.iter().enumerate() {
-                if !line.contains("unsafe {") {
-                    continue;
+            blocks += 1;
+            // Up to the first line of the statement, then the line above it.
+            let mut start = i;
+            while start > 0 {
+                let prev = lines[start - 1].trim_end();
+                let ends = prev.trim_start().starts_with("//")
+                    || prev.trim().is_empty()
+                    || prev.ends_with([';', '{', '}', ',']);
+                if ends {
+                    break;
                 }
-                blocks += 1;
-                // Up to the first line of the statement, then the line above it.
-                let mut start = i;
-                while start > 0 {
-                    let prev = lines[start - 1].trim_end();
-                    let ends = prev.trim_start().starts_with("//")
-                        || prev.trim().is_empty()
-                        || prev.ends_with([';', '{', '}', ',']);
-                    if ends {
-                        break;
-                    }
-                    start -= 1;
-                }
-                // A comment run above the statement that includes a SAFETY line.
-                let mut k = start;
-                let mut justified = false;
-                while k > 0 && lines[k - 1].trim_start().starts_with("//") {
-                    justified |= lines[k - 1].trim_start().starts_with("// SAFETY:");
-                    k -= 1;
-                }
-                if !justified {
-                    bare.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
-                }
+                start -= 1;
+            }
+            // A comment run above the statement that includes a SAFETY line.
+            let mut k = start;
+            let mut justified = false;
+            while k > 0 && lines[k - 1].trim_start().starts_with("//") {
+                justified |= lines[k - 1].trim_start().starts_with("// SAFETY:");
+                k -= 1;
+            }
+            if !justified {
+                bare.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
             }
         }
     }

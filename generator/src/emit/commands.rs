@@ -347,23 +347,24 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         (Level::Device, "VkQueue") => quote!(self.parent()),
         (Level::Device, _) => quote!(self.device()),
     };
-    let ext_check = match table(model, &plan.name) {
+    // The function pointer, copied out of its table: for an extension, so that no
+    // borrow of the receiver's table is held across what the call does to the
+    // receiver (and the call fails when the extension is not enabled); for core,
+    // alike, which keeps the call on one line.
+    let (load_fp, fallible_ext) = match table(model, &plan.name) {
         Some(Table::Core(m)) => {
-            // Copied out like an extension's, which keeps the call on one line.
             let table = ident(&format!("fp_v1_{m}"));
-            quote!(let fp = #device_path.fns().#table().#f;)
+            (quote!(let fp = #device_path.fns().#table().#f;), false)
         }
         Some(Table::Extension(e)) => {
             let fe = ident(&crate::names::feature(&e));
-            let msg = e.clone();
-            let field = f.clone();
-            // The function pointer is copied out, so that no borrow of the receiver's
-            // table is held across what the call does to the receiver.
-            quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#msg))?.#field;)
+            (
+                quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#e))?.#f;),
+                true,
+            )
         }
         None => return (quote!(), quote!(), None),
     };
-    let fallible_ext = matches!(table(model, &plan.name), Some(Table::Extension(_)));
     let mut args: Vec<TokenStream> = Vec::new(); // method parameters
     let mut pre: Vec<TokenStream> = Vec::new();
     let mut call_args: Vec<TokenStream> = Vec::new();
@@ -1037,15 +1038,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let body = if fallible && cmd.return_type != "VkResult" && two_call.is_none() {
         if ret_ty.to_string() == "()" {
             // A unit result is not passed through `Ok(..)`.
-            quote!(#host_sync #ext_check { #body } Ok(()))
+            quote!(#host_sync #load_fp { #body } Ok(()))
         } else {
-            quote!(#host_sync #ext_check Ok({ #body }))
+            quote!(#host_sync #load_fp Ok({ #body }))
         }
     } else {
-        quote!(#host_sync #ext_check #body)
+        quote!(#host_sync #load_fp #body)
     };
     // `'a` is declared only where a parameter or the result names it.
-    let names_a = |t: &TokenStream| t.to_string().contains("'a");
     let lt = if lifetimes && (args.iter().any(names_a) || names_a(&ret)) {
         quote!(<'a>)
     } else {
@@ -1156,7 +1156,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .collect();
         let v_args = read.iter().map(|(a, _)| a);
         let v_names = read.iter().map(|(_, n)| n);
-        let v_lt = if read.iter().any(|(a, _)| a.to_string().contains("'a")) {
+        let v_lt = if read.iter().any(|(a, _)| names_a(a)) {
             lt.clone()
         } else {
             quote!()
@@ -1270,6 +1270,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     };
     (impl_header(plan, cmd, &cfg), method, validator)
+}
+
+/// Whether a parameter or result type names the lifetime `'a`, which the method
+/// then declares.
+fn names_a(t: &TokenStream) -> bool {
+    t.to_string().contains("'a")
 }
 
 /// The `impl` block header a command's methods go in: its receiver (a recorder in the

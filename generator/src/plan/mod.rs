@@ -101,10 +101,7 @@ impl<'c, 'm> Plans<'c, 'm> {
     /// Plan every emitted command and struct, and settle every rule.
     pub fn build(cx: &'c Context<'m>) -> Plans<'c, 'm> {
         let commands = commands::plans(cx);
-        let ok: Vec<&commands::Plan> = commands
-            .iter()
-            .filter_map(|(_, p)| p.as_ref().ok())
-            .collect();
+        let ok = planned(&commands);
         let checker = checks::Checker::new(cx, &ok);
         let records = settle::records(cx, &checker, &commands);
         let item_of: BTreeMap<&str, &str> = cx
@@ -133,9 +130,14 @@ impl<'c, 'm> Plans<'c, 'm> {
 
     /// The commands that have a plan.
     pub fn ok(&self) -> Vec<&commands::Plan> {
-        self.commands
-            .iter()
-            .filter_map(|(_, p)| p.as_ref().ok())
-            .collect()
+        planned(&self.commands)
     }
+}
+
+/// The commands of `commands` that have a plan.
+fn planned(commands: &[(String, Result<commands::Plan, String>)]) -> Vec<&commands::Plan> {
+    commands
+        .iter()
+        .filter_map(|(_, p)| p.as_ref().ok())
+        .collect()
 }
