@@ -86,6 +86,7 @@ for name in "${names[@]}"; do
         ;;
     all-ash-exts)
         cfg="$scratch/all.toml"
+        echo "wide-check: $name: $(all_ash_extensions | wc -l) extensions"
         {
             echo 'api_version = "1.3"'
             echo 'extensions = ['
