@@ -46,6 +46,7 @@ mod allocation;
 #[cfg(feature = "ext_debug_utils")]
 mod debug_log;
 mod frames;
+mod hooks;
 mod mapping;
 mod physical;
 mod presence;

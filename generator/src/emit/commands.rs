@@ -12,6 +12,7 @@ use crate::plan::checks::Checker;
 use crate::plan::commands::{
     parent_of, parent_param, recorded, Param, Plan, RecorderState, Transition,
 };
+use crate::plan::hooks::{special, Call, Keeps};
 use crate::plan::shape::{struct_members, Member};
 use crate::plan::types::{ash_type, spelled};
 use crate::plan::Context;
@@ -19,236 +20,43 @@ use crate::plan::Plans;
 use proc_macro2::{Ident, TokenStream};
 use quote::{quote, ToTokens};
 
-/// A submission command's infos and the walk over one of them.
-fn submit_parts(name: &str) -> (TokenStream, TokenStream) {
-    match name {
-        "vkQueueSubmit" => (quote!(submits), super::reach::walk_fn("VkSubmitInfo")),
-        "vkQueueSubmit2" => (quote!(submits), super::reach::walk_fn("VkSubmitInfo2")),
-        _ => (quote!(bind_info), super::reach::walk_fn("VkBindSparseInfo")),
-    }
-}
-
-/// The raw command buffers a submission command's infos name.
-fn submitted_command_buffers(name: &str) -> TokenStream {
-    match name {
-        "vkQueueSubmit" => quote!({
-            __safety!("the safe structs store every array with its length.");
-            submits
-                .iter()
-                .flat_map(|s| unsafe {
-                    crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
-                })
-                .copied()
-                .collect()
-        }),
-        "vkQueueSubmit2" => quote!({
-            __safety!("the safe structs store every array with its length.");
-            submits
-                .iter()
-                .flat_map(|s| unsafe {
-                    crate::retention::raw_slice(
-                        s.p_command_buffer_infos,
-                        s.command_buffer_info_count,
-                    )
-                })
-                .map(|i| i.command_buffer)
-                .collect()
-        }),
-        _ => quote!(smallvec::SmallVec::new()),
-    }
-}
-
-/// Checks a safe method runs in every build, after its `runtime_implicit_validations`
-/// checks, because without them a safe call could break memory safety: the code and
-/// the rules it checks. The submission template holds the logic; see the
-/// `submission` table of `settle.rs` for how the report counts them.
-fn always_checks(name: &str) -> Option<(TokenStream, Vec<&'static str>)> {
-    let submit = |rules: TokenStream, with_cbs: bool, vuids: Vec<&'static str>| {
-        let cbs = submitted_command_buffers(name);
-        let check_cbs = with_cbs.then(|| {
-            quote! {
-                let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = #cbs;
-                crate::submission::check_command_buffers(self.parent(), &cbs, &#rules)?;
-            }
-        });
-        // The batches' timeline semaphore values.
-        let check_timeline = match name {
-            "vkQueueSubmit" => Some((quote!(submits), quote!(crate::submission::SUBMIT_TIMELINE))),
-            "vkQueueBindSparse" => Some((quote!(bind_info), quote!(crate::submission::BIND_SPARSE_TIMELINE))),
-            _ => None,
+/// A call of a hand-written hook of the special-case table: `crate::path(args)`, with
+/// `created` standing for the value the method would return without the hook.
+fn hook(c: &Call, created: &TokenStream) -> TokenStream {
+    let path = c.path.split("::").map(ident);
+    let args = c.args.iter().map(|a| match *a {
+        "self" => quote!(self),
+        "created" => created.clone(),
+        a => ident(a).into_token_stream(),
+    });
+    let call = quote!(crate::#(#path)::*(#(#args),*));
+    match c.promise {
+        Some(promise) => {
+            let safety = super::safety(promise);
+            quote!({ #safety unsafe { #call } })
         }
-        .map(|(batches, rules)| {
-            quote! {
-                for b in #batches {
-                    let b = b.as_raw();
-                    __safety!("the safe structs store each array with its length and chain only structs pushed through `push_next`.");
-                    unsafe {
-                        crate::submission::check_timeline_batch(
-                            self.parent().live(),
-                            crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
-                            crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
-                            b.p_next,
-                            &#rules,
-                        )
-                    }?;
-                }
-            }
-        });
-        Some((
-            quote! {
-                crate::submission::check_fence(fence, &#rules)?;
-                #check_cbs
-                #check_timeline
-            },
-            vuids,
-        ))
-    };
-    match name {
-        "vkQueueSubmit" => submit(
-            quote!(crate::submission::SUBMIT),
-            true,
-            vec![
-                "VUID-vkQueueSubmit-fence-00063",
-                "VUID-vkQueueSubmit-fence-00064",
-                "VUID-VkSubmitInfo-pCommandBuffers-00075",
-                "VUID-vkQueueSubmit-pCommandBuffers-00070",
-                "VUID-vkQueueSubmit-pCommandBuffers-00071",
-                "VUID-vkQueueSubmit-pCommandBuffers-00072",
-                "VUID-vkQueueSubmit-pCommandBuffers-00073",
-                "VUID-VkSubmitInfo-pWaitSemaphores-03239",
-                "VUID-VkSubmitInfo-pNext-03240",
-                "VUID-VkSubmitInfo-pNext-03241",
-            ],
-        ),
-        "vkQueueSubmit2" => submit(
-            quote!(crate::submission::SUBMIT2),
-            true,
-            vec![
-                "VUID-vkQueueSubmit2-fence-04894",
-                "VUID-vkQueueSubmit2-fence-04895",
-                "VUID-VkCommandBufferSubmitInfo-commandBuffer-03890",
-                "VUID-vkQueueSubmit2-commandBuffer-03874",
-                "VUID-vkQueueSubmit2-commandBuffer-03875",
-                "VUID-vkQueueSubmit2-commandBuffer-03876",
-                "VUID-vkQueueSubmit2-commandBuffer-03877",
-            ],
-        ),
-        "vkQueueBindSparse" => submit(
-            quote!(crate::submission::BIND_SPARSE),
-            false,
-            vec![
-                "VUID-vkQueueBindSparse-fence-01113",
-                "VUID-vkQueueBindSparse-fence-01114",
-                "VUID-VkBindSparseInfo-pWaitSemaphores-03246",
-                "VUID-VkBindSparseInfo-pNext-03247",
-                "VUID-VkBindSparseInfo-pNext-03248",
-            ],
-        ),
-        "vkResetFences" => Some((
-            quote! {
-                for f in fences {
-                    if f.submission().is_some_and(|sub| !sub.poll(self)) {
-                        return Err(Error::Validation {
-                            vuid: "VUID-vkResetFences-pFences-01123",
-                            message: "a fence is reset while the queue operation that signals it may still be executing".into(),
-                        });
-                    }
-                }
-            },
-            vec!["VUID-vkResetFences-pFences-01123"],
-        )),
-        "vkCmdExecuteCommands" => Some((
-            quote! {
-                for h in command_buffers {
-                    if h.uses().is_pending_exclusive(self.device()) {
-                        return Err(Error::Validation {
-                            vuid: "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
-                            message: "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing".into(),
-                        });
-                    }
-                }
-            },
-            vec!["VUID-vkCmdExecuteCommands-pCommandBuffers-00091"],
-        )),
-        "vkGetSemaphoreCounterValue" => Some((
-            quote!(crate::submission::check_semaphore_type(self.live(), &[semaphore.raw()], true, "VUID-vkGetSemaphoreCounterValue-semaphore-03255")?;),
-            vec!["VUID-vkGetSemaphoreCounterValue-semaphore-03255"],
-        )),
-        "vkWaitSemaphores" => Some((
-            quote! {
-                __safety!("the safe struct stores the array with its length.");
-                let semaphores = unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
-                crate::submission::check_semaphore_type(self.live(), semaphores, true, "VUID-VkSemaphoreWaitInfo-pSemaphores-03256")?;
-            },
-            vec!["VUID-VkSemaphoreWaitInfo-pSemaphores-03256"],
-        )),
-        "vkSignalSemaphore" => Some((
-            quote!(crate::submission::check_semaphore_type(self.live(), &[signal_info.semaphore], true, "VUID-VkSemaphoreSignalInfo-semaphore-03257")?;),
-            vec!["VUID-VkSemaphoreSignalInfo-semaphore-03257"],
-        )),
-        "vkAcquireNextImageKHR" => Some((
-            quote! {
-                if let Some(semaphore) = semaphore {
-                    crate::submission::check_semaphore_type(self.live(), &[semaphore.raw()], false, "VUID-vkAcquireNextImageKHR-semaphore-03265")?;
-                }
-            },
-            vec!["VUID-vkAcquireNextImageKHR-semaphore-03265"],
-        )),
-        "vkAcquireNextImage2KHR" => Some((
-            quote!(crate::submission::check_semaphore_type(self.live(), &[acquire_info.semaphore], false, "VUID-VkAcquireNextImageInfoKHR-semaphore-03266")?;),
-            vec!["VUID-VkAcquireNextImageInfoKHR-semaphore-03266"],
-        )),
-        "vkQueuePresentKHR" => Some((
-            quote! {
-                __safety!("the safe struct stores the array with its length.");
-                let waits = unsafe { crate::retention::raw_slice(present_info.p_wait_semaphores, present_info.wait_semaphore_count) };
-                crate::submission::check_semaphore_type(self.parent().live(), waits, false, "VUID-vkQueuePresentKHR-pWaitSemaphores-03267")?;
-            },
-            vec!["VUID-vkQueuePresentKHR-pWaitSemaphores-03267"],
-        )),
-        "vkResetCommandBuffer" => Some((
-            quote!(self.uses().check_reset(self.device(), self.parent().resets_buffers())?;),
-            vec![
-                "VUID-vkResetCommandBuffer-commandBuffer-00045",
-                "VUID-vkResetCommandBuffer-commandBuffer-00046",
-            ],
-        )),
-        "vkResetCommandPool" => Some((
-            quote!(crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;),
-            vec!["VUID-vkResetCommandPool-commandPool-00040"],
-        )),
-        "vkResetDescriptorPool" => Some((
-            quote! {
-                if descriptor_pool.has_sets() {
-                    return Err(Error::Validation {
-                        vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
-                        message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset".into(),
-                    });
-                }
-            },
-            vec!["VUID-vkResetDescriptorPool-descriptorPool-00313"],
-        )),
-        "vkUpdateDescriptorSets" => Some((
-            quote! {
-                __safety!("the safe struct is transparent over ash's.");
-                crate::retention::Live::check_writes(unsafe {
-                    core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len())
-                })?;
-            },
-            vec!["VUID-VkWriteDescriptorSet-descriptorType-00324"],
-        )),
-        _ => None,
+        None => call,
     }
 }
 
-/// A handle in a command's create info that the created object must not outlive
-/// (member, handle type): the method takes it again as a wrapper, writes it into the
-/// info and the new object keeps it alive.
-fn kept_member(name: &str) -> Option<(&'static str, &'static str)> {
-    match name {
-        // VUID-vkDestroySurfaceKHR-surface-01266: swapchains go before their surface.
-        "vkCreateSwapchainKHR" => Some(("surface", "VkSurfaceKHR")),
-        _ => None,
+/// A hook called as a statement.
+fn hook_stmt(c: &Call) -> TokenStream {
+    match c.promise {
+        Some(promise) => {
+            let safety = super::safety(promise);
+            let call = hook(
+                &Call {
+                    promise: None,
+                    ..*c
+                },
+                &quote!(),
+            );
+            quote!(#safety unsafe { #call };)
+        }
+        None => {
+            let call = hook(c, &quote!());
+            quote!(#call;)
+        }
     }
 }
 
@@ -373,10 +181,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let mut ret_expr = quote!(());
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
+    let special = special(&plan.name);
     // A recorded command that an always-on check may refuse returns its error.
     let mut fallible = cmd.return_type == "VkResult"
         || fallible_ext
-        || (is_cmd && always_checks(&plan.name).is_some());
+        || (is_cmd && special.is_some_and(|s| s.check.is_some()));
     let mut lifetimes = false;
     let created_ty = cmd
         .params
@@ -482,8 +291,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 if is_cmd {
                     pre.push(quote!(for h in #name { self.retain(h.retained()); }));
                 }
-                pre.push(quote!(let #name: smallvec::SmallVec<[vk::#w; 8]> = #name.iter().map(|h| h.raw()).collect();));
-                call_args.push(quote!(#name.as_ptr(),));
+                let raw = ident(&format!("{name}_raw"));
+                pre.push(quote!(let #raw: smallvec::SmallVec<[vk::#w; 8]> = #name.iter().map(|h| h.raw()).collect();));
+                call_args.push(quote!(#raw.as_ptr(),));
             }
             Param::StructRef { optional } => {
                 lifetimes = true;
@@ -496,7 +306,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     call_args.push(
                         quote!(#name.map_or(core::ptr::null(), |s| s as *const #ty as *const _),),
                     );
-                } else if let Some((member, kept_ty)) = kept_member(&plan.name) {
+                } else if let Some(Keeps::Member(member, kept_ty)) = special.map(|s| s.keeps) {
                     let kept_name = ident(&param(member));
                     let member = field_ident(member);
                     let kept_w = type_ident(kept_ty);
@@ -507,6 +317,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         // object can keep it alive.
                         let mut #name = *#name;
                         #name.as_raw_mut().#member = #kept_name.raw();
+                        let #name = &#name;
                     });
                     call_args.push(quote!(#name.as_raw(),));
                 } else if is_override {
@@ -521,6 +332,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         // the created objects can hold it.
                         let mut #name = *#name;
                         #name.as_raw_mut().#member = #parent_name.raw();
+                        let #name = &#name;
                     });
                     call_args.push(quote!(#name.as_raw(),));
                 } else {
@@ -616,69 +428,29 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     pre.push(quote!(let mut out = vk::#w::null();));
                     call_args.push(quote!(&mut out,));
                     ret_ty = quote!(#w);
-                    ret_expr = match p.type_name.as_str() {
-                        "VkInstance" => quote!(crate::handles::Instance::from_created(
-                            self,
-                            out,
-                            &create_info.enabled_extensions(),
-                            create_info.api_version()
-                        )),
-                        "VkDevice" => quote!(crate::handles::Device::from_created(
-                            self,
-                            out,
-                            &create_info.enabled_extensions()
-                        )),
-                        "VkDescriptorPool" => {
-                            quote!(#w::from_raw(out, #parent_arg None, true).with_flags(create_info.flags))
+                    ret_expr = match special.map_or(Keeps::Reached, |s| s.keeps) {
+                        Keeps::Member(member, _) => {
+                            let kept_name = ident(&param(member));
+                            quote!(#w::from_raw(out, #parent_arg Some(#kept_name.retained()), true))
                         }
-                        "VkCommandPool" => quote!({
-                            let pool = #w::from_raw(out, #parent_arg None, true).with_create_flags(create_info.flags);
-                            #[cfg(feature = "runtime_implicit_validations")]
-                            let pool = pool.with_queue_flags(crate::validation::family_flags(self, create_info.queue_family_index));
-                            pool
-                        }),
-                        // Mapping needs the allocation's size and memory type.
-                        "VkDeviceMemory" => quote!({
-                            let memory = #w::from_raw(out, #parent_arg None, true);
-                            self.live().allocated(out, allocate_info.allocation_size, allocate_info.memory_type_index);
-                            memory
-                        }),
-                        "VkQueue" => {
-                            let family = if plan.name == "vkGetDeviceQueue2" {
-                                quote!(queue_info.queue_family_index)
-                            } else {
-                                quote!(queue_family_index)
-                            };
-                            quote!({
-                                let queue = #w::from_raw(out, #parent_arg None, true);
-                                #[cfg(feature = "runtime_implicit_validations")]
-                                let queue = queue.with_queue_flags(crate::validation::family_flags(self, #family));
-                                queue
-                            })
+                        Keeps::Nothing => quote!(#w::from_raw(out, #parent_arg None, true)),
+                        Keeps::Reached => {
+                            let keep = info_param
+                                .as_ref()
+                                .filter(|_| lvl == Level::Device)
+                                .and_then(|(info, ty)| {
+                                    keep_expr(
+                                        cx,
+                                        ty,
+                                        info,
+                                        &created_parent,
+                                        override_member,
+                                        &device_path,
+                                    )
+                                })
+                                .unwrap_or(quote!(None));
+                            quote!(#w::from_raw(out, #parent_arg #keep, true))
                         }
-                        _ => match kept_member(&plan.name) {
-                            Some((member, _)) => {
-                                let kept_name = ident(&param(member));
-                                quote!(#w::from_raw(out, #parent_arg Some(#kept_name.retained()), true))
-                            }
-                            None => {
-                                let keep = info_param
-                                    .as_ref()
-                                    .filter(|_| lvl == Level::Device)
-                                    .and_then(|(info, ty)| {
-                                        keep_expr(
-                                            cx,
-                                            ty,
-                                            info,
-                                            &created_parent,
-                                            override_member,
-                                            &device_path,
-                                        )
-                                    })
-                                    .unwrap_or(quote!(None));
-                                quote!(#w::from_raw(out, #parent_arg #keep, true))
-                            }
-                        },
                     };
                 } else {
                     let pp = model.parse_field(p);
@@ -776,144 +548,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
         }
     }
-    match plan.name.as_str() {
-        "vkBindBufferMemory" | "vkBindImageMemory" => {
-            let obj = ident(&param(&cmd.params[1].name));
-            post.push(quote!(#obj.retain_memory(memory.retained());));
+    if let Some(sp) = special {
+        pre.extend(sp.before.as_ref().map(hook_stmt));
+        post.extend(sp.after.as_ref().map(hook_stmt));
+        if let Some(c) = sp.created {
+            ret_expr = hook(&c, &ret_expr);
         }
-        "vkQueueSubmit" | "vkQueueSubmit2" | "vkQueueBindSparse" => {
-            let (list, walk) = submit_parts(&plan.name);
-            let cbs = submitted_command_buffers(&plan.name);
-            // What a timeline signal tells of each batch (sparse binds: nothing yet).
-            let batches = match plan.name.as_str() {
-                "vkQueueSubmit" => quote!(crate::submission::submit_timeline_batches(device.live(), submits)),
-                "vkQueueSubmit2" => quote!(crate::submission::submit2_timeline_batches(device.live(), submits)),
-                _ => quote!(Vec::new()),
-            };
-            post.push(quote! {
-                // The fence holds everything the submission names (its command buffers,
-                // which keep what their recordings use, its semaphores, and whatever
-                // else its structs reach) until the submission is known complete.
-                let device = self.parent();
-                let mut kept = Vec::new();
-                for s in #list {
-                    __safety!("the safe structs store every array with its length.");
-                    unsafe { #walk(s.as_raw(), device.live(), &mut kept) };
-                }
-                let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = #cbs;
-                let batches = #batches;
-                crate::submission::submitted(device, self.raw(), Some(fence), &cbs, kept, batches);
-            });
-        }
-        "vkQueuePresentKHR" => pre.push(quote! {
-            // Held before the call: a presentation the engine rejects still waits on
-            // its semaphores. The queue holds it until it is known complete.
-            let device = self.parent();
-            let mut kept = Vec::new();
-            __safety!("the safe struct stores every array with its length.");
-            unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
-            self.hold(crate::submission::submitted(device, self.raw(), None, &[], kept, Vec::new()));
-        }),
-        "vkResetCommandBuffer" => post.push(quote! {
-            // Initial state; the last recording's objects go, as no submission uses
-            // the buffer (checked).
-            self.uses().reset();
-            self.keep_alive(Vec::new());
-        }),
-        "vkResetDescriptorPool" => post.push(quote!(descriptor_pool.forget_deferred();)),
-        "vkResetCommandPool" => post.push(quote! {
-            for u in command_pool.buffer_uses() {
-                u.reset();
-            }
-        }),
-        // A timeline value seen on the host: the batches that signal it are done.
-        "vkGetSemaphoreCounterValue" => post.push(quote! {
-            self.live().ledger().reached(semaphore.raw(), out);
-        }),
-        "vkWaitSemaphores" => post.push(quote! {
-            // Only a wait for all of them says each reached its value.
-            if r == vk::Result::SUCCESS && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY) {
-                __safety!("the safe struct stores both arrays with their one length.");
-                let semaphores = unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
-                __safety!("the same length, from the same safe struct.");
-                let values = unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
-                for (s, v) in semaphores.iter().zip(values) {
-                    self.live().ledger().reached(*s, *v);
-                }
-            }
-        }),
-        "vkQueueWaitIdle" => post.push(quote!(self.parent().live().ledger().retire_queue(self.raw());)),
-        "vkDeviceWaitIdle" => post.push(quote!(self.live().ledger().retire_all();)),
-        "vkCmdExecuteCommands" => pre.insert(0, quote! {
-            // A primary is pending while it may run; so are the secondaries it executes.
-            for h in command_buffers {
-                self.command_buffer().uses().executes(h.uses());
-            }
-        }),
-        "vkUpdateDescriptorSets" => post.push(quote! {
-            __safety!("the safe structs are transparent over ash's, their setters keep every array that is set as long as the count, and `check_writes` refused a write whose type selects an array that is not set.");
-            unsafe {
-                self.live().write_sets(
-                    core::slice::from_raw_parts(descriptor_writes.as_ptr().cast(), descriptor_writes.len()),
-                    core::slice::from_raw_parts(descriptor_copies.as_ptr().cast(), descriptor_copies.len()),
-                );
-            }
-        }),
-        "vkUpdateDescriptorSetWithTemplate" => post.push(quote! {
-            __safety!("the caller of this unsafe method vouches that `data` is laid out as the template's entries describe.");
-            unsafe { self.live().write_template(descriptor_set.raw(), descriptor_update_template.entries(), data) };
-        }),
-        "vkGetFenceStatus" => post.push(quote!(if r == vk::Result::SUCCESS { fence.completed(); })),
-        "vkWaitForFences" => post.push(quote! {
-            if r == vk::Result::SUCCESS {
-                if wait_all == vk::TRUE || fences_w.len() == 1 {
-                    for f in fences_w { f.completed(); }
-                } else {
-                    // One fence at least is signalled; ask each which.
-                    for f in fences_w {
-                        if let Some(sub) = f.submission() { sub.poll(self); }
-                    }
-                }
-            }
-        }),
-        _ => {}
-    }
-    if plan.name == "vkWaitForFences" {
-        pre.insert(0, quote!(let fences_w: &[&Fence] = fences;));
-    }
-    if plan.name == "vkCreateDescriptorUpdateTemplate" {
-        ret_expr = quote!({
-            let template: DescriptorUpdateTemplate = #ret_expr;
-            let raw = create_info.as_raw();
-            __safety!("the safe setter stored the entries with their count.");
-            template.with_entries(unsafe { crate::retention::raw_slice(raw.p_descriptor_update_entries, raw.descriptor_update_entry_count) })
-        });
-    }
-    if plan.name == "vkCreateSemaphore" {
-        ret_expr = quote!({
-            let semaphore: Semaphore = #ret_expr;
-            if crate::submission::creates_timeline(create_info) {
-                self.live().set_timeline(semaphore.raw());
-            }
-            semaphore
-        });
-    }
-    if plan.name == "vkAllocateDescriptorSets" {
-        ret_expr = quote!({
-            let sets: Vec<DescriptorSet> = #ret_expr;
-            sets.into_iter().map(|set| set.with_token(descriptor_pool.set_token())).collect()
-        });
-    }
-    if plan.name == "vkAllocateCommandBuffers" {
-        ret_expr = quote!({
-            let cbs: Vec<CommandBuffer> = #ret_expr;
-            let cbs: Vec<CommandBuffer> = cbs.into_iter().map(|cb| cb.with_level(allocate_info.level)).collect();
-            for cb in &cbs {
-                self.register_command_buffer(cb);
-                command_pool.adopt(cb.uses());
-            }
-            cbs
-        });
     }
     let fp = quote!(fp);
     let success: Vec<String> = cmd
@@ -963,12 +603,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     } else if cmd.return_type == "VkResult" {
         // A creation that lacks a layer, extension or feature names what it lacks.
-        let error = match plan.name.as_str() {
-            "vkCreateInstance" => {
-                quote!(crate::presence::instance_error(self, create_info, r))
-            }
-            "vkCreateDevice" => quote!(crate::presence::device_error(self, create_info, r)),
-            _ => quote!(Error::Vk(r)),
+        let error = match special.and_then(|s| s.error) {
+            Some(c) => hook(&c, &ret_expr),
+            None => quote!(Error::Vk(r)),
         };
         let ok = if multi_success && ret_ty.to_string() == "()" {
             // Nothing else to return: the success code alone (SUBOPTIMAL_KHR, say).
@@ -1103,7 +740,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         super::doc_rules(all, &plan.name)
     );
     let checks = checker.command_checks(plan);
-    let always = always_checks(&plan.name);
+    let always = special.and_then(|s| s.check);
     let mut validator = None;
     let method = if checks.is_empty() && always.is_none() {
         quote! {
@@ -1122,11 +759,17 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .collect();
         let codes = checks.iter().map(super::checks::render);
         let scope = scope_expr(cx, plan, &device_path);
-        let (always_code, always_vuids) = always.unwrap_or_default();
+        let always_code = always.map(|c| {
+            let c = hook(&c, &ret_expr);
+            quote!(#c?;)
+        });
+        let always_vuids = special
+            .filter(|s| s.check.is_some())
+            .map_or(&[][..], |s| s.settles);
         let owned: Vec<String> = checks
             .iter()
             .filter_map(|c| c.vuid.as_deref())
-            .chain(always_vuids.iter().copied())
+            .chain(always_vuids.iter().map(|(v, _)| *v))
             .map(|v| format!("`{v}`"))
             .collect();
         let unchecked_doc = format!(

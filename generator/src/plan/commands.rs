@@ -149,11 +149,6 @@ pub fn handled_elsewhere(cx: &Context, name: &str) -> Option<&'static str> {
     }
 }
 
-/// The queue operations whose fence is required: it holds what they use until they
-/// complete, and `vkQueueSubmit*` and `vkQueueBindSparse` have no other completion a
-/// host can see.
-const SUBMITS_WITH_FENCE: &[&str] = &["vkQueueSubmit", "vkQueueSubmit2", "vkQueueBindSparse"];
-
 /// The parent a wrapper holds: the handle it is created from (the pool for command
 /// buffers and descriptor sets).
 pub fn parent_of(cx: &Context, handle: &str) -> Option<String> {
@@ -219,12 +214,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             if p.static_array.is_some() {
                 Param::Array
             } else if category == Some("handle") {
-                // A submission's fence is required: it is what keeps the submitted
-                // command buffers alive until they complete.
-                let fence_of_submit =
-                    SUBMITS_WITH_FENCE.contains(&name) && p.type_name == "VkFence";
+                let required = super::hooks::special(name)
+                    .is_some_and(|s| s.required.contains(&p.name.as_str()));
                 Param::Handle {
-                    optional: optional && !fence_of_submit,
+                    optional: optional && !required,
                 }
             } else if category.is_some() || super::shape::is_c_scalar(&p.type_name) {
                 if matches!(category, Some("struct" | "union"))

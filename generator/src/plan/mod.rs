@@ -2,12 +2,14 @@
 //! emitted command its parameters' shapes ([`commands::Plan`]); for every struct its
 //! members' shapes ([`shape`]); the dynamic checks of commands and structs
 //! ([`checks::Checker`]); the host synchronization of each call ([`sync`]); which
-//! structs can reach a handle ([`reach`]); and for every rule of the emitted API how
+//! structs can reach a handle ([`reach`]); the special cases of commands, in one
+//! table ([`hooks`]); and for every rule of the emitted API how
 //! it is settled ([`settle`]). Renderers (`emit`) and the report are functions of
 //! [`Plans`]; nothing here imports them.
 
 pub mod checks;
 pub mod commands;
+pub mod hooks;
 pub mod reach;
 pub mod settle;
 pub mod shape;

@@ -3,6 +3,7 @@
 
 use super::checks::Checker;
 use super::commands::{handled_elsewhere, Param, Plan};
+use super::hooks::How;
 use super::shape::{struct_members, Member};
 use super::{Context, Record, Settlement};
 use crate::validity::{Category, ImplicitKind};
@@ -43,91 +44,21 @@ pub fn records(
 
 fn explicit(vuid: &str, text: &str) -> Settlement {
     let t = text.to_lowercase();
-    if t.contains("all submitted commands that refer to") {
+    if let Some(how) = super::hooks::settled(vuid) {
+        match how {
+            How::Static(m) => Settlement::Static(m.into()),
+            How::Dynamic(m) => Settlement::Dynamic(m.into()),
+            How::User(m) => Settlement::User(m.into()),
+        }
+    } else if t.contains("all submitted commands that refer to") {
         Settlement::Static(
             "destroyed only when the last wrapper clone goes; recorded command buffers and pending submissions hold clones until their fence signals".into(),
         )
-    } else if vuid == "VUID-vkDestroySurfaceKHR-surface-01266" {
-        Settlement::Static("a swapchain wrapper keeps its surface alive".into())
-    } else if let Some(settlement) = mapping(vuid) {
-        settlement
-    } else if let Some(settlement) = submission(vuid) {
-        settlement
     } else if t.contains("vkallocationcallbacks were provided when") {
         Settlement::Static("the wrappers never pass allocation callbacks".into())
     } else {
         Settlement::User("explicit rule; the wrappers do not check it".into())
     }
-}
-
-/// The rules the submission template settles: the checks every build runs before a
-/// queue operation, a fence reset or a `begin` (the commands emitter's
-/// `always_checks` and the recorder call them), and the lifetimes its ledger holds.
-fn submission(vuid: &str) -> Option<Settlement> {
-    let fence = "checks the fence is unsignalled and not in use by a queue operation that may still be executing";
-    let cbs = "checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions";
-    Some(match vuid {
-        "VUID-vkQueueSubmit-fence-00063"
-        | "VUID-vkQueueSubmit-fence-00064"
-        | "VUID-vkQueueSubmit2-fence-04894"
-        | "VUID-vkQueueSubmit2-fence-04895"
-        | "VUID-vkQueueBindSparse-fence-01113"
-        | "VUID-vkQueueBindSparse-fence-01114" => Settlement::Dynamic(fence.into()),
-        "VUID-VkSubmitInfo-pCommandBuffers-00075"
-        | "VUID-vkQueueSubmit-pCommandBuffers-00070"
-        | "VUID-vkQueueSubmit-pCommandBuffers-00071"
-        | "VUID-vkQueueSubmit-pCommandBuffers-00072"
-        | "VUID-VkCommandBufferSubmitInfo-commandBuffer-03890"
-        | "VUID-vkQueueSubmit2-commandBuffer-03874"
-        | "VUID-vkQueueSubmit2-commandBuffer-03875"
-        | "VUID-vkQueueSubmit2-commandBuffer-03876" => Settlement::Dynamic(cbs.into()),
-        "VUID-vkQueueSubmit-pCommandBuffers-00073" | "VUID-vkQueueSubmit2-commandBuffer-03877" => {
-            Settlement::User(
-                "checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet".into(),
-            )
-        }
-        "VUID-vkResetFences-pFences-01123" => Settlement::Dynamic(
-            "refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled)".into(),
-        ),
-        "VUID-vkBeginCommandBuffer-commandBuffer-00049" => Settlement::Dynamic(
-            "`CommandBuffer::begin` refuses a buffer that a submission may still be executing; a recording holds the buffer mutably, so none is under way".into(),
-        ),
-        "VUID-vkBeginCommandBuffer-commandBuffer-00050" => Settlement::Dynamic(
-            "`CommandBuffer::begin` refuses a buffer begun before when its pool was created without RESET_COMMAND_BUFFER".into(),
-        ),
-        "VUID-vkResetCommandBuffer-commandBuffer-00046" => Settlement::Dynamic(
-            "refuses a buffer whose pool was created without RESET_COMMAND_BUFFER".into(),
-        ),
-        "VUID-vkDestroyFence-fence-01120" => Settlement::Static(
-            "a fence whose queue operation may still be executing waits for it before it is destroyed".into(),
-        ),
-        "VUID-vkDestroySemaphore-semaphore-01137" => Settlement::Static(
-            "every queue operation holds the semaphores it names until it is known complete (its fence, a later fence of its queue, or an idle wait)".into(),
-        ),
-        _ => return None,
-    })
-}
-
-/// The rules of vkMapMemory and vkUnmapMemory that `DeviceMemory::map` (the mapping
-/// template) settles: it maps whole memories only, refuses a second mapping and
-/// memory that is not host-visible, and its guard alone unmaps.
-fn mapping(vuid: &str) -> Option<Settlement> {
-    let whole = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
-    Some(match vuid {
-        "VUID-vkMapMemory-memory-00678" => Settlement::Dynamic(
-            "`DeviceMemory::map` refuses memory that a live `MappedMemory` maps".into(),
-        ),
-        "VUID-vkMapMemory-memory-00682" => Settlement::Dynamic(
-            "`DeviceMemory::map` refuses memory whose type is not HOST_VISIBLE".into(),
-        ),
-        "VUID-vkMapMemory-offset-00679"
-        | "VUID-vkMapMemory-size-00680"
-        | "VUID-vkMapMemory-size-00681" => Settlement::Static(whole.into()),
-        "VUID-vkUnmapMemory-memory-00689" => Settlement::Static(
-            "only a `MappedMemory` guard unmaps, once, the memory it mapped".into(),
-        ),
-        _ => return None,
-    })
 }
 
 fn implicit(

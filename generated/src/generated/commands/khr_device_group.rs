@@ -25,12 +25,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_acquire_next_image2_khr(acquire_info);
             r?;
         }
-        crate::submission::check_semaphore_type(
-            self.live(),
-            &[acquire_info.semaphore],
-            false,
-            "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
-        )?;
+        crate::hooks::acquire_next_image2_khr_checks(self, acquire_info)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.acquire_next_image2_khr_unchecked(acquire_info) }
     }

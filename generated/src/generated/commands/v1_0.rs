@@ -53,6 +53,7 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
         let fp = self.fns().fp_v1_0().allocate_command_buffers;
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().command_pool = command_pool.raw();
+        let allocate_info = &allocate_info;
         let mut out = vec![
             vk::CommandBuffer::null(); allocate_info.as_raw().command_buffer_count as
             usize
@@ -62,21 +63,17 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok({
-            let cbs: Vec<CommandBuffer> = out
-                .into_iter()
-                .map(|raw| CommandBuffer::from_raw(raw, command_pool, None, true))
-                .collect();
-            let cbs: Vec<CommandBuffer> = cbs
-                .into_iter()
-                .map(|cb| cb.with_level(allocate_info.level))
-                .collect();
-            for cb in &cbs {
-                self.register_command_buffer(cb);
-                command_pool.adopt(cb.uses());
-            }
-            cbs
-        })
+        Ok(
+            crate::hooks::command_buffers_allocated(
+                self,
+                out
+                    .into_iter()
+                    .map(|raw| CommandBuffer::from_raw(raw, command_pool, None, true))
+                    .collect(),
+                command_pool,
+                allocate_info,
+            ),
+        )
     }
     /**`vkAllocateDescriptorSets`
 
@@ -130,6 +127,7 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
         let fp = self.fns().fp_v1_0().allocate_descriptor_sets;
         let mut allocate_info = *allocate_info;
         allocate_info.as_raw_mut().descriptor_pool = descriptor_pool.raw();
+        let allocate_info = &allocate_info;
         let mut out = vec![
             vk::DescriptorSet::null(); allocate_info.as_raw().descriptor_set_count as
             usize
@@ -139,15 +137,15 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok({
-            let sets: Vec<DescriptorSet> = out
-                .into_iter()
-                .map(|raw| DescriptorSet::from_raw(raw, descriptor_pool, None, true))
-                .collect();
-            sets.into_iter()
-                .map(|set| set.with_token(descriptor_pool.set_token()))
-                .collect()
-        })
+        Ok(
+            crate::hooks::descriptor_sets_allocated(
+                out
+                    .into_iter()
+                    .map(|raw| DescriptorSet::from_raw(raw, descriptor_pool, None, true))
+                    .collect(),
+                descriptor_pool,
+            ),
+        )
     }
     /**`vkAllocateMemory`
 
@@ -198,16 +196,14 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok({
-            let memory = DeviceMemory::from_raw(out, self, None, true);
-            self.live()
-                .allocated(
-                    out,
-                    allocate_info.allocation_size,
-                    allocate_info.memory_type_index,
-                );
-            memory
-        })
+        Ok(
+            crate::hooks::memory_allocated(
+                self,
+                DeviceMemory::from_raw(out, self, None, true),
+                out,
+                allocate_info,
+            ),
+        )
     }
     /**`vkBindBufferMemory`
 
@@ -267,7 +263,7 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        buffer.retain_memory(memory.retained());
+        crate::hooks::bind_buffer_memory_done(buffer, memory);
         Ok(())
     }
     /**`vkBindImageMemory`
@@ -328,7 +324,7 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        image.retain_memory(memory.retained());
+        crate::hooks::bind_image_memory_done(image, memory);
         Ok(())
     }
     /**`vkCreateBuffer`
@@ -501,16 +497,13 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok({
-            let pool = CommandPool::from_raw(out, self, None, true)
-                .with_create_flags(create_info.flags);
-            #[cfg(feature = "runtime_implicit_validations")]
-            let pool = pool
-                .with_queue_flags(
-                    crate::validation::family_flags(self, create_info.queue_family_index),
-                );
-            pool
-        })
+        Ok(
+            crate::hooks::command_pool_created(
+                self,
+                CommandPool::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateComputePipelines`
 
@@ -645,7 +638,12 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(DescriptorPool::from_raw(out, self, None, true).with_flags(create_info.flags))
+        Ok(
+            crate::hooks::descriptor_pool_created(
+                DescriptorPool::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateDescriptorSetLayout`
 
@@ -1445,13 +1443,13 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok({
-            let semaphore: Semaphore = Semaphore::from_raw(out, self, None, true);
-            if crate::submission::creates_timeline(create_info) {
-                self.live().set_timeline(semaphore.raw());
-            }
-            semaphore
-        })
+        Ok(
+            crate::hooks::semaphore_created(
+                self,
+                Semaphore::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateShaderModule`
 
@@ -1525,7 +1523,7 @@ The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        self.live().ledger().retire_all();
+        crate::hooks::device_wait_idle_done(self);
         Ok(())
     }
     /**`vkFlushMappedMemoryRanges`
@@ -1666,15 +1664,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         let mut out = vk::Queue::null();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), queue_family_index, queue_index, &mut out) };
-        {
-            let queue = Queue::from_raw(out, self, None, true);
-            #[cfg(feature = "runtime_implicit_validations")]
-            let queue = queue
-                .with_queue_flags(
-                    crate::validation::family_flags(self, queue_family_index),
-                );
-            queue
-        }
+        crate::hooks::queue_got(
+            self,
+            Queue::from_raw(out, self, None, true),
+            queue_family_index,
+        )
     }
     /**`vkGetEventStatus`
 
@@ -1750,9 +1744,7 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        if r == vk::Result::SUCCESS {
-            fence.completed();
-        }
+        crate::hooks::get_fence_status_done(fence, r);
         Ok(r)
     }
     /**`vkGetImageMemoryRequirements`
@@ -2148,13 +2140,18 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
             tuff_runtime::lock_all(syncs)
         };
         let fp = self.fns().fp_v1_0().merge_pipeline_caches;
-        let src_caches: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
+        let src_caches_raw: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
             .iter()
             .map(|h| h.raw())
             .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            fp(self.raw(), dst_cache.raw(), src_caches.len() as u32, src_caches.as_ptr())
+            fp(
+                self.raw(),
+                dst_cache.raw(),
+                src_caches.len() as u32,
+                src_caches_raw.as_ptr(),
+            )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
@@ -2167,12 +2164,11 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
 
 The rules are on [`vkResetCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandPool.html). Settled by the wrappers:
 
+- `VUID-vkResetCommandPool-commandPool-00040`: dynamic (refuses a pool one of whose buffers a submission may still be executing)
 - `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_command_pool(
         &self,
@@ -2190,7 +2186,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_reset_command_pool(command_pool, flags);
             r?;
         }
-        crate::submission::check_pool_reset(self, &command_pool.buffer_uses())?;
+        crate::hooks::reset_command_pool_checks(self, command_pool)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
     }
@@ -2217,9 +2213,7 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        for u in command_pool.buffer_uses() {
-            u.reset();
-        }
+        crate::hooks::reset_command_pool_done(command_pool);
         Ok(())
     }
     /**`vkResetDescriptorPool`
@@ -2228,12 +2222,11 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
 
 The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetDescriptorPool.html). Settled by the wrappers:
 
+- `VUID-vkResetDescriptorPool-descriptorPool-00313`: dynamic (refuses a pool whose sets are still alive (held by the program, a command buffer or a submission))
 - `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn reset_descriptor_pool(
         &self,
@@ -2251,13 +2244,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
             r?;
         }
-        if descriptor_pool.has_sets() {
-            return Err(Error::Validation {
-                vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
-                message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset"
-                    .into(),
-            });
-        }
+        crate::hooks::reset_descriptor_pool_checks(descriptor_pool)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
     }
@@ -2284,7 +2271,7 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        descriptor_pool.forget_deferred();
+        crate::hooks::reset_descriptor_pool_done(descriptor_pool);
         Ok(())
     }
     /**`vkResetEvent`
@@ -2361,15 +2348,7 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
             let r = self.validate_reset_fences(fences);
             r?;
         }
-        for f in fences {
-            if f.submission().is_some_and(|sub| !sub.poll(self)) {
-                return Err(Error::Validation {
-                    vuid: "VUID-vkResetFences-pFences-01123",
-                    message: "a fence is reset while the queue operation that signals it may still be executing"
-                        .into(),
-                });
-            }
-        }
+        crate::hooks::reset_fences_checks(self, fences)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_fences_unchecked(fences) }
     }
@@ -2389,12 +2368,12 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
             tuff_runtime::lock_all(syncs)
         };
         let fp = self.fns().fp_v1_0().reset_fences;
-        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
+        let fences_raw: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
             .map(|h| h.raw())
             .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), fences.len() as u32, fences.as_ptr()) };
+        let r = unsafe { fp(self.raw(), fences.len() as u32, fences_raw.as_ptr()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -2471,13 +2450,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
                 .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
             r?;
         }
-        // SAFETY: the safe struct is transparent over ash's.
-        crate::retention::Live::check_writes(unsafe {
-            core::slice::from_raw_parts(
-                descriptor_writes.as_ptr().cast(),
-                descriptor_writes.len(),
-            )
-        })?;
+        crate::hooks::update_descriptor_sets_checks(descriptor_writes)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
@@ -2506,22 +2479,11 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
                 descriptor_copies.as_ptr().cast(),
             )
         };
-        // SAFETY: the safe structs are transparent over ash's, their setters keep every array that
-        // is set as long as the count, and `check_writes` refused a write whose type selects an
-        // array that is not set.
-        unsafe {
-            self.live()
-                .write_sets(
-                    core::slice::from_raw_parts(
-                        descriptor_writes.as_ptr().cast(),
-                        descriptor_writes.len(),
-                    ),
-                    core::slice::from_raw_parts(
-                        descriptor_copies.as_ptr().cast(),
-                        descriptor_copies.len(),
-                    ),
-                );
-        }
+        crate::hooks::update_descriptor_sets_done(
+            self,
+            descriptor_writes,
+            descriptor_copies,
+        );
     }
     /**`vkWaitForFences`
 
@@ -2561,31 +2523,18 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
         timeout: u64,
     ) -> Result<vk::Result> {
         let fp = self.fns().fp_v1_0().wait_for_fences;
-        let fences_w: &[&Fence] = fences;
-        let fences: smallvec::SmallVec<[vk::Fence; 8]> = fences
+        let fences_raw: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
             .map(|h| h.raw())
             .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            fp(self.raw(), fences.len() as u32, fences.as_ptr(), wait_all, timeout)
+            fp(self.raw(), fences.len() as u32, fences_raw.as_ptr(), wait_all, timeout)
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        if r == vk::Result::SUCCESS {
-            if wait_all == vk::TRUE || fences_w.len() == 1 {
-                for f in fences_w {
-                    f.completed();
-                }
-            } else {
-                for f in fences_w {
-                    if let Some(sub) = f.submission() {
-                        sub.poll(self);
-                    }
-                }
-            }
-        }
+        crate::hooks::wait_for_fences_done(self, fences, wait_all, r);
         Ok(r)
     }
 }
@@ -2639,13 +2588,7 @@ The caller upholds the rules that [`Self::create_device`] checks at run time (th
         if r.as_raw() < 0 {
             return Err(crate::presence::device_error(self, create_info, r));
         }
-        Ok(
-            crate::handles::Device::from_created(
-                self,
-                out,
-                &create_info.enabled_extensions(),
-            ),
-        )
+        Ok(crate::hooks::device_created(self, out, create_info))
     }
     /**`vkEnumerateDeviceExtensionProperties`
 
@@ -3029,14 +2972,7 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time (
         if r.as_raw() < 0 {
             return Err(crate::presence::instance_error(self, create_info, r));
         }
-        Ok(
-            crate::handles::Instance::from_created(
-                self,
-                out,
-                &create_info.enabled_extensions(),
-                create_info.api_version(),
-            ),
-        )
+        Ok(crate::hooks::instance_created(self, out, create_info))
     }
     /**`vkEnumerateInstanceExtensionProperties`
 
@@ -3152,27 +3088,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_queue_bind_sparse(bind_info, fence);
             r?;
         }
-        crate::submission::check_fence(fence, &crate::submission::BIND_SPARSE)?;
-        for b in bind_info {
-            let b = b.as_raw();
-            // SAFETY: the safe structs store each array with its length and chain only structs
-            // pushed through `push_next`.
-            unsafe {
-                crate::submission::check_timeline_batch(
-                    self.parent().live(),
-                    crate::retention::raw_slice(
-                        b.p_wait_semaphores,
-                        b.wait_semaphore_count,
-                    ),
-                    crate::retention::raw_slice(
-                        b.p_signal_semaphores,
-                        b.signal_semaphore_count,
-                    ),
-                    b.p_next,
-                    &crate::submission::BIND_SPARSE_TIMELINE,
-                )
-            }?;
-        }
+        crate::hooks::queue_bind_sparse_checks(self, bind_info, fence)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
     }
@@ -3207,24 +3123,7 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        let device = self.parent();
-        let mut kept = Vec::new();
-        for s in bind_info {
-            // SAFETY: the safe structs store every array with its length.
-            unsafe {
-                crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept)
-            };
-        }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = smallvec::SmallVec::new();
-        let batches = Vec::new();
-        crate::submission::submitted(
-            device,
-            self.raw(),
-            Some(fence),
-            &cbs,
-            kept,
-            batches,
-        );
+        crate::hooks::queue_bind_sparse_done(self, bind_info, fence);
         Ok(())
     }
     /**`vkQueueSubmit`
@@ -3265,45 +3164,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             let r = self.validate_queue_submit(submits, fence);
             r?;
         }
-        crate::submission::check_fence(fence, &crate::submission::SUBMIT)?;
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
-            // SAFETY: the safe structs store every array with its length.
-            submits
-                .iter()
-                .flat_map(|s| unsafe {
-                    crate::retention::raw_slice(
-                        s.p_command_buffers,
-                        s.command_buffer_count,
-                    )
-                })
-                .copied()
-                .collect()
-        };
-        crate::submission::check_command_buffers(
-            self.parent(),
-            &cbs,
-            &crate::submission::SUBMIT,
-        )?;
-        for b in submits {
-            let b = b.as_raw();
-            // SAFETY: the safe structs store each array with its length and chain only structs
-            // pushed through `push_next`.
-            unsafe {
-                crate::submission::check_timeline_batch(
-                    self.parent().live(),
-                    crate::retention::raw_slice(
-                        b.p_wait_semaphores,
-                        b.wait_semaphore_count,
-                    ),
-                    crate::retention::raw_slice(
-                        b.p_signal_semaphores,
-                        b.signal_semaphore_count,
-                    ),
-                    b.p_next,
-                    &crate::submission::SUBMIT_TIMELINE,
-                )
-            }?;
-        }
+        crate::hooks::queue_submit_checks(self, submits, fence)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_submit_unchecked(submits, fence) }
     }
@@ -3333,34 +3194,7 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        let device = self.parent();
-        let mut kept = Vec::new();
-        for s in submits {
-            // SAFETY: the safe structs store every array with its length.
-            unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
-        }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
-            // SAFETY: the safe structs store every array with its length.
-            submits
-                .iter()
-                .flat_map(|s| unsafe {
-                    crate::retention::raw_slice(
-                        s.p_command_buffers,
-                        s.command_buffer_count,
-                    )
-                })
-                .copied()
-                .collect()
-        };
-        let batches = crate::submission::submit_timeline_batches(device.live(), submits);
-        crate::submission::submitted(
-            device,
-            self.raw(),
-            Some(fence),
-            &cbs,
-            kept,
-            batches,
-        );
+        crate::hooks::queue_submit_done(self, submits, fence);
         Ok(())
     }
     /**`vkQueueWaitIdle`
@@ -3384,7 +3218,7 @@ The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.o
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        self.parent().live().ledger().retire_queue(self.raw());
+        crate::hooks::queue_wait_idle_done(self);
         Ok(())
     }
 }
@@ -3395,11 +3229,10 @@ impl CommandBuffer {
 
 The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandBuffer.html). Settled by the wrappers:
 
+- `VUID-vkResetCommandBuffer-commandBuffer-00045`: dynamic (refuses a buffer that a submission may still be executing)
 - `VUID-vkResetCommandBuffer-commandBuffer-00046`: dynamic (refuses a buffer whose pool was created without RESET_COMMAND_BUFFER)
 - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
     #[inline]
     pub fn reset_command_buffer(
         &mut self,
@@ -3417,7 +3250,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_reset_command_buffer(flags);
             r?;
         }
-        self.uses().check_reset(self.device(), self.parent().resets_buffers())?;
+        crate::hooks::reset_command_buffer_checks(self)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.reset_command_buffer_unchecked(flags) }
     }
@@ -3444,8 +3277,7 @@ The caller upholds the rules that [`Self::reset_command_buffer`] checks at run t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        self.uses().reset();
-        self.keep_alive(Vec::new());
+        crate::hooks::reset_command_buffer_done(self);
         Ok(())
     }
 }

@@ -119,7 +119,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
         for h in descriptor_sets {
             self.retain(h.retained());
         }
-        let descriptor_sets: smallvec::SmallVec<[vk::DescriptorSet; 8]> = descriptor_sets
+        let descriptor_sets_raw: smallvec::SmallVec<[vk::DescriptorSet; 8]> = descriptor_sets
             .iter()
             .map(|h| h.raw())
             .collect();
@@ -131,7 +131,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
                 layout.raw(),
                 first_set,
                 descriptor_sets.len() as u32,
-                descriptor_sets.as_ptr(),
+                descriptor_sets_raw.as_ptr(),
                 dynamic_offsets.len() as u32,
                 dynamic_offsets.as_ptr().cast(),
             )
@@ -285,7 +285,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
         for h in buffers {
             self.retain(h.retained());
         }
-        let buffers: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
+        let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
             .iter()
             .map(|h| h.raw())
             .collect();
@@ -295,7 +295,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
                 self.raw(),
                 first_binding,
                 buffers.len() as u32,
-                buffers.as_ptr(),
+                buffers_raw.as_ptr(),
                 offsets.as_ptr().cast(),
             )
         };
@@ -347,6 +347,7 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
 
 The rules are on [`vkCmdExecuteCommands`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdExecuteCommands.html). Settled by the wrappers:
 
+- `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`: dynamic (refuses a secondary without SIMULTANEOUS_USE that a submission may still be executing)
 - `VUID-vkCmdExecuteCommands-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdExecuteCommands-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdExecuteCommands-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -356,7 +357,7 @@ The rules are on [`vkCmdExecuteCommands`'s reference page](https://registry.khro
 - `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdExecuteCommands-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 51 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 50 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_execute_commands(
         &mut self,
@@ -367,15 +368,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 51 (exp
             let r = self.validate_cmd_execute_commands(command_buffers);
             r?;
         }
-        for h in command_buffers {
-            if h.uses().is_pending_exclusive(self.device()) {
-                return Err(Error::Validation {
-                    vuid: "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
-                    message: "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing"
-                        .into(),
-                });
-            }
-        }
+        crate::hooks::cmd_execute_commands_checks(self, command_buffers)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
     }
@@ -392,18 +385,20 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
         let fp = self.device().fns().fp_v1_0().cmd_execute_commands;
         {
             for h in command_buffers {
-                self.command_buffer().uses().executes(h.uses());
-            }
-            for h in command_buffers {
                 self.retain(h.retained());
             }
-            let command_buffers: smallvec::SmallVec<[vk::CommandBuffer; 8]> = command_buffers
+            let command_buffers_raw: smallvec::SmallVec<[vk::CommandBuffer; 8]> = command_buffers
                 .iter()
                 .map(|h| h.raw())
                 .collect();
+            crate::hooks::cmd_execute_commands_before(self, command_buffers);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
-                fp(self.raw(), command_buffers.len() as u32, command_buffers.as_ptr())
+                fp(
+                    self.raw(),
+                    command_buffers.len() as u32,
+                    command_buffers_raw.as_ptr(),
+                )
             };
         }
         Ok(())
@@ -1057,7 +1052,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
         for h in events {
             self.retain(h.retained());
         }
-        let events: smallvec::SmallVec<[vk::Event; 8]> = events
+        let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
             .iter()
             .map(|h| h.raw())
             .collect();
@@ -1066,7 +1061,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
             fp(
                 self.raw(),
                 events.len() as u32,
-                events.as_ptr(),
+                events_raw.as_ptr(),
                 src_stage_mask,
                 dst_stage_mask,
                 memory_barriers.len() as u32,

@@ -136,37 +136,33 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok({
-            let template: DescriptorUpdateTemplate = DescriptorUpdateTemplate::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::descriptor_update_template_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            );
-            let raw = create_info.as_raw();
-            // SAFETY: the safe setter stored the entries with their count.
-            template
-                .with_entries(unsafe {
-                    crate::retention::raw_slice(
-                        raw.p_descriptor_update_entries,
-                        raw.descriptor_update_entry_count,
-                    )
-                })
-        })
+        Ok(
+            crate::hooks::descriptor_update_template_created(
+                DescriptorUpdateTemplate::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::descriptor_update_template_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateSamplerYcbcrConversion`
 
@@ -381,15 +377,11 @@ The caller upholds the rules that [`Self::get_device_queue2`] checks at run time
                 &mut out,
             )
         };
-        {
-            let queue = Queue::from_raw(out, self, None, true);
-            #[cfg(feature = "runtime_implicit_validations")]
-            let queue = queue
-                .with_queue_flags(
-                    crate::validation::family_flags(self, queue_info.queue_family_index),
-                );
-            queue
-        }
+        crate::hooks::queue2_got(
+            self,
+            Queue::from_raw(out, self, None, true),
+            queue_info,
+        )
     }
     /**`vkGetImageMemoryRequirements2`
 
@@ -585,12 +577,12 @@ The caller upholds the rules that [`Self::update_descriptor_set_with_template`] 
         // SAFETY: the caller of this unsafe method vouches that `data` is laid out as the
         // template's entries describe.
         unsafe {
-            self.live()
-                .write_template(
-                    descriptor_set.raw(),
-                    descriptor_update_template.entries(),
-                    data,
-                )
+            crate::hooks::update_descriptor_set_with_template_done(
+                self,
+                descriptor_set,
+                descriptor_update_template,
+                data,
+            )
         };
     }
 }

@@ -120,12 +120,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreCounterValue.html). Settled by the wrappers:
 
+- `VUID-vkGetSemaphoreCounterValue-semaphore-03255`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
 - `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
         #[cfg(feature = "runtime_implicit_validations")]
@@ -133,12 +132,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_semaphore_counter_value(semaphore);
             r?;
         }
-        crate::submission::check_semaphore_type(
-            self.live(),
-            &[semaphore.raw()],
-            true,
-            "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
-        )?;
+        crate::hooks::get_semaphore_counter_value_checks(self, semaphore)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
     }
@@ -159,7 +153,7 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        self.live().ledger().reached(semaphore.raw(), out);
+        crate::hooks::semaphore_value_seen(self, semaphore, out);
         Ok(out)
     }
     /**`vkResetQueryPool`
@@ -218,12 +212,7 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
-        crate::submission::check_semaphore_type(
-            self.live(),
-            &[signal_info.semaphore],
-            true,
-            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
-        )?;
+        crate::hooks::signal_semaphore_checks(self, signal_info)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.signal_semaphore_unchecked(signal_info) }
     }
@@ -266,19 +255,7 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
             let r = self.validate_wait_semaphores(wait_info);
             r?;
         }
-        // SAFETY: the safe struct stores the array with its length.
-        let semaphores = unsafe {
-            crate::retention::raw_slice(
-                wait_info.p_semaphores,
-                wait_info.semaphore_count,
-            )
-        };
-        crate::submission::check_semaphore_type(
-            self.live(),
-            semaphores,
-            true,
-            "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
-        )?;
+        crate::hooks::wait_semaphores_checks(self, wait_info)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
     }
@@ -305,27 +282,7 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        if r == vk::Result::SUCCESS
-            && !wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY)
-        {
-            // SAFETY: the safe struct stores both arrays with their one length.
-            let semaphores = unsafe {
-                crate::retention::raw_slice(
-                    wait_info.p_semaphores,
-                    wait_info.semaphore_count,
-                )
-            };
-            // SAFETY: the same length, from the same safe struct.
-            let values = unsafe {
-                crate::retention::raw_slice(
-                    wait_info.p_values,
-                    wait_info.semaphore_count,
-                )
-            };
-            for (s, v) in semaphores.iter().zip(values) {
-                self.live().ledger().reached(*s, *v);
-            }
-        }
+        crate::hooks::wait_semaphores_done(self, wait_info, r);
         Ok(r)
     }
 }

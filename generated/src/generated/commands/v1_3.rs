@@ -390,25 +390,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             let r = self.validate_queue_submit2(submits, fence);
             r?;
         }
-        crate::submission::check_fence(fence, &crate::submission::SUBMIT2)?;
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
-            // SAFETY: the safe structs store every array with its length.
-            submits
-                .iter()
-                .flat_map(|s| unsafe {
-                    crate::retention::raw_slice(
-                        s.p_command_buffer_infos,
-                        s.command_buffer_info_count,
-                    )
-                })
-                .map(|i| i.command_buffer)
-                .collect()
-        };
-        crate::submission::check_command_buffers(
-            self.parent(),
-            &cbs,
-            &crate::submission::SUBMIT2,
-        )?;
+        crate::hooks::queue_submit2_checks(self, submits, fence)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.queue_submit2_unchecked(submits, fence) }
     }
@@ -438,37 +420,7 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        let device = self.parent();
-        let mut kept = Vec::new();
-        for s in submits {
-            // SAFETY: the safe structs store every array with its length.
-            unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
-        }
-        let cbs: smallvec::SmallVec<[vk::CommandBuffer; 8]> = {
-            // SAFETY: the safe structs store every array with its length.
-            submits
-                .iter()
-                .flat_map(|s| unsafe {
-                    crate::retention::raw_slice(
-                        s.p_command_buffer_infos,
-                        s.command_buffer_info_count,
-                    )
-                })
-                .map(|i| i.command_buffer)
-                .collect()
-        };
-        let batches = crate::submission::submit2_timeline_batches(
-            device.live(),
-            submits,
-        );
-        crate::submission::submitted(
-            device,
-            self.raw(),
-            Some(fence),
-            &cbs,
-            kept,
-            batches,
-        );
+        crate::hooks::queue_submit2_done(self, submits, fence);
         Ok(())
     }
 }

@@ -591,7 +591,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
         for h in buffers {
             self.retain(h.retained());
         }
-        let buffers: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
+        let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
             .iter()
             .map(|h| h.raw())
             .collect();
@@ -601,7 +601,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
                 self.raw(),
                 first_binding,
                 buffers.len() as u32,
-                buffers.as_ptr(),
+                buffers_raw.as_ptr(),
                 offsets.as_ptr().cast(),
                 sizes.as_ptr().cast(),
                 strides.as_ptr().cast(),
@@ -1292,7 +1292,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
         for h in events {
             self.retain(h.retained());
         }
-        let events: smallvec::SmallVec<[vk::Event; 8]> = events
+        let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
             .iter()
             .map(|h| h.raw())
             .collect();
@@ -1301,7 +1301,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
             fp(
                 self.raw(),
                 events.len() as u32,
-                events.as_ptr(),
+                events_raw.as_ptr(),
                 dependency_infos.as_ptr().cast(),
             )
         };

@@ -1776,11 +1776,12 @@ unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInf
 
 The rules are on [`VkSemaphoreSignalInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSignalInfo.html). Settled by the wrappers:
 
+- `VUID-VkSemaphoreSignalInfo-semaphore-03257`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
 - `VUID-VkSemaphoreSignalInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreSignalInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreSignalInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSignalInfo<'a> {
@@ -1854,14 +1855,13 @@ for SemaphoreTypeCreateInfo<'a> {}
 
 The rules are on [`VkSemaphoreWaitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreWaitInfo.html). Settled by the wrappers:
 
+- `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
 - `VUID-VkSemaphoreWaitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreWaitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreWaitInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreWaitInfo-pValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreWaitInfo<'a> {

@@ -1,0 +1,648 @@
+//! The hand-written parts of generated commands: what the generator's special-case
+//! table (`generator/src/plan/hooks.rs`) says a command calls beyond its parameters.
+//!
+//! Each function is named in one row of that table, which also lists the rules it
+//! settles, so the report counts exactly what these functions check. `*_checks` run in
+//! every build before the call (after the `runtime_implicit_validations` checks);
+//! `*_before` and `*_done` are the bookkeeping around a successful call; `*_created`,
+//! `*_allocated` and `*_got` finish the wrapper a command returns.
+
+use crate::handles::*;
+use crate::recorder::{Recorder, State};
+use crate::structs::*;
+use crate::submission::{self, SubmitRules};
+use crate::{Error, Handle, Result};
+use ash::vk;
+use smallvec::SmallVec;
+
+/// The raw command buffers of `vkQueueSubmit` batches.
+fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
+    submits
+        .iter()
+        // SAFETY: the safe structs store every array with its length.
+        .flat_map(|s| unsafe {
+            crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+        })
+        .copied()
+        .collect()
+}
+
+/// The raw command buffers of `vkQueueSubmit2` batches.
+fn submit2_command_buffers(submits: &[SubmitInfo2<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
+    submits
+        .iter()
+        // SAFETY: the safe structs store every array with its length.
+        .flat_map(|s| unsafe {
+            crate::retention::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
+        })
+        .map(|i| i.command_buffer)
+        .collect()
+}
+
+/// Refuses timeline semaphores of a batch without one value each.
+///
+/// # Safety
+///
+/// The arrays and chain come from a safe struct: each array stored with its length,
+/// and only structs pushed through `push_next` chained.
+unsafe fn check_batch(
+    queue: &Queue,
+    waits: *const vk::Semaphore,
+    wait_count: u32,
+    signals: *const vk::Semaphore,
+    signal_count: u32,
+    next: *const core::ffi::c_void,
+    rules: &submission::TimelineRules,
+) -> Result<()> {
+    // SAFETY: the caller's promise, passed on.
+    unsafe {
+        submission::check_timeline_batch(
+            queue.parent().live(),
+            crate::retention::raw_slice(waits, wait_count),
+            crate::retention::raw_slice(signals, signal_count),
+            next,
+            rules,
+        )
+    }
+}
+
+/// The checks of `vkQueueSubmit` that memory safety needs: the fence, the command
+/// buffers' states and the batches' timeline values.
+pub(crate) fn queue_submit_checks(
+    queue: &Queue,
+    submits: &[SubmitInfo<'_>],
+    fence: &Fence,
+) -> Result<()> {
+    submit_checks(
+        queue,
+        fence,
+        &submit_command_buffers(submits),
+        &submission::SUBMIT,
+    )?;
+    for b in submits {
+        // SAFETY: `b` is a safe struct.
+        unsafe {
+            check_batch(
+                queue,
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &submission::SUBMIT_TIMELINE,
+            )
+        }?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkQueueSubmit2`: the fence and the command buffers' states.
+pub(crate) fn queue_submit2_checks(
+    queue: &Queue,
+    submits: &[SubmitInfo2<'_>],
+    fence: &Fence,
+) -> Result<()> {
+    submit_checks(
+        queue,
+        fence,
+        &submit2_command_buffers(submits),
+        &submission::SUBMIT2,
+    )
+}
+
+/// The checks of `vkQueueBindSparse`: the fence and the batches' timeline values.
+pub(crate) fn queue_bind_sparse_checks(
+    queue: &Queue,
+    bind_info: &[BindSparseInfo<'_>],
+    fence: &Fence,
+) -> Result<()> {
+    submission::check_fence(fence, &submission::BIND_SPARSE)?;
+    for b in bind_info {
+        // SAFETY: `b` is a safe struct.
+        unsafe {
+            check_batch(
+                queue,
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &submission::BIND_SPARSE_TIMELINE,
+            )
+        }?;
+    }
+    Ok(())
+}
+
+fn submit_checks(
+    queue: &Queue,
+    fence: &Fence,
+    cbs: &[vk::CommandBuffer],
+    rules: &SubmitRules,
+) -> Result<()> {
+    submission::check_fence(fence, rules)?;
+    submission::check_command_buffers(queue.parent(), cbs, rules)
+}
+
+/// After `vkQueueSubmit`: the fence holds everything the submission names (its
+/// command buffers, which keep what their recordings use, its semaphores, and whatever
+/// else its structs reach) until the submission is known complete.
+pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: &Fence) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    for s in submits {
+        // SAFETY: the safe structs store every array with its length.
+        unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
+    }
+    let batches = submission::submit_timeline_batches(device.live(), submits);
+    let cbs = submit_command_buffers(submits);
+    submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+}
+
+/// After `vkQueueSubmit2`, as after `vkQueueSubmit`.
+pub(crate) fn queue_submit2_done(queue: &Queue, submits: &[SubmitInfo2<'_>], fence: &Fence) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    for s in submits {
+        // SAFETY: the safe structs store every array with its length.
+        unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
+    }
+    let batches = submission::submit2_timeline_batches(device.live(), submits);
+    let cbs = submit2_command_buffers(submits);
+    submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+}
+
+/// After `vkQueueBindSparse`: the fence holds what the binds name (a timeline signal
+/// tells nothing of sparse binds yet).
+pub(crate) fn queue_bind_sparse_done(
+    queue: &Queue,
+    bind_info: &[BindSparseInfo<'_>],
+    fence: &Fence,
+) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    for s in bind_info {
+        // SAFETY: the safe structs store every array with its length.
+        unsafe { crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept) };
+    }
+    submission::submitted(device, queue.raw(), Some(fence), &[], kept, Vec::new());
+}
+
+/// Refuses a fence whose queue operation may still be executing.
+pub(crate) fn reset_fences_checks(device: &Device, fences: &[&Fence]) -> Result<()> {
+    for f in fences {
+        if f.submission().is_some_and(|sub| !sub.poll(device)) {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetFences-pFences-01123",
+                message: "a fence is reset while the queue operation that signals it may still be executing".into(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a pending secondary that may not run twice at once.
+pub(crate) fn cmd_execute_commands_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) -> Result<()> {
+    for h in command_buffers {
+        if h.uses().is_pending_exclusive(recorder.device()) {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
+                message: "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing".into(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A primary is pending while it may run; so are the secondaries it executes.
+pub(crate) fn cmd_execute_commands_before<S: State>(
+    recorder: &Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) {
+    for h in command_buffers {
+        recorder.command_buffer().uses().executes(h.uses());
+    }
+}
+
+/// Refuses a binary semaphore.
+pub(crate) fn get_semaphore_counter_value_checks(
+    device: &Device,
+    semaphore: &Semaphore,
+) -> Result<()> {
+    submission::check_semaphore_type(
+        device.live(),
+        &[semaphore.raw()],
+        true,
+        "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
+    )
+}
+
+/// A timeline value seen on the host: the batches that signal it are done.
+pub(crate) fn semaphore_value_seen(device: &Device, semaphore: &Semaphore, value: u64) {
+    device.live().ledger().reached(semaphore.raw(), value);
+}
+
+/// Refuses binary semaphores.
+pub(crate) fn wait_semaphores_checks(
+    device: &Device,
+    wait_info: &SemaphoreWaitInfo<'_>,
+) -> Result<()> {
+    // SAFETY: the safe struct stores the array with its length.
+    let semaphores =
+        unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+    submission::check_semaphore_type(
+        device.live(),
+        semaphores,
+        true,
+        "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
+    )
+}
+
+/// After `vkWaitSemaphores`: only a wait for all of them says each reached its value.
+pub(crate) fn wait_semaphores_done(
+    device: &Device,
+    wait_info: &SemaphoreWaitInfo<'_>,
+    r: vk::Result,
+) {
+    if r != vk::Result::SUCCESS || wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY) {
+        return;
+    }
+    // SAFETY: the safe struct stores both arrays with their one length.
+    let semaphores =
+        unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+    // SAFETY: the same length, from the same safe struct.
+    let values =
+        unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
+    for (s, v) in semaphores.iter().zip(values) {
+        device.live().ledger().reached(*s, *v);
+    }
+}
+
+/// Refuses a binary semaphore.
+pub(crate) fn signal_semaphore_checks(
+    device: &Device,
+    signal_info: &SemaphoreSignalInfo<'_>,
+) -> Result<()> {
+    submission::check_semaphore_type(
+        device.live(),
+        &[signal_info.semaphore],
+        true,
+        "VUID-VkSemaphoreSignalInfo-semaphore-03257",
+    )
+}
+
+/// Refuses a timeline semaphore.
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn acquire_next_image_khr_checks(
+    device: &Device,
+    semaphore: Option<&Semaphore>,
+) -> Result<()> {
+    match semaphore {
+        Some(semaphore) => submission::check_semaphore_type(
+            device.live(),
+            &[semaphore.raw()],
+            false,
+            "VUID-vkAcquireNextImageKHR-semaphore-03265",
+        ),
+        None => Ok(()),
+    }
+}
+
+/// Refuses a timeline semaphore.
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn acquire_next_image2_khr_checks(
+    device: &Device,
+    acquire_info: &AcquireNextImageInfoKHR<'_>,
+) -> Result<()> {
+    submission::check_semaphore_type(
+        device.live(),
+        &[acquire_info.semaphore],
+        false,
+        "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
+    )
+}
+
+/// Refuses timeline semaphores.
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn queue_present_khr_checks(
+    queue: &Queue,
+    present_info: &PresentInfoKHR<'_>,
+) -> Result<()> {
+    // SAFETY: the safe struct stores the array with its length.
+    let waits = unsafe {
+        crate::retention::raw_slice(
+            present_info.p_wait_semaphores,
+            present_info.wait_semaphore_count,
+        )
+    };
+    submission::check_semaphore_type(
+        queue.parent().live(),
+        waits,
+        false,
+        "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
+    )
+}
+
+/// Held before the call: a presentation the engine rejects still waits on its
+/// semaphores. The queue holds it until it is known complete.
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn queue_present_khr_before(queue: &Queue, present_info: &PresentInfoKHR<'_>) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    // SAFETY: the safe struct stores every array with its length.
+    unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
+    queue.hold(submission::submitted(
+        device,
+        queue.raw(),
+        None,
+        &[],
+        kept,
+        Vec::new(),
+    ));
+}
+
+/// Refuses a buffer that may still be executing, or whose pool does not reset buffers.
+pub(crate) fn reset_command_buffer_checks(command_buffer: &CommandBuffer) -> Result<()> {
+    command_buffer.uses().check_reset(
+        command_buffer.device(),
+        command_buffer.parent().resets_buffers(),
+    )
+}
+
+/// Initial state; the last recording's objects go, as no submission uses the buffer
+/// (checked).
+pub(crate) fn reset_command_buffer_done(command_buffer: &CommandBuffer) {
+    command_buffer.uses().reset();
+    command_buffer.keep_alive(Vec::new());
+}
+
+/// Refuses a pool one of whose buffers may still be executing or is being recorded.
+pub(crate) fn reset_command_pool_checks(device: &Device, command_pool: &CommandPool) -> Result<()> {
+    submission::check_pool_reset(device, &command_pool.buffer_uses())
+}
+
+/// Every buffer of the pool is back in the initial state.
+pub(crate) fn reset_command_pool_done(command_pool: &CommandPool) {
+    for u in command_pool.buffer_uses() {
+        u.reset();
+    }
+}
+
+/// Refuses a pool whose sets are still alive.
+pub(crate) fn reset_descriptor_pool_checks(descriptor_pool: &DescriptorPool) -> Result<()> {
+    if descriptor_pool.has_sets() {
+        return Err(Error::Validation {
+            vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
+            message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset".into(),
+        });
+    }
+    Ok(())
+}
+
+/// The pool's sets are gone: it forgets those whose free it deferred.
+pub(crate) fn reset_descriptor_pool_done(descriptor_pool: &DescriptorPool) {
+    descriptor_pool.forget_deferred();
+}
+
+/// The safe structs as ash's, which they are transparent over.
+fn raw_writes<'s>(writes: &'s [WriteDescriptorSet<'_>]) -> &'s [vk::WriteDescriptorSet<'s>] {
+    // SAFETY: `WriteDescriptorSet` is `repr(transparent)` over ash's struct.
+    unsafe { core::slice::from_raw_parts(writes.as_ptr().cast(), writes.len()) }
+}
+
+/// Refuses a write whose descriptor type selects an array that is not set.
+pub(crate) fn update_descriptor_sets_checks(
+    descriptor_writes: &[WriteDescriptorSet<'_>],
+) -> Result<()> {
+    crate::retention::Live::check_writes(raw_writes(descriptor_writes))
+}
+
+/// The sets remember what they now hold.
+pub(crate) fn update_descriptor_sets_done(
+    device: &Device,
+    descriptor_writes: &[WriteDescriptorSet<'_>],
+    descriptor_copies: &[CopyDescriptorSet<'_>],
+) {
+    // SAFETY: `CopyDescriptorSet` is `repr(transparent)` over ash's struct.
+    let copies = unsafe {
+        core::slice::from_raw_parts(descriptor_copies.as_ptr().cast(), descriptor_copies.len())
+    };
+    // SAFETY: the setters of the safe structs keep every array that is set as long as
+    // its count, and `update_descriptor_sets_checks` refused a write whose type
+    // selects an array that is not set.
+    unsafe {
+        device
+            .live()
+            .write_sets(raw_writes(descriptor_writes), copies)
+    };
+}
+
+/// The set remembers what the template wrote into it.
+///
+/// # Safety
+///
+/// `data` is laid out as the template's entries describe (the promise of the
+/// `unsafe` method that calls this).
+pub(crate) unsafe fn update_descriptor_set_with_template_done(
+    device: &Device,
+    descriptor_set: &DescriptorSet,
+    descriptor_update_template: &DescriptorUpdateTemplate,
+    data: *const core::ffi::c_void,
+) {
+    // SAFETY: the caller's promise, passed on.
+    unsafe {
+        device.live().write_template(
+            descriptor_set.raw(),
+            descriptor_update_template.entries(),
+            data,
+        )
+    };
+}
+
+/// The buffer keeps its memory alive.
+pub(crate) fn bind_buffer_memory_done(buffer: &Buffer, memory: &DeviceMemory) {
+    buffer.retain_memory(memory.retained());
+}
+
+/// The image keeps its memory alive.
+pub(crate) fn bind_image_memory_done(image: &Image, memory: &DeviceMemory) {
+    image.retain_memory(memory.retained());
+}
+
+/// Every queue operation of the queue is complete.
+pub(crate) fn queue_wait_idle_done(queue: &Queue) {
+    queue.parent().live().ledger().retire_queue(queue.raw());
+}
+
+/// Every queue operation of the device is complete.
+pub(crate) fn device_wait_idle_done(device: &Device) {
+    device.live().ledger().retire_all();
+}
+
+/// A signalled fence's queue operation is complete.
+pub(crate) fn get_fence_status_done(fence: &Fence, r: vk::Result) {
+    if r == vk::Result::SUCCESS {
+        fence.completed();
+    }
+}
+
+/// After a successful wait, the fences known signalled are complete.
+pub(crate) fn wait_for_fences_done(
+    device: &Device,
+    fences: &[&Fence],
+    wait_all: vk::Bool32,
+    r: vk::Result,
+) {
+    if r != vk::Result::SUCCESS {
+        return;
+    }
+    if wait_all == vk::TRUE || fences.len() == 1 {
+        for f in fences {
+            f.completed();
+        }
+    } else {
+        // One fence at least is signalled; ask each which.
+        for f in fences {
+            if let Some(sub) = f.submission() {
+                sub.poll(device);
+            }
+        }
+    }
+}
+
+/// The instance remembers its enabled extensions and API version.
+pub(crate) fn instance_created(
+    entry: &crate::Entry,
+    raw: vk::Instance,
+    create_info: &InstanceCreateInfo<'_>,
+) -> Instance {
+    Instance::from_created(
+        entry,
+        raw,
+        &create_info.enabled_extensions(),
+        create_info.api_version(),
+    )
+}
+
+/// The device remembers its enabled extensions.
+pub(crate) fn device_created(
+    physical: &PhysicalDevice,
+    raw: vk::Device,
+    create_info: &DeviceCreateInfo<'_>,
+) -> Device {
+    Device::from_created(physical, raw, &create_info.enabled_extensions())
+}
+
+/// The pool remembers its flags (whether its sets may be freed one by one).
+pub(crate) fn descriptor_pool_created(
+    pool: DescriptorPool,
+    create_info: &DescriptorPoolCreateInfo<'_>,
+) -> DescriptorPool {
+    pool.with_flags(create_info.flags)
+}
+
+/// The pool remembers its flags, and its family's queue flags for the `cmdpool` checks.
+#[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_variables))]
+pub(crate) fn command_pool_created(
+    device: &Device,
+    pool: CommandPool,
+    create_info: &CommandPoolCreateInfo<'_>,
+) -> CommandPool {
+    let pool = pool.with_create_flags(create_info.flags);
+    #[cfg(feature = "runtime_implicit_validations")]
+    let pool = pool.with_queue_flags(crate::validation::family_flags(
+        device,
+        create_info.queue_family_index,
+    ));
+    pool
+}
+
+/// The device remembers the allocation's size and memory type, which mapping needs.
+pub(crate) fn memory_allocated(
+    device: &Device,
+    memory: DeviceMemory,
+    raw: vk::DeviceMemory,
+    allocate_info: &MemoryAllocateInfo<'_>,
+) -> DeviceMemory {
+    device.live().allocated(
+        raw,
+        allocate_info.allocation_size,
+        allocate_info.memory_type_index,
+    );
+    memory
+}
+
+/// The queue remembers its family's flags for the `queuetype` checks.
+#[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_variables))]
+pub(crate) fn queue_got(device: &Device, queue: Queue, queue_family_index: u32) -> Queue {
+    #[cfg(feature = "runtime_implicit_validations")]
+    let queue = queue.with_queue_flags(crate::validation::family_flags(device, queue_family_index));
+    queue
+}
+
+/// As [`queue_got`], for `vkGetDeviceQueue2`.
+pub(crate) fn queue2_got(
+    device: &Device,
+    queue: Queue,
+    queue_info: &DeviceQueueInfo2<'_>,
+) -> Queue {
+    queue_got(device, queue, queue_info.queue_family_index)
+}
+
+/// The device remembers which semaphores are timeline semaphores.
+pub(crate) fn semaphore_created(
+    device: &Device,
+    semaphore: Semaphore,
+    create_info: &SemaphoreCreateInfo<'_>,
+) -> Semaphore {
+    if submission::creates_timeline(create_info) {
+        device.live().set_timeline(semaphore.raw());
+    }
+    semaphore
+}
+
+/// The template remembers its entries, which say how to read the data of an update.
+pub(crate) fn descriptor_update_template_created(
+    template: DescriptorUpdateTemplate,
+    create_info: &DescriptorUpdateTemplateCreateInfo<'_>,
+) -> DescriptorUpdateTemplate {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stored the entries with their count.
+    template.with_entries(unsafe {
+        crate::retention::raw_slice(
+            raw.p_descriptor_update_entries,
+            raw.descriptor_update_entry_count,
+        )
+    })
+}
+
+/// Each set holds a token of its pool, which counts the sets alive.
+pub(crate) fn descriptor_sets_allocated(
+    sets: Vec<DescriptorSet>,
+    descriptor_pool: &DescriptorPool,
+) -> Vec<DescriptorSet> {
+    sets.into_iter()
+        .map(|set| set.with_token(descriptor_pool.set_token()))
+        .collect()
+}
+
+/// Each buffer remembers its level; the device and the pool track its lifecycle.
+pub(crate) fn command_buffers_allocated(
+    device: &Device,
+    cbs: Vec<CommandBuffer>,
+    command_pool: &CommandPool,
+    allocate_info: &CommandBufferAllocateInfo<'_>,
+) -> Vec<CommandBuffer> {
+    let cbs: Vec<CommandBuffer> = cbs
+        .into_iter()
+        .map(|cb| cb.with_level(allocate_info.level))
+        .collect();
+    for cb in &cbs {
+        device.register_command_buffer(cb);
+        command_pool.adopt(cb.uses());
+    }
+    cbs
+}

@@ -1,0 +1,520 @@
+//! The special cases of the emitted commands, in one table.
+//!
+//! Most of a command's method follows from its parameters' shapes. What does not (a
+//! check every build needs for memory safety, bookkeeping after a submission, a
+//! created wrapper that must remember its create flags) is a row here: the command,
+//! the hand-written functions of the `tuff` crate's `hooks` module it calls and when,
+//! and the rules those functions settle. The commands renderer turns a row into calls;
+//! the report reads the rules from the same row, so what is checked and what the
+//! report says is checked cannot drift apart. The functions carry the code and its
+//! `// SAFETY:` comments; the table carries only names.
+
+/// A call of a hand-written function: its path under the `tuff` crate root and the
+/// bindings of the generated method it takes, in order. A binding is `self`, a
+/// parameter's Rust name (a handle slice is the caller's `&[&T]`), `r` (the
+/// `vk::Result` of the call), `out` (the raw output of a create or get) or `created`
+/// (the wrapper the method would return without the hook).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Call {
+    /// `hooks::queue_submit_checks`.
+    pub path: &'static str,
+    /// The generated method's bindings passed to it.
+    pub args: &'static [&'static str],
+    /// For an `unsafe` function: why the call upholds its contract, which becomes the
+    /// call's `// SAFETY:` comment.
+    pub promise: Option<&'static str>,
+}
+
+/// How the special row settles one rule.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum How {
+    /// By construction; the text names the mechanism.
+    Static(&'static str),
+    /// By the row's `check` (or a hand-written method); the text names the check.
+    Dynamic(&'static str),
+    /// Checked, but a safe program can still break it; the text says how.
+    User(&'static str),
+}
+
+/// What a created object keeps alive of what its create info names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Keeps {
+    /// Every handle the info reaches (members, arrays, nested structs, `pNext`).
+    Reached,
+    /// Nothing: the objects the info names keep this one alive instead (a dedicated
+    /// allocation's image holds its memory once bound; the memory holding the image
+    /// too would be a cycle, and neither would ever be destroyed).
+    Nothing,
+    /// This handle member (member, handle type), which the method takes as a wrapper
+    /// and writes into the info, and nothing else.
+    Member(&'static str, &'static str),
+}
+
+/// One command's special case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Special {
+    /// The command, `vkQueueSubmit`.
+    pub command: &'static str,
+    /// Run by the safe method in every build, before the call, after the
+    /// `runtime_implicit_validations` checks; returns `Result<()>`. A recorded command
+    /// with one returns its error.
+    pub check: Option<Call>,
+    /// Run by the call's body before the call.
+    pub before: Option<Call>,
+    /// Run by the call's body after a successful call.
+    pub after: Option<Call>,
+    /// Returns the value the method returns, in place of `created`.
+    pub created: Option<Call>,
+    /// Builds the error of a failed call from `r`, in place of `Error::Vk(r)`.
+    pub error: Option<Call>,
+    /// What the created object keeps alive of what its create info names.
+    pub keeps: Keeps,
+    /// Optional parameters the method takes as required (C names): a submission's
+    /// fence is what keeps the submitted command buffers alive until they complete,
+    /// and queue operations have no other completion a host can see.
+    pub required: &'static [&'static str],
+    /// The rules the row settles.
+    pub settles: &'static [(&'static str, How)],
+}
+
+const NONE: Special = Special {
+    command: "",
+    check: None,
+    before: None,
+    after: None,
+    created: None,
+    error: None,
+    keeps: Keeps::Reached,
+    required: &[],
+    settles: &[],
+};
+
+const fn call(path: &'static str, args: &'static [&'static str]) -> Option<Call> {
+    Some(Call {
+        path,
+        args,
+        promise: None,
+    })
+}
+
+const fn unsafe_call(
+    path: &'static str,
+    args: &'static [&'static str],
+    promise: &'static str,
+) -> Option<Call> {
+    Some(Call {
+        path,
+        args,
+        promise: Some(promise),
+    })
+}
+
+const FENCE: &str =
+    "checks the fence is unsignalled and not in use by a queue operation that may still be executing";
+const CBS: &str = "checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions";
+const SECONDARY: &str = "checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet";
+const TIMELINE_VALUES: &str =
+    "checks each batch gives one value per timeline semaphore it waits on or signals";
+const UNPROVEN: &str =
+    "checked in every build, but no test breaks it yet, so the report does not count it";
+const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
+const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
+
+/// Every special case, by command.
+pub const SPECIALS: &[Special] = &[
+    Special {
+        command: "vkQueueSubmit",
+        check: call("hooks::queue_submit_checks", &["self", "submits", "fence"]),
+        after: call("hooks::queue_submit_done", &["self", "submits", "fence"]),
+        required: &["fence"],
+        settles: &[
+            ("VUID-vkQueueSubmit-fence-00063", How::Dynamic(FENCE)),
+            ("VUID-vkQueueSubmit-fence-00064", How::Dynamic(FENCE)),
+            ("VUID-VkSubmitInfo-pCommandBuffers-00075", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit-pCommandBuffers-00070", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit-pCommandBuffers-00071", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit-pCommandBuffers-00072", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit-pCommandBuffers-00073", How::User(SECONDARY)),
+            ("VUID-VkSubmitInfo-pWaitSemaphores-03239", How::Dynamic(TIMELINE_VALUES)),
+            ("VUID-VkSubmitInfo-pNext-03240", How::User(UNPROVEN)),
+            ("VUID-VkSubmitInfo-pNext-03241", How::Dynamic(TIMELINE_VALUES)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkQueueSubmit2",
+        check: call("hooks::queue_submit2_checks", &["self", "submits", "fence"]),
+        after: call("hooks::queue_submit2_done", &["self", "submits", "fence"]),
+        required: &["fence"],
+        settles: &[
+            ("VUID-vkQueueSubmit2-fence-04894", How::Dynamic(FENCE)),
+            ("VUID-vkQueueSubmit2-fence-04895", How::Dynamic(FENCE)),
+            ("VUID-VkCommandBufferSubmitInfo-commandBuffer-03890", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit2-commandBuffer-03874", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit2-commandBuffer-03875", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit2-commandBuffer-03876", How::Dynamic(CBS)),
+            ("VUID-vkQueueSubmit2-commandBuffer-03877", How::User(SECONDARY)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkQueueBindSparse",
+        check: call("hooks::queue_bind_sparse_checks", &["self", "bind_info", "fence"]),
+        after: call("hooks::queue_bind_sparse_done", &["self", "bind_info", "fence"]),
+        required: &["fence"],
+        settles: &[
+            ("VUID-vkQueueBindSparse-fence-01113", How::Dynamic(FENCE)),
+            ("VUID-vkQueueBindSparse-fence-01114", How::Dynamic(FENCE)),
+            ("VUID-VkBindSparseInfo-pWaitSemaphores-03246", How::User(UNPROVEN)),
+            ("VUID-VkBindSparseInfo-pNext-03247", How::User(UNPROVEN)),
+            ("VUID-VkBindSparseInfo-pNext-03248", How::User(UNPROVEN)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkResetFences",
+        check: call("hooks::reset_fences_checks", &["self", "fences"]),
+        settles: &[(
+            "VUID-vkResetFences-pFences-01123",
+            How::Dynamic("refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled)"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdExecuteCommands",
+        check: call("hooks::cmd_execute_commands_checks", &["self", "command_buffers"]),
+        before: call("hooks::cmd_execute_commands_before", &["self", "command_buffers"]),
+        settles: &[(
+            "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
+            How::Dynamic("refuses a secondary without SIMULTANEOUS_USE that a submission may still be executing"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetSemaphoreCounterValue",
+        check: call("hooks::get_semaphore_counter_value_checks", &["self", "semaphore"]),
+        after: call("hooks::semaphore_value_seen", &["self", "semaphore", "out"]),
+        settles: &[(
+            "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
+            How::Dynamic(SEMAPHORE_TYPE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkWaitSemaphores",
+        check: call("hooks::wait_semaphores_checks", &["self", "wait_info"]),
+        after: call("hooks::wait_semaphores_done", &["self", "wait_info", "r"]),
+        settles: &[(
+            "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
+            How::Dynamic(SEMAPHORE_TYPE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkSignalSemaphore",
+        check: call("hooks::signal_semaphore_checks", &["self", "signal_info"]),
+        settles: &[(
+            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
+            How::Dynamic(SEMAPHORE_TYPE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkAcquireNextImageKHR",
+        check: call("hooks::acquire_next_image_khr_checks", &["self", "semaphore"]),
+        settles: &[(
+            "VUID-vkAcquireNextImageKHR-semaphore-03265",
+            How::User(UNPROVEN),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkAcquireNextImage2KHR",
+        check: call("hooks::acquire_next_image2_khr_checks", &["self", "acquire_info"]),
+        settles: &[(
+            "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
+            How::User(UNPROVEN),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkQueuePresentKHR",
+        check: call("hooks::queue_present_khr_checks", &["self", "present_info"]),
+        before: call("hooks::queue_present_khr_before", &["self", "present_info"]),
+        settles: &[(
+            "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
+            How::User(UNPROVEN),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkResetCommandBuffer",
+        check: call("hooks::reset_command_buffer_checks", &["self"]),
+        after: call("hooks::reset_command_buffer_done", &["self"]),
+        settles: &[
+            (
+                "VUID-vkResetCommandBuffer-commandBuffer-00045",
+                How::Dynamic("refuses a buffer that a submission may still be executing"),
+            ),
+            (
+                "VUID-vkResetCommandBuffer-commandBuffer-00046",
+                How::Dynamic("refuses a buffer whose pool was created without RESET_COMMAND_BUFFER"),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkResetCommandPool",
+        check: call("hooks::reset_command_pool_checks", &["self", "command_pool"]),
+        after: call("hooks::reset_command_pool_done", &["command_pool"]),
+        settles: &[(
+            "VUID-vkResetCommandPool-commandPool-00040",
+            How::Dynamic("refuses a pool one of whose buffers a submission may still be executing"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkResetDescriptorPool",
+        check: call("hooks::reset_descriptor_pool_checks", &["descriptor_pool"]),
+        after: call("hooks::reset_descriptor_pool_done", &["descriptor_pool"]),
+        settles: &[(
+            "VUID-vkResetDescriptorPool-descriptorPool-00313",
+            How::Dynamic("refuses a pool whose sets are still alive (held by the program, a command buffer or a submission)"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkUpdateDescriptorSets",
+        check: call("hooks::update_descriptor_sets_checks", &["descriptor_writes"]),
+        after: call(
+            "hooks::update_descriptor_sets_done",
+            &["self", "descriptor_writes", "descriptor_copies"],
+        ),
+        settles: &[(
+            "VUID-VkWriteDescriptorSet-descriptorType-00324",
+            How::Dynamic("refuses a write whose descriptor type selects an array that is not set"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkUpdateDescriptorSetWithTemplate",
+        after: unsafe_call(
+            "hooks::update_descriptor_set_with_template_done",
+            &["self", "descriptor_set", "descriptor_update_template", "data"],
+            "the caller of this unsafe method vouches that `data` is laid out as the template's entries describe.",
+        ),
+        ..NONE
+    },
+    Special {
+        command: "vkBindBufferMemory",
+        after: call("hooks::bind_buffer_memory_done", &["buffer", "memory"]),
+        ..NONE
+    },
+    Special {
+        command: "vkBindImageMemory",
+        after: call("hooks::bind_image_memory_done", &["image", "memory"]),
+        ..NONE
+    },
+    Special {
+        command: "vkQueueWaitIdle",
+        after: call("hooks::queue_wait_idle_done", &["self"]),
+        ..NONE
+    },
+    Special {
+        command: "vkDeviceWaitIdle",
+        after: call("hooks::device_wait_idle_done", &["self"]),
+        ..NONE
+    },
+    Special {
+        command: "vkGetFenceStatus",
+        after: call("hooks::get_fence_status_done", &["fence", "r"]),
+        ..NONE
+    },
+    Special {
+        command: "vkWaitForFences",
+        after: call("hooks::wait_for_fences_done", &["self", "fences", "wait_all", "r"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateInstance",
+        created: call("hooks::instance_created", &["self", "out", "create_info"]),
+        error: call("presence::instance_error", &["self", "create_info", "r"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateDevice",
+        created: call("hooks::device_created", &["self", "out", "create_info"]),
+        error: call("presence::device_error", &["self", "create_info", "r"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateDescriptorPool",
+        created: call("hooks::descriptor_pool_created", &["created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateCommandPool",
+        created: call("hooks::command_pool_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkAllocateMemory",
+        keeps: Keeps::Nothing,
+        created: call("hooks::memory_allocated", &["self", "created", "out", "allocate_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkGetDeviceQueue",
+        created: call("hooks::queue_got", &["self", "created", "queue_family_index"]),
+        ..NONE
+    },
+    Special {
+        command: "vkGetDeviceQueue2",
+        created: call("hooks::queue2_got", &["self", "created", "queue_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateSemaphore",
+        created: call("hooks::semaphore_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateDescriptorUpdateTemplate",
+        created: call("hooks::descriptor_update_template_created", &["created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkAllocateDescriptorSets",
+        created: call("hooks::descriptor_sets_allocated", &["created", "descriptor_pool"]),
+        ..NONE
+    },
+    Special {
+        command: "vkAllocateCommandBuffers",
+        created: call(
+            "hooks::command_buffers_allocated",
+            &["self", "created", "command_pool", "allocate_info"],
+        ),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateSwapchainKHR",
+        // VUID-vkDestroySurfaceKHR-surface-01266: swapchains go before their surface.
+        keeps: Keeps::Member("surface", "VkSurfaceKHR"),
+        settles: &[(
+            "VUID-vkDestroySurfaceKHR-surface-01266",
+            How::Static("a swapchain wrapper keeps its surface alive"),
+        )],
+        ..NONE
+    },
+    // Rules settled by the hand-written parts of the crate that these commands
+    // live in rather than by a generated method.
+    Special {
+        command: "vkBeginCommandBuffer",
+        settles: &[
+            (
+                "VUID-vkBeginCommandBuffer-commandBuffer-00049",
+                How::Dynamic("`CommandBuffer::begin` refuses a buffer that a submission may still be executing; a recording holds the buffer mutably, so none is under way"),
+            ),
+            (
+                "VUID-vkBeginCommandBuffer-commandBuffer-00050",
+                How::Dynamic("`CommandBuffer::begin` refuses a buffer begun before when its pool was created without RESET_COMMAND_BUFFER"),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkDestroyFence",
+        settles: &[(
+            "VUID-vkDestroyFence-fence-01120",
+            How::Static("a fence whose queue operation may still be executing waits for it before it is destroyed"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkDestroySemaphore",
+        settles: &[(
+            "VUID-vkDestroySemaphore-semaphore-01137",
+            How::Static("every queue operation holds the semaphores it names until it is known complete (its fence, a later fence of its queue, or an idle wait)"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkMapMemory",
+        settles: &[
+            (
+                "VUID-vkMapMemory-memory-00678",
+                How::Dynamic("`DeviceMemory::map` refuses memory that a live `MappedMemory` maps"),
+            ),
+            (
+                "VUID-vkMapMemory-memory-00682",
+                How::Dynamic("`DeviceMemory::map` refuses memory whose type is not HOST_VISIBLE"),
+            ),
+            ("VUID-vkMapMemory-offset-00679", How::Static(WHOLE)),
+            ("VUID-vkMapMemory-size-00680", How::Static(WHOLE)),
+            ("VUID-vkMapMemory-size-00681", How::Static(WHOLE)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkUnmapMemory",
+        settles: &[(
+            "VUID-vkUnmapMemory-memory-00689",
+            How::Static("only a `MappedMemory` guard unmaps, once, the memory it mapped"),
+        )],
+        ..NONE
+    },
+];
+
+/// The special case of a command, if it has one.
+pub fn special(command: &str) -> Option<&'static Special> {
+    SPECIALS.iter().find(|s| s.command == command)
+}
+
+/// How the table settles a rule, if a row settles it.
+pub fn settled(vuid: &str) -> Option<How> {
+    SPECIALS
+        .iter()
+        .flat_map(|s| s.settles)
+        .find(|(v, _)| *v == vuid)
+        .map(|(_, how)| *how)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_command_has_one_row_and_a_rule_one_settlement() {
+        let mut commands = std::collections::BTreeSet::new();
+        let mut vuids = std::collections::BTreeSet::new();
+        for s in SPECIALS {
+            assert!(commands.insert(s.command), "two rows for {}", s.command);
+            for (v, _) in s.settles {
+                assert!(vuids.insert(*v), "{v} is settled by two rows");
+            }
+        }
+    }
+
+    #[test]
+    fn hooks_take_known_bindings() {
+        for s in SPECIALS {
+            for c in [s.check, s.before, s.after, s.created, s.error]
+                .into_iter()
+                .flatten()
+            {
+                assert!(
+                    c.path.starts_with("hooks::") || c.path.starts_with("presence::"),
+                    "{}: {} is not in a hand-written module",
+                    s.command,
+                    c.path
+                );
+                assert!(
+                    !c.args.is_empty(),
+                    "{}: {} takes nothing",
+                    s.command,
+                    c.path
+                );
+            }
+        }
+    }
+}
