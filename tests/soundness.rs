@@ -1559,3 +1559,204 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
     s.device.reset_fences(&[&done]).expect("reset");
     assert_silent(&s.messages);
 }
+
+/// A copy that reaches past either buffer, or reads what it writes, or uses a buffer
+/// without memory or without the usage it needs: tuff refuses each with the rule's
+/// VUID before Vulkan sees it, and the recorder and buffers stay usable for a correct
+/// copy. The same calls through `_unchecked` make the layer name the same rule (its
+/// messenger asks it to skip each call, so the driver never runs them).
+#[test]
+fn buffer_copies_stay_inside_their_buffers() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
+    let (big, _big_memory) = host_buffer(&s, 64 << 20, usage);
+    let (small, _small_memory) = host_buffer(&s, 16, usage);
+    let (dst_only, _m1) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_DST);
+    let (src_only, _m2) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_SRC);
+    let unbound = s
+        .device
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+        .expect("buffer");
+    let region = |src_offset, dst_offset, size| {
+        [vk::BufferCopy {
+            src_offset,
+            dst_offset,
+            size,
+        }]
+    };
+    let cases: [(&str, &tuff::Buffer, &tuff::Buffer, [vk::BufferCopy; 1]); 10] = [
+        // The copy of the issue: 64 MiB into 16 bytes.
+        (
+            "VUID-vkCmdCopyBuffer-size-00116",
+            &big,
+            &small,
+            region(0, 0, 64 << 20),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-srcOffset-00113",
+            &small,
+            &big,
+            region(16, 0, 4),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-dstOffset-00114",
+            &big,
+            &small,
+            region(0, 16, 4),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-size-00115",
+            &small,
+            &big,
+            region(8, 0, 12),
+        ),
+        (
+            "VUID-VkBufferCopy-size-01988",
+            &big,
+            &small,
+            region(0, 0, 0),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-pRegions-00117",
+            &big,
+            &big,
+            region(0, 64, 128),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-srcBuffer-00118",
+            &dst_only,
+            &big,
+            region(0, 0, 4),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-dstBuffer-00120",
+            &big,
+            &src_only,
+            region(0, 0, 4),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-srcBuffer-00119",
+            &unbound,
+            &big,
+            region(0, 0, 4),
+        ),
+        (
+            "VUID-vkCmdCopyBuffer-dstBuffer-00121",
+            &big,
+            &unbound,
+            region(0, 0, 4),
+        ),
+    ];
+    // Through the safe method: refused, nothing reaches the layer or the driver, and
+    // the same recorder records a correct copy afterwards, which runs.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, src, dst, regions) in &cases {
+        assert_eq!(
+            vuid(rec.cmd_copy_buffer(src, dst, regions)),
+            *expected,
+            "copy {regions:?}"
+        );
+    }
+    rec.cmd_copy_buffer(&big, &small, &region(64, 0, 16))
+        .expect("a copy inside both buffers");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+    let done = fence(&s);
+    let cbs = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+        .expect("submit");
+    let waited = s
+        .device
+        .wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(waited, vk::Result::SUCCESS);
+    assert_silent(&s.messages);
+
+    // Through `_unchecked`: the layer names the same rule for each.
+    s.messages.abort_on_error(true);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, src, dst, regions) in &cases {
+        // SAFETY: the messenger makes the layer skip the call, which breaks only the
+        // rule under test; the command buffer is never submitted.
+        unsafe { rec.cmd_copy_buffer_unchecked(src, dst, regions) }.expect("recorded");
+        assert_layer_reports(&s, expected);
+    }
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
+}
+
+/// Memory bound with `bind_buffer_memory2` or `bind_image_memory2` stays alive while
+/// the buffer or image does, as with `bind_buffer_memory`: dropping the memory's
+/// wrapper first, then copying through the buffer, frees nothing in use (the layer
+/// would report the freed memory), and the memory goes with the buffer.
+#[test]
+fn memory_bound_by_bind2_lives_as_long_as_its_object() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
+    let (target, _target_memory) = host_buffer(&s, 256, usage);
+    let before = d.live_object_count();
+    let buffer = d
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+        .expect("buffer");
+    let reqs = d
+        .get_buffer_memory_requirements(&buffer)
+        .expect("requirements");
+    let memory = d
+        .allocate_memory(
+            &tuff::MemoryAllocateInfo::new()
+                .allocation_size(reqs.size)
+                .memory_type_index(
+                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::HOST_VISIBLE),
+                ),
+        )
+        .expect("memory");
+    d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &memory)])
+        .expect("bind");
+    drop(memory);
+    assert_eq!(
+        d.live_object_count(),
+        before + 2,
+        "the buffer keeps its memory"
+    );
+    let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_copy_buffer(
+        &buffer,
+        &target,
+        &[vk::BufferCopy {
+            src_offset: 0,
+            dst_offset: 0,
+            size: 256,
+        }],
+    )
+    .expect("copy");
+    rec.end().expect("end");
+    let done = fence(&s);
+    let cbs = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+        .expect("submit");
+    let waited = d
+        .wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(waited, vk::Result::SUCCESS);
+    drop((cb, pool, done, buffer));
+    assert_eq!(
+        d.live_object_count(),
+        before,
+        "the memory goes with the buffer"
+    );
+    assert_silent(&s.messages);
+}

@@ -742,7 +742,8 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
                     dst_offset: 0,
                     size: 256,
                 }],
-            );
+            )
+            .expect("copy");
             source
         });
         let mut expected = words.clone();

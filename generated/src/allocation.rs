@@ -181,6 +181,7 @@ impl Device {
             self.fns()
                 .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
         }?;
+        self.live().buffer_bound(buffer.raw());
         let memory = BoundMemory::new(allocation);
         buffer.retain_memory(memory.cell.clone());
         Ok(Bound {

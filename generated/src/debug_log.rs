@@ -30,11 +30,16 @@ use crate::DebugUtilsMessengerCreateInfoEXT;
 use ash::vk;
 use core::ffi::{c_void, CStr};
 use std::collections::HashMap;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, Weak};
 
 /// What a log holds; shared with the table of live logs.
-type Lines = Mutex<Vec<String>>;
+#[derive(Default)]
+struct Lines {
+    lines: Mutex<Vec<String>>,
+    /// Whether the callback asks the layer to skip a call it reports an error on.
+    abort: AtomicBool,
+}
 
 /// The live logs by number. Layers may call back from any thread, so this is a real
 /// lock whatever the `multi_thread` feature says.
@@ -64,7 +69,7 @@ impl MessageLog {
     /// ```
     pub fn new() -> Self {
         let id = NEXT.fetch_add(1, Ordering::Relaxed);
-        let messages = Arc::new(Mutex::new(Vec::new()));
+        let messages = Arc::new(Lines::default());
         if let Ok(mut logs) = LOGS.lock() {
             logs.get_or_insert_with(HashMap::new)
                 .insert(id, Arc::downgrade(&messages));
@@ -108,9 +113,24 @@ impl MessageLog {
     /// ```
     pub fn take(&self) -> Vec<String> {
         self.messages
+            .lines
             .lock()
             .map(|mut m| std::mem::take(&mut *m))
             .unwrap_or_default()
+    }
+
+    /// Whether the messengers of this log ask the validation layer to skip each call
+    /// it reports an error on (the callback returns `VK_TRUE`), so that the driver
+    /// never sees a call that breaks a rule. Off by default. A test that proves a
+    /// rule through an `_unchecked` method turns it on, so the broken call cannot
+    /// crash the driver.
+    ///
+    /// ```
+    /// let log = tuff::MessageLog::new();
+    /// log.abort_on_error(true);
+    /// ```
+    pub fn abort_on_error(&self, abort: bool) {
+        self.messages.abort.store(abort, Ordering::Relaxed);
     }
 
     /// Whether no message arrived since the last [`MessageLog::take`].
@@ -119,7 +139,11 @@ impl MessageLog {
     /// assert!(tuff::MessageLog::new().is_empty());
     /// ```
     pub fn is_empty(&self) -> bool {
-        self.messages.lock().map(|m| m.is_empty()).unwrap_or(true)
+        self.messages
+            .lines
+            .lock()
+            .map(|m| m.is_empty())
+            .unwrap_or(true)
     }
 }
 
@@ -158,10 +182,17 @@ unsafe extern "system" fn on_message(
         .lock()
         .ok()
         .and_then(|logs| logs.as_ref()?.get(&(user as usize))?.upgrade());
-    if let Some(messages) = log {
-        if let Ok(mut m) = messages.lock() {
-            m.push(format!("{severity:?}: {text}"));
-        }
+    let Some(messages) = log else {
+        return vk::FALSE;
+    };
+    if let Ok(mut m) = messages.lines.lock() {
+        m.push(format!("{severity:?}: {text}"));
     }
-    vk::FALSE
+    let abort = messages.abort.load(Ordering::Relaxed)
+        && severity.contains(vk::DebugUtilsMessageSeverityFlagsEXT::ERROR);
+    if abort {
+        vk::TRUE
+    } else {
+        vk::FALSE
+    }
 }

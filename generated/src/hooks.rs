@@ -9,6 +9,7 @@
 
 use crate::handles::*;
 use crate::recorder::{Recorder, State};
+use crate::retention::BufferRecord;
 use crate::structs::*;
 use crate::submission::{self, SubmitRules};
 use crate::{Error, Handle, Result};
@@ -462,9 +463,169 @@ pub(crate) unsafe fn update_descriptor_set_with_template_done(
     };
 }
 
-/// The buffer keeps its memory alive.
-pub(crate) fn bind_buffer_memory_done(buffer: &Buffer, memory: &DeviceMemory) {
+/// The buffer keeps its memory alive; commands that use it may now read it.
+pub(crate) fn bind_buffer_memory_done(device: &Device, buffer: &Buffer, memory: &DeviceMemory) {
     buffer.retain_memory(memory.retained());
+    device.live().buffer_bound(buffer.raw());
+}
+
+/// Each buffer keeps its memory alive (the safe infos name both by wrappers); commands
+/// that use it may now read it.
+pub(crate) fn bind_buffer_memory2_done(device: &Device, bind_infos: &[BindBufferMemoryInfo<'_>]) {
+    for info in bind_infos {
+        device.live().bound2(info.buffer, info.memory);
+        device.live().buffer_bound(info.buffer);
+    }
+}
+
+/// Each image keeps its memory alive.
+pub(crate) fn bind_image_memory2_done(device: &Device, bind_infos: &[BindImageMemoryInfo<'_>]) {
+    for info in bind_infos {
+        device.live().bound2(info.image, info.memory);
+    }
+}
+
+/// The device remembers the buffer's size, usage and flags for the checks of the
+/// commands that use it.
+pub(crate) fn buffer_created(
+    device: &Device,
+    buffer: Buffer,
+    create_info: &BufferCreateInfo<'_>,
+) -> Buffer {
+    device.live().buffer_created(
+        buffer.raw(),
+        BufferRecord {
+            size: create_info.size,
+            usage: create_info.usage,
+            flags: create_info.flags,
+            bound: false,
+        },
+    );
+    buffer
+}
+
+/// The record of a buffer wrapper, which every buffer made through the wrappers has.
+fn buffer_record(device: &Device, buffer: &Buffer) -> Result<BufferRecord> {
+    device
+        .live()
+        .buffer(buffer.raw())
+        .ok_or_else(|| Error::Validation {
+            vuid: "VUID-vkCmdCopyBuffer-srcBuffer-parameter",
+            message: "the buffer was not created through the wrappers, so its size is unknown"
+                .into(),
+        })
+}
+
+/// A refusal naming the rule, what it says, and the values that break it.
+fn refuse(vuid: &'static str, message: String) -> Result<()> {
+    Err(Error::Validation { vuid, message })
+}
+
+/// Checks that a buffer a command reads or writes has memory (or is sparse) and the
+/// usage the command needs.
+fn check_buffer_use(
+    record: &BufferRecord,
+    usage: vk::BufferUsageFlags,
+    (usage_vuid, bound_vuid): (&'static str, &'static str),
+    name: &str,
+) -> Result<()> {
+    if !record.usage.contains(usage) {
+        refuse(
+            usage_vuid,
+            format!(
+                "{name} must have been created with {usage:?} usage (usage = {:?})",
+                record.usage
+            ),
+        )?;
+    }
+    let sparse = record.flags.contains(vk::BufferCreateFlags::SPARSE_BINDING);
+    if !sparse && !record.bound {
+        refuse(
+            bound_vuid,
+            format!("{name} is not sparse, so memory must be bound to it before a command uses it"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdCopyBuffer` that keep the copy inside both buffers: a copy out
+/// of range reads or writes memory the buffers do not own.
+pub(crate) fn cmd_copy_buffer_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    src_buffer: &Buffer,
+    dst_buffer: &Buffer,
+    regions: &[vk::BufferCopy],
+) -> Result<()> {
+    let device = recorder.device();
+    let src = buffer_record(device, src_buffer)?;
+    let dst = buffer_record(device, dst_buffer)?;
+    check_buffer_use(
+        &src,
+        vk::BufferUsageFlags::TRANSFER_SRC,
+        (
+            "VUID-vkCmdCopyBuffer-srcBuffer-00118",
+            "VUID-vkCmdCopyBuffer-srcBuffer-00119",
+        ),
+        "srcBuffer",
+    )?;
+    check_buffer_use(
+        &dst,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        (
+            "VUID-vkCmdCopyBuffer-dstBuffer-00120",
+            "VUID-vkCmdCopyBuffer-dstBuffer-00121",
+        ),
+        "dstBuffer",
+    )?;
+    for (i, r) in regions.iter().enumerate() {
+        if r.size == 0 {
+            refuse(
+                "VUID-VkBufferCopy-size-01988",
+                format!("pRegions[{i}].size must be greater than 0 (size = 0)"),
+            )?;
+        }
+        if r.src_offset >= src.size {
+            refuse(
+                "VUID-vkCmdCopyBuffer-srcOffset-00113",
+                format!("pRegions[{i}].srcOffset must be less than the size of srcBuffer (srcOffset = {}, size of srcBuffer = {})", r.src_offset, src.size),
+            )?;
+        }
+        if r.dst_offset >= dst.size {
+            refuse(
+                "VUID-vkCmdCopyBuffer-dstOffset-00114",
+                format!("pRegions[{i}].dstOffset must be less than the size of dstBuffer (dstOffset = {}, size of dstBuffer = {})", r.dst_offset, dst.size),
+            )?;
+        }
+        if r.size > src.size - r.src_offset {
+            refuse(
+                "VUID-vkCmdCopyBuffer-size-00115",
+                format!("pRegions[{i}].size must be at most the size of srcBuffer minus srcOffset (size = {}, srcOffset = {}, size of srcBuffer = {})", r.size, r.src_offset, src.size),
+            )?;
+        }
+        if r.size > dst.size - r.dst_offset {
+            refuse(
+                "VUID-vkCmdCopyBuffer-size-00116",
+                format!("pRegions[{i}].size must be at most the size of dstBuffer minus dstOffset (size = {}, dstOffset = {}, size of dstBuffer = {})", r.size, r.dst_offset, dst.size),
+            )?;
+        }
+    }
+    if src_buffer.raw() == dst_buffer.raw() {
+        // Every source range against every destination range, the region's own
+        // included; the offsets and sizes are in range, so the ends do not overflow.
+        for (i, a) in regions.iter().enumerate() {
+            for (j, b) in regions.iter().enumerate() {
+                let (a0, a1) = (a.src_offset, a.src_offset + a.size);
+                let (b0, b1) = (b.dst_offset, b.dst_offset + b.size);
+                if a0 < b1 && b0 < a1 {
+                    refuse(
+                        "VUID-vkCmdCopyBuffer-pRegions-00117",
+                        format!("the source of pRegions[{i}] ({a0}..{a1}) overlaps the destination of pRegions[{j}] ({b0}..{b1}) in the same buffer"),
+                    )?;
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The image keeps its memory alive.

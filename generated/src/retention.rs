@@ -61,6 +61,24 @@ pub(crate) struct Live {
     queues: Vutex<HashMap<u64, HostSync>>,
     /// The device's timeline semaphores (the others are binary).
     timelines: Vutex<std::collections::HashSet<u64>>,
+    /// What the checks of commands that use a buffer need to know of it.
+    buffers: Vutex<HashMap<u64, BufferRecord>>,
+    /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
+    /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
+    bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
+}
+
+/// A live buffer's creation parameters and binding, which command checks read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct BufferRecord {
+    /// `VkBufferCreateInfo::size`.
+    pub size: vk::DeviceSize,
+    /// `VkBufferCreateInfo::usage`.
+    pub usage: vk::BufferUsageFlags,
+    /// `VkBufferCreateInfo::flags`.
+    pub flags: vk::BufferCreateFlags,
+    /// Whether memory is bound to it.
+    pub bound: bool,
 }
 
 impl Default for Live {
@@ -72,6 +90,8 @@ impl Default for Live {
             ledger: Default::default(),
             queues: Vutex::new(HashMap::new()),
             timelines: Vutex::new(std::collections::HashSet::new()),
+            buffers: Vutex::new(HashMap::new()),
+            bound_memories: Vutex::new(HashMap::new()),
         }
     }
 }
@@ -165,12 +185,49 @@ impl Live {
         if unlisted && H::TYPE == vk::ObjectType::SEMAPHORE {
             self.timelines.lock().remove(&key.1);
         }
+        if unlisted && H::TYPE == vk::ObjectType::BUFFER {
+            self.buffers.lock().remove(&key.1);
+        }
+        if unlisted && matches!(H::TYPE, vk::ObjectType::BUFFER | vk::ObjectType::IMAGE) {
+            // Released outside the lock: it may be the last reference to the memory.
+            let memory = self.bound_memories.lock().remove(&key);
+            drop(memory);
+        }
         // A set whose handle a newer wrapper took over keeps that wrapper's contents.
         if unlisted && H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
             // Dropped outside the lock: releasing the last reference to a view or
             // buffer runs its Drop, which unlists it.
             let written = self.sets.lock().remove(&key.1);
             drop(written);
+        }
+    }
+
+    /// Records a new buffer's creation parameters.
+    pub(crate) fn buffer_created(&self, raw: vk::Buffer, record: BufferRecord) {
+        self.buffers.lock().insert(raw.as_raw(), record);
+    }
+
+    /// Records that memory is bound to a buffer.
+    pub(crate) fn buffer_bound(&self, raw: vk::Buffer) {
+        if let Some(r) = self.buffers.lock().get_mut(&raw.as_raw()) {
+            r.bound = true;
+        }
+    }
+
+    /// The record of a live buffer made through the wrappers.
+    pub(crate) fn buffer(&self, raw: vk::Buffer) -> Option<BufferRecord> {
+        self.buffers.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// Keeps the memory bound to a buffer or image as long as the object is listed
+    /// (its wrapper lives). Memory that has no wrapper is not kept.
+    pub(crate) fn bound2<H: vk::Handle>(&self, raw: H, memory: vk::DeviceMemory) {
+        if let Some(memory) = self.get(memory) {
+            let old = self
+                .bound_memories
+                .lock()
+                .insert((H::TYPE, raw.as_raw()), memory);
+            drop(old);
         }
     }
 

@@ -118,6 +118,8 @@ const TIMELINE_VALUES: &str =
 const UNPROVEN: &str =
     "checked in every build, but no test breaks it yet, so the report does not count it";
 const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
+const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
+const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
 /// Every special case, by command.
@@ -307,7 +309,45 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkBindBufferMemory",
-        after: call("hooks::bind_buffer_memory_done", &["buffer", "memory"]),
+        after: call("hooks::bind_buffer_memory_done", &["self", "buffer", "memory"]),
+        ..NONE
+    },
+    Special {
+        command: "vkBindBufferMemory2",
+        after: call("hooks::bind_buffer_memory2_done", &["self", "bind_infos"]),
+        ..NONE
+    },
+    Special {
+        command: "vkBindImageMemory2",
+        after: call("hooks::bind_image_memory2_done", &["self", "bind_infos"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateBuffer",
+        created: call("hooks::buffer_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyBuffer",
+        check: call(
+            "hooks::cmd_copy_buffer_checks",
+            &["self", "src_buffer", "dst_buffer", "regions"],
+        ),
+        settles: &[
+            ("VUID-vkCmdCopyBuffer-srcOffset-00113", How::Dynamic(COPY_RANGE)),
+            ("VUID-vkCmdCopyBuffer-dstOffset-00114", How::Dynamic(COPY_RANGE)),
+            ("VUID-vkCmdCopyBuffer-size-00115", How::Dynamic(COPY_RANGE)),
+            ("VUID-vkCmdCopyBuffer-size-00116", How::Dynamic(COPY_RANGE)),
+            ("VUID-VkBufferCopy-size-01988", How::Dynamic(COPY_RANGE)),
+            (
+                "VUID-vkCmdCopyBuffer-pRegions-00117",
+                How::Dynamic("checks, when both buffers are one, that no source range overlaps a destination range"),
+            ),
+            ("VUID-vkCmdCopyBuffer-srcBuffer-00118", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdCopyBuffer-srcBuffer-00119", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdCopyBuffer-dstBuffer-00120", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdCopyBuffer-dstBuffer-00121", How::Dynamic(BUFFER_USE)),
+        ],
         ..NONE
     },
     Special {

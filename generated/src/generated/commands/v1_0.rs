@@ -263,7 +263,7 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_buffer_memory_done(buffer, memory);
+        crate::hooks::bind_buffer_memory_done(self, buffer, memory);
         Ok(())
     }
     /**`vkBindImageMemory`
@@ -376,7 +376,13 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time (th
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(Buffer::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::buffer_created(
+                self,
+                Buffer::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateBufferView`
 

@@ -1455,6 +1455,15 @@ The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks
 
 The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyBuffer-srcOffset-00113`: dynamic (checks each region against the buffers' sizes, kept from their creation)
+- `VUID-vkCmdCopyBuffer-dstOffset-00114`: dynamic (checks each region against the buffers' sizes, kept from their creation)
+- `VUID-vkCmdCopyBuffer-size-00115`: dynamic (checks each region against the buffers' sizes, kept from their creation)
+- `VUID-vkCmdCopyBuffer-size-00116`: dynamic (checks each region against the buffers' sizes, kept from their creation)
+- `VUID-vkCmdCopyBuffer-pRegions-00117`: dynamic (checks, when both buffers are one, that no source range overlaps a destination range)
+- `VUID-vkCmdCopyBuffer-srcBuffer-00118`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdCopyBuffer-srcBuffer-00119`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdCopyBuffer-dstBuffer-00120`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdCopyBuffer-dstBuffer-00121`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdCopyBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBuffer-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1466,21 +1475,20 @@ The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_copy_buffer(src_buffer, dst_buffer, regions);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_copy_buffer_checks(self, src_buffer, dst_buffer, regions)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
     }
@@ -1488,27 +1496,30 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_unchecked(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_copy_buffer;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_buffer.raw(),
-                dst_buffer.raw(),
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_buffer.address(), || src_buffer.retained());
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_buffer.raw(),
+                    dst_buffer.raw(),
+                    regions.len() as u32,
+                    regions.as_ptr().cast(),
+                )
+            };
+            self.retain_with(src_buffer.address(), || src_buffer.retained());
+            self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        }
+        Ok(())
     }
     /**`vkCmdCopyBufferToImage`
 

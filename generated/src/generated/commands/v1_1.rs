@@ -43,6 +43,7 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::hooks::bind_buffer_memory2_done(self, bind_infos);
         Ok(())
     }
     /**`vkBindImageMemory2`
@@ -87,6 +88,7 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::hooks::bind_image_memory2_done(self, bind_infos);
         Ok(())
     }
     /**`vkCreateDescriptorUpdateTemplate`
