@@ -6,7 +6,7 @@ mod common;
 use common::{load, root, Loaded};
 use serde::Serialize;
 use std::sync::OnceLock;
-use tuff_gen::model::{Handle, ParsedField};
+use tuff_gen::model::{ExternSync, Field, Handle, LenEntry, Model};
 use tuff_gen::validity::{implicit, Toolchain};
 
 fn pinned() -> &'static Loaded {
@@ -25,8 +25,38 @@ struct ItemModel<'a> {
     cmdbufferlevel: Option<&'a str>,
     returned_only: Option<bool>,
     extended_by: Vec<&'a str>,
-    fields: Vec<ParsedField>,
+    fields: Vec<FieldModel>,
     handles_created: Vec<&'a Handle>,
+}
+
+/// A field as the model reads it: its declaration and parsed attributes.
+#[derive(Serialize)]
+struct FieldModel {
+    name: String,
+    type_name: String,
+    category: Option<&'static str>,
+    is_const: bool,
+    pointers: usize,
+    static_array: Option<String>,
+    len: Vec<LenEntry>,
+    optional: Vec<bool>,
+    externsync: Vec<ExternSync>,
+    noautovalidity: bool,
+}
+
+fn field_model(m: &Model, f: &Field) -> FieldModel {
+    FieldModel {
+        name: f.name.clone(),
+        type_name: f.type_name.clone(),
+        category: m.category(&f.type_name).map(|k| k.name()),
+        is_const: f.is_const,
+        pointers: f.pointers,
+        static_array: f.static_array.clone(),
+        len: f.parsed.len.clone(),
+        optional: f.parsed.optional.clone(),
+        externsync: f.parsed.externsync.clone(),
+        noautovalidity: f.noautovalidity,
+    }
 }
 
 fn item_model(name: &str) -> ItemModel<'static> {
@@ -44,7 +74,7 @@ fn item_model(name: &str) -> ItemModel<'static> {
         .or(ty.map(|t| &t.members))
         .unwrap()
         .iter()
-        .map(|f| m.parse_field(f))
+        .map(|f| field_model(m, f))
         .collect();
     ItemModel {
         name,

@@ -1,6 +1,7 @@
 //! Renders `src/checks.rs` from the planned checks: the checks of enum and flags
 //! values, of every struct, and of `pNext` chains.
 
+use crate::model::Kind;
 use crate::names::{field_ident, ident};
 use crate::plan::checks::{
     enum_values, flag_bits, snake, struct_type_value, Check, CheckKind, Checker, HandleAt, Place,
@@ -51,7 +52,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     let mut values = Vec::new();
     for t in &needs {
         values.push(match model.category(t) {
-            Some("enum") => enum_fn(checker.cx, &origins, t),
+            Some(Kind::Enum) => enum_fn(checker.cx, &origins, t),
             _ => flags_fn(checker.cx, &origins, t),
         });
     }
@@ -185,7 +186,7 @@ impl Origins {
         let mut all: BTreeSet<String> = BTreeSet::new();
         for t in types {
             let group = match model.category(t) {
-                Some("enum") => t.clone(),
+                Some(Kind::Enum) => t.clone(),
                 _ => flag_bits(model, t).unwrap_or_default(),
             };
             for (_, o) in enum_values(model, &group) {

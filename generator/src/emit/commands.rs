@@ -6,6 +6,7 @@
 
 use super::structs::safe_or_ash;
 use crate::model::CommandDef;
+use crate::model::Kind;
 use crate::model::LenEntry;
 use crate::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
 use crate::plan::checks::Checker;
@@ -234,8 +235,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     .iter()
                     .zip(&plan.params)
                     .find(|(q, _)| {
-                        model
-                            .parse_field(q)
+                        q.parsed
                             .len
                             .first()
                             .and_then(|l| l.other_param().map(str::to_owned))
@@ -345,7 +345,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
             Param::Slice => {
                 lifetimes = true;
-                let ty = if model.category(&p.type_name) == Some("struct") {
+                let ty = if model.category(&p.type_name) == Some(Kind::Struct) {
                     safe_or_ash(cx, &p.type_name)
                 } else {
                     spelled(model, &cx.facts, &p.type_name)
@@ -393,9 +393,10 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 // A pointer typedef (`VkRemoteAddressNV`, `void*`) is spelled by ash
                 // without its pointer, so the output is a pointer to it, written
                 // through the `void**` the command takes.
-                let pointer_typedef = model.types.get(&p.type_name).is_some_and(|t| {
-                    t.category.as_deref() == Some("basetype") && t.code.contains('*')
-                });
+                let pointer_typedef = model
+                    .types
+                    .get(&p.type_name)
+                    .is_some_and(|t| t.category == Some(Kind::Basetype) && t.code.contains('*'));
                 let ty = if pointer_typedef {
                     pre.push(quote!(let mut out: *mut #ty = core::ptr::null_mut();));
                     call_args.push(quote!(core::ptr::addr_of_mut!(out).cast(),));
@@ -453,8 +454,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         }
                     };
                 } else {
-                    let pp = model.parse_field(p);
-                    let count = match pp.len.first() {
+                    let count = match p.parsed.len.first() {
                         Some(LenEntry::Reference(parts)) if parts.len() == 2 => {
                             let s = ident(&param(&parts[0]));
                             let m = field_ident(&parts[1]);
@@ -466,8 +466,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                                 .params
                                 .iter()
                                 .find(|q| {
-                                    model
-                                        .parse_field(q)
+                                    q.parsed
                                         .len
                                         .first()
                                         .and_then(|l| l.other_param().map(str::to_owned))
@@ -508,7 +507,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 call_args.push(quote!(count,));
             }
             Param::Enumerated => {
-                let elem_is_handle = model.category(&p.type_name) == Some("handle");
+                let elem_is_handle = model.category(&p.type_name) == Some(Kind::Handle);
                 let elem = if p.type_name == "void" {
                     quote!(u8)
                 } else if elem_is_handle {
@@ -530,7 +529,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         .iter()
                         .find(|q| {
                             q.type_name != p.type_name
-                                && model.category(&q.type_name) == Some("handle")
+                                && model.category(&q.type_name) == Some(Kind::Handle)
                                 && q.pointers == 0
                                 && !model.types[&q.type_name].dispatchable
                         })

@@ -6,6 +6,7 @@
 
 use super::doc_rules;
 use crate::model::Field;
+use crate::model::Kind;
 use crate::names::{cfg_of, field_ident, type_ident};
 use crate::plan::shape::{count_groups, struct_members, CountGroup, Member};
 use crate::plan::types::{array_size, spelled, TypeFacts};
@@ -20,7 +21,7 @@ pub fn safe_structs(cx: &Context) -> Vec<String> {
         .iter()
         .filter(|(name, t)| {
             t.alias.is_none()
-                && t.category.as_deref() == Some("struct")
+                && t.category == Some(Kind::Struct)
                 && cx.model.emitted.contains(*name)
                 && cx.facts.is_safe(name)
         })

@@ -17,7 +17,7 @@ pub fn host_syncs(cx: &Context, plan: &Plan) -> TokenStream {
     let recorded = recorded(plan);
     let mut pushes = Vec::new();
     for (i, (p, shape)) in cmd.params.iter().zip(&plan.params).enumerate() {
-        for e in &cx.model.parse_field(p).externsync {
+        for e in &p.parsed.externsync {
             let whole = matches!(e, ExternSync::Whole | ExternSync::Maybe);
             if let ExternSync::Member(path) = e {
                 pushes.extend(member(&plan.name, path));

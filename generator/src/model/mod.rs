@@ -9,6 +9,7 @@
 
 pub mod attrs;
 pub mod expr;
+mod item;
 
 use crate::config::Config;
 use crate::error::{Error, Result};
@@ -16,11 +17,8 @@ use crate::registry::Registry;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-/// The model keeps a command, a type and a member or parameter in the shape the
-/// registry pass reads them; later passes name them through the model, which owns
-/// what they mean once resolved (the parsed attributes are in [`ParsedField`]).
-pub use crate::registry::{CommandDef, Field, TypeDef};
 pub use attrs::{ExternSync, LenEntry};
+pub use item::{CommandDef, Field, Kind, Parsed, TypeDef};
 
 /// When an item exists: the expression as the model writes it (what the report
 /// shows) and its parse, so no pass re-reads the text.
@@ -106,31 +104,6 @@ pub struct Handle {
     pub destroyed_by: Vec<String>,
 }
 
-/// A parameter or member with its attributes parsed.
-#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
-pub struct ParsedField {
-    /// Name.
-    pub name: String,
-    /// Base type.
-    pub type_name: String,
-    /// Category of the base type (`handle`, `struct`, ... or none for C types).
-    pub category: Option<String>,
-    /// `const` in the declaration.
-    pub is_const: bool,
-    /// Levels of pointer.
-    pub pointers: usize,
-    /// Fixed array size.
-    pub static_array: Option<String>,
-    /// `len`, parsed.
-    pub len: Vec<LenEntry>,
-    /// `optional`, one flag per level.
-    pub optional: Vec<bool>,
-    /// `externsync`, parsed.
-    pub externsync: Vec<ExternSync>,
-    /// `noautovalidity`.
-    pub noautovalidity: bool,
-}
-
 impl Model {
     /// Resolve `registry` and select the emitted API with `config`. Fails if the
     /// config names a version or an extension the registry lacks.
@@ -138,12 +111,12 @@ impl Model {
         let types: BTreeMap<String, TypeDef> = registry
             .types
             .iter()
-            .map(|t| (t.name.clone(), t.clone()))
+            .map(|t| (t.name.clone(), TypeDef::from(t)))
             .collect();
         let commands: BTreeMap<String, CommandDef> = registry
             .commands
             .iter()
-            .map(|c| (c.name.clone(), c.clone()))
+            .map(|c| (c.name.clone(), CommandDef::from(c)))
             .collect();
 
         let mut enabled: BTreeSet<String> = BTreeSet::new();
@@ -379,28 +352,8 @@ impl Model {
 
     /// The category of a type, following no aliases (as the specification's
     /// toolchain does).
-    pub fn category(&self, type_name: &str) -> Option<&str> {
-        self.types.get(type_name)?.category.as_deref()
-    }
-
-    /// Parse the attributes of a parameter or member.
-    pub fn parse_field(&self, f: &Field) -> ParsedField {
-        ParsedField {
-            name: f.name.clone(),
-            type_name: f.type_name.clone(),
-            category: self.category(&f.type_name).map(str::to_owned),
-            is_const: f.is_const,
-            pointers: f.pointers,
-            static_array: f.static_array.clone(),
-            len: f.len.as_deref().map(attrs::parse_len).unwrap_or_default(),
-            optional: attrs::parse_optional(f.optional.as_deref()),
-            externsync: f
-                .externsync
-                .as_deref()
-                .map(attrs::parse_externsync)
-                .unwrap_or_default(),
-            noautovalidity: f.noautovalidity,
-        }
+    pub fn category(&self, type_name: &str) -> Option<Kind> {
+        self.types.get(type_name)?.category
     }
 
     /// The condition of an item, `core` for items outside the registry's features
@@ -479,7 +432,7 @@ fn resolve_handles(
 ) -> BTreeMap<String, Handle> {
     let mut handles = BTreeMap::new();
     for t in types.values() {
-        if t.category.as_deref() != Some("handle") || t.alias.is_some() {
+        if t.category != Some(Kind::Handle) || t.alias.is_some() {
             continue;
         }
         let mut chain = Vec::new();
@@ -510,7 +463,7 @@ fn resolve_handles(
                 }
             } else if is_destroy {
                 let last_handle = c.params.iter().rev().find(|p| {
-                    types.get(&p.type_name).and_then(|x| x.category.as_deref()) == Some("handle")
+                    types.get(&p.type_name).and_then(|x| x.category) == Some(Kind::Handle)
                 });
                 if last_handle.is_some_and(|p| p.type_name == t.name) {
                     handle.destroyed_by.push(c.name.clone());

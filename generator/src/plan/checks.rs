@@ -8,6 +8,7 @@
 use super::commands::{Param, Plan};
 use super::shape::{struct_members, Member};
 use super::Context;
+use crate::model::Kind;
 use crate::model::LenEntry;
 use crate::names::param;
 use crate::validity::{DerivedRule, ImplicitKind as K};
@@ -299,7 +300,7 @@ impl<'c, 'm> Checker<'c, 'm> {
             .values()
             .filter(|t| {
                 t.alias.is_none()
-                    && t.category.as_deref() == Some("struct")
+                    && t.category == Some(Kind::Struct)
                     && cx.model.emitted.contains(&t.name)
             })
             .map(|t| t.name.clone())
@@ -409,13 +410,13 @@ impl<'c, 'm> Checker<'c, 'm> {
     fn value_kind(&self, type_name: &str) -> Option<(ValueKind, &'static str)> {
         let model = self.cx.model;
         match model.category(type_name) {
-            Some("enum") if !enum_values(model, type_name).is_empty() => {
+            Some(Kind::Enum) if !enum_values(model, type_name).is_empty() => {
                 Some((ValueKind::Enum(type_name.to_owned()), ENUM_VALUE))
             }
-            Some("bitmask") if flag_bits(model, type_name).is_some() => {
+            Some(Kind::Bitmask) if flag_bits(model, type_name).is_some() => {
                 Some((ValueKind::Flags(type_name.to_owned()), FLAGS_VALUE))
             }
-            Some("struct") if self.checked.contains(type_name) => Some((
+            Some(Kind::Struct) if self.checked.contains(type_name) => Some((
                 ValueKind::Struct(type_name.to_owned()),
                 "checks the struct's own rules",
             )),
@@ -443,7 +444,7 @@ impl<'c, 'm> Checker<'c, 'm> {
             let field = rule.field.as_deref().and_then(member);
             let check: Option<(CheckKind, String)> = match (rule.kind, field) {
                 (K::Parameter, Some((m, Member::Value)))
-                    if model.category(&m.type_name) == Some("funcpointer") =>
+                    if model.category(&m.type_name) == Some(Kind::Funcpointer) =>
                 {
                     Some((
                         CheckKind::FnPointerSet {
@@ -468,7 +469,10 @@ impl<'c, 'm> Checker<'c, 'm> {
                     })
                 }
                 (K::Parameter, Some((m, Member::Slice { count, .. })))
-                    if matches!(model.category(&m.type_name), Some("enum" | "bitmask")) =>
+                    if matches!(
+                        model.category(&m.type_name),
+                        Some(Kind::Enum | Kind::Bitmask)
+                    ) =>
                 {
                     self.value_kind(&m.type_name).map(|(kind, w)| {
                         let over = Seq::MemberSlice {
@@ -612,7 +616,7 @@ impl<'c, 'm> Checker<'c, 'm> {
                 (K::Parameter, Some((i, Param::Slice)))
                     if matches!(
                         model.category(&cmd.params[i].type_name),
-                        Some("enum" | "bitmask")
+                        Some(Kind::Enum | Kind::Bitmask)
                     ) =>
                 {
                     self.value_kind(&cmd.params[i].type_name).map(|(kind, w)| {
@@ -734,14 +738,7 @@ impl<'c, 'm> Checker<'c, 'm> {
             .params
             .iter()
             .zip(&plan.params)
-            .filter(|(q, _)| {
-                model
-                    .parse_field(q)
-                    .len
-                    .first()
-                    .and_then(LenEntry::other_param)
-                    == Some(field)
-            })
+            .filter(|(q, _)| q.parsed.len.first().and_then(LenEntry::other_param) == Some(field))
             .collect();
         let slice = users.iter().find(|(_, s)| {
             matches!(

@@ -3,6 +3,7 @@
 
 use super::Context;
 use crate::model::CommandDef;
+use crate::model::Kind;
 use crate::model::LenEntry;
 use crate::names::table;
 
@@ -166,7 +167,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     let model = cx.model;
     let cmd = &model.commands[name];
     let first = cmd.params.first().ok_or("no parameters")?;
-    let receiver = if model.category(&first.type_name) == Some("handle")
+    let receiver = if model.category(&first.type_name) == Some(Kind::Handle)
         && model.types[&first.type_name].dispatchable
     {
         first.type_name.clone()
@@ -181,7 +182,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             "`{path}` is externally synchronized and the wrappers cannot lock it"
         ));
     }
-    let parsed: Vec<_> = cmd.params.iter().map(|p| model.parse_field(p)).collect();
+    let parsed: Vec<_> = cmd.params.iter().map(|p| &p.parsed).collect();
     // Counts named by another parameter's len.
     let count_refs: Vec<(usize, String)> = parsed
         .iter()
@@ -200,7 +201,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     let mut params = Vec::new();
     for (i, (p, pp)) in cmd.params.iter().zip(&parsed).enumerate() {
         let category = model.category(&p.type_name);
-        let optional = pp.optional.first().copied().unwrap_or(false);
+        let optional = p.is_optional();
         let is_count = count_refs.iter().any(|(_, c)| c == &p.name);
         let shape = if i == 0 && receiver != "Entry" {
             Param::Dispatch
@@ -213,14 +214,14 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         } else if p.pointers == 0 {
             if p.static_array.is_some() {
                 Param::Array
-            } else if category == Some("handle") {
+            } else if category == Some(Kind::Handle) {
                 let required = super::hooks::special(name)
                     .is_some_and(|s| s.required.contains(&p.name.as_str()));
                 Param::Handle {
                     optional: optional && !required,
                 }
             } else if category.is_some() || super::shape::is_c_scalar(&p.type_name) {
-                if matches!(category, Some("struct" | "union"))
+                if matches!(category, Some(Kind::Struct | Kind::Union))
                     && cx.facts.has_lifetime(&p.type_name)
                 {
                     return Err(format!("`{}` by value with pointers", p.name));
@@ -232,17 +233,17 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         } else if p.pointers == 1 && p.is_const {
             let len = pp.len.first();
             match (len, category) {
-                (None, Some("struct")) => Param::StructRef { optional },
-                (None, Some("union")) if cx.facts.union_is_plain(model, &p.type_name) => {
+                (None, Some(Kind::Struct)) => Param::StructRef { optional },
+                (None, Some(Kind::Union)) if cx.facts.union_is_plain(model, &p.type_name) => {
                     Param::StructRef { optional }
                 }
                 (Some(LenEntry::NullTerminated), None) if p.type_name == "char" => {
                     Param::CStr { optional }
                 }
                 (Some(LenEntry::Reference(parts)), _) if parts.len() == 1 => match category {
-                    Some("handle") => Param::HandleSlice,
+                    Some(Kind::Handle) => Param::HandleSlice,
                     _ if p.type_name == "void" => Param::Bytes,
-                    Some("struct") | Some("union") | Some(_) => Param::Slice,
+                    Some(Kind::Struct) | Some(Kind::Union) | Some(_) => Param::Slice,
                     None if super::shape::is_c_scalar(&p.type_name) => Param::Slice,
                     None => return Err(format!("`{}`: array of {}", p.name, p.type_name)),
                 },
@@ -264,10 +265,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 {
                     Param::BytesOut
                 }
-                (None, Some("handle")) => Param::Created,
-                (_, Some("handle")) if !enumerated => Param::CreatedArray,
+                (None, Some(Kind::Handle)) => Param::Created,
+                (_, Some(Kind::Handle)) if !enumerated => Param::CreatedArray,
                 (_, _) if enumerated => Param::Enumerated,
-                (None, Some("struct")) if has_next(cx, &p.type_name) => Param::InOut,
+                (None, Some(Kind::Struct)) if has_next(cx, &p.type_name) => Param::InOut,
                 (None, _) if p.type_name != "void" => Param::Output,
                 _ => return Err(format!("`{}`: output {:?}", p.name, pp.len)),
             }

@@ -3,6 +3,7 @@
 
 use super::shape::{struct_members, Member};
 use super::Context;
+use crate::model::Kind;
 use std::collections::BTreeSet;
 
 /// The structs of the emitted API whose walk can find a handle.
@@ -11,7 +12,7 @@ pub fn reaching(cx: &Context) -> BTreeSet<String> {
     let candidates: Vec<&String> = model
         .emitted
         .iter()
-        .filter(|n| model.category(n) == Some("struct") && cx.facts.is_safe(n))
+        .filter(|n| model.category(n) == Some(Kind::Struct) && cx.facts.is_safe(n))
         .filter(|n| model.types[*n].alias.is_none())
         .collect();
     let mut found = BTreeSet::new();

@@ -6,6 +6,7 @@ use super::commands::{handled_elsewhere, Param, Plan};
 use super::hooks::How;
 use super::shape::{struct_members, Member};
 use super::{Context, Record, Settlement};
+use crate::model::Kind;
 use crate::validity::{Category, ImplicitKind};
 use std::collections::BTreeMap;
 
@@ -236,7 +237,7 @@ fn plain_numbers(cx: &Context, d: &crate::validity::DerivedRule) -> bool {
             return super::shape::is_c_scalar(name);
         };
         depth < 8
-            && matches!(t.category.as_deref(), Some("union" | "struct"))
+            && matches!(t.category, Some(Kind::Union | Kind::Struct))
             && t.members.iter().all(|m| {
                 m.pointers == 0
                     && (super::shape::is_c_scalar(&m.type_name)
@@ -250,6 +251,6 @@ fn plain_numbers(cx: &Context, d: &crate::validity::DerivedRule) -> bool {
         .iter()
         .find(|m| Some(&m.name) == d.field.as_ref())
         .is_some_and(|m| {
-            cx.model.category(&m.type_name) == Some("union") && numbers(cx, &m.type_name, 0)
+            cx.model.category(&m.type_name) == Some(Kind::Union) && numbers(cx, &m.type_name, 0)
         })
 }

@@ -4,7 +4,8 @@
 
 use super::types::TypeFacts;
 use crate::model::Field;
-use crate::model::{LenEntry, Model, ParsedField};
+use crate::model::Kind;
+use crate::model::{LenEntry, Model};
 
 /// How a member of a safe struct is set.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -103,8 +104,7 @@ pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Fiel
     t.members
         .iter()
         .map(|m| {
-            let parsed = model.parse_field(m);
-            let shape = member_shape(model, facts, m, &parsed, &counts, &t.members);
+            let shape = member_shape(model, facts, m, &counts, &t.members);
             (m.clone(), shape)
         })
         .collect()
@@ -122,12 +122,12 @@ fn member_shape(
     model: &Model,
     facts: &TypeFacts,
     m: &Field,
-    p: &ParsedField,
     counts: &[String],
     members: &[Field],
 ) -> Member {
     let category = model.category(&m.type_name);
-    let optional = p.optional.first().copied().unwrap_or(false);
+    let p = &m.parsed;
+    let optional = m.is_optional();
     if m.name == "sType" && m.values.is_some() {
         return Member::SType;
     }
@@ -166,15 +166,15 @@ fn member_shape(
     };
     if m.pointers == 0 {
         if let Some(size) = &m.static_array {
-            if category == Some("handle") || facts.is_safe(&m.type_name) {
+            if category == Some(Kind::Handle) || facts.is_safe(&m.type_name) {
                 return Member::Unsupported("a fixed array of handles or structs".into());
             }
             return Member::Array(size.clone());
         }
         return match category {
-            Some("handle") => Member::Handle { optional },
-            Some("struct") if facts.is_safe(&m.type_name) => Member::Nested,
-            Some("union") if !facts.union_is_plain(model, &m.type_name) => {
+            Some(Kind::Handle) => Member::Handle { optional },
+            Some(Kind::Struct) if facts.is_safe(&m.type_name) => Member::Nested,
+            Some(Kind::Union) if !facts.union_is_plain(model, &m.type_name) => {
                 Member::Unsupported("a union that carries pointers or handles".into())
             }
             _ if m.type_name == "VkBool32" || category.is_some() || is_c_scalar(&m.type_name) => {
@@ -207,13 +207,13 @@ fn member_shape(
         }
         if let Some(count) = count_of(&first_len) {
             return match category {
-                Some("handle") => Member::HandleSlice { count },
+                Some(Kind::Handle) => Member::HandleSlice { count },
                 _ if m.type_name == "void" => Member::Bytes { count },
-                Some("struct") => Member::Slice {
+                Some(Kind::Struct) => Member::Slice {
                     count,
                     safe: facts.is_safe(&m.type_name),
                 },
-                Some("union") if facts.union_is_plain(model, &m.type_name) => {
+                Some(Kind::Union) if facts.union_is_plain(model, &m.type_name) => {
                     Member::Slice { count, safe: false }
                 }
                 _ if category.is_some() || is_c_scalar(&m.type_name) => {
@@ -222,7 +222,7 @@ fn member_shape(
                 _ => Member::Unsupported(format!("an array of `{}`", m.type_name)),
             };
         }
-        if first_len.is_none() && category == Some("struct") {
+        if first_len.is_none() && category == Some(Kind::Struct) {
             return Member::StructRef { optional };
         }
         return Member::Unsupported(

@@ -71,13 +71,9 @@ pub(crate) fn implicit(command: &str) -> Option<TokenStream> {
 pub fn unsupported_member(cx: &Context, command: &str) -> Option<String> {
     let cmd = cx.model.commands.get(command)?;
     cmd.params.iter().find_map(|p| {
-        cx.model
-            .parse_field(p)
-            .externsync
-            .iter()
-            .find_map(|e| match e {
-                ExternSync::Member(path) if member(command, path).is_none() => Some(path.clone()),
-                _ => None,
-            })
+        p.parsed.externsync.iter().find_map(|e| match e {
+            ExternSync::Member(path) if member(command, path).is_none() => Some(path.clone()),
+            _ => None,
+        })
     })
 }

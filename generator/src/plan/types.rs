@@ -1,5 +1,6 @@
 //! Which registry types get safe counterparts, and the `ash` spelling of every type.
 
+use crate::model::Kind;
 use crate::model::Model;
 use crate::names::{ident, type_ident};
 use proc_macro2::TokenStream;
@@ -21,7 +22,7 @@ impl TypeFacts {
     pub fn new(model: &Model) -> TypeFacts {
         let mut facts = TypeFacts::default();
         for (name, t) in &model.types {
-            if matches!(t.category.as_deref(), Some("struct" | "union")) {
+            if matches!(t.category, Some(Kind::Struct | Kind::Union)) {
                 facts.lifetime_of(model, name, 0);
                 facts.safe_of(model, name, 0);
             }
@@ -44,12 +45,15 @@ impl TypeFacts {
         // ash gives a struct a lifetime for any pointer member, but a union only
         // through a member type that has one (`PerformanceValueDataINTEL`, with a
         // string pointer, has none).
-        let is_union = t.category.as_deref() == Some("union");
+        let is_union = t.category == Some(Kind::Union);
         let members = t.members.clone();
         let v = members.iter().any(|m| {
             (m.pointers > 0 && !is_union)
                 || (depth < 16
-                    && matches!(model.category(&m.type_name), Some("struct" | "union"))
+                    && matches!(
+                        model.category(&m.type_name),
+                        Some(Kind::Struct | Kind::Union)
+                    )
                     && self.lifetime_of(model, &m.type_name, depth + 1))
         });
         self.lifetime.insert(name.to_owned(), v);
@@ -63,7 +67,7 @@ impl TypeFacts {
         let Some(t) = model.types.get(name) else {
             return false;
         };
-        if t.category.as_deref() == Some("union") {
+        if t.category == Some(Kind::Union) {
             // Unions are used as ash has them; a union that holds pointers or handles
             // makes its users unsupported instead.
             self.safe.insert(name.to_owned(), false);
@@ -73,9 +77,9 @@ impl TypeFacts {
         let v = members.iter().any(|m| {
             m.pointers > 0
                 || m.name == "sType"
-                || model.category(&m.type_name) == Some("handle")
+                || model.category(&m.type_name) == Some(Kind::Handle)
                 || (depth < 16
-                    && model.category(&m.type_name) == Some("struct")
+                    && model.category(&m.type_name) == Some(Kind::Struct)
                     && self.safe_of(model, &m.type_name, depth + 1))
         });
         self.safe.insert(name.to_owned(), v);
@@ -97,7 +101,7 @@ impl TypeFacts {
         model.types.get(name).is_some_and(|t| {
             t.members.iter().all(|m| {
                 m.pointers == 0
-                    && model.category(&m.type_name) != Some("handle")
+                    && model.category(&m.type_name) != Some(Kind::Handle)
                     && !self.is_safe(&m.type_name)
                     && !self.has_lifetime(&m.type_name)
             })
@@ -135,8 +139,8 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
         "int" => quote!(::core::ffi::c_int),
         _ => {
             let t = model.types.get(name)?;
-            return match t.category.as_deref() {
-                Some("struct" | "union") => {
+            return match t.category {
+                Some(Kind::Struct | Kind::Union) => {
                     let id = type_ident(name);
                     Some(if facts.has_lifetime(name) {
                         quote!(vk::#id<'a>)
@@ -144,16 +148,16 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
                         quote!(vk::#id)
                     })
                 }
-                Some("enum") if name.contains("FlagBits") => {
+                Some(Kind::Enum) if name.contains("FlagBits") => {
                     // ash has one type for a bitmask and its bits.
                     let id = ident(&crate::names::type_name(name).replace("FlagBits", "Flags"));
                     Some(quote!(vk::#id))
                 }
-                Some("handle" | "enum" | "bitmask" | "basetype") => {
+                Some(Kind::Handle | Kind::Enum | Kind::Bitmask | Kind::Basetype) => {
                     let id = type_ident(name);
                     Some(quote!(vk::#id))
                 }
-                Some("funcpointer") => {
+                Some(Kind::Funcpointer) => {
                     let id = ident(name);
                     Some(quote!(vk::#id))
                 }

@@ -10,6 +10,7 @@
 //! *usage*.
 
 use super::Category;
+use crate::model::Kind;
 use crate::model::Model;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -68,7 +69,7 @@ pub fn creation_items(model: &Model) -> BTreeSet<String> {
         .types
         .iter()
         .filter(|(_, t)| {
-            t.alias.is_none() && matches!(t.category.as_deref(), Some("struct" | "union"))
+            t.alias.is_none() && matches!(t.category, Some(Kind::Struct | Kind::Union))
         })
         .map(|(n, _)| n)
         .collect();

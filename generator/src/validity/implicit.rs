@@ -6,8 +6,9 @@
 //! Only the VUIDs and a short statement of each rule are produced; the specification
 //! text itself stays in validusage.json.
 
+use crate::model::Kind;
+use crate::model::{CommandDef, Field, TypeDef};
 use crate::model::{LenEntry, Model};
-use crate::registry::{CommandDef, Field, TypeDef};
 use std::collections::BTreeMap;
 
 /// What an implicit rule checks.
@@ -177,10 +178,7 @@ pub struct DerivedRule {
 pub fn derive_all(model: &Model, toolchain: Toolchain) -> Vec<DerivedRule> {
     let mut d = Deriver::new(model, toolchain);
     for (name, t) in &model.types {
-        if t.alias.is_none()
-            && t.category.as_deref() == Some("struct")
-            && model.required.contains(name)
-        {
+        if t.alias.is_none() && t.category == Some(Kind::Struct) && model.required.contains(name) {
             d.derive_struct(t);
         }
     }
@@ -211,7 +209,7 @@ fn resolve_command<'m>(model: &'m Model, name: &str) -> Option<&'m CommandDef> {
 pub fn derive_item(model: &Model, toolchain: Toolchain, item: &str) -> Vec<DerivedRule> {
     let mut d = Deriver::new(model, toolchain);
     if let Some(t) = model.types.get(item) {
-        if t.category.as_deref() == Some("struct") {
+        if t.category == Some(Kind::Struct) {
             d.derive_struct(t);
         }
     } else if let Some(c) = resolve_command(model, item) {
@@ -265,7 +263,7 @@ impl<'a> Deriver<'a> {
         }
     }
 
-    fn category(&self, type_name: &str) -> Option<&'a str> {
+    fn category(&self, type_name: &str) -> Option<Kind> {
         self.model.category(type_name)
     }
 
@@ -351,7 +349,7 @@ impl<'a> Deriver<'a> {
                     _ => self.line(block, p, params, category),
                 }
             }
-            if category == Some("handle") {
+            if category == Some(Kind::Handle) {
                 handles.push(p);
             }
             if let Some(len) = &p.len {
@@ -530,7 +528,7 @@ impl<'a> Deriver<'a> {
                 .model
                 .types
                 .get(&parent)
-                .is_some_and(|t| t.dispatchable && t.category.as_deref() == Some("handle"))
+                .is_some_and(|t| t.dispatchable && t.category == Some(Kind::Handle))
             {
                 out.push(parent.clone());
             }
@@ -607,7 +605,10 @@ impl<'a> Deriver<'a> {
         if ALWAYS_VALID.contains(&name) {
             return true;
         }
-        if matches!(self.category(name), Some("handle" | "enum" | "bitmask")) {
+        if matches!(
+            self.category(name),
+            Some(Kind::Handle | Kind::Enum | Kind::Bitmask)
+        ) {
             return false;
         }
         let Some(t) = self.model.types.get(name) else {
@@ -627,8 +628,10 @@ impl<'a> Deriver<'a> {
                 continue;
             }
             match self.category(&m.type_name) {
-                Some("handle" | "enum" | "bitmask") => return false,
-                Some("struct" | "union") if !self.struct_always_valid(&m.type_name, depth + 1) => {
+                Some(Kind::Handle | Kind::Enum | Kind::Bitmask) => return false,
+                Some(Kind::Struct | Kind::Union)
+                    if !self.struct_always_valid(&m.type_name, depth + 1) =>
+                {
                     return false
                 }
                 _ => {}
@@ -638,7 +641,7 @@ impl<'a> Deriver<'a> {
     }
 
     /// The `-parameter`, `-requiredbitmask` and `-zerobitmask` rules of one parameter.
-    fn line(&mut self, block: &str, p: &Field, params: &[Field], category: Option<&str>) {
+    fn line(&mut self, block: &str, p: &Field, params: &[Field], category: Option<Kind>) {
         let is_array = p.len.is_some();
         let is_pointer = p.pointers > 0;
         let t = p.type_name.as_str();
@@ -646,7 +649,7 @@ impl<'a> Deriver<'a> {
             true
         } else {
             match category {
-                Some("bitmask") => {
+                Some(Kind::Bitmask) => {
                     if !self.bits_defined(t) {
                         self.push(
                             block,
@@ -658,8 +661,8 @@ impl<'a> Deriver<'a> {
                     }
                     true
                 }
-                Some("handle" | "enum" | "funcpointer") => true,
-                Some("struct" | "union") => {
+                Some(Kind::Handle | Kind::Enum | Kind::Funcpointer) => true,
+                Some(Kind::Struct | Kind::Union) => {
                     is_array || is_pointer || !self.struct_always_valid(t, 0)
                 }
                 _ if is_array || is_pointer => true,
@@ -672,7 +675,7 @@ impl<'a> Deriver<'a> {
         }
     }
 
-    fn parameter(&mut self, block: &str, p: &Field, _params: &[Field], category: Option<&str>) {
+    fn parameter(&mut self, block: &str, p: &Field, _params: &[Field], category: Option<Kind>) {
         if p.noautovalidity {
             return;
         }
@@ -682,7 +685,7 @@ impl<'a> Deriver<'a> {
             self.push(block, Some(&p.name), ImplicitKind::Parameter, what);
             return;
         }
-        let bitmask = category == Some("bitmask");
+        let bitmask = category == Some(Kind::Bitmask);
         if let Some(len) = &p.len {
             let levels = crate::model::attrs::parse_len(len).len();
             let element_optional = optional.len() == levels + 1 && optional.last() == Some(&true);
@@ -725,18 +728,18 @@ impl<'a> Deriver<'a> {
     }
 }
 
-fn describe(p: &Field, category: Option<&str>) -> String {
+fn describe(p: &Field, category: Option<Kind>) -> String {
     let t = &p.type_name;
     let noun = match category {
-        Some("handle") => format!("a valid `{t}` handle"),
-        Some("enum") => format!("a valid `{t}` value"),
-        Some("bitmask") => format!(
+        Some(Kind::Handle) => format!("a valid `{t}` handle"),
+        Some(Kind::Enum) => format!("a valid `{t}` value"),
+        Some(Kind::Bitmask) => format!(
             "a valid combination of `{}` values",
             t.replace("Flags", "FlagBits")
         ),
-        Some("struct") => format!("a valid `{t}` structure"),
-        Some("union") => format!("a valid `{t}` union"),
-        Some("funcpointer") => format!("a valid `{t}` value"),
+        Some(Kind::Struct) => format!("a valid `{t}` structure"),
+        Some(Kind::Union) => format!("a valid `{t}` union"),
+        Some(Kind::Funcpointer) => format!("a valid `{t}` value"),
         _ if t == "char" => "a null-terminated UTF-8 string".to_owned(),
         _ if t == "void" => "a valid pointer".to_owned(),
         _ => format!("a valid `{t}` value"),
