@@ -807,3 +807,33 @@ pub(crate) fn command_buffers_allocated(
     }
     cbs
 }
+
+/// The scope of `vkCreateInstance`'s checks: the version and extensions it enables.
+#[cfg(feature = "runtime_implicit_validations")]
+pub(crate) fn create_instance_scope(
+    create_info: &InstanceCreateInfo<'_>,
+) -> crate::validation::Scope<'static> {
+    crate::validation::Scope {
+        exts: crate::checks::Exts::new(
+            vk::api_version_minor(create_info.api_version()),
+            &create_info.enabled_extensions(),
+        ),
+        instance: None,
+        device: None,
+    }
+}
+
+/// The scope of `vkCreateDevice`'s checks: the instance's, with the device
+/// extensions it enables.
+#[cfg(feature = "runtime_implicit_validations")]
+pub(crate) fn create_device_scope<'p>(
+    physical: &'p PhysicalDevice,
+    create_info: &DeviceCreateInfo<'_>,
+) -> crate::validation::Scope<'p> {
+    let mut s = physical.parent().scope();
+    s.exts = s.exts.with(crate::checks::Exts::new(
+        0,
+        &create_info.enabled_extensions(),
+    ));
+    s
+}

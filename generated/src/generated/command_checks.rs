@@ -3641,13 +3641,7 @@ impl PhysicalDevice {
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<()> {
-        let s = &{
-            let mut s = self.parent().scope();
-            s.exts = s
-                .exts
-                .with(crate::checks::Exts::new(0, &create_info.enabled_extensions()));
-            s
-        };
+        let s = &crate::hooks::create_device_scope(self, create_info);
         crate::checks::check_device_create_info(create_info, s)?;
         Ok(())
     }
@@ -3850,14 +3844,7 @@ impl Entry {
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<()> {
-        let s = &crate::validation::Scope {
-            exts: crate::checks::Exts::new(
-                vk::api_version_minor(create_info.api_version()),
-                &create_info.enabled_extensions(),
-            ),
-            instance: None,
-            device: None,
-        };
+        let s = &crate::hooks::create_instance_scope(create_info);
         crate::checks::check_instance_create_info(create_info, s)?;
         Ok(())
     }

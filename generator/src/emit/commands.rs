@@ -967,24 +967,14 @@ impl ImplBlocks {
 /// The scope of a command's checks: what is enabled where it runs, and the objects of
 /// its instance and device.
 fn scope_expr(cx: &Context, plan: &Plan, device_path: &TokenStream) -> TokenStream {
-    match (level(cx.model, &plan.name), plan.name.as_str()) {
-        (_, "vkCreateInstance") => quote!(crate::validation::Scope {
-            exts: crate::checks::Exts::new(
-                vk::api_version_minor(create_info.api_version()),
-                &create_info.enabled_extensions(),
-            ),
-            instance: None,
-            device: None,
-        }),
-        (Level::Entry, _) => quote!(crate::validation::Scope {
+    if let Some(c) = special(&plan.name).and_then(|s| s.scope) {
+        return hook(&c, &quote!());
+    }
+    match level(cx.model, &plan.name) {
+        Level::Entry => quote!(crate::validation::Scope {
             exts: crate::checks::Exts::new(0, &[]),
             instance: None,
             device: None,
-        }),
-        (_, "vkCreateDevice") => quote!({
-            let mut s = #device_path.scope();
-            s.exts = s.exts.with(crate::checks::Exts::new(0, &create_info.enabled_extensions()));
-            s
         }),
         _ => quote!(#device_path.scope()),
     }

@@ -67,6 +67,10 @@ pub struct Special {
     pub created: Option<Call>,
     /// Builds the error of a failed call from `r`, in place of `Error::Vk(r)`.
     pub error: Option<Call>,
+    /// Builds the scope of the `runtime_implicit_validations` checks (what is enabled
+    /// where the call runs), in place of the receiver's: a creation's checks see what
+    /// it enables.
+    pub scope: Option<Call>,
     /// What the created object keeps alive of what its create info names.
     pub keeps: Keeps,
     /// Optional parameters the method takes as required (C names): a submission's
@@ -84,6 +88,7 @@ const NONE: Special = Special {
     after: None,
     created: None,
     error: None,
+    scope: None,
     keeps: Keeps::Reached,
     required: &[],
     settles: &[],
@@ -379,12 +384,14 @@ pub const SPECIALS: &[Special] = &[
         command: "vkCreateInstance",
         created: call("hooks::instance_created", &["self", "out", "create_info"]),
         error: call("presence::instance_error", &["self", "create_info", "r"]),
+        scope: call("hooks::create_instance_scope", &["create_info"]),
         ..NONE
     },
     Special {
         command: "vkCreateDevice",
         created: call("hooks::device_created", &["self", "out", "create_info"]),
         error: call("presence::device_error", &["self", "create_info", "r"]),
+        scope: call("hooks::create_device_scope", &["self", "create_info"]),
         ..NONE
     },
     Special {
@@ -538,7 +545,7 @@ mod tests {
     #[test]
     fn hooks_take_known_bindings() {
         for s in SPECIALS {
-            for c in [s.check, s.before, s.after, s.created, s.error]
+            for c in [s.check, s.before, s.after, s.created, s.error, s.scope]
                 .into_iter()
                 .flatten()
             {
