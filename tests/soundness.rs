@@ -1760,3 +1760,49 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     );
     assert_silent(&s.messages);
 }
+
+/// Slices that share one count in C (`bindingCount` of the buffers and their
+/// offsets, `eventCount` of the events and their dependency infos) must be as long as
+/// the one that sets it, or Vulkan reads past the end of the shorter one on the host.
+/// tuff refuses the call with the slice's `-parameter` rule; an empty optional slice
+/// (`pSizes`, `pStrides`) is NULL, so the call runs and the layer says nothing. The
+/// layer cannot judge these rules (the unchecked call would read past the slice), so
+/// the error alone proves them; the suite's memcheck run shows no read happens.
+#[test]
+fn slices_sharing_a_count_have_its_length() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let usage = vk::BufferUsageFlags::VERTEX_BUFFER;
+    let (a, _ma) = host_buffer(&s, 256, usage);
+    let (b, _mb) = host_buffer(&s, 256, usage);
+    let gate = event(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    assert_eq!(
+        vuid(rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0])),
+        "VUID-vkCmdBindVertexBuffers-pOffsets-parameter"
+    );
+    assert_eq!(
+        vuid(rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 0], &[256], &[])),
+        "VUID-vkCmdBindVertexBuffers2-pSizes-parameter"
+    );
+    assert_eq!(
+        vuid(rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[], &[16, 16])),
+        "VUID-vkCmdBindVertexBuffers2-pStrides-parameter"
+    );
+    assert_eq!(
+        vuid(rec.cmd_wait_events2(&[&gate], &[])),
+        "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter"
+    );
+    // The same recorder goes on: equal lengths, and empty optional slices as NULL.
+    rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0, 16])
+        .expect("one offset per buffer");
+    rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[])
+        .expect("no sizes and no strides");
+    rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[128], &[])
+        .expect("a size per buffer");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}

@@ -128,7 +128,8 @@ impl Scene for Teapots {
             &[&self.sets[view.slot]],
             &[],
         );
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]);
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])
+            .expect("one offset for the one vertex buffer");
         rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32);
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);

@@ -71,7 +71,8 @@ impl Scene for Triangle {
 
     fn draw(&self, rec: &mut tuff::Recorder<'_, tuff::InRenderPass>, _view: &View) {
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline);
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]);
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])
+            .expect("one offset for the one vertex buffer");
         rec.cmd_draw(3, 1, 0, 0);
     }
 }

@@ -40,6 +40,40 @@ fn hook(c: &Call, created: &TokenStream) -> TokenStream {
     }
 }
 
+/// Whether a slice parameter is optional and shares its count with an earlier one.
+fn optional_same_len(plan: &Plan, param: &str) -> bool {
+    plan.same_len.iter().any(|s| s.param == param && s.optional)
+}
+
+/// The rule a slice shorter than its count breaks: its implicit `-parameter` rule
+/// (a valid pointer to an array of that many elements).
+fn same_len_vuid(plan: &Plan, s: &crate::plan::commands::SameLen) -> String {
+    format!("VUID-{}-{}-parameter", plan.name, s.param)
+}
+
+/// The checks every build runs that slices sharing a count are as long as the one
+/// that sets it (or empty, where optional).
+fn same_len_checks(plan: &Plan) -> Vec<TokenStream> {
+    plan.same_len
+        .iter()
+        .map(|s| {
+            let vuid = same_len_vuid(plan, s);
+            let (q, first) = (param(&s.param), param(&s.first));
+            let (qi, fi) = (ident(&q), ident(&first));
+            let message = format!("`{q}` has {{}} elements where `{first}` has {{}}");
+            let empty_ok = s.optional.then(|| quote!(!#qi.is_empty() &&));
+            quote! {
+                if #empty_ok #qi.len() != #fi.len() {
+                    return Err(Error::Validation {
+                        vuid: #vuid,
+                        message: format!(#message, #qi.len(), #fi.len()),
+                    });
+                }
+            }
+        })
+        .collect()
+}
+
 /// A hook called as a statement.
 fn hook_stmt(c: &Call) -> TokenStream {
     match c.promise {
@@ -183,10 +217,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
     let special = special(&plan.name);
+    let same_len = same_len_checks(plan);
     // A recorded command that an always-on check may refuse returns its error.
     let mut fallible = cmd.return_type == "VkResult"
         || fallible_ext
-        || (is_cmd && special.is_some_and(|s| s.check.is_some()));
+        || (is_cmd && (special.is_some_and(|s| s.check.is_some()) || !same_len.is_empty()));
     let mut lifetimes = false;
     let created_ty = cmd
         .params
@@ -351,7 +386,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     spelled(model, &cx.facts, &p.type_name)
                 };
                 args.push(quote!(#name: &[#ty]));
-                call_args.push(quote!(#name.as_ptr().cast(),));
+                if optional_same_len(plan, &p.name) {
+                    // An empty optional slice is NULL, not a dangling pointer.
+                    call_args.push(quote!(if #name.is_empty() { core::ptr::null() } else { #name.as_ptr().cast() },));
+                } else {
+                    call_args.push(quote!(#name.as_ptr().cast(),));
+                }
                 if is_cmd {
                     retain.extend(struct_retains(cx, p, &name, true));
                 }
@@ -741,7 +781,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let checks = checker.command_checks(plan);
     let always = special.and_then(|s| s.check);
     let mut validator = None;
-    let method = if checks.is_empty() && always.is_none() {
+    let method = if checks.is_empty() && always.is_none() && same_len.is_empty() {
         quote! {
             #[doc = #doc]
             #[inline]
@@ -762,13 +802,20 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             let c = hook(&c, &ret_expr);
             quote!(#c?;)
         });
+        let always_code = quote!(#(#same_len)* #always_code);
         let always_vuids = special
             .filter(|s| s.check.is_some())
             .map_or(&[][..], |s| s.settles);
+        let same_len_vuids: Vec<String> = plan
+            .same_len
+            .iter()
+            .map(|s| same_len_vuid(plan, s))
+            .collect();
         let owned: Vec<String> = checks
             .iter()
             .filter_map(|c| c.vuid.as_deref())
             .chain(always_vuids.iter().map(|(v, _)| *v))
+            .chain(same_len_vuids.iter().map(String::as_str))
             .map(|v| format!("`{v}`"))
             .collect();
         let unchecked_doc = format!(

@@ -71,6 +71,21 @@ pub struct Plan {
     pub params: Vec<Param>,
     /// How the command moves a recorder between render-pass states, if it does.
     pub transition: Option<Transition>,
+    /// Slices that share a count with an earlier slice, which sets the count: each
+    /// must be as long, or (if optional) empty, when Vulkan gets NULL. Checked in
+    /// every build, as a shorter one would be read past its end.
+    pub same_len: Vec<SameLen>,
+}
+
+/// A slice parameter sized by another's count (C names).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SameLen {
+    /// The parameter.
+    pub param: String,
+    /// The earlier slice whose length is the count.
+    pub first: String,
+    /// Whether it may be empty instead (`optional`): Vulkan gets NULL.
+    pub optional: bool,
 }
 
 /// A recorder's render-pass state, as the recorder's type parameter names it.
@@ -316,11 +331,39 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             }
         }
     }
+    // Every slice after the first that names a count.
+    let mut same_len = Vec::new();
+    for (_, count) in &count_refs {
+        let users: Vec<&crate::model::Field> = cmd
+            .params
+            .iter()
+            .zip(&params)
+            .filter(|(q, shape)| {
+                q.parsed.len.first().and_then(LenEntry::other_param) == Some(count.as_str())
+                    && matches!(
+                        shape,
+                        Param::Slice | Param::HandleSlice | Param::Bytes | Param::BytesOut
+                    )
+            })
+            .map(|(q, _)| q)
+            .collect();
+        for q in users.iter().skip(1) {
+            let entry = SameLen {
+                param: q.name.clone(),
+                first: users[0].name.clone(),
+                optional: q.is_optional(),
+            };
+            if !same_len.contains(&entry) {
+                same_len.push(entry);
+            }
+        }
+    }
     Ok(Plan {
         name: name.to_owned(),
         receiver,
         params,
         transition: transition(name),
+        same_len,
     })
 }
 

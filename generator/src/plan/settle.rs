@@ -118,7 +118,20 @@ fn implicit(
                     .params
                     .iter()
                     .position(|p| Some(&p.name) == d.field.as_ref());
+                let shares = plan
+                    .same_len
+                    .iter()
+                    .find(|s| Some(&s.param) == d.field.as_ref());
                 match idx.and_then(|i| plan.params.get(i)) {
+                    Some(_) if shares.is_some() => Settlement::Dynamic(format!(
+                        "checks, in every build, that the slice is as long as `{}`{}",
+                        crate::names::param(&shares.map(|s| s.first.clone()).unwrap_or_default()),
+                        if shares.is_some_and(|s| s.optional) {
+                            " or empty (NULL)"
+                        } else {
+                            ""
+                        }
+                    )),
                     Some(p) => param_settlement(p),
                     None => Settlement::User("parameter not found in the plan".into()),
                 }

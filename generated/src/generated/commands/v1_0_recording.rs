@@ -242,7 +242,7 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBindVertexBuffers-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
@@ -256,13 +256,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         first_binding: u32,
         buffers: &[&Buffer],
         offsets: &[vk::DeviceSize],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_bind_vertex_buffers(buffers);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
+        }
+        if offsets.len() != buffers.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBindVertexBuffers-pOffsets-parameter",
+                message: format!(
+                    "`offsets` has {} elements where `buffers` has {}", offsets.len(),
+                    buffers.len()
+                ),
+            });
         }
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
@@ -273,32 +280,35 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers_unchecked(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
         offsets: &[vk::DeviceSize],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_bind_vertex_buffers;
-        for h in buffers {
-            self.retain(h.retained());
+        {
+            for h in buffers {
+                self.retain(h.retained());
+            }
+            let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
+                .iter()
+                .map(|h| h.raw())
+                .collect();
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    first_binding,
+                    buffers.len() as u32,
+                    buffers_raw.as_ptr(),
+                    offsets.as_ptr().cast(),
+                )
+            };
         }
-        let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                first_binding,
-                buffers.len() as u32,
-                buffers_raw.as_ptr(),
-                offsets.as_ptr().cast(),
-            )
-        };
+        Ok(())
     }
     /**`vkCmdEndQuery`
 

@@ -536,9 +536,9 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
+- `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers` or empty (NULL))
+- `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers` or empty (NULL))
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBindVertexBuffers2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
@@ -554,13 +554,38 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_bind_vertex_buffers2(buffers);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
+        }
+        if offsets.len() != buffers.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBindVertexBuffers2-pOffsets-parameter",
+                message: format!(
+                    "`offsets` has {} elements where `buffers` has {}", offsets.len(),
+                    buffers.len()
+                ),
+            });
+        }
+        if !sizes.is_empty() && sizes.len() != buffers.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBindVertexBuffers2-pSizes-parameter",
+                message: format!(
+                    "`sizes` has {} elements where `buffers` has {}", sizes.len(),
+                    buffers.len()
+                ),
+            });
+        }
+        if !strides.is_empty() && strides.len() != buffers.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBindVertexBuffers2-pStrides-parameter",
+                message: format!(
+                    "`strides` has {} elements where `buffers` has {}", strides.len(),
+                    buffers.len()
+                ),
+            });
         }
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
@@ -577,7 +602,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
         &mut self,
@@ -586,27 +611,38 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_bind_vertex_buffers2;
-        for h in buffers {
-            self.retain(h.retained());
+        {
+            for h in buffers {
+                self.retain(h.retained());
+            }
+            let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
+                .iter()
+                .map(|h| h.raw())
+                .collect();
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    first_binding,
+                    buffers.len() as u32,
+                    buffers_raw.as_ptr(),
+                    offsets.as_ptr().cast(),
+                    if sizes.is_empty() {
+                        core::ptr::null()
+                    } else {
+                        sizes.as_ptr().cast()
+                    },
+                    if strides.is_empty() {
+                        core::ptr::null()
+                    } else {
+                        strides.as_ptr().cast()
+                    },
+                )
+            };
         }
-        let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                first_binding,
-                buffers.len() as u32,
-                buffers_raw.as_ptr(),
-                offsets.as_ptr().cast(),
-                sizes.as_ptr().cast(),
-                strides.as_ptr().cast(),
-            )
-        };
+        Ok(())
     }
     /**`vkCmdPipelineBarrier2`
 
@@ -1254,7 +1290,7 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 
 - `VUID-vkCmdWaitEvents2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWaitEvents2-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: dynamic (checks, in every build, that the slice is as long as `events`)
 - `VUID-vkCmdWaitEvents2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWaitEvents2-eventCount-arraylength`: dynamic (checks the slice is not empty)
@@ -1266,13 +1302,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_wait_events2(events, dependency_infos);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
+        }
+        if dependency_infos.len() != events.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter",
+                message: format!(
+                    "`dependency_infos` has {} elements where `events` has {}",
+                    dependency_infos.len(), events.len()
+                ),
+            });
         }
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
@@ -1281,42 +1324,47 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_wait_events2_unchecked<'a>(
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_wait_events2;
-        for h in events {
-            self.retain(h.retained());
-        }
-        let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                events.len() as u32,
-                events_raw.as_ptr(),
-                dependency_infos.as_ptr().cast(),
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in dependency_infos.iter() {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
+        {
+            for h in events {
+                self.retain(h.retained());
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
+            let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
+                .iter()
+                .map(|h| h.raw())
+                .collect();
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    events.len() as u32,
+                    events_raw.as_ptr(),
+                    dependency_infos.as_ptr().cast(),
+                )
+            };
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in dependency_infos.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::dependency_info(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
+            }
         }
+        Ok(())
     }
     /**`vkCmdWriteTimestamp2`
 
