@@ -78,7 +78,8 @@ fn record_gated_fill(
         &[],
         &[],
     );
-    rec.cmd_fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7);
+    rec.cmd_fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7)
+        .expect("fill");
     rec.end().expect("end");
 }
 
@@ -383,7 +384,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
     let mut rec = secondary
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
         .expect("begin secondary");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
     rec.end().expect("end secondary");
     assert_eq!(
         vuid(submit(&s, &[&secondary], &done)),
@@ -409,7 +410,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
                 .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
         )
         .expect("begin once");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 2);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 2).expect("fill");
     rec.end().expect("end once");
     submit(&s, &[&once], &done).expect("first submission");
     wait(&s, &done);
@@ -452,7 +453,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
     let inheritance = tuff::CommandBufferInheritanceInfo::new();
     let secondary_begin = tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
     let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 3);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 3).expect("fill");
     rec.end().expect("end secondary");
 
     let (_ppool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -481,7 +482,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
 
     // Recorded again once complete: the primary that executes it is now invalid.
     let mut rec = secondary.begin(&secondary_begin).expect("begin again");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 4);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 4).expect("fill");
     rec.end().expect("end again");
     assert_eq!(
         vuid(submit(&s, &[&primary], &done)),
@@ -499,7 +500,7 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 5);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 5).expect("fill");
     rec.end().expect("end");
     let done = fence(&s);
     submit(&s, &[&cb], &done).expect("submit");
@@ -604,7 +605,7 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
     assert_eq!(
         vuid(s.device.reset_command_pool(&pool, none)),
         "VUID-vkEndCommandBuffer-commandBuffer-00059"
@@ -761,7 +762,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+        rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
         drop(rec);
     }
     assert_eq!(
@@ -771,7 +772,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin after an abandoned recording");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 2);
+    rec.cmd_fill_buffer(&buffer, 0, 256, 2).expect("fill");
     rec.end().expect("end");
     submit(&s, &[&cb], &done).expect("submit");
     wait(&s, &done);
@@ -1100,7 +1101,7 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 let mut rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                rec.cmd_fill_buffer(buffer, 0, 256, 1);
+                rec.cmd_fill_buffer(buffer, 0, 256, 1).expect("fill");
                 rec.end().expect("end");
                 let cbs = tuff::HandleSlice::new(&[&cb]);
                 for _ in 0..200 {
@@ -1141,7 +1142,7 @@ fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
                     let mut rec = cb
                         .begin(&tuff::CommandBufferBeginInfo::new())
                         .expect("begin");
-                    rec.cmd_fill_buffer(buffer, 0, 256, i);
+                    rec.cmd_fill_buffer(buffer, 0, 256, i).expect("fill");
                     rec.end().expect("end");
                 }
                 // Freed while the other thread may be recording from the same pool.
@@ -1427,7 +1428,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             &[],
             &[],
         );
-        rec.cmd_fill_buffer(&buffer, 0, 256, 1);
+        rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
         rec.end().expect("end secondary");
         assert_eq!(
             vuid(submitter.submit(&s, &[&secondary], &done)),
@@ -1805,4 +1806,187 @@ fn slices_sharing_a_count_have_its_length() {
         .expect("a size per buffer");
     rec.end().expect("end");
     assert_silent(&s.messages);
+}
+
+/// Fills, updates and vertex and index bindings outside their buffer, misaligned, or
+/// on a buffer without the usage or memory they need: tuff refuses each with the
+/// rule's VUID, the recorder goes on, and the same call through `_unchecked` makes
+/// the layer name the same rule (it skips the call, so the driver never runs it).
+#[test]
+fn buffer_commands_stay_inside_their_buffers() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let all = vk::BufferUsageFlags::TRANSFER_DST
+        | vk::BufferUsageFlags::VERTEX_BUFFER
+        | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (buffer, _m) = host_buffer(&s, 256, all);
+    let (src_only, _m2) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_SRC);
+    let unbound = s
+        .device
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(all))
+        .expect("buffer");
+    static BIG: [u8; 65540] = [0; 65540];
+    type Rec<'r> = tuff::Recorder<'r, tuff::Outside>;
+    type Call<'b> = Box<dyn Fn(&mut Rec<'_>, bool) -> tuff::Result<()> + 'b>;
+    // Each case: the rule, and the call (through `_unchecked` when the flag is set).
+    let fill =
+        |b: &'static str, buf: &tuff::Buffer, offset: u64, size: u64| -> (&'static str, Call<'_>) {
+            let buf = buf.clone();
+            (
+                b,
+                Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+                    if unchecked {
+                        // SAFETY: the layer skips the call, which breaks only the rule
+                        // under test; the command buffer is never submitted.
+                        unsafe { rec.cmd_fill_buffer_unchecked(&buf, offset, size, 0) }
+                    } else {
+                        rec.cmd_fill_buffer(&buf, offset, size, 0)
+                    }
+                }),
+            )
+        };
+    let update = |b: &'static str,
+                  buf: &tuff::Buffer,
+                  offset: u64,
+                  data: &'static [u8]|
+     -> (&'static str, Call<'_>) {
+        let buf = buf.clone();
+        (
+            b,
+            Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+                if unchecked {
+                    // SAFETY: as for the fills.
+                    unsafe { rec.cmd_update_buffer_unchecked(&buf, offset, data) }
+                } else {
+                    rec.cmd_update_buffer(&buf, offset, data)
+                }
+            }),
+        )
+    };
+    let vertex = |b: &'static str, buf: &tuff::Buffer, offset: u64| -> (&'static str, Call<'_>) {
+        let buf = buf.clone();
+        (
+            b,
+            Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+                if unchecked {
+                    // SAFETY: as for the fills.
+                    unsafe { rec.cmd_bind_vertex_buffers_unchecked(0, &[&buf], &[offset]) }
+                } else {
+                    rec.cmd_bind_vertex_buffers(0, &[&buf], &[offset])
+                }
+            }),
+        )
+    };
+    let index = |b: &'static str, buf: &tuff::Buffer, offset: u64| -> (&'static str, Call<'_>) {
+        let buf = buf.clone();
+        (
+            b,
+            Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+                if unchecked {
+                    // SAFETY: as for the fills.
+                    unsafe {
+                        rec.cmd_bind_index_buffer_unchecked(&buf, offset, vk::IndexType::UINT32)
+                    }
+                } else {
+                    rec.cmd_bind_index_buffer(&buf, offset, vk::IndexType::UINT32)
+                }
+            }),
+        )
+    };
+    let big: &'static [u8] = &BIG;
+    let cases: Vec<(&str, Call<'_>)> = vec![
+        fill("VUID-vkCmdFillBuffer-dstOffset-00024", &buffer, 256, 4),
+        fill("VUID-vkCmdFillBuffer-dstOffset-00025", &buffer, 2, 4),
+        fill("VUID-vkCmdFillBuffer-size-00026", &buffer, 0, 0),
+        fill("VUID-vkCmdFillBuffer-size-00027", &buffer, 128, 256),
+        fill("VUID-vkCmdFillBuffer-size-00028", &buffer, 0, 6),
+        fill("VUID-vkCmdFillBuffer-dstBuffer-00029", &src_only, 0, 4),
+        fill("VUID-vkCmdFillBuffer-dstBuffer-00031", &unbound, 0, 4),
+        update(
+            "VUID-vkCmdUpdateBuffer-dstOffset-00032",
+            &buffer,
+            256,
+            &[0; 4],
+        ),
+        update(
+            "VUID-vkCmdUpdateBuffer-dataSize-00033",
+            &buffer,
+            128,
+            &[0; 256],
+        ),
+        update(
+            "VUID-vkCmdUpdateBuffer-dstBuffer-00034",
+            &src_only,
+            0,
+            &[0; 4],
+        ),
+        update(
+            "VUID-vkCmdUpdateBuffer-dstBuffer-00035",
+            &unbound,
+            0,
+            &[0; 4],
+        ),
+        update(
+            "VUID-vkCmdUpdateBuffer-dstOffset-00036",
+            &buffer,
+            2,
+            &[0; 4],
+        ),
+        update("VUID-vkCmdUpdateBuffer-dataSize-00038", &buffer, 0, &[0; 6]),
+        vertex("VUID-vkCmdBindVertexBuffers-pOffsets-00626", &buffer, 256),
+        vertex("VUID-vkCmdBindVertexBuffers-pBuffers-00627", &src_only, 0),
+        vertex("VUID-vkCmdBindVertexBuffers-pBuffers-00628", &unbound, 0),
+        index("VUID-vkCmdBindIndexBuffer-offset-00431", &buffer, 256),
+        index("VUID-vkCmdBindIndexBuffer-buffer-00433", &src_only, 0),
+        index("VUID-vkCmdBindIndexBuffer-buffer-00434", &unbound, 0),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, call) in &cases {
+        assert_eq!(vuid(call(&mut rec, false)), *expected);
+    }
+    // 65,540 bytes: more than one update may carry (and than the buffer holds).
+    let (large, _m3) = host_buffer(&s, 1 << 17, vk::BufferUsageFlags::TRANSFER_DST);
+    assert_eq!(
+        vuid(rec.cmd_update_buffer(&large, 0, big)),
+        "VUID-vkCmdUpdateBuffer-dataSize-00037"
+    );
+    // The recorder goes on with correct calls, which run.
+    rec.cmd_fill_buffer(&buffer, 0, 128, 7).expect("fill");
+    rec.cmd_update_buffer(&buffer, 252, &[1, 2, 3, 4])
+        .expect("update");
+    rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252])
+        .expect("vertex");
+    rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
+        .expect("index");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+    let done = fence(&s);
+    let cbs = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+        .expect("submit");
+    let waited = s
+        .device
+        .wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(waited, vk::Result::SUCCESS);
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, call) in &cases {
+        call(&mut rec, true).expect("recorded");
+        assert_layer_reports(&s, expected);
+    }
+    // SAFETY: as above.
+    unsafe { rec.cmd_update_buffer_unchecked(&large, 0, big) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdUpdateBuffer-dataSize-00037");
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
 }

@@ -283,7 +283,8 @@ fn resources_dropped_while_their_submission_is_in_flight() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         for i in 0..64u64 {
-            rec.cmd_fill_buffer(&buffer, i * 16384, 16384, round);
+            rec.cmd_fill_buffer(&buffer, i * 16384, 16384, round)
+                .expect("fill");
         }
         rec.end().expect("end");
         let cb_handles = tuff::HandleSlice::new(&[&cb]);
@@ -311,7 +312,10 @@ fn a_submitted_buffer_is_written() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let (buffer, memory) = buffer_with_memory(&s, 256);
-    submit_and_wait(&s, |rec| rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5));
+    submit_and_wait(&s, |rec| {
+        rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5)
+            .expect("fill")
+    });
     // Read back through ash on the raw handles: Deref keeps the layer transparent.
     let bytes = access_memory(&s, &memory, 256, None);
     assert!(
@@ -992,7 +996,8 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let record = |frame: &mut tuff::Frame<'_>, n: u32| {
         let target = &targets[frame.index];
         let mut rec = frame.record().expect("record");
-        rec.cmd_fill_buffer(target, 0, vk::WHOLE_SIZE, n);
+        rec.cmd_fill_buffer(target, 0, vk::WHOLE_SIZE, n)
+            .expect("fill");
         let to_host = [tuff::BufferMemoryBarrier::new(target)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(vk::AccessFlags::HOST_READ)

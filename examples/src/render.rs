@@ -37,8 +37,13 @@ pub trait Scene {
         Ok(())
     }
 
-    /// Records the frame's draws; viewport and scissor are set already.
-    fn draw(&self, rec: &mut tuff::Recorder<'_, tuff::InRenderPass>, view: &View);
+    /// Records the frame's draws; viewport and scissor are set already. Fails when
+    /// tuff refuses a command (a binding outside its buffer, say).
+    fn draw(
+        &self,
+        rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
+        view: &View,
+    ) -> tuff::Result<()>;
 }
 
 /// A one-subpass render pass that clears a color attachment of `format` (and a
@@ -227,7 +232,7 @@ pub fn record_frame<S: Scene>(
         }],
     );
     rec.cmd_set_scissor(0, &[area]);
-    scene.draw(&mut rec, view);
+    scene.draw(&mut rec, view)?;
     let mut rec = rec.cmd_end_render_pass();
     if let Some((image, buffer)) = readback {
         rec.cmd_copy_image_to_buffer(

@@ -548,6 +548,194 @@ fn check_buffer_use(
     Ok(())
 }
 
+/// The records of buffers a recorded command uses, with their usage and binding
+/// checked.
+fn used_buffer<S: State>(
+    recorder: &Recorder<'_, S>,
+    buffer: &Buffer,
+    usage: vk::BufferUsageFlags,
+    vuids: (&'static str, &'static str),
+    name: &str,
+) -> Result<BufferRecord> {
+    let record = buffer_record(recorder.device(), buffer)?;
+    check_buffer_use(&record, usage, vuids, name)?;
+    Ok(record)
+}
+
+/// The checks of `vkCmdFillBuffer` that keep the fill inside the buffer.
+pub(crate) fn cmd_fill_buffer_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    size: vk::DeviceSize,
+) -> Result<()> {
+    let dst = used_buffer(
+        recorder,
+        dst_buffer,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        (
+            "VUID-vkCmdFillBuffer-dstBuffer-00029",
+            "VUID-vkCmdFillBuffer-dstBuffer-00031",
+        ),
+        "dstBuffer",
+    )?;
+    if dst_offset >= dst.size {
+        refuse("VUID-vkCmdFillBuffer-dstOffset-00024", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+    }
+    if dst_offset % 4 != 0 {
+        refuse(
+            "VUID-vkCmdFillBuffer-dstOffset-00025",
+            format!("dstOffset must be a multiple of 4 (dstOffset = {dst_offset})"),
+        )?;
+    }
+    if size != vk::WHOLE_SIZE {
+        if size == 0 {
+            refuse(
+                "VUID-vkCmdFillBuffer-size-00026",
+                "size must be greater than 0 (size = 0)".into(),
+            )?;
+        }
+        if size > dst.size - dst_offset {
+            refuse("VUID-vkCmdFillBuffer-size-00027", format!("size must be at most the size of dstBuffer minus dstOffset (size = {size}, dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+        }
+        if size % 4 != 0 {
+            refuse(
+                "VUID-vkCmdFillBuffer-size-00028",
+                format!("size must be a multiple of 4 (size = {size})"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdUpdateBuffer` that keep the update inside the buffer.
+pub(crate) fn cmd_update_buffer_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    data: &[u8],
+) -> Result<()> {
+    let dst = used_buffer(
+        recorder,
+        dst_buffer,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        (
+            "VUID-vkCmdUpdateBuffer-dstBuffer-00034",
+            "VUID-vkCmdUpdateBuffer-dstBuffer-00035",
+        ),
+        "dstBuffer",
+    )?;
+    let len = data.len() as u64;
+    if dst_offset >= dst.size {
+        refuse("VUID-vkCmdUpdateBuffer-dstOffset-00032", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+    }
+    if len > dst.size - dst_offset {
+        refuse("VUID-vkCmdUpdateBuffer-dataSize-00033", format!("dataSize must be at most the size of dstBuffer minus dstOffset (dataSize = {len}, dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+    }
+    if dst_offset % 4 != 0 {
+        refuse(
+            "VUID-vkCmdUpdateBuffer-dstOffset-00036",
+            format!("dstOffset must be a multiple of 4 (dstOffset = {dst_offset})"),
+        )?;
+    }
+    if len > 65536 {
+        refuse(
+            "VUID-vkCmdUpdateBuffer-dataSize-00037",
+            format!("dataSize must be at most 65536 (dataSize = {len})"),
+        )?;
+    }
+    if len % 4 != 0 {
+        refuse(
+            "VUID-vkCmdUpdateBuffer-dataSize-00038",
+            format!("dataSize must be a multiple of 4 (dataSize = {len})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdBindVertexBuffers` that keep each binding inside its buffer.
+pub(crate) fn cmd_bind_vertex_buffers_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    buffers: &[&Buffer],
+    offsets: &[vk::DeviceSize],
+) -> Result<()> {
+    for (i, (b, &offset)) in buffers.iter().zip(offsets).enumerate() {
+        let record = used_buffer(
+            recorder,
+            b,
+            vk::BufferUsageFlags::VERTEX_BUFFER,
+            (
+                "VUID-vkCmdBindVertexBuffers-pBuffers-00627",
+                "VUID-vkCmdBindVertexBuffers-pBuffers-00628",
+            ),
+            &format!("pBuffers[{i}]"),
+        )?;
+        if offset >= record.size {
+            refuse("VUID-vkCmdBindVertexBuffers-pOffsets-00626", format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdBindVertexBuffers2` that keep each binding inside its buffer.
+pub(crate) fn cmd_bind_vertex_buffers2_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    buffers: &[&Buffer],
+    offsets: &[vk::DeviceSize],
+    sizes: &[vk::DeviceSize],
+) -> Result<()> {
+    for (i, (b, &offset)) in buffers.iter().zip(offsets).enumerate() {
+        let record = used_buffer(
+            recorder,
+            b,
+            vk::BufferUsageFlags::VERTEX_BUFFER,
+            (
+                "VUID-vkCmdBindVertexBuffers2-pBuffers-03359",
+                "VUID-vkCmdBindVertexBuffers2-pBuffers-03360",
+            ),
+            &format!("pBuffers[{i}]"),
+        )?;
+        if offset >= record.size {
+            refuse("VUID-vkCmdBindVertexBuffers2-pOffsets-03357", format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
+        }
+        // VK_WHOLE_SIZE is the rest of the buffer.
+        if let Some(&size) = sizes.get(i).filter(|&&s| s != vk::WHOLE_SIZE) {
+            if size > record.size - offset {
+                refuse("VUID-vkCmdBindVertexBuffers2-pSizes-03358", format!("pOffsets[{i}] plus pSizes[{i}] must be at most the size of pBuffers[{i}] (offset = {offset}, size = {size}, size of the buffer = {})", record.size))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdBindIndexBuffer` that keep the binding inside the buffer.
+pub(crate) fn cmd_bind_index_buffer_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    buffer: &Buffer,
+    offset: vk::DeviceSize,
+) -> Result<()> {
+    let record = used_buffer(
+        recorder,
+        buffer,
+        vk::BufferUsageFlags::INDEX_BUFFER,
+        (
+            "VUID-vkCmdBindIndexBuffer-buffer-00433",
+            "VUID-vkCmdBindIndexBuffer-buffer-00434",
+        ),
+        "buffer",
+    )?;
+    if offset >= record.size {
+        refuse(
+            "VUID-vkCmdBindIndexBuffer-offset-00431",
+            format!(
+                "offset must be less than the size of buffer (offset = {offset}, size = {})",
+                record.size
+            ),
+        )?;
+    }
+    Ok(())
+}
+
 /// The checks of `vkCmdCopyBuffer` that keep the copy inside both buffers: a copy out
 /// of range reads or writes memory the buffers do not own.
 pub(crate) fn cmd_copy_buffer_checks<S: State>(

@@ -120,7 +120,11 @@ impl Scene for Bezier {
         [0.02, 0.02, 0.04, 1.0]
     }
 
-    fn draw(&self, rec: &mut tuff::Recorder<'_, tuff::InRenderPass>, view: &View) {
+    fn draw(
+        &self,
+        rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
+        view: &View,
+    ) -> tuff::Result<()> {
         let params = params(
             self.options.view,
             self.options.level,
@@ -135,7 +139,7 @@ impl Scene for Bezier {
             &[&self.set],
             &[],
         );
-        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32);
+        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params));
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and
@@ -143,5 +147,6 @@ impl Scene for Bezier {
         for patch in 0..PATCHES.len() as u32 {
             rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0);
         }
+        Ok(())
     }
 }

@@ -119,7 +119,11 @@ impl Scene for Teapots {
         Ok(())
     }
 
-    fn draw(&self, rec: &mut tuff::Recorder<'_, tuff::InRenderPass>, view: &View) {
+    fn draw(
+        &self,
+        rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
+        view: &View,
+    ) -> tuff::Result<()> {
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline);
         rec.cmd_bind_descriptor_sets(
             vk::PipelineBindPoint::GRAPHICS,
@@ -128,9 +132,8 @@ impl Scene for Teapots {
             &[&self.sets[view.slot]],
             &[],
         );
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])
-            .expect("one offset for the one vertex buffer");
-        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32);
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);
             rec.cmd_push_constants(
@@ -141,5 +144,6 @@ impl Scene for Teapots {
             );
             rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0);
         }
+        Ok(())
     }
 }

@@ -69,10 +69,14 @@ impl Scene for Triangle {
         [0.05, 0.05, 0.08, 1.0]
     }
 
-    fn draw(&self, rec: &mut tuff::Recorder<'_, tuff::InRenderPass>, _view: &View) {
+    fn draw(
+        &self,
+        rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
+        _view: &View,
+    ) -> tuff::Result<()> {
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline);
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])
-            .expect("one offset for the one vertex buffer");
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
         rec.cmd_draw(3, 1, 0, 0);
+        Ok(())
     }
 }

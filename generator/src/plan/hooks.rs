@@ -124,6 +124,7 @@ const UNPROVEN: &str =
     "checked in every build, but no test breaks it yet, so the report does not count it";
 const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
 const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
+const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
@@ -330,6 +331,77 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateBuffer",
         created: call("hooks::buffer_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdFillBuffer",
+        check: call(
+            "hooks::cmd_fill_buffer_checks",
+            &["self", "dst_buffer", "dst_offset", "size"],
+        ),
+        settles: &[
+            ("VUID-vkCmdFillBuffer-dstOffset-00024", How::Dynamic(RANGE)),
+            ("VUID-vkCmdFillBuffer-dstOffset-00025", How::Dynamic(RANGE)),
+            ("VUID-vkCmdFillBuffer-size-00026", How::Dynamic(RANGE)),
+            ("VUID-vkCmdFillBuffer-size-00027", How::Dynamic(RANGE)),
+            ("VUID-vkCmdFillBuffer-size-00028", How::Dynamic(RANGE)),
+            ("VUID-vkCmdFillBuffer-dstBuffer-00029", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdFillBuffer-dstBuffer-00031", How::Dynamic(BUFFER_USE)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdUpdateBuffer",
+        check: call(
+            "hooks::cmd_update_buffer_checks",
+            &["self", "dst_buffer", "dst_offset", "data"],
+        ),
+        settles: &[
+            ("VUID-vkCmdUpdateBuffer-dstOffset-00032", How::Dynamic(RANGE)),
+            ("VUID-vkCmdUpdateBuffer-dataSize-00033", How::Dynamic(RANGE)),
+            ("VUID-vkCmdUpdateBuffer-dstBuffer-00034", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdUpdateBuffer-dstBuffer-00035", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdUpdateBuffer-dstOffset-00036", How::Dynamic(RANGE)),
+            ("VUID-vkCmdUpdateBuffer-dataSize-00037", How::Dynamic(RANGE)),
+            ("VUID-vkCmdUpdateBuffer-dataSize-00038", How::Dynamic(RANGE)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBindVertexBuffers",
+        check: call(
+            "hooks::cmd_bind_vertex_buffers_checks",
+            &["self", "buffers", "offsets"],
+        ),
+        settles: &[
+            ("VUID-vkCmdBindVertexBuffers-pOffsets-00626", How::Dynamic(RANGE)),
+            ("VUID-vkCmdBindVertexBuffers-pBuffers-00627", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdBindVertexBuffers-pBuffers-00628", How::Dynamic(BUFFER_USE)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBindVertexBuffers2",
+        check: call(
+            "hooks::cmd_bind_vertex_buffers2_checks",
+            &["self", "buffers", "offsets", "sizes"],
+        ),
+        settles: &[
+            ("VUID-vkCmdBindVertexBuffers2-pOffsets-03357", How::Dynamic(RANGE)),
+            ("VUID-vkCmdBindVertexBuffers2-pSizes-03358", How::Dynamic(RANGE)),
+            ("VUID-vkCmdBindVertexBuffers2-pBuffers-03359", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdBindVertexBuffers2-pBuffers-03360", How::Dynamic(BUFFER_USE)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBindIndexBuffer",
+        check: call("hooks::cmd_bind_index_buffer_checks", &["self", "buffer", "offset"]),
+        settles: &[
+            ("VUID-vkCmdBindIndexBuffer-offset-00431", How::Dynamic(RANGE)),
+            ("VUID-vkCmdBindIndexBuffer-buffer-00433", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdBindIndexBuffer-buffer-00434", How::Dynamic(BUFFER_USE)),
+        ],
         ..NONE
     },
     Special {

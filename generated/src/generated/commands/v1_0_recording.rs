@@ -144,6 +144,9 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
 
 The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindIndexBuffer.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindIndexBuffer-offset-00431`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdBindIndexBuffer-buffer-00433`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdBindIndexBuffer-buffer-00434`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindIndexBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindIndexBuffer-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindIndexBuffer-indexType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -152,21 +155,20 @@ The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khro
 - `VUID-vkCmdBindIndexBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindIndexBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_index_buffer(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_bind_index_buffer(buffer, index_type);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
     }
@@ -174,18 +176,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_index_buffer_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_bind_index_buffer;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), buffer.raw(), offset, index_type) };
-        self.retain_with(buffer.address(), || buffer.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), buffer.raw(), offset, index_type) };
+            self.retain_with(buffer.address(), || buffer.retained());
+        }
+        Ok(())
     }
     /**`vkCmdBindPipeline`
 
@@ -240,6 +245,9 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
 
 The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindVertexBuffers-pOffsets-00626`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdBindVertexBuffers-pBuffers-00627`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdBindVertexBuffers-pBuffers-00628`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
@@ -249,7 +257,7 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_vertex_buffers(
         &mut self,
@@ -271,6 +279,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
                 ),
             });
         }
+        crate::hooks::cmd_bind_vertex_buffers_checks(self, buffers, offsets)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
@@ -280,7 +289,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers_unchecked(
         &mut self,
@@ -1950,6 +1959,13 @@ The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run 
 
 The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdFillBuffer.html). Settled by the wrappers:
 
+- `VUID-vkCmdFillBuffer-dstOffset-00024`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdFillBuffer-dstOffset-00025`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdFillBuffer-size-00026`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdFillBuffer-size-00027`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdFillBuffer-size-00028`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdFillBuffer-dstBuffer-00029`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdFillBuffer-dstBuffer-00031`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdFillBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdFillBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdFillBuffer-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -1958,7 +1974,7 @@ The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdFillBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_fill_buffer(
         &mut self,
@@ -1966,14 +1982,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         dst_offset: vk::DeviceSize,
         size: vk::DeviceSize,
         data: u32,
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_fill_buffer(dst_buffer);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_fill_buffer_checks(self, dst_buffer, dst_offset, size)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
     }
@@ -1981,7 +1996,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_fill_buffer_unchecked(
         &mut self,
@@ -1989,11 +2004,14 @@ The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: 
         dst_offset: vk::DeviceSize,
         size: vk::DeviceSize,
         data: u32,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_fill_buffer;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), dst_buffer.raw(), dst_offset, size, data) };
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), dst_buffer.raw(), dst_offset, size, data) };
+            self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        }
+        Ok(())
     }
     /**`vkCmdResetEvent`
 
@@ -2226,6 +2244,13 @@ The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `V
 
 The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdUpdateBuffer.html). Settled by the wrappers:
 
+- `VUID-vkCmdUpdateBuffer-dstOffset-00032`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdUpdateBuffer-dataSize-00033`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdUpdateBuffer-dstBuffer-00034`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdUpdateBuffer-dstBuffer-00035`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdUpdateBuffer-dstOffset-00036`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdUpdateBuffer-dataSize-00037`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdUpdateBuffer-dataSize-00038`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
 - `VUID-vkCmdUpdateBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdUpdateBuffer-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdUpdateBuffer-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -2236,21 +2261,20 @@ The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos
 - `VUID-vkCmdUpdateBuffer-dataSize-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_update_buffer(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
         data: &[u8],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_update_buffer(dst_buffer, data);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_update_buffer_checks(self, dst_buffer, dst_offset, data)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
     }
@@ -2258,26 +2282,29 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_update_buffer_unchecked(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
         data: &[u8],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_update_buffer;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                dst_buffer.raw(),
-                dst_offset,
-                data.len() as vk::DeviceSize,
-                data.as_ptr().cast(),
-            )
-        };
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    dst_buffer.raw(),
+                    dst_offset,
+                    data.len() as vk::DeviceSize,
+                    data.as_ptr().cast(),
+                )
+            };
+            self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        }
+        Ok(())
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {

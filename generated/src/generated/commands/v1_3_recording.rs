@@ -534,6 +534,10 @@ impl<'c, S: State> Recorder<'c, S> {
 
 The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers2.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdBindVertexBuffers2-pSizes-03358`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
@@ -545,7 +549,7 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_vertex_buffers2(
         &mut self,
@@ -587,6 +591,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 ),
             });
         }
+        crate::hooks::cmd_bind_vertex_buffers2_checks(self, buffers, offsets, sizes)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_bind_vertex_buffers2_unchecked(
@@ -602,7 +607,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
         &mut self,
