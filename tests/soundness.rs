@@ -1990,3 +1990,363 @@ fn buffer_commands_stay_inside_their_buffers() {
     s.messages.abort_on_error(false);
     rec.end().expect("end");
 }
+
+/// Query results read into a slice too small, or for queries past the pool, would
+/// have the driver write past `data` or read past its pool: tuff refuses each with
+/// the rule's VUID, and the layer names the same rule for the unchecked call (which it
+/// then skips, so the driver never writes).
+#[test]
+fn query_results_stay_inside_data_and_pool() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let pool = |ty| {
+        d.create_query_pool(
+            &tuff::QueryPoolCreateInfo::new()
+                .query_type(ty)
+                .query_count(4),
+        )
+        .expect("query pool")
+    };
+    let occlusion = pool(vk::QueryType::OCCLUSION);
+    let timestamps = pool(vk::QueryType::TIMESTAMP);
+    // Eight-byte aligned storage, so the alignment rules break only where a case
+    // breaks them on purpose.
+    let mut words = [0u64; 8];
+    let data: &mut [u8] = bytemuck::cast_slice_mut(&mut words);
+    let wide = vk::QueryResultFlags::TYPE_64;
+    type Case = (
+        &'static str,
+        bool,
+        u32,
+        u32,
+        usize,
+        u64,
+        vk::QueryResultFlags,
+    );
+    let cases: [Case; 6] = [
+        (
+            "VUID-vkGetQueryPoolResults-firstQuery-00813",
+            false,
+            4,
+            1,
+            64,
+            8,
+            wide,
+        ),
+        (
+            "VUID-vkGetQueryPoolResults-firstQuery-00816",
+            false,
+            2,
+            3,
+            64,
+            8,
+            wide,
+        ),
+        (
+            "VUID-vkGetQueryPoolResults-flags-00815",
+            false,
+            0,
+            1,
+            64,
+            4,
+            wide,
+        ),
+        (
+            "VUID-vkGetQueryPoolResults-flags-02827",
+            false,
+            0,
+            1,
+            64,
+            6,
+            vk::QueryResultFlags::empty(),
+        ),
+        // Four queries of eight bytes at a stride of eight need 32 bytes, not 24.
+        (
+            "VUID-vkGetQueryPoolResults-dataSize-00817",
+            false,
+            0,
+            4,
+            24,
+            8,
+            wide,
+        ),
+        (
+            "VUID-vkGetQueryPoolResults-queryType-00818",
+            true,
+            0,
+            1,
+            64,
+            8,
+            wide | vk::QueryResultFlags::PARTIAL,
+        ),
+    ];
+    for (expected, ts, first, count, len, stride, flags) in cases {
+        let p = if ts { &timestamps } else { &occlusion };
+        assert_eq!(
+            vuid(d.get_query_pool_results(p, first, count, &mut data[..len], stride, flags)),
+            expected
+        );
+    }
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    for (expected, ts, first, count, len, stride, flags) in cases {
+        let p = if ts { &timestamps } else { &occlusion };
+        // SAFETY: the messenger makes the layer skip the call, so the driver never
+        // writes; the call breaks only the rule under test.
+        let r = unsafe {
+            d.get_query_pool_results_unchecked(p, first, count, &mut data[..len], stride, flags)
+        };
+        assert!(r.is_err(), "the layer skipped the call");
+        assert_layer_reports(&s, expected);
+    }
+    s.messages.abort_on_error(false);
+}
+
+/// Push constants outside the layout's ranges, misaligned or past
+/// `maxPushConstantsSize`, and set bindings past the layout's sets or with too few
+/// dynamic offsets, would have the driver copy past its arrays: tuff refuses each, the
+/// recorder goes on, and the layer names the same rule for the unchecked call.
+#[test]
+fn push_constants_and_set_bindings_stay_inside_the_layout() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    // Ranges of one stage each (no stage may be in two ranges): the vertex stage
+    // reads 0..16, the fragment stage 0..32.
+    let ranges = [
+        vk::PushConstantRange {
+            stage_flags: vk::ShaderStageFlags::VERTEX,
+            offset: 0,
+            size: 16,
+        },
+        vk::PushConstantRange {
+            stage_flags: vk::ShaderStageFlags::FRAGMENT,
+            offset: 0,
+            size: 32,
+        },
+    ];
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::VERTEX)];
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let layout = d
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .push_constant_ranges(&ranges)
+                .set_layouts(&set_layouts),
+        )
+        .expect("layout");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
+        descriptor_count: 1,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("descriptor pool");
+    let set = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
+        )
+        .expect("set")
+        .pop()
+        .expect("one set");
+    let (buffer, _memory) = host_buffer(&s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
+    let info = [tuff::DescriptorBufferInfo::new()
+        .buffer(Some(&buffer))
+        .range(64)];
+    d.update_descriptor_sets(
+        &[tuff::WriteDescriptorSet::new(&set)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+            .buffer_info(&info)],
+        &[],
+    )
+    .expect("write");
+    let vertex = vk::ShaderStageFlags::VERTEX;
+    let both = vertex | vk::ShaderStageFlags::FRAGMENT;
+    let max = s
+        .physical
+        .get_physical_device_properties()
+        .limits
+        .max_push_constants_size;
+    let pushes: [(&str, vk::ShaderStageFlags, u32, usize); 6] = [
+        ("VUID-vkCmdPushConstants-offset-01795", both, 16, 8),
+        ("VUID-vkCmdPushConstants-offset-01796", vertex, 0, 8),
+        ("VUID-vkCmdPushConstants-offset-00368", vertex, 2, 4),
+        ("VUID-vkCmdPushConstants-size-00369", vertex, 0, 6),
+        ("VUID-vkCmdPushConstants-offset-00370", vertex, max, 4),
+        ("VUID-vkCmdPushConstants-size-00371", vertex, max - 4, 8),
+    ];
+    let bytes = [0u8; 64];
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, stages, offset, len) in pushes {
+        assert_eq!(
+            vuid(rec.cmd_push_constants(&layout, stages, offset, &bytes[..len])),
+            expected
+        );
+    }
+    let graphics = vk::PipelineBindPoint::GRAPHICS;
+    assert_eq!(
+        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0])),
+        "VUID-vkCmdBindDescriptorSets-firstSet-00360"
+    );
+    assert_eq!(
+        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[])),
+        "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359"
+    );
+    // The recorder goes on with correct calls.
+    rec.cmd_push_constants(&layout, both, 0, &bytes[..16])
+        .expect("push");
+    rec.cmd_push_constants(&layout, vk::ShaderStageFlags::FRAGMENT, 16, &bytes[..16])
+        .expect("push");
+    rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0])
+        .expect("bind");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, stages, offset, len) in pushes {
+        // SAFETY: the layer skips the call, which breaks only the rule under test; the
+        // command buffer is never submitted.
+        unsafe { rec.cmd_push_constants_unchecked(&layout, stages, offset, &bytes[..len]) }
+            .expect("recorded");
+        assert_layer_reports(&s, expected);
+    }
+    // SAFETY: as above.
+    unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, &layout, 1, &[&set], &[0]) }
+        .expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-firstSet-00360");
+    // SAFETY: as above; the layer reads no dynamic offset it was not given.
+    unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, &layout, 0, &[&set], &[]) }
+        .expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359");
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
+}
+
+/// Private data reaches the object through its handle, as a pointer: a handle of a
+/// dropped object, or of another type, or of an object that is not a child of the
+/// device, is refused before the driver sees it.
+#[test]
+fn private_data_names_live_objects_only() {
+    use tuff::Handle as _;
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let slot = d
+        .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
+        .expect("slot");
+    let (buffer, _memory) = host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_DST);
+    let dropped = {
+        let (gone, _m) = host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_DST);
+        vk::Handle::as_raw(gone.raw())
+    };
+    let live = vk::Handle::as_raw(buffer.raw());
+    let instance = vk::Handle::as_raw(s.instance.raw());
+    let cases = [
+        (
+            "VUID-vkSetPrivateData-objectHandle-04017",
+            vk::ObjectType::BUFFER,
+            dropped,
+        ),
+        (
+            "VUID-vkSetPrivateData-objectHandle-04017",
+            vk::ObjectType::IMAGE,
+            live,
+        ),
+        (
+            "VUID-vkSetPrivateData-objectHandle-04016",
+            vk::ObjectType::INSTANCE,
+            instance,
+        ),
+    ];
+    for (expected, ty, handle) in cases {
+        assert_eq!(vuid(d.set_private_data(ty, handle, &slot, 7)), expected);
+    }
+    assert!(matches!(
+        d.get_private_data(vk::ObjectType::BUFFER, dropped, &slot),
+        Err(tuff::Error::Misuse(_))
+    ));
+    d.set_private_data(vk::ObjectType::BUFFER, live, &slot, 7)
+        .expect("set");
+    assert_eq!(
+        d.get_private_data(vk::ObjectType::BUFFER, live, &slot)
+            .expect("get"),
+        7
+    );
+    let device = vk::Handle::as_raw(d.raw());
+    d.set_private_data(vk::ObjectType::DEVICE, device, &slot, 9)
+        .expect("set on the device");
+    assert_silent(&s.messages);
+    // The layer does not check these rules (it reports nothing for a handle of the
+    // wrong type or a non-child), so the error alone proves them: the report says so.
+}
+
+/// A debug name or tag reaches the object through its handle: a handle of a dropped
+/// object, or named with another type, is refused; a live one is named.
+#[test]
+fn debug_names_are_given_only_to_live_objects() {
+    use tuff::vk::Handle as _;
+    use tuff::Handle as _;
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (buffer, _memory) = transfer_buffer(&s);
+    let dropped = {
+        let (gone, _m) = transfer_buffer(&s);
+        gone.raw().as_raw()
+    };
+    let name = |ty: vk::ObjectType, raw: u64| {
+        s.device.set_debug_utils_object_name_ext(
+            &tuff::DebugUtilsObjectNameInfoEXT::new()
+                .object_type(ty)
+                .object_handle(raw)
+                .object_name(Some(c"named")),
+        )
+    };
+    let tag = |ty: vk::ObjectType, raw: u64| {
+        s.device.set_debug_utils_object_tag_ext(
+            &tuff::DebugUtilsObjectTagInfoEXT::new()
+                .object_type(ty)
+                .object_handle(raw)
+                .tag(&[1, 2, 3, 4]),
+        )
+    };
+    let live = buffer.raw().as_raw();
+    for (ty, raw) in [
+        (vk::ObjectType::BUFFER, dropped),
+        (vk::ObjectType::IMAGE, live),
+    ] {
+        assert_eq!(
+            vuid(name(ty, raw)),
+            "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590"
+        );
+        assert_eq!(
+            vuid(tag(ty, raw)),
+            "VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910"
+        );
+    }
+    name(vk::ObjectType::BUFFER, live).expect("a live buffer");
+    tag(vk::ObjectType::BUFFER, live).expect("a live buffer");
+    assert_silent(&s.messages);
+    // `_unchecked` looks the object up too (it is how the call finds the lock it
+    // holds), so no call reaches the layer: the error alone proves these rules.
+}

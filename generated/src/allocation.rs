@@ -38,7 +38,10 @@ struct Owner {
     atom: u64,
 }
 
-impl DeviceOwner for Owner {
+// SAFETY: the wrapper's device, its physical device and instance stay alive while the
+// owner holds the device (each wrapper keeps its parent), and `atom` is read from
+// that physical device's limits.
+unsafe impl DeviceOwner for Owner {
     fn instance(&self) -> &ash::Instance {
         self.device.parent().parent().fns()
     }

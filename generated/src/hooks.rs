@@ -9,11 +9,12 @@
 
 use crate::handles::*;
 use crate::recorder::{Recorder, State};
-use crate::retention::BufferRecord;
+use crate::retention::{BufferRecord, LayoutRecord, QueryPoolRecord};
 use crate::structs::*;
 use crate::submission::{self, SubmitRules};
 use crate::{Error, Handle, Result};
 use ash::vk;
+use ash::vk::Handle as _;
 use smallvec::SmallVec;
 
 /// The raw command buffers of `vkQueueSubmit` batches.
@@ -968,14 +969,345 @@ pub(crate) fn descriptor_update_template_created(
     })
 }
 
-/// Each set holds a token of its pool, which counts the sets alive.
+/// Each set holds a token of its pool, which counts the sets alive, and the device
+/// remembers how many dynamic buffer descriptors its layout has.
 pub(crate) fn descriptor_sets_allocated(
+    device: &Device,
     sets: Vec<DescriptorSet>,
     descriptor_pool: &DescriptorPool,
+    allocate_info: &DescriptorSetAllocateInfo<'_>,
 ) -> Vec<DescriptorSet> {
+    let raw = allocate_info.as_raw();
+    // SAFETY: the safe setter stored the layouts with their count.
+    let layouts =
+        unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
+    for (set, layout) in sets.iter().zip(layouts) {
+        let dynamics = device.live().set_layout_dynamics(*layout).unwrap_or(0);
+        device.live().set_allocated(set.raw(), dynamics);
+    }
     sets.into_iter()
         .map(|set| set.with_token(descriptor_pool.set_token()))
         .collect()
+}
+
+/// The device remembers the layout's count of dynamic buffer descriptors.
+pub(crate) fn descriptor_set_layout_created(
+    device: &Device,
+    layout: DescriptorSetLayout,
+    create_info: &DescriptorSetLayoutCreateInfo<'_>,
+) -> DescriptorSetLayout {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stored the bindings with their count.
+    let bindings = unsafe { crate::retention::raw_slice(raw.p_bindings, raw.binding_count) };
+    let dynamics = bindings
+        .iter()
+        .filter(|b| {
+            matches!(
+                b.descriptor_type,
+                vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC
+                    | vk::DescriptorType::STORAGE_BUFFER_DYNAMIC
+            )
+        })
+        .map(|b| b.descriptor_count)
+        .fold(0u32, u32::saturating_add);
+    device.live().set_layout_created(layout.raw(), dynamics);
+    layout
+}
+
+/// The device remembers the layout's push-constant ranges and its sets' dynamic
+/// descriptors.
+pub(crate) fn pipeline_layout_created(
+    device: &Device,
+    layout: PipelineLayout,
+    create_info: &PipelineLayoutCreateInfo<'_>,
+) -> PipelineLayout {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setters stored both arrays with their counts.
+    let (ranges, sets) = unsafe {
+        (
+            crate::retention::raw_slice(raw.p_push_constant_ranges, raw.push_constant_range_count),
+            crate::retention::raw_slice(raw.p_set_layouts, raw.set_layout_count),
+        )
+    };
+    let set_dynamics = sets
+        .iter()
+        .map(|s| device.live().set_layout_dynamics(*s).unwrap_or(0))
+        .collect();
+    device.live().pipeline_layout_created(
+        layout.raw(),
+        LayoutRecord {
+            push_ranges: ranges.to_vec(),
+            set_dynamics,
+        },
+    );
+    layout
+}
+
+/// The device remembers the pool's type, size and statistics.
+pub(crate) fn query_pool_created(
+    device: &Device,
+    pool: QueryPool,
+    create_info: &QueryPoolCreateInfo<'_>,
+) -> QueryPool {
+    device.live().query_pool_created(
+        pool.raw(),
+        QueryPoolRecord {
+            query_type: create_info.query_type,
+            count: create_info.query_count,
+            statistics: create_info.pipeline_statistics,
+        },
+    );
+    pool
+}
+
+/// The physical device's limits, read once per device.
+fn limits(device: &Device) -> &vk::PhysicalDeviceLimits {
+    device
+        .live()
+        .limits(|| device.parent().get_physical_device_properties().limits)
+}
+
+/// The checks of `vkGetQueryPoolResults` that keep the driver inside `data` and the
+/// pool: the queries exist, and `data` holds every result at its stride.
+pub(crate) fn get_query_pool_results_checks(
+    device: &Device,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+    data: &[u8],
+    stride: vk::DeviceSize,
+    flags: vk::QueryResultFlags,
+) -> Result<()> {
+    let pool = device
+        .live()
+        .query_pool(query_pool.raw())
+        .ok_or(Error::Misuse(
+            "the query pool was not created through the wrappers",
+        ))?;
+    if first_query >= pool.count {
+        refuse("VUID-vkGetQueryPoolResults-firstQuery-00813", format!("firstQuery must be less than the number of queries in queryPool (firstQuery = {first_query}, queries = {})", pool.count))?;
+    }
+    if u64::from(first_query) + u64::from(query_count) > u64::from(pool.count) {
+        refuse("VUID-vkGetQueryPoolResults-firstQuery-00816", format!("firstQuery plus queryCount must be at most the number of queries in queryPool (firstQuery = {first_query}, queryCount = {query_count}, queries = {})", pool.count))?;
+    }
+    let wide = flags.contains(vk::QueryResultFlags::TYPE_64);
+    let unit: u64 = if wide { 8 } else { 4 };
+    let address = data.as_ptr() as u64;
+    if address % unit != 0 || stride % unit != 0 {
+        let vuid = if wide {
+            "VUID-vkGetQueryPoolResults-flags-00815"
+        } else {
+            "VUID-vkGetQueryPoolResults-flags-02827"
+        };
+        refuse(vuid, format!("pData and stride must be multiples of {unit} (pData = {address:#x}, stride = {stride})"))?;
+    }
+    if pool.query_type == vk::QueryType::TIMESTAMP && flags.contains(vk::QueryResultFlags::PARTIAL)
+    {
+        refuse(
+            "VUID-vkGetQueryPoolResults-queryType-00818",
+            "a timestamp query pool's results cannot be partial".into(),
+        )?;
+    }
+    let values: u64 = match pool.query_type {
+        vk::QueryType::OCCLUSION | vk::QueryType::TIMESTAMP => 1,
+        vk::QueryType::PIPELINE_STATISTICS => u64::from(pool.statistics.as_raw().count_ones()),
+        _ => {
+            return Err(Error::Misuse(
+                "tuff cannot size the results of this query type; read them with get_query_pool_results_unchecked",
+            ))
+        }
+    };
+    let status = flags.intersects(
+        vk::QueryResultFlags::WITH_AVAILABILITY | vk::QueryResultFlags::WITH_STATUS_KHR,
+    );
+    let each = (values + u64::from(status)) * unit;
+    let needed = match query_count {
+        0 => Some(0),
+        n => stride
+            .checked_mul(u64::from(n - 1))
+            .and_then(|s| s.checked_add(each)),
+    };
+    match needed {
+        Some(needed) if needed <= data.len() as u64 => Ok(()),
+        _ => refuse(
+            "VUID-vkGetQueryPoolResults-dataSize-00817",
+            format!("dataSize must hold every result: {query_count} queries of {each} bytes at a stride of {stride} need more than {} bytes", data.len()),
+        ),
+    }
+}
+
+/// The checks of `vkCmdPushConstants` that keep the write inside the layout's
+/// ranges, which the drivers copy into arrays of `maxPushConstantsSize` bytes.
+pub(crate) fn cmd_push_constants_checks<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    layout: &PipelineLayout,
+    stage_flags: vk::ShaderStageFlags,
+    offset: u32,
+    values: &[u8],
+) -> Result<()> {
+    let key = (layout.raw(), stage_flags, offset, values.len());
+    if recorder.last_push == Some(key) {
+        return Ok(());
+    }
+    let size = values.len() as u64;
+    let offset = u64::from(offset);
+    if offset % 4 != 0 {
+        refuse(
+            "VUID-vkCmdPushConstants-offset-00368",
+            format!("offset must be a multiple of 4 (offset = {offset})"),
+        )?;
+    }
+    if size % 4 != 0 {
+        refuse(
+            "VUID-vkCmdPushConstants-size-00369",
+            format!("size must be a multiple of 4 (size = {size})"),
+        )?;
+    }
+    let max = u64::from(limits(recorder.device()).max_push_constants_size);
+    if offset >= max {
+        refuse("VUID-vkCmdPushConstants-offset-00370", format!("offset must be less than maxPushConstantsSize (offset = {offset}, maxPushConstantsSize = {max})"))?;
+    }
+    if size > max - offset {
+        refuse("VUID-vkCmdPushConstants-size-00371", format!("size must be at most maxPushConstantsSize minus offset (size = {size}, offset = {offset}, maxPushConstantsSize = {max})"))?;
+    }
+    let record = recorder.layout_record(layout)?;
+    check_push_ranges(&record, stage_flags, offset, offset + size)?;
+    recorder.last_push = Some(key);
+    Ok(())
+}
+
+/// Every byte of `start..end` is in a range of each stage of `stages` (01795), and
+/// every range that holds one of those bytes has only stages of `stages` (01796).
+fn check_push_ranges(
+    record: &LayoutRecord,
+    stages: vk::ShaderStageFlags,
+    start: u64,
+    end: u64,
+) -> Result<()> {
+    for bit in (0..32).map(|i| vk::ShaderStageFlags::from_raw(1 << i)) {
+        if !stages.contains(bit) {
+            continue;
+        }
+        // Walk the bytes forward through the ranges of this stage.
+        let mut at = start;
+        while at < end {
+            let next = record
+                .push_ranges
+                .iter()
+                .filter(|r| r.stage_flags.contains(bit))
+                .filter(|r| {
+                    u64::from(r.offset) <= at && at < u64::from(r.offset) + u64::from(r.size)
+                })
+                .map(|r| u64::from(r.offset) + u64::from(r.size))
+                .max();
+            match next {
+                Some(n) => at = n,
+                None => {
+                    return refuse(
+                        "VUID-vkCmdPushConstants-offset-01795",
+                        format!(
+                        "byte {at} for stage {bit:?} is in no push-constant range of the layout"
+                    ),
+                    )
+                }
+            }
+        }
+    }
+    for r in &record.push_ranges {
+        let (r0, r1) = (u64::from(r.offset), u64::from(r.offset) + u64::from(r.size));
+        if r0 < end && start < r1 && !stages.contains(r.stage_flags) {
+            refuse(
+                "VUID-vkCmdPushConstants-offset-01796",
+                format!("stageFlags ({stages:?}) must include every stage ({:?}) of the range {r0}..{r1} the write overlaps", r.stage_flags),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdBindDescriptorSets` that keep the driver inside the layout's
+/// sets and the dynamic offsets.
+pub(crate) fn cmd_bind_descriptor_sets_checks<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    layout: &PipelineLayout,
+    first_set: u32,
+    descriptor_sets: &[&DescriptorSet],
+    dynamic_offsets: &[u32],
+) -> Result<()> {
+    let record = recorder.layout_record(layout)?;
+    let sets = record.set_dynamics.len() as u64;
+    if u64::from(first_set) + descriptor_sets.len() as u64 > sets {
+        refuse(
+            "VUID-vkCmdBindDescriptorSets-firstSet-00360",
+            format!("firstSet plus descriptorSetCount must be at most the layout's setLayoutCount (firstSet = {first_set}, descriptorSetCount = {}, setLayoutCount = {sets})", descriptor_sets.len()),
+        )?;
+    }
+    let live = recorder.device().live();
+    let mut dynamics: u64 = 0;
+    for s in descriptor_sets {
+        dynamics += u64::from(live.set_dynamic_count(s.raw()).unwrap_or(0));
+    }
+    if dynamics != dynamic_offsets.len() as u64 {
+        refuse(
+            "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359",
+            format!("dynamicOffsetCount must equal the number of dynamic descriptors in the sets (dynamicOffsetCount = {}, dynamic descriptors = {dynamics})", dynamic_offsets.len()),
+        )?;
+    }
+    Ok(())
+}
+
+/// The object types that are not the device nor a child of it.
+const INSTANCE_LEVEL: &[vk::ObjectType] = &[
+    vk::ObjectType::INSTANCE,
+    vk::ObjectType::PHYSICAL_DEVICE,
+    vk::ObjectType::SURFACE_KHR,
+    vk::ObjectType::DEBUG_UTILS_MESSENGER_EXT,
+    vk::ObjectType::DEBUG_REPORT_CALLBACK_EXT,
+    vk::ObjectType::DISPLAY_KHR,
+    vk::ObjectType::DISPLAY_MODE_KHR,
+];
+
+/// Whether `object_handle` is the device or a live object of it of `object_type`.
+/// Drivers reach an object's private data and debug name through its handle, as a
+/// pointer, so a handle of no live object would be used after free.
+fn names_live_object(device: &Device, object_type: vk::ObjectType, object_handle: u64) -> bool {
+    let is_device = object_type == vk::ObjectType::DEVICE && object_handle == device.raw().as_raw();
+    is_device || device.live().sync_of(object_type, object_handle).is_some()
+}
+
+/// Refuses an object that is not the device or a live object of it of the type given.
+pub(crate) fn set_private_data_checks(
+    device: &Device,
+    object_type: vk::ObjectType,
+    object_handle: u64,
+) -> Result<()> {
+    if names_live_object(device, object_type, object_handle) {
+        return Ok(());
+    }
+    if INSTANCE_LEVEL.contains(&object_type) {
+        return refuse(
+            "VUID-vkSetPrivateData-objectHandle-04016",
+            format!("objectHandle must be the device or a child of it, not an object of type {object_type:?}"),
+        );
+    }
+    refuse(
+        "VUID-vkSetPrivateData-objectHandle-04017",
+        format!("objectHandle ({object_handle:#x}) must be the device or a live object of it of type {object_type:?}"),
+    )
+}
+
+/// Refuses an object that is not the device or a live object of it of the type given.
+pub(crate) fn get_private_data_checks(
+    device: &Device,
+    object_type: vk::ObjectType,
+    object_handle: u64,
+) -> Result<()> {
+    if names_live_object(device, object_type, object_handle) {
+        return Ok(());
+    }
+    Err(Error::Misuse(
+        "objectHandle must be the device or a live object of it of the type given",
+    ))
 }
 
 /// Each buffer remembers its level; the device and the pool track its lifecycle.

@@ -68,6 +68,14 @@ pub struct Recorder<'c, S: State> {
     /// The address of the last object kept, so a run of commands on one object
     /// (push constants before every draw) keeps it once.
     last: usize,
+    /// The record of the pipeline layout last used, so a run of push constants on
+    /// one layout looks it up once. The recording keeps the layout alive, so its raw
+    /// handle names it for the whole recording.
+    layout: Option<(vk::PipelineLayout, Vrc<crate::retention::LayoutRecord>)>,
+    /// The last push-constant write that passed its checks (layout, stages, offset,
+    /// size): the checks depend on nothing else, so a run of equal writes (one before
+    /// every draw) is checked once.
+    pub(crate) last_push: Option<(vk::PipelineLayout, vk::ShaderStageFlags, u32, usize)>,
     /// The first failed check; later commands are not recorded and `end` returns it.
     #[cfg(feature = "runtime_implicit_validations")]
     poisoned: Option<Error>,
@@ -198,6 +206,8 @@ impl CommandBuffer {
             cb: self,
             kept: Vec::new(),
             last: 0,
+            layout: None,
+            last_push: None,
             #[cfg(feature = "runtime_implicit_validations")]
             poisoned: None,
             #[cfg(feature = "runtime_implicit_validations")]
@@ -274,6 +284,27 @@ impl<'c, S: State> Recorder<'c, S> {
         }
     }
 
+    /// The record of a pipeline layout made through the wrappers.
+    pub(crate) fn layout_record(
+        &mut self,
+        layout: &crate::PipelineLayout,
+    ) -> Result<Vrc<crate::retention::LayoutRecord>> {
+        if let Some((raw, record)) = &self.layout {
+            if *raw == layout.raw() {
+                return Ok(record.clone());
+            }
+        }
+        let record = self
+            .device
+            .live()
+            .pipeline_layout(layout.raw())
+            .ok_or(Error::Misuse(
+                "the pipeline layout was not created through the wrappers",
+            ))?;
+        self.layout = Some((layout.raw(), record.clone()));
+        Ok(record)
+    }
+
     pub(crate) fn into_state<T: State>(self) -> Recorder<'c, T> {
         Recorder {
             cb: self.cb,
@@ -281,6 +312,8 @@ impl<'c, S: State> Recorder<'c, S> {
             raw: self.raw,
             kept: self.kept,
             last: self.last,
+            layout: self.layout,
+            last_push: self.last_push,
             #[cfg(feature = "runtime_implicit_validations")]
             poisoned: self.poisoned,
             #[cfg(feature = "runtime_implicit_validations")]

@@ -63,9 +63,41 @@ pub(crate) struct Live {
     timelines: Vutex<std::collections::HashSet<u64>>,
     /// What the checks of commands that use a buffer need to know of it.
     buffers: Vutex<HashMap<u64, BufferRecord>>,
+    /// Each query pool's type, query count and statistics.
+    query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
+    /// Each pipeline layout's push-constant ranges and sets.
+    pipeline_layouts: Vutex<HashMap<u64, Vrc<LayoutRecord>>>,
+    /// Each descriptor set layout's count of dynamic buffer descriptors.
+    set_layouts: Vutex<HashMap<u64, u32>>,
+    /// Each descriptor set's count of dynamic buffer descriptors (its layout's).
+    set_dynamics: Vutex<HashMap<u64, u32>>,
+    /// The physical device's limits, read once.
+    limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
     /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
     bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
+}
+
+/// A live query pool's creation parameters, which `get_query_pool_results` checks
+/// against.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct QueryPoolRecord {
+    /// `VkQueryPoolCreateInfo::queryType`.
+    pub query_type: vk::QueryType,
+    /// `VkQueryPoolCreateInfo::queryCount`.
+    pub count: u32,
+    /// `VkQueryPoolCreateInfo::pipelineStatistics`.
+    pub statistics: vk::QueryPipelineStatisticFlags,
+}
+
+/// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
+/// sets, which the recorder checks push constants and bound sets against.
+#[derive(Clone, Debug)]
+pub(crate) struct LayoutRecord {
+    /// `VkPipelineLayoutCreateInfo::pPushConstantRanges`.
+    pub push_ranges: Vec<vk::PushConstantRange>,
+    /// For each set layout: its count of dynamic buffer descriptors.
+    pub set_dynamics: Vec<u32>,
 }
 
 /// A live buffer's creation parameters and binding, which command checks read.
@@ -91,6 +123,11 @@ impl Default for Live {
             queues: Vutex::new(HashMap::new()),
             timelines: Vutex::new(std::collections::HashSet::new()),
             buffers: Vutex::new(HashMap::new()),
+            query_pools: Vutex::new(HashMap::new()),
+            pipeline_layouts: Vutex::new(HashMap::new()),
+            set_layouts: Vutex::new(HashMap::new()),
+            set_dynamics: Vutex::new(HashMap::new()),
+            limits: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::new()),
         }
     }
@@ -185,8 +222,25 @@ impl Live {
         if unlisted && H::TYPE == vk::ObjectType::SEMAPHORE {
             self.timelines.lock().remove(&key.1);
         }
-        if unlisted && H::TYPE == vk::ObjectType::BUFFER {
-            self.buffers.lock().remove(&key.1);
+        match H::TYPE {
+            _ if !unlisted => {}
+            vk::ObjectType::BUFFER => {
+                self.buffers.lock().remove(&key.1);
+            }
+            vk::ObjectType::QUERY_POOL => {
+                self.query_pools.lock().remove(&key.1);
+            }
+            vk::ObjectType::PIPELINE_LAYOUT => {
+                let record = self.pipeline_layouts.lock().remove(&key.1);
+                drop(record);
+            }
+            vk::ObjectType::DESCRIPTOR_SET_LAYOUT => {
+                self.set_layouts.lock().remove(&key.1);
+            }
+            vk::ObjectType::DESCRIPTOR_SET => {
+                self.set_dynamics.lock().remove(&key.1);
+            }
+            _ => {}
         }
         if unlisted && matches!(H::TYPE, vk::ObjectType::BUFFER | vk::ObjectType::IMAGE) {
             // Released outside the lock: it may be the last reference to the memory.
@@ -200,6 +254,56 @@ impl Live {
             let written = self.sets.lock().remove(&key.1);
             drop(written);
         }
+    }
+
+    /// Records a new query pool's creation parameters.
+    pub(crate) fn query_pool_created(&self, raw: vk::QueryPool, record: QueryPoolRecord) {
+        self.query_pools.lock().insert(raw.as_raw(), record);
+    }
+
+    /// The record of a live query pool made through the wrappers.
+    pub(crate) fn query_pool(&self, raw: vk::QueryPool) -> Option<QueryPoolRecord> {
+        self.query_pools.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// Records a new descriptor set layout's count of dynamic buffer descriptors.
+    pub(crate) fn set_layout_created(&self, raw: vk::DescriptorSetLayout, dynamics: u32) {
+        self.set_layouts.lock().insert(raw.as_raw(), dynamics);
+    }
+
+    /// The count of dynamic buffer descriptors of a live set layout.
+    pub(crate) fn set_layout_dynamics(&self, raw: vk::DescriptorSetLayout) -> Option<u32> {
+        self.set_layouts.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// Records a new descriptor set's count of dynamic buffer descriptors.
+    pub(crate) fn set_allocated(&self, raw: vk::DescriptorSet, dynamics: u32) {
+        self.set_dynamics.lock().insert(raw.as_raw(), dynamics);
+    }
+
+    /// The count of dynamic buffer descriptors of a live set.
+    pub(crate) fn set_dynamic_count(&self, raw: vk::DescriptorSet) -> Option<u32> {
+        self.set_dynamics.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// Records a new pipeline layout's push-constant ranges and sets.
+    pub(crate) fn pipeline_layout_created(&self, raw: vk::PipelineLayout, record: LayoutRecord) {
+        self.pipeline_layouts
+            .lock()
+            .insert(raw.as_raw(), Vrc::new(record));
+    }
+
+    /// The record of a live pipeline layout made through the wrappers.
+    pub(crate) fn pipeline_layout(&self, raw: vk::PipelineLayout) -> Option<Vrc<LayoutRecord>> {
+        self.pipeline_layouts.lock().get(&raw.as_raw()).cloned()
+    }
+
+    /// The physical device's limits, read from `read` the first time.
+    pub(crate) fn limits(
+        &self,
+        read: impl FnOnce() -> vk::PhysicalDeviceLimits,
+    ) -> &vk::PhysicalDeviceLimits {
+        self.limits.get_or_init(read)
     }
 
     /// Records a new buffer's creation parameters.

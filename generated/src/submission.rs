@@ -739,22 +739,43 @@ pub(crate) fn check_semaphore_type(
 }
 
 /// The host synchronization of an object a debug name or tag is given to: that of a
-/// live object of the device. An object the device does not list (the device itself,
-/// which every call of another thread uses, and the instance's own objects: the
-/// instance, a physical device, a surface, a messenger) has none it can hold; with
-/// `multi_thread`, where another thread could use it meanwhile, naming it is refused.
+/// live object of the device. The device itself, its physical device and instance
+/// have none the device can hold: with `multi_thread`, where another thread could
+/// use them meanwhile, naming them is refused. Any other handle the device does not
+/// list (a dropped object, a surface or messenger of the instance) is refused with
+/// `vuid`, the rule that the handle be a valid one of its type.
 #[allow(dead_code)]
 pub(crate) fn named_object_sync(
     device: &Device,
     ty: vk::ObjectType,
     raw: u64,
+    vuid: &'static str,
 ) -> Result<tuff_runtime::HostSync> {
-    match device.live().sync_of(ty, raw) {
-        Some(sync) => Ok(sync),
-        None if tuff_runtime::MULTI_THREAD => Err(Error::Misuse(
-            "with multi_thread, only the device and its objects can be named or tagged through it: another thread could use any other object meanwhile",
+    use ash::vk::Handle as _;
+    if let Some(sync) = device.live().sync_of(ty, raw) {
+        return Ok(sync);
+    }
+    let physical = device.parent();
+    let own = match ty {
+        vk::ObjectType::DEVICE => raw == device.raw().as_raw(),
+        vk::ObjectType::PHYSICAL_DEVICE => raw == physical.raw().as_raw(),
+        vk::ObjectType::INSTANCE => raw == physical.parent().raw().as_raw(),
+        _ => false,
+    };
+    match own {
+        true if tuff_runtime::MULTI_THREAD => Err(Error::Misuse(
+            "with multi_thread, only the device's objects can be named or tagged through it: another thread could use the device or the instance meanwhile",
         )),
-        None => Ok(tuff_runtime::HostSync::new()),
+        true => Ok(tuff_runtime::HostSync::new()),
+        // Drivers reach the name through the handle, as a pointer: a handle of no
+        // live object (dropped, of another type, or never made through the wrappers)
+        // would be used after free.
+        false => Err(Error::Validation {
+            vuid,
+            message: format!(
+                "objectHandle ({raw:#x}) must be a live object of type {ty:?}: the device, its instance or physical device, or an object made through the wrappers"
+            ),
+        }),
     }
 }
 

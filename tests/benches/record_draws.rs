@@ -97,7 +97,8 @@ fn main() {
             .clear_values(&clear);
         let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
         for i in 0..DRAWS {
-            rec.cmd_push_constants(&layout, vk::ShaderStageFlags::VERTEX, 0, black_box(&push));
+            rec.cmd_push_constants(&layout, vk::ShaderStageFlags::VERTEX, 0, black_box(&push))
+                .expect("recorded");
             rec.cmd_draw(36, 1, black_box(i), 0);
         }
         rec.cmd_end_render_pass().end().expect("end");

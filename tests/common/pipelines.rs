@@ -319,7 +319,8 @@ impl Pipelines {
             vk::ShaderStageFlags::FRAGMENT,
             0,
             &color,
-        );
+        )
+        .expect("recorded");
         rec.cmd_draw(3, 1, 0, 0);
         let mut rec = rec.cmd_end_render_pass();
         if let Some(buffer) = readback {
@@ -372,7 +373,8 @@ impl Pipelines {
             0,
             &[&self.set],
             &[],
-        );
+        )
+        .expect("recorded");
         rec.cmd_dispatch(1, 1, 1);
         rec
     }

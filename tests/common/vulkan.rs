@@ -113,7 +113,9 @@ impl Drop for TestDevice {
     }
 }
 
-impl DeviceOwner for TestDevice {
+// SAFETY: the test device holds its instance and destroys its device only on drop,
+// after every allocator and allocation holding it; `atom` is read from its limits.
+unsafe impl DeviceOwner for TestDevice {
     fn instance(&self) -> &ash::Instance {
         &self.instance.instance
     }

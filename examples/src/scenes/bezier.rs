@@ -138,9 +138,9 @@ impl Scene for Bezier {
             0,
             &[&self.set],
             &[],
-        );
+        )?;
         rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
-        rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params));
+        rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params))?;
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and
         // handle went missing; the speckle test caught it).

@@ -131,7 +131,7 @@ impl Scene for Teapots {
             0,
             &[&self.sets[view.slot]],
             &[],
-        );
+        )?;
         rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
         rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {
@@ -141,7 +141,7 @@ impl Scene for Teapots {
                 vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT,
                 0,
                 bytemuck::bytes_of(&block),
-            );
+            )?;
             rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0);
         }
         Ok(())

@@ -124,6 +124,11 @@ const UNPROVEN: &str =
     "checked in every build, but no test breaks it yet, so the report does not count it";
 const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
 const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
+const QUERIES: &str = "checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride";
+const PUSH: &str = "checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize";
+const LIVE_OBJECT: &str =
+    "checks the handle is the device or a live object of it of that type, which the device lists";
+const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
@@ -405,6 +410,112 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCreateQueryPool",
+        created: call("hooks::query_pool_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkGetQueryPoolResults",
+        check: call(
+            "hooks::get_query_pool_results_checks",
+            &["self", "query_pool", "first_query", "query_count", "data", "stride", "flags"],
+        ),
+        settles: &[
+            ("VUID-vkGetQueryPoolResults-firstQuery-00813", How::Dynamic(QUERIES)),
+            ("VUID-vkGetQueryPoolResults-firstQuery-00816", How::Dynamic(QUERIES)),
+            ("VUID-vkGetQueryPoolResults-flags-00815", How::Dynamic(QUERIES)),
+            ("VUID-vkGetQueryPoolResults-flags-02827", How::Dynamic(QUERIES)),
+            ("VUID-vkGetQueryPoolResults-dataSize-00817", How::Dynamic(QUERIES)),
+            ("VUID-vkGetQueryPoolResults-queryType-00818", How::Dynamic(QUERIES)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateDescriptorSetLayout",
+        created: call(
+            "hooks::descriptor_set_layout_created",
+            &["self", "created", "create_info"],
+        ),
+        ..NONE
+    },
+    Special {
+        command: "vkCreatePipelineLayout",
+        created: call("hooks::pipeline_layout_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdPushConstants",
+        check: call(
+            "hooks::cmd_push_constants_checks",
+            &["self", "layout", "stage_flags", "offset", "values"],
+        ),
+        settles: &[
+            ("VUID-vkCmdPushConstants-offset-01795", How::Dynamic(PUSH)),
+            ("VUID-vkCmdPushConstants-offset-01796", How::Dynamic(PUSH)),
+            ("VUID-vkCmdPushConstants-offset-00368", How::Dynamic(PUSH)),
+            ("VUID-vkCmdPushConstants-size-00369", How::Dynamic(PUSH)),
+            ("VUID-vkCmdPushConstants-offset-00370", How::Dynamic(PUSH)),
+            ("VUID-vkCmdPushConstants-size-00371", How::Dynamic(PUSH)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBindDescriptorSets",
+        check: call(
+            "hooks::cmd_bind_descriptor_sets_checks",
+            &["self", "layout", "first_set", "descriptor_sets", "dynamic_offsets"],
+        ),
+        settles: &[
+            (
+                "VUID-vkCmdBindDescriptorSets-firstSet-00360",
+                How::Dynamic("checks the sets against the layout's set count, kept from its creation"),
+            ),
+            (
+                "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359",
+                How::Dynamic("checks one dynamic offset per dynamic descriptor of the sets, counted from their layouts at creation"),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkSetPrivateData",
+        check: call(
+            "hooks::set_private_data_checks",
+            &["self", "object_type", "object_handle"],
+        ),
+        settles: &[
+            ("VUID-vkSetPrivateData-objectHandle-04016", How::Dynamic(LIVE_OBJECT)),
+            ("VUID-vkSetPrivateData-objectHandle-04017", How::Dynamic(LIVE_OBJECT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPrivateData",
+        check: call(
+            "hooks::get_private_data_checks",
+            &["self", "object_type", "object_handle"],
+        ),
+        ..NONE
+    },
+    // Their host synchronization (plan::sync) looks the named object up among the
+    // device's live objects and refuses one it does not find.
+    Special {
+        command: "vkSetDebugUtilsObjectNameEXT",
+        settles: &[(
+            "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590",
+            How::Dynamic(NAMED_OBJECT),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkSetDebugUtilsObjectTagEXT",
+        settles: &[(
+            "VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910",
+            How::Dynamic(NAMED_OBJECT),
+        )],
+        ..NONE
+    },
+    Special {
         command: "vkCmdCopyBuffer",
         check: call(
             "hooks::cmd_copy_buffer_checks",
@@ -504,7 +615,10 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkAllocateDescriptorSets",
-        created: call("hooks::descriptor_sets_allocated", &["created", "descriptor_pool"]),
+        created: call(
+            "hooks::descriptor_sets_allocated",
+            &["self", "created", "descriptor_pool", "allocate_info"],
+        ),
         ..NONE
     },
     Special {

@@ -45,10 +45,10 @@ pub(crate) fn member(command: &str, path: &str) -> Option<TokenStream> {
         // lock the device can find, so naming them is refused where another thread
         // could use them (see `named_object_sync`).
         ("vkSetDebugUtilsObjectNameEXT", "pNameInfo->objectHandle") => quote! {
-            syncs.push(crate::submission::named_object_sync(self, name_info.object_type, name_info.object_handle)?);
+            syncs.push(crate::submission::named_object_sync(self, name_info.object_type, name_info.object_handle, "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590")?);
         },
         ("vkSetDebugUtilsObjectTagEXT", "pTagInfo->objectHandle") => quote! {
-            syncs.push(crate::submission::named_object_sync(self, tag_info.object_type, tag_info.object_handle)?);
+            syncs.push(crate::submission::named_object_sync(self, tag_info.object_type, tag_info.object_handle, "VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910")?);
         },
         _ => return None,
     })

@@ -37,10 +37,21 @@ use std::ptr::NonNull;
 /// its `Drop` destroys the device, which therefore outlives every allocator and
 /// allocation that holds the owner.
 ///
+/// # Safety
+///
+/// The allocators call Vulkan with what the owner returns and trust it, so an
+/// implementation promises, for as long as any clone of it lives: `instance()` is a
+/// live instance, `physical_device()` one of its physical devices, `device()` a live
+/// device created from that physical device (not destroyed before the owner is
+/// dropped), and `non_coherent_atom_size()` that physical device's
+/// `VkPhysicalDeviceLimits::nonCoherentAtomSize`.
+///
 /// ```
 /// use ash::vk;
 /// struct MyDevice { instance: ash::Instance, physical: vk::PhysicalDevice, device: ash::Device, atom: u64 }
-/// impl tuff_runtime::DeviceOwner for MyDevice {
+/// // SAFETY: the fields are a live instance, its physical device, a device created from
+/// // it and destroyed only when this owner drops, and that device's atom size.
+/// unsafe impl tuff_runtime::DeviceOwner for MyDevice {
 ///     fn instance(&self) -> &ash::Instance { &self.instance }
 ///     fn physical_device(&self) -> vk::PhysicalDevice { self.physical }
 ///     fn device(&self) -> &ash::Device { &self.device }
@@ -51,7 +62,7 @@ use std::ptr::NonNull;
 ///     fn drop(&mut self) { unsafe { self.device.destroy_device(None) } }
 /// }
 /// ```
-pub trait DeviceOwner: MaybeSendSync + 'static {
+pub unsafe trait DeviceOwner: MaybeSendSync + 'static {
     /// The instance the device was created from.
     fn instance(&self) -> &ash::Instance;
     /// The physical device.

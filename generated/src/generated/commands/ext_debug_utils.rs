@@ -382,6 +382,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                         self,
                         name_info.object_type,
                         name_info.object_handle,
+                        "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590",
                     )?,
                 );
             tuff_runtime::lock_all(syncs)
@@ -413,6 +414,7 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
                         self,
                         name_info.object_type,
                         name_info.object_handle,
+                        "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590",
                     )?,
                 );
             tuff_runtime::lock_all(syncs)
@@ -457,6 +459,7 @@ The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://regist
                         self,
                         tag_info.object_type,
                         tag_info.object_handle,
+                        "VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910",
                     )?,
                 );
             tuff_runtime::lock_all(syncs)
@@ -488,6 +491,7 @@ The caller upholds the rules that [`Self::set_debug_utils_object_tag_ext`] check
                         self,
                         tag_info.object_type,
                         tag_info.object_handle,
+                        "VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910",
                     )?,
                 );
             tuff_runtime::lock_all(syncs)

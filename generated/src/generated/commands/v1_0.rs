@@ -139,11 +139,13 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
         }
         Ok(
             crate::hooks::descriptor_sets_allocated(
+                self,
                 out
                     .into_iter()
                     .map(|raw| DescriptorSet::from_raw(raw, descriptor_pool, None, true))
                     .collect(),
                 descriptor_pool,
+                allocate_info,
             ),
         )
     }
@@ -699,25 +701,31 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
             return Err(Error::Vk(r));
         }
         Ok(
-            DescriptorSetLayout::from_raw(
-                out,
+            crate::hooks::descriptor_set_layout_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::descriptor_set_layout_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                DescriptorSetLayout::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::descriptor_set_layout_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }
@@ -1210,25 +1218,31 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
             return Err(Error::Vk(r));
         }
         Ok(
-            PipelineLayout::from_raw(
-                out,
+            crate::hooks::pipeline_layout_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::pipeline_layout_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                PipelineLayout::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::pipeline_layout_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }
@@ -1279,7 +1293,13 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(QueryPool::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::query_pool_created(
+                self,
+                QueryPool::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateRenderPass`
 
@@ -1944,14 +1964,20 @@ The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at ru
 
 The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueryPoolResults.html). Settled by the wrappers:
 
+- `VUID-vkGetQueryPoolResults-firstQuery-00813`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
+- `VUID-vkGetQueryPoolResults-flags-00815`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
+- `VUID-vkGetQueryPoolResults-firstQuery-00816`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
+- `VUID-vkGetQueryPoolResults-dataSize-00817`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
+- `VUID-vkGetQueryPoolResults-queryType-00818`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
 - `VUID-vkGetQueryPoolResults-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetQueryPoolResults-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkGetQueryPoolResults-flags-02827`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_query_pool_results(
         &self,
@@ -1967,6 +1993,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
             let r = self.validate_get_query_pool_results(query_pool, data, flags);
             r?;
         }
+        crate::hooks::get_query_pool_results_checks(
+            self,
+            query_pool,
+            first_query,
+            query_count,
+            data,
+            stride,
+            flags,
+        )?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.get_query_pool_results_unchecked(
@@ -1983,7 +2018,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, `VUID-vkGetQueryPoolResults-firstQuery-00813`, `VUID-vkGetQueryPoolResults-firstQuery-00816`, `VUID-vkGetQueryPoolResults-flags-00815`, `VUID-vkGetQueryPoolResults-flags-02827`, `VUID-vkGetQueryPoolResults-dataSize-00817`, `VUID-vkGetQueryPoolResults-queryType-00818`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn get_query_pool_results_unchecked(
         &self,

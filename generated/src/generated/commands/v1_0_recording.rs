@@ -57,6 +57,8 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
 
 The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorSets.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`: dynamic (checks one dynamic offset per dynamic descriptor of the sets, counted from their layouts at creation)
+- `VUID-vkCmdBindDescriptorSets-firstSet-00360`: dynamic (checks the sets against the layout's set count, kept from its creation)
 - `VUID-vkCmdBindDescriptorSets-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindDescriptorSets-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -68,7 +70,7 @@ The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.k
 - `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindDescriptorSets-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_descriptor_sets(
         &mut self,
@@ -77,7 +79,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
         first_set: u32,
         descriptor_sets: &[&DescriptorSet],
         dynamic_offsets: &[u32],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
@@ -86,10 +88,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
                     layout,
                     descriptor_sets,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_bind_descriptor_sets_checks(
+            self,
+            layout,
+            first_set,
+            descriptor_sets,
+            dynamic_offsets,
+        )?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.cmd_bind_descriptor_sets_unchecked(
@@ -105,7 +112,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_descriptor_sets_unchecked(
         &mut self,
@@ -114,29 +121,32 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
         first_set: u32,
         descriptor_sets: &[&DescriptorSet],
         dynamic_offsets: &[u32],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_bind_descriptor_sets;
-        for h in descriptor_sets {
-            self.retain(h.retained());
+        {
+            for h in descriptor_sets {
+                self.retain(h.retained());
+            }
+            let descriptor_sets_raw: smallvec::SmallVec<[vk::DescriptorSet; 8]> = descriptor_sets
+                .iter()
+                .map(|h| h.raw())
+                .collect();
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    pipeline_bind_point,
+                    layout.raw(),
+                    first_set,
+                    descriptor_sets.len() as u32,
+                    descriptor_sets_raw.as_ptr(),
+                    dynamic_offsets.len() as u32,
+                    dynamic_offsets.as_ptr().cast(),
+                )
+            };
+            self.retain_with(layout.address(), || layout.retained());
         }
-        let descriptor_sets_raw: smallvec::SmallVec<[vk::DescriptorSet; 8]> = descriptor_sets
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                pipeline_bind_point,
-                layout.raw(),
-                first_set,
-                descriptor_sets.len() as u32,
-                descriptor_sets_raw.as_ptr(),
-                dynamic_offsets.len() as u32,
-                dynamic_offsets.as_ptr().cast(),
-            )
-        };
-        self.retain_with(layout.address(), || layout.retained());
+        Ok(())
     }
     /**`vkCmdBindIndexBuffer`
 
@@ -541,6 +551,12 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
 
 The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushConstants.html). Settled by the wrappers:
 
+- `VUID-vkCmdPushConstants-offset-01795`: dynamic (checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize)
+- `VUID-vkCmdPushConstants-offset-01796`: dynamic (checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize)
+- `VUID-vkCmdPushConstants-offset-00368`: dynamic (checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize)
+- `VUID-vkCmdPushConstants-size-00369`: dynamic (checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize)
+- `VUID-vkCmdPushConstants-offset-00370`: dynamic (checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize)
+- `VUID-vkCmdPushConstants-size-00371`: dynamic (checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize)
 - `VUID-vkCmdPushConstants-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPushConstants-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdPushConstants-stageFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -550,9 +566,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
 - `VUID-vkCmdPushConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdPushConstants-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdPushConstants-size-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub fn cmd_push_constants(
         &mut self,
@@ -560,14 +574,19 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         stage_flags: vk::ShaderStageFlags,
         offset: u32,
         values: &[u8],
-    ) {
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_push_constants(layout, stage_flags, values);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_push_constants_checks(
+            self,
+            layout,
+            stage_flags,
+            offset,
+            values,
+        )?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
     }
@@ -575,7 +594,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_push_constants_unchecked(
         &mut self,
@@ -583,20 +602,23 @@ The caller upholds the rules that [`Self::cmd_push_constants`] checks at run tim
         stage_flags: vk::ShaderStageFlags,
         offset: u32,
         values: &[u8],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_push_constants;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                layout.raw(),
-                stage_flags,
-                offset,
-                values.len() as u32,
-                values.as_ptr().cast(),
-            )
-        };
-        self.retain_with(layout.address(), || layout.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    layout.raw(),
+                    stage_flags,
+                    offset,
+                    values.len() as u32,
+                    values.as_ptr().cast(),
+                )
+            };
+            self.retain_with(layout.address(), || layout.retained());
+        }
+        Ok(())
     }
     /**`vkCmdSetBlendConstants`
 

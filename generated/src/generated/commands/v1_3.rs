@@ -238,6 +238,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_private_data(object_type, private_data_slot);
             r?;
         }
+        crate::hooks::get_private_data_checks(self, object_type, object_handle)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         Ok(unsafe {
             self.get_private_data_unchecked(
@@ -273,12 +274,12 @@ The caller upholds the rules that [`Self::get_private_data`] checks at run time:
 
 The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetPrivateData.html). Settled by the wrappers:
 
+- `VUID-vkSetPrivateData-objectHandle-04016`: dynamic (checks the handle is the device or a live object of it of that type, which the device lists)
+- `VUID-vkSetPrivateData-objectHandle-04017`: dynamic (checks the handle is the device or a live object of it of that type, which the device lists)
 - `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn set_private_data(
         &self,
@@ -292,6 +293,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_set_private_data(object_type, private_data_slot);
             r?;
         }
+        crate::hooks::set_private_data_checks(self, object_type, object_handle)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.set_private_data_unchecked(
@@ -306,7 +308,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, `VUID-vkSetPrivateData-objectHandle-04016`, `VUID-vkSetPrivateData-objectHandle-04017`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn set_private_data_unchecked(
         &self,

@@ -205,11 +205,12 @@ for DebugUtilsMessengerCreateInfoEXT<'a> {}
 
 The rules are on [`VkDebugUtilsObjectNameInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectNameInfoEXT.html). Settled by the wrappers:
 
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590`: dynamic (checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone))
 - `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -250,13 +251,14 @@ for DebugUtilsObjectNameInfoEXT<'a> {}
 
 The rules are on [`VkDebugUtilsObjectTagInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectTagInfoEXT.html). Settled by the wrappers:
 
+- `VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910`: dynamic (checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone))
 - `VUID-VkDebugUtilsObjectTagInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
