@@ -2350,3 +2350,172 @@ fn debug_names_are_given_only_to_live_objects() {
     // `_unchecked` looks the object up too (it is how the call finds the lock it
     // holds), so no call reaches the layer: the error alone proves these rules.
 }
+
+/// Descriptor writes and copies name a binding, an array element and a count, which
+/// drivers use to index the set's descriptor array on the host: each is checked
+/// against the set's layout (consecutive bindings included), and the layer names the
+/// same rule for the unchecked call.
+#[test]
+fn descriptor_updates_stay_inside_their_sets() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let uniform = vk::DescriptorType::UNIFORM_BUFFER;
+    let storage = vk::DescriptorType::STORAGE_BUFFER;
+    let stages = vk::ShaderStageFlags::COMPUTE;
+    let binding = |n, ty, count| {
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(n)
+            .descriptor_type(ty)
+            .descriptor_count(count)
+            .stage_flags(stages)
+    };
+    // Bindings 0 (two uniform buffers), 1 (none), 2 (one, alike: a write may run
+    // on from 0 into it, skipping 1) and 3 (a storage buffer).
+    let bindings = [
+        binding(0, uniform, 2),
+        binding(1, uniform, 0),
+        binding(2, uniform, 1),
+        binding(3, storage, 2),
+    ];
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let sizes = [
+        vk::DescriptorPoolSize {
+            ty: uniform,
+            descriptor_count: 6,
+        },
+        vk::DescriptorPoolSize {
+            ty: storage,
+            descriptor_count: 4,
+        },
+    ];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(2)
+                .pool_sizes(&sizes),
+        )
+        .expect("pool");
+    let layouts = tuff::HandleSlice::new(&[&set_layout, &set_layout]);
+    let mut sets = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )
+        .expect("sets");
+    let (b, a) = (sets.pop().expect("two"), sets.pop().expect("two"));
+    let usage = vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::STORAGE_BUFFER;
+    let (buffer, _memory) = host_buffer(&s, 1024, usage);
+    let info = |n: usize| {
+        vec![
+            tuff::DescriptorBufferInfo::new()
+                .buffer(Some(&buffer))
+                .range(64);
+            n
+        ]
+    };
+    let (one, two) = (info(1), info(2));
+    fn write<'a>(
+        set: &'a tuff::DescriptorSet,
+        binding: u32,
+        element: u32,
+        ty: vk::DescriptorType,
+        infos: &'a [tuff::DescriptorBufferInfo<'a>],
+    ) -> tuff::WriteDescriptorSet<'a> {
+        tuff::WriteDescriptorSet::new(set)
+            .dst_binding(binding)
+            .dst_array_element(element)
+            .descriptor_type(ty)
+            .buffer_info(infos)
+    }
+    let writes = [
+        (
+            "VUID-VkWriteDescriptorSet-dstBinding-00315",
+            write(&a, 5, 0, uniform, &one),
+        ),
+        (
+            "VUID-VkWriteDescriptorSet-dstBinding-00316",
+            write(&a, 1, 0, uniform, &one),
+        ),
+        (
+            "VUID-VkWriteDescriptorSet-descriptorType-00319",
+            write(&a, 0, 0, storage, &one),
+        ),
+        (
+            "VUID-VkWriteDescriptorSet-descriptorCount-00317",
+            write(&a, 2, 0, uniform, &two),
+        ),
+        (
+            "VUID-VkWriteDescriptorSet-dstArrayElement-00321",
+            write(&a, 3, 1, storage, &two),
+        ),
+    ];
+    let copy =
+        |src_binding: u32, src_element: u32, dst_binding: u32, dst_element: u32, count: u32| {
+            tuff::CopyDescriptorSet::new(&a, &b)
+                .src_binding(src_binding)
+                .src_array_element(src_element)
+                .dst_binding(dst_binding)
+                .dst_array_element(dst_element)
+                .descriptor_count(count)
+        };
+    let copies = [
+        (
+            "VUID-VkCopyDescriptorSet-srcBinding-00345",
+            copy(5, 0, 0, 0, 1),
+        ),
+        (
+            "VUID-VkCopyDescriptorSet-dstBinding-00347",
+            copy(0, 0, 7, 0, 1),
+        ),
+        (
+            "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
+            copy(3, 1, 3, 0, 2),
+        ),
+        (
+            "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
+            copy(3, 0, 3, 1, 2),
+        ),
+        (
+            "VUID-VkCopyDescriptorSet-dstBinding-02632",
+            copy(0, 0, 3, 0, 1),
+        ),
+    ];
+    for (expected, w) in &writes {
+        assert_eq!(vuid(d.update_descriptor_sets(&[*w], &[])), *expected);
+    }
+    // The writes that set up the copies' sources, then the copies.
+    d.update_descriptor_sets(
+        &[
+            write(&a, 0, 1, uniform, &two),
+            write(&a, 0, 0, uniform, &one),
+            write(&a, 3, 0, storage, &two),
+        ],
+        &[],
+    )
+    .expect("a write running on from binding 0 into binding 2");
+    for (expected, c) in &copies {
+        assert_eq!(vuid(d.update_descriptor_sets(&[], &[*c])), *expected);
+    }
+    d.update_descriptor_sets(&[], &[copy(0, 0, 0, 0, 3), copy(3, 0, 3, 0, 2)])
+        .expect("copies inside both sets");
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    for (expected, w) in &writes {
+        // SAFETY: the layer skips the call, which breaks only the rule under test, so
+        // the driver never indexes past the set.
+        unsafe { d.update_descriptor_sets_unchecked(&[*w], &[]) };
+        assert_layer_reports(&s, expected);
+    }
+    for (expected, c) in &copies {
+        // SAFETY: as above.
+        unsafe { d.update_descriptor_sets_unchecked(&[], &[*c]) };
+        assert_layer_reports(&s, expected);
+    }
+    s.messages.abort_on_error(false);
+}

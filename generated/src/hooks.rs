@@ -9,7 +9,9 @@
 
 use crate::handles::*;
 use crate::recorder::{Recorder, State};
-use crate::retention::{BufferRecord, LayoutRecord, QueryPoolRecord};
+use crate::retention::{
+    BindingRecord, BufferRecord, LayoutRecord, QueryPoolRecord, SetLayoutRecord,
+};
 use crate::structs::*;
 use crate::submission::{self, SubmitRules};
 use crate::{Error, Handle, Result};
@@ -415,11 +417,181 @@ fn raw_writes<'s>(writes: &'s [WriteDescriptorSet<'_>]) -> &'s [vk::WriteDescrip
     unsafe { core::slice::from_raw_parts(writes.as_ptr().cast(), writes.len()) }
 }
 
-/// Refuses a write whose descriptor type selects an array that is not set.
+/// Refuses a write whose descriptor type selects an array that is not set, and a
+/// write or copy outside its sets' bindings: drivers index their descriptor arrays
+/// with the binding, array element and count.
 pub(crate) fn update_descriptor_sets_checks(
+    device: &Device,
     descriptor_writes: &[WriteDescriptorSet<'_>],
+    descriptor_copies: &[CopyDescriptorSet<'_>],
 ) -> Result<()> {
-    crate::retention::Live::check_writes(raw_writes(descriptor_writes))
+    let writes = raw_writes(descriptor_writes);
+    crate::retention::Live::check_writes(writes)?;
+    let live = device.live();
+    let layout_of = |set: vk::DescriptorSet| {
+        live.set_layout_of(set).ok_or(Error::Misuse(
+            "the descriptor set was not allocated through the wrappers",
+        ))
+    };
+    for (i, w) in writes.iter().enumerate() {
+        let layout = layout_of(w.dst_set)?;
+        let at = format!("pDescriptorWrites[{i}]");
+        let first = find_binding(&layout, w.dst_binding, &at, WRITE_BINDING)?;
+        if layout.bindings[first].ty != w.descriptor_type {
+            refuse(
+                "VUID-VkWriteDescriptorSet-descriptorType-00319",
+                format!(
+                    "{at}.descriptorType ({:?}) must match the type of binding {} ({:?})",
+                    w.descriptor_type, w.dst_binding, layout.bindings[first].ty
+                ),
+            )?;
+        }
+        check_span(
+            &layout,
+            first,
+            w.dst_array_element,
+            w.descriptor_count,
+            &at,
+            WRITE_SPAN,
+        )?;
+    }
+    // SAFETY: `CopyDescriptorSet` is `repr(transparent)` over ash's struct.
+    let copies: &[vk::CopyDescriptorSet<'_>] = unsafe {
+        core::slice::from_raw_parts(descriptor_copies.as_ptr().cast(), descriptor_copies.len())
+    };
+    for (i, c) in copies.iter().enumerate() {
+        let at = format!("pDescriptorCopies[{i}]");
+        let src = layout_of(c.src_set)?;
+        let dst = layout_of(c.dst_set)?;
+        let s = find_binding(&src, c.src_binding, &at, COPY_SRC_BINDING)?;
+        let d = find_binding(&dst, c.dst_binding, &at, COPY_DST_BINDING)?;
+        if src.bindings[s].ty != dst.bindings[d].ty {
+            refuse(
+                "VUID-VkCopyDescriptorSet-dstBinding-02632",
+                format!(
+                    "{at}: the type of dstBinding ({:?}) must equal the type of srcBinding ({:?})",
+                    dst.bindings[d].ty, src.bindings[s].ty
+                ),
+            )?;
+        }
+        check_span(
+            &src,
+            s,
+            c.src_array_element,
+            c.descriptor_count,
+            &at,
+            COPY_SRC_SPAN,
+        )?;
+        check_span(
+            &dst,
+            d,
+            c.dst_array_element,
+            c.descriptor_count,
+            &at,
+            COPY_DST_SPAN,
+        )?;
+    }
+    Ok(())
+}
+
+/// The rules a binding lookup breaks: (no such binding, a binding of no descriptors).
+type BindingRules = (&'static str, &'static str);
+const WRITE_BINDING: BindingRules = (
+    "VUID-VkWriteDescriptorSet-dstBinding-00315",
+    "VUID-VkWriteDescriptorSet-dstBinding-00316",
+);
+const COPY_SRC_BINDING: BindingRules = (
+    "VUID-VkCopyDescriptorSet-srcBinding-00345",
+    "VUID-VkCopyDescriptorSet-srcBinding-00345",
+);
+const COPY_DST_BINDING: BindingRules = (
+    "VUID-VkCopyDescriptorSet-dstBinding-00347",
+    "VUID-VkCopyDescriptorSet-dstBinding-00347",
+);
+
+/// The rules a span of array elements breaks: (past the bindings, consecutive
+/// bindings that differ, an inline uniform block's misaligned offset or size).
+type SpanRules = (&'static str, &'static str, &'static str, &'static str);
+const WRITE_SPAN: SpanRules = (
+    "VUID-VkWriteDescriptorSet-dstArrayElement-00321",
+    "VUID-VkWriteDescriptorSet-descriptorCount-00317",
+    "VUID-VkWriteDescriptorSet-descriptorType-02219",
+    "VUID-VkWriteDescriptorSet-descriptorType-02220",
+);
+const COPY_SRC_SPAN: SpanRules = (
+    "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
+    "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
+    "VUID-VkCopyDescriptorSet-srcBinding-02223",
+    "VUID-VkCopyDescriptorSet-srcBinding-02225",
+);
+const COPY_DST_SPAN: SpanRules = (
+    "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
+    "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
+    "VUID-VkCopyDescriptorSet-dstBinding-02224",
+    "VUID-VkCopyDescriptorSet-srcBinding-02225",
+);
+
+/// The index in `layout` of the binding numbered `binding`, which must exist and hold
+/// descriptors.
+fn find_binding(
+    layout: &SetLayoutRecord,
+    binding: u32,
+    at: &str,
+    rules: BindingRules,
+) -> Result<usize> {
+    match layout
+        .bindings
+        .binary_search_by_key(&binding, |b| b.binding)
+    {
+        Ok(i) if layout.bindings[i].count > 0 => Ok(i),
+        Ok(_) => Err(Error::Validation {
+            vuid: rules.1,
+            message: format!("{at}: binding {binding} of the set's layout has no descriptors"),
+        }),
+        Err(_) => Err(Error::Validation {
+            vuid: rules.0,
+            message: format!("{at}: the set's layout has no binding {binding}"),
+        }),
+    }
+}
+
+/// `count` elements from `element` of the binding at `first` fit in it and the
+/// consecutive bindings after it, which must be alike (same type, stages and
+/// immutable samplers; empty ones are skipped).
+fn check_span(
+    layout: &SetLayoutRecord,
+    first: usize,
+    element: u32,
+    count: u32,
+    at: &str,
+    rules: SpanRules,
+) -> Result<()> {
+    let head = layout.bindings[first];
+    if head.ty == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
+        if element % 4 != 0 {
+            refuse(rules.2, format!("{at}: the offset into an inline uniform block must be a multiple of 4 ({element})"))?;
+        }
+        if count % 4 != 0 {
+            refuse(rules.3, format!("{at}: the size of an inline uniform block update must be a multiple of 4 ({count})"))?;
+        }
+    }
+    let mut remaining = u64::from(element) + u64::from(count);
+    for b in layout.bindings[first..].iter().filter(|b| b.count > 0) {
+        if (b.ty, b.stages, b.immutable) != (head.ty, head.stages, head.immutable) {
+            return refuse(
+                rules.1,
+                format!("{at}: the update runs on from binding {} into binding {}, which differs in type, stages or immutable samplers", head.binding, b.binding),
+            );
+        }
+        if remaining <= u64::from(b.count) {
+            return Ok(());
+        }
+        remaining -= u64::from(b.count);
+    }
+    refuse(
+        rules.0,
+        format!("{at}: array element {element} plus descriptorCount {count} runs past binding {} and the consecutive bindings after it", head.binding),
+    )
 }
 
 /// The sets remember what they now hold.
@@ -970,7 +1142,7 @@ pub(crate) fn descriptor_update_template_created(
 }
 
 /// Each set holds a token of its pool, which counts the sets alive, and the device
-/// remembers how many dynamic buffer descriptors its layout has.
+/// remembers its layout, which writes to it are checked against.
 pub(crate) fn descriptor_sets_allocated(
     device: &Device,
     sets: Vec<DescriptorSet>,
@@ -982,15 +1154,15 @@ pub(crate) fn descriptor_sets_allocated(
     let layouts =
         unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
     for (set, layout) in sets.iter().zip(layouts) {
-        let dynamics = device.live().set_layout_dynamics(*layout).unwrap_or(0);
-        device.live().set_allocated(set.raw(), dynamics);
+        let record = device.live().set_layout(*layout).unwrap_or_default();
+        device.live().set_allocated(set.raw(), record);
     }
     sets.into_iter()
         .map(|set| set.with_token(descriptor_pool.set_token()))
         .collect()
 }
 
-/// The device remembers the layout's count of dynamic buffer descriptors.
+/// The device remembers the layout's bindings.
 pub(crate) fn descriptor_set_layout_created(
     device: &Device,
     layout: DescriptorSetLayout,
@@ -999,18 +1171,20 @@ pub(crate) fn descriptor_set_layout_created(
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stored the bindings with their count.
     let bindings = unsafe { crate::retention::raw_slice(raw.p_bindings, raw.binding_count) };
-    let dynamics = bindings
+    let mut bindings: Vec<BindingRecord> = bindings
         .iter()
-        .filter(|b| {
-            matches!(
-                b.descriptor_type,
-                vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC
-                    | vk::DescriptorType::STORAGE_BUFFER_DYNAMIC
-            )
+        .map(|b| BindingRecord {
+            binding: b.binding,
+            ty: b.descriptor_type,
+            count: b.descriptor_count,
+            stages: b.stage_flags,
+            immutable: !b.p_immutable_samplers.is_null(),
         })
-        .map(|b| b.descriptor_count)
-        .fold(0u32, u32::saturating_add);
-    device.live().set_layout_created(layout.raw(), dynamics);
+        .collect();
+    bindings.sort_by_key(|b| b.binding);
+    device
+        .live()
+        .set_layout_created(layout.raw(), SetLayoutRecord { bindings });
     layout
 }
 
@@ -1031,7 +1205,7 @@ pub(crate) fn pipeline_layout_created(
     };
     let set_dynamics = sets
         .iter()
-        .map(|s| device.live().set_layout_dynamics(*s).unwrap_or(0))
+        .map(|s| device.live().set_layout(*s).map_or(0, |l| l.dynamics()))
         .collect();
     device.live().pipeline_layout_created(
         layout.raw(),
@@ -1245,7 +1419,7 @@ pub(crate) fn cmd_bind_descriptor_sets_checks<S: State>(
     let live = recorder.device().live();
     let mut dynamics: u64 = 0;
     for s in descriptor_sets {
-        dynamics += u64::from(live.set_dynamic_count(s.raw()).unwrap_or(0));
+        dynamics += u64::from(live.set_layout_of(s.raw()).map_or(0, |l| l.dynamics()));
     }
     if dynamics != dynamic_offsets.len() as u64 {
         refuse(

@@ -67,10 +67,10 @@ pub(crate) struct Live {
     query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
     /// Each pipeline layout's push-constant ranges and sets.
     pipeline_layouts: Vutex<HashMap<u64, Vrc<LayoutRecord>>>,
-    /// Each descriptor set layout's count of dynamic buffer descriptors.
-    set_layouts: Vutex<HashMap<u64, u32>>,
-    /// Each descriptor set's count of dynamic buffer descriptors (its layout's).
-    set_dynamics: Vutex<HashMap<u64, u32>>,
+    /// Each descriptor set layout's bindings.
+    set_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
+    /// Each descriptor set's layout record.
+    sets_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// The physical device's limits, read once.
     limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
@@ -100,6 +100,46 @@ pub(crate) struct LayoutRecord {
     pub set_dynamics: Vec<u32>,
 }
 
+/// One binding of a descriptor set layout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct BindingRecord {
+    /// `binding`.
+    pub binding: u32,
+    /// `descriptorType`.
+    pub ty: vk::DescriptorType,
+    /// `descriptorCount` (bytes, for an inline uniform block).
+    pub count: u32,
+    /// `stageFlags`.
+    pub stages: vk::ShaderStageFlags,
+    /// Whether it has immutable samplers.
+    pub immutable: bool,
+}
+
+/// A live descriptor set layout's bindings, in binding order, which descriptor
+/// writes, copies and set bindings are checked against.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct SetLayoutRecord {
+    /// The bindings, sorted by binding number.
+    pub bindings: Vec<BindingRecord>,
+}
+
+impl SetLayoutRecord {
+    /// The count of dynamic uniform and storage buffer descriptors.
+    pub fn dynamics(&self) -> u32 {
+        self.bindings
+            .iter()
+            .filter(|b| {
+                matches!(
+                    b.ty,
+                    vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC
+                        | vk::DescriptorType::STORAGE_BUFFER_DYNAMIC
+                )
+            })
+            .map(|b| b.count)
+            .fold(0, u32::saturating_add)
+    }
+}
+
 /// A live buffer's creation parameters and binding, which command checks read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct BufferRecord {
@@ -126,7 +166,7 @@ impl Default for Live {
             query_pools: Vutex::new(HashMap::new()),
             pipeline_layouts: Vutex::new(HashMap::new()),
             set_layouts: Vutex::new(HashMap::new()),
-            set_dynamics: Vutex::new(HashMap::new()),
+            sets_layouts: Vutex::new(HashMap::new()),
             limits: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::new()),
         }
@@ -235,10 +275,12 @@ impl Live {
                 drop(record);
             }
             vk::ObjectType::DESCRIPTOR_SET_LAYOUT => {
-                self.set_layouts.lock().remove(&key.1);
+                let record = self.set_layouts.lock().remove(&key.1);
+                drop(record);
             }
             vk::ObjectType::DESCRIPTOR_SET => {
-                self.set_dynamics.lock().remove(&key.1);
+                let record = self.sets_layouts.lock().remove(&key.1);
+                drop(record);
             }
             _ => {}
         }
@@ -266,24 +308,27 @@ impl Live {
         self.query_pools.lock().get(&raw.as_raw()).copied()
     }
 
-    /// Records a new descriptor set layout's count of dynamic buffer descriptors.
-    pub(crate) fn set_layout_created(&self, raw: vk::DescriptorSetLayout, dynamics: u32) {
-        self.set_layouts.lock().insert(raw.as_raw(), dynamics);
+    /// Records a new descriptor set layout's bindings.
+    pub(crate) fn set_layout_created(&self, raw: vk::DescriptorSetLayout, record: SetLayoutRecord) {
+        self.set_layouts
+            .lock()
+            .insert(raw.as_raw(), Vrc::new(record));
     }
 
-    /// The count of dynamic buffer descriptors of a live set layout.
-    pub(crate) fn set_layout_dynamics(&self, raw: vk::DescriptorSetLayout) -> Option<u32> {
-        self.set_layouts.lock().get(&raw.as_raw()).copied()
+    /// The record of a live set layout made through the wrappers.
+    pub(crate) fn set_layout(&self, raw: vk::DescriptorSetLayout) -> Option<Vrc<SetLayoutRecord>> {
+        self.set_layouts.lock().get(&raw.as_raw()).cloned()
     }
 
-    /// Records a new descriptor set's count of dynamic buffer descriptors.
-    pub(crate) fn set_allocated(&self, raw: vk::DescriptorSet, dynamics: u32) {
-        self.set_dynamics.lock().insert(raw.as_raw(), dynamics);
+    /// Records the layout a new descriptor set was allocated with.
+    pub(crate) fn set_allocated(&self, raw: vk::DescriptorSet, layout: Vrc<SetLayoutRecord>) {
+        let old = self.sets_layouts.lock().insert(raw.as_raw(), layout);
+        drop(old);
     }
 
-    /// The count of dynamic buffer descriptors of a live set.
-    pub(crate) fn set_dynamic_count(&self, raw: vk::DescriptorSet) -> Option<u32> {
-        self.set_dynamics.lock().get(&raw.as_raw()).copied()
+    /// The layout record of a live set.
+    pub(crate) fn set_layout_of(&self, raw: vk::DescriptorSet) -> Option<Vrc<SetLayoutRecord>> {
+        self.sets_layouts.lock().get(&raw.as_raw()).cloned()
     }
 
     /// Records a new pipeline layout's push-constant ranges and sets.

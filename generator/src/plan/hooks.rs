@@ -129,6 +129,7 @@ const PUSH: &str = "checks the range against the layout's push-constant ranges, 
 const LIVE_OBJECT: &str =
     "checks the handle is the device or a live object of it of that type, which the device lists";
 const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
+const SET_BINDINGS: &str = "checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
@@ -298,15 +299,30 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkUpdateDescriptorSets",
-        check: call("hooks::update_descriptor_sets_checks", &["descriptor_writes"]),
+        check: call(
+            "hooks::update_descriptor_sets_checks",
+            &["self", "descriptor_writes", "descriptor_copies"],
+        ),
         after: call(
             "hooks::update_descriptor_sets_done",
             &["self", "descriptor_writes", "descriptor_copies"],
         ),
-        settles: &[(
-            "VUID-VkWriteDescriptorSet-descriptorType-00324",
-            How::Dynamic("refuses a write whose descriptor type selects an array that is not set"),
-        )],
+        settles: &[
+            (
+                "VUID-VkWriteDescriptorSet-descriptorType-00324",
+                How::Dynamic("refuses a write whose descriptor type selects an array that is not set"),
+            ),
+            ("VUID-VkWriteDescriptorSet-dstBinding-00315", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkWriteDescriptorSet-dstBinding-00316", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00319", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkWriteDescriptorSet-dstArrayElement-00321", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkWriteDescriptorSet-descriptorCount-00317", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-srcBinding-00345", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-srcArrayElement-00346", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-dstBinding-00347", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-dstArrayElement-00348", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-dstBinding-02632", How::Dynamic(SET_BINDINGS)),
+        ],
         ..NONE
     },
     Special {

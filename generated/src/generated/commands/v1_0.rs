@@ -2491,7 +2491,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
                 .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
             r?;
         }
-        crate::hooks::update_descriptor_sets_checks(descriptor_writes)?;
+        crate::hooks::update_descriptor_sets_checks(
+            self,
+            descriptor_writes,
+            descriptor_copies,
+        )?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
@@ -2502,7 +2506,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, `VUID-VkWriteDescriptorSet-dstBinding-00315`, `VUID-VkWriteDescriptorSet-dstBinding-00316`, `VUID-VkWriteDescriptorSet-descriptorType-00319`, `VUID-VkWriteDescriptorSet-dstArrayElement-00321`, `VUID-VkWriteDescriptorSet-descriptorCount-00317`, `VUID-VkCopyDescriptorSet-srcBinding-00345`, `VUID-VkCopyDescriptorSet-srcArrayElement-00346`, `VUID-VkCopyDescriptorSet-dstBinding-00347`, `VUID-VkCopyDescriptorSet-dstArrayElement-00348`, `VUID-VkCopyDescriptorSet-dstBinding-02632`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn update_descriptor_sets_unchecked<'a>(
         &self,

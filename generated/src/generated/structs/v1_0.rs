@@ -677,13 +677,18 @@ impl<'a> ComputePipelineCreateInfo<'a> {
 
 The rules are on [`VkCopyDescriptorSet`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyDescriptorSet.html). Settled by the wrappers:
 
+- `VUID-VkCopyDescriptorSet-srcBinding-00345`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkCopyDescriptorSet-srcArrayElement-00346`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkCopyDescriptorSet-dstBinding-00347`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkCopyDescriptorSet-dstArrayElement-00348`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkCopyDescriptorSet-dstBinding-02632`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkCopyDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyDescriptorSet-srcSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-dstSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyDescriptorSet<'a> {
@@ -3336,6 +3341,11 @@ impl<'a> SubpassDescription<'a> {
 
 The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSet.html). Settled by the wrappers:
 
+- `VUID-VkWriteDescriptorSet-dstBinding-00315`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-dstBinding-00316`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-descriptorCount-00317`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-descriptorType-00319`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-dstArrayElement-00321`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-descriptorType-00324`: dynamic (refuses a write whose descriptor type selects an array that is not set)
 - `VUID-VkWriteDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWriteDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -3344,7 +3354,7 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 44 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 39 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSet<'a> {
