@@ -2519,3 +2519,192 @@ fn descriptor_updates_stay_inside_their_sets() {
     }
     s.messages.abort_on_error(false);
 }
+
+/// Viewports and scissors past `maxViewports` would be copied past the driver's
+/// arrays; without the multiViewport feature only the first is allowed; negative or
+/// overflowing scissors are refused too. The layer names the same rule for each
+/// unchecked call.
+#[test]
+fn viewports_and_scissors_stay_inside_max_viewports() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let viewport = vk::Viewport {
+        width: 16.0,
+        height: 16.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let rect = |x: i32, y: i32, w: u32, h: u32| vk::Rect2D {
+        offset: vk::Offset2D { x, y },
+        extent: vk::Extent2D {
+            width: w,
+            height: h,
+        },
+    };
+    type Rec<'r> = tuff::Recorder<'r, tuff::Outside>;
+    type Call = Box<dyn Fn(&mut Rec<'_>, bool) -> tuff::Result<()>>;
+    type Case = (&'static str, Call);
+    let viewports = move |first: u32, n: usize| -> Call {
+        Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+            let v = vec![viewport; n];
+            if unchecked {
+                // SAFETY: the layer skips the call, which breaks only the rule under
+                // test; the command buffer is never submitted.
+                unsafe { rec.cmd_set_viewport_unchecked(first, &v) }
+            } else {
+                rec.cmd_set_viewport(first, &v)
+            }
+        })
+    };
+    let scissors = move |first: u32, r: Vec<vk::Rect2D>| -> Call {
+        Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+            if unchecked {
+                // SAFETY: as above.
+                unsafe { rec.cmd_set_scissor_unchecked(first, &r) }
+            } else {
+                rec.cmd_set_scissor(first, &r)
+            }
+        })
+    };
+    let with_count = move |n: usize| -> Call {
+        Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
+            let v = vec![viewport; n];
+            if unchecked {
+                // SAFETY: as above.
+                unsafe { rec.cmd_set_viewport_with_count_unchecked(&v) }
+            } else {
+                rec.cmd_set_viewport_with_count(&v)
+            }
+        })
+    };
+    // Without the multiViewport feature (this setup): one viewport or scissor, the
+    // first; the limit itself is tried on a device with the feature below.
+    let cases: Vec<Case> = vec![
+        ("VUID-vkCmdSetViewport-firstViewport-01224", viewports(1, 1)),
+        ("VUID-vkCmdSetViewport-viewportCount-01225", viewports(0, 2)),
+        (
+            "VUID-vkCmdSetScissor-firstScissor-00593",
+            scissors(1, vec![rect(0, 0, 1, 1)]),
+        ),
+        (
+            "VUID-vkCmdSetScissor-scissorCount-00594",
+            scissors(0, vec![rect(0, 0, 1, 1); 2]),
+        ),
+        (
+            "VUID-vkCmdSetScissor-x-00595",
+            scissors(0, vec![rect(-1, 0, 1, 1)]),
+        ),
+        (
+            "VUID-vkCmdSetScissor-offset-00596",
+            scissors(0, vec![rect(i32::MAX, 0, 2, 1)]),
+        ),
+        (
+            "VUID-vkCmdSetScissor-offset-00597",
+            scissors(0, vec![rect(0, i32::MAX, 1, 2)]),
+        ),
+        (
+            "VUID-vkCmdSetViewportWithCount-viewportCount-03395",
+            with_count(2),
+        ),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, call) in &cases {
+        assert_eq!(vuid(call(&mut rec, false)), *expected);
+    }
+    rec.cmd_set_viewport(0, &[viewport]).expect("one viewport");
+    rec.cmd_set_scissor(0, &[rect(0, 0, 16, 16)])
+        .expect("one scissor");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, call) in &cases {
+        call(&mut rec, true).expect("recorded");
+        assert_layer_reports(&s, expected);
+    }
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
+}
+
+/// The same, on a device with the multiViewport feature: more than one viewport or
+/// scissor is allowed, up to `maxViewports`, and one past it is refused.
+#[test]
+fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
+    let _serial = vulkan::serial();
+    let features = vk::PhysicalDeviceFeatures {
+        multi_viewport: vk::TRUE,
+        ..Default::default()
+    };
+    let s = tuff_setup::setup_with_features(true, features);
+    let max = s
+        .physical
+        .get_physical_device_properties()
+        .limits
+        .max_viewports;
+    let viewport = vk::Viewport {
+        width: 16.0,
+        height: 16.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let scissor = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 16,
+            height: 16,
+        },
+    };
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let over = max as usize + 1;
+    assert_eq!(
+        vuid(rec.cmd_set_viewport(1, &vec![viewport; max as usize])),
+        "VUID-vkCmdSetViewport-firstViewport-01223"
+    );
+    assert_eq!(
+        vuid(rec.cmd_set_scissor(1, &vec![scissor; max as usize])),
+        "VUID-vkCmdSetScissor-firstScissor-00592"
+    );
+    assert_eq!(
+        vuid(rec.cmd_set_viewport_with_count(&vec![viewport; over])),
+        "VUID-vkCmdSetViewportWithCount-viewportCount-03394"
+    );
+    assert_eq!(
+        vuid(rec.cmd_set_scissor_with_count(&vec![scissor; over])),
+        "VUID-vkCmdSetScissorWithCount-scissorCount-03397"
+    );
+    rec.cmd_set_viewport(0, &vec![viewport; max as usize])
+        .expect("every viewport");
+    rec.cmd_set_scissor(1, &vec![scissor; max as usize - 1])
+        .expect("every scissor but the first");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    // SAFETY: the layer skips each call, which breaks only the rule under test; the
+    // command buffer is never submitted.
+    unsafe { rec.cmd_set_viewport_unchecked(1, &vec![viewport; max as usize]) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdSetViewport-firstViewport-01223");
+    // SAFETY: as above.
+    unsafe { rec.cmd_set_scissor_unchecked(1, &vec![scissor; max as usize]) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdSetScissor-firstScissor-00592");
+    // SAFETY: as above.
+    unsafe { rec.cmd_set_viewport_with_count_unchecked(&vec![viewport; over]) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdSetViewportWithCount-viewportCount-03394");
+    // SAFETY: as above.
+    unsafe { rec.cmd_set_scissor_with_count_unchecked(&vec![scissor; over]) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdSetScissorWithCount-scissorCount-03397");
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
+}

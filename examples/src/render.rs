@@ -230,8 +230,8 @@ pub fn record_frame<S: Scene>(
             min_depth: 0.0,
             max_depth: 1.0,
         }],
-    );
-    rec.cmd_set_scissor(0, &[area]);
+    )?;
+    rec.cmd_set_scissor(0, &[area])?;
     scene.draw(&mut rec, view)?;
     let mut rec = rec.cmd_end_render_pass();
     if let Some((image, buffer)) = readback {

@@ -1049,13 +1049,30 @@ pub(crate) fn instance_created(
     )
 }
 
-/// The device remembers its enabled extensions.
+/// The device remembers its enabled extensions and Vulkan 1.0 features (given
+/// directly or in a chained `VkPhysicalDeviceFeatures2`).
 pub(crate) fn device_created(
     physical: &PhysicalDevice,
     raw: vk::Device,
     create_info: &DeviceCreateInfo<'_>,
 ) -> Device {
-    Device::from_created(physical, raw, &create_info.enabled_extensions())
+    let device = Device::from_created(physical, raw, &create_info.enabled_extensions());
+    let info = create_info.as_raw();
+    // SAFETY: the safe setter stores a reference that outlives the create info.
+    let mut features = unsafe { info.p_enabled_features.as_ref() }.copied();
+    let mut next = info.p_next.cast::<vk::BaseInStructure<'_>>();
+    // SAFETY: the safe struct chains only structs pushed through `push_next`, each a
+    // valid Vulkan struct that starts with sType and pNext.
+    while let Some(node) = unsafe { next.as_ref() } {
+        if node.s_type == vk::StructureType::PHYSICAL_DEVICE_FEATURES_2 {
+            // SAFETY: the sType says which struct this is.
+            let f2 = unsafe { &*next.cast::<vk::PhysicalDeviceFeatures2<'_>>() };
+            features = Some(f2.features);
+        }
+        next = node.p_next;
+    }
+    device.live().set_features(features.unwrap_or_default());
+    device
 }
 
 /// The pool remembers its flags (whether its sets may be freed one by one).
@@ -1530,4 +1547,160 @@ pub(crate) fn create_device_scope<'p>(
         &create_info.enabled_extensions(),
     ));
     s
+}
+
+/// `first + count` viewports or scissors within `1..=maxViewports`: drivers keep them
+/// in arrays of that many.
+fn check_viewport_range(
+    device: &Device,
+    first: u32,
+    count: usize,
+    vuid: &'static str,
+    what: &str,
+) -> Result<()> {
+    let max = u64::from(limits(device).max_viewports);
+    let end = u64::from(first) + count as u64;
+    if end == 0 || end > max {
+        refuse(
+            vuid,
+            format!("the first {what} plus their count must be between 1 and maxViewports (first = {first}, count = {count}, maxViewports = {max})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// Without the multiViewport feature, one viewport or scissor, the first.
+fn check_single_viewport(
+    device: &Device,
+    first: u32,
+    count: usize,
+    (first_vuid, count_vuid): (Option<&'static str>, &'static str),
+) -> Result<()> {
+    if device.live().features().multi_viewport == vk::TRUE {
+        return Ok(());
+    }
+    if let Some(vuid) = first_vuid.filter(|_| first != 0) {
+        refuse(
+            vuid,
+            format!("without the multiViewport feature the first index must be 0 ({first})"),
+        )?;
+    }
+    if count != 1 {
+        refuse(
+            count_vuid,
+            format!("without the multiViewport feature the count must be 1 ({count})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// Scissor offsets are not negative and their ends do not overflow.
+fn check_scissors(
+    scissors: &[vk::Rect2D],
+    vuids: (&'static str, &'static str, &'static str),
+) -> Result<()> {
+    for (i, r) in scissors.iter().enumerate() {
+        if r.offset.x < 0 || r.offset.y < 0 {
+            refuse(
+                vuids.0,
+                format!(
+                    "pScissors[{i}].offset must not be negative ({}, {})",
+                    r.offset.x, r.offset.y
+                ),
+            )?;
+        }
+        if i64::from(r.offset.x) + i64::from(r.extent.width) > i64::from(i32::MAX) {
+            refuse(
+                vuids.1,
+                format!(
+                    "pScissors[{i}]: offset.x + extent.width overflows ({} + {})",
+                    r.offset.x, r.extent.width
+                ),
+            )?;
+        }
+        if i64::from(r.offset.y) + i64::from(r.extent.height) > i64::from(i32::MAX) {
+            refuse(
+                vuids.2,
+                format!(
+                    "pScissors[{i}]: offset.y + extent.height overflows ({} + {})",
+                    r.offset.y, r.extent.height
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdSetViewport` that keep the viewports inside the driver's array.
+pub(crate) fn cmd_set_viewport_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    first_viewport: u32,
+    viewports: &[vk::Viewport],
+) -> Result<()> {
+    let device = recorder.device();
+    let rules = (
+        Some("VUID-vkCmdSetViewport-firstViewport-01224"),
+        "VUID-vkCmdSetViewport-viewportCount-01225",
+    );
+    check_single_viewport(device, first_viewport, viewports.len(), rules)?;
+    let vuid = "VUID-vkCmdSetViewport-firstViewport-01223";
+    check_viewport_range(device, first_viewport, viewports.len(), vuid, "viewport")
+}
+
+/// The checks of `vkCmdSetScissor` that keep the scissors inside the driver's array.
+pub(crate) fn cmd_set_scissor_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    first_scissor: u32,
+    scissors: &[vk::Rect2D],
+) -> Result<()> {
+    let device = recorder.device();
+    let rules = (
+        Some("VUID-vkCmdSetScissor-firstScissor-00593"),
+        "VUID-vkCmdSetScissor-scissorCount-00594",
+    );
+    check_single_viewport(device, first_scissor, scissors.len(), rules)?;
+    let vuid = "VUID-vkCmdSetScissor-firstScissor-00592";
+    check_viewport_range(device, first_scissor, scissors.len(), vuid, "scissor")?;
+    check_scissors(
+        scissors,
+        (
+            "VUID-vkCmdSetScissor-x-00595",
+            "VUID-vkCmdSetScissor-offset-00596",
+            "VUID-vkCmdSetScissor-offset-00597",
+        ),
+    )
+}
+
+/// The checks of `vkCmdSetViewportWithCount` that keep the viewports inside the
+/// driver's array.
+pub(crate) fn cmd_set_viewport_with_count_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    viewports: &[vk::Viewport],
+) -> Result<()> {
+    let device = recorder.device();
+    let rules = (None, "VUID-vkCmdSetViewportWithCount-viewportCount-03395");
+    check_single_viewport(device, 0, viewports.len(), rules)?;
+    let vuid = "VUID-vkCmdSetViewportWithCount-viewportCount-03394";
+    check_viewport_range(device, 0, viewports.len(), vuid, "viewport")
+}
+
+/// The checks of `vkCmdSetScissorWithCount` that keep the scissors inside the
+/// driver's array.
+pub(crate) fn cmd_set_scissor_with_count_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    scissors: &[vk::Rect2D],
+) -> Result<()> {
+    let device = recorder.device();
+    let rules = (None, "VUID-vkCmdSetScissorWithCount-scissorCount-03398");
+    check_single_viewport(device, 0, scissors.len(), rules)?;
+    let vuid = "VUID-vkCmdSetScissorWithCount-scissorCount-03397";
+    check_viewport_range(device, 0, scissors.len(), vuid, "scissor")?;
+    check_scissors(
+        scissors,
+        (
+            "VUID-vkCmdSetScissorWithCount-x-03399",
+            "VUID-vkCmdSetScissorWithCount-offset-03400",
+            "VUID-vkCmdSetScissorWithCount-offset-03401",
+        ),
+    )
 }

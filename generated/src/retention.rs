@@ -73,6 +73,8 @@ pub(crate) struct Live {
     sets_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// The physical device's limits, read once.
     limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
+    /// The Vulkan 1.0 features the device was created with.
+    features: std::sync::OnceLock<vk::PhysicalDeviceFeatures>,
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
     /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
     bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
@@ -168,6 +170,7 @@ impl Default for Live {
             set_layouts: Vutex::new(HashMap::new()),
             sets_layouts: Vutex::new(HashMap::new()),
             limits: std::sync::OnceLock::new(),
+            features: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::new()),
         }
     }
@@ -341,6 +344,16 @@ impl Live {
     /// The record of a live pipeline layout made through the wrappers.
     pub(crate) fn pipeline_layout(&self, raw: vk::PipelineLayout) -> Option<Vrc<LayoutRecord>> {
         self.pipeline_layouts.lock().get(&raw.as_raw()).cloned()
+    }
+
+    /// Records the Vulkan 1.0 features the device was created with.
+    pub(crate) fn set_features(&self, features: vk::PhysicalDeviceFeatures) {
+        let _ = self.features.set(features);
+    }
+
+    /// The Vulkan 1.0 features the device was created with.
+    pub(crate) fn features(&self) -> vk::PhysicalDeviceFeatures {
+        self.features.get().copied().unwrap_or_default()
     }
 
     /// The physical device's limits, read from `read` the first time.

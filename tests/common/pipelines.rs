@@ -311,8 +311,9 @@ impl Pipelines {
                 min_depth: 0.0,
                 max_depth: 1.0,
             }],
-        );
-        rec.cmd_set_scissor(0, &[area]);
+        )
+        .expect("recorded");
+        rec.cmd_set_scissor(0, &[area]).expect("recorded");
         let color: Vec<u8> = COLOR.iter().flat_map(|c| c.to_le_bytes()).collect();
         rec.cmd_push_constants(
             &self.graphics_layout,

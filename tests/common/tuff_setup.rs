@@ -34,6 +34,15 @@ pub fn setup(validation: bool) -> Setup {
 
 /// [`setup`], with window-system extensions.
 pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
+    setup_full(validation, wsi, vk::PhysicalDeviceFeatures::default())
+}
+
+/// [`setup`], with these Vulkan 1.0 features enabled.
+pub fn setup_with_features(validation: bool, features: vk::PhysicalDeviceFeatures) -> Setup {
+    setup_full(validation, Wsi::None, features)
+}
+
+fn setup_full(validation: bool, wsi: Wsi, features: vk::PhysicalDeviceFeatures) -> Setup {
     if validation {
         // SAFETY: set before any thread of this test reads the environment.
         unsafe {
@@ -108,6 +117,7 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
             &tuff::DeviceCreateInfo::new()
                 .queue_create_infos(&queues)
                 .enabled_extension_names(&device_exts)
+                .enabled_features(Some(&features))
                 .push_next(&mut features13)
                 .push_next(&mut features12),
         )

@@ -130,6 +130,10 @@ const LIVE_OBJECT: &str =
     "checks the handle is the device or a live object of it of that type, which the device lists";
 const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
 const SET_BINDINGS: &str = "checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included";
+const VIEWPORTS: &str =
+    "checks the first index plus the count against the device's maxViewports, read once";
+const MULTI_VIEWPORT: &str = "checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers";
+const SCISSORS: &str = "checks each scissor's offset is not negative and its ends do not overflow";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
@@ -529,6 +533,50 @@ pub const SPECIALS: &[Special] = &[
             "VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910",
             How::Dynamic(NAMED_OBJECT),
         )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetViewport",
+        check: call("hooks::cmd_set_viewport_checks", &["self", "first_viewport", "viewports"]),
+        settles: &[
+            ("VUID-vkCmdSetViewport-firstViewport-01223", How::Dynamic(VIEWPORTS)),
+            ("VUID-vkCmdSetViewport-firstViewport-01224", How::Dynamic(MULTI_VIEWPORT)),
+            ("VUID-vkCmdSetViewport-viewportCount-01225", How::Dynamic(MULTI_VIEWPORT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetScissor",
+        check: call("hooks::cmd_set_scissor_checks", &["self", "first_scissor", "scissors"]),
+        settles: &[
+            ("VUID-vkCmdSetScissor-firstScissor-00592", How::Dynamic(VIEWPORTS)),
+            ("VUID-vkCmdSetScissor-firstScissor-00593", How::Dynamic(MULTI_VIEWPORT)),
+            ("VUID-vkCmdSetScissor-scissorCount-00594", How::Dynamic(MULTI_VIEWPORT)),
+            ("VUID-vkCmdSetScissor-x-00595", How::Dynamic(SCISSORS)),
+            ("VUID-vkCmdSetScissor-offset-00596", How::Dynamic(SCISSORS)),
+            ("VUID-vkCmdSetScissor-offset-00597", How::Dynamic(SCISSORS)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetViewportWithCount",
+        check: call("hooks::cmd_set_viewport_with_count_checks", &["self", "viewports"]),
+        settles: &[
+            ("VUID-vkCmdSetViewportWithCount-viewportCount-03394", How::Dynamic(VIEWPORTS)),
+            ("VUID-vkCmdSetViewportWithCount-viewportCount-03395", How::Dynamic(MULTI_VIEWPORT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetScissorWithCount",
+        check: call("hooks::cmd_set_scissor_with_count_checks", &["self", "scissors"]),
+        settles: &[
+            ("VUID-vkCmdSetScissorWithCount-scissorCount-03397", How::Dynamic(VIEWPORTS)),
+            ("VUID-vkCmdSetScissorWithCount-scissorCount-03398", How::Dynamic(MULTI_VIEWPORT)),
+            ("VUID-vkCmdSetScissorWithCount-x-03399", How::Dynamic(SCISSORS)),
+            ("VUID-vkCmdSetScissorWithCount-offset-03400", How::Dynamic(SCISSORS)),
+            ("VUID-vkCmdSetScissorWithCount-offset-03401", How::Dynamic(SCISSORS)),
+        ],
         ..NONE
     },
     Special {

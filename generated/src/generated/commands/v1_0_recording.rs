@@ -800,6 +800,12 @@ The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run tim
 
 The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissor.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetScissor-firstScissor-00592`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-vkCmdSetScissor-firstScissor-00593`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-vkCmdSetScissor-scissorCount-00594`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-vkCmdSetScissor-x-00595`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissor-offset-00596`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissor-offset-00597`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
 - `VUID-vkCmdSetScissor-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetScissor-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissor-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -807,16 +813,19 @@ The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdSetScissor-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissor-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_scissor(&mut self, first_scissor: u32, scissors: &[vk::Rect2D]) {
+    pub fn cmd_set_scissor(
+        &mut self,
+        first_scissor: u32,
+        scissors: &[vk::Rect2D],
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_scissor(scissors);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
     }
@@ -824,23 +833,26 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_scissor_unchecked(
         &mut self,
         first_scissor: u32,
         scissors: &[vk::Rect2D],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_set_scissor;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                first_scissor,
-                scissors.len() as u32,
-                scissors.as_ptr().cast(),
-            )
-        };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    first_scissor,
+                    scissors.len() as u32,
+                    scissors.as_ptr().cast(),
+                )
+            };
+        }
+        Ok(())
     }
     /**`vkCmdSetStencilCompareMask`
 
@@ -977,6 +989,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
 
 The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewport.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetViewport-firstViewport-01223`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-vkCmdSetViewport-firstViewport-01224`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-vkCmdSetViewport-viewportCount-01225`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
 - `VUID-vkCmdSetViewport-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewport-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewport-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -984,16 +999,19 @@ The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.
 - `VUID-vkCmdSetViewport-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewport-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_viewport(&mut self, first_viewport: u32, viewports: &[vk::Viewport]) {
+    pub fn cmd_set_viewport(
+        &mut self,
+        first_viewport: u32,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_viewport(viewports);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
     }
@@ -1001,23 +1019,26 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_viewport_unchecked(
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_set_viewport;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                first_viewport,
-                viewports.len() as u32,
-                viewports.as_ptr().cast(),
-            )
-        };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    first_viewport,
+                    viewports.len() as u32,
+                    viewports.as_ptr().cast(),
+                )
+            };
+        }
+        Ok(())
     }
     /**`vkCmdWaitEvents`
 

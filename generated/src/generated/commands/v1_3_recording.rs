@@ -1103,6 +1103,11 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
 
 The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissorWithCount.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetScissorWithCount-scissorCount-03397`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-03398`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-vkCmdSetScissorWithCount-x-03399`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissorWithCount-offset-03400`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissorWithCount-offset-03401`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -1110,16 +1115,15 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 - `VUID-vkCmdSetScissorWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) {
+    pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_scissor_with_count(scissors);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
     }
@@ -1127,15 +1131,18 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_scissor_with_count_unchecked(
         &mut self,
         scissors: &[vk::Rect2D],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_set_scissor_with_count;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
+        }
+        Ok(())
     }
     /**`vkCmdSetStencilOp`
 
@@ -1253,6 +1260,8 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
 
 The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWithCount.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetViewportWithCount-viewportCount-03394`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-03395`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -1260,16 +1269,18 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 - `VUID-vkCmdSetViewportWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_viewport_with_count(&mut self, viewports: &[vk::Viewport]) {
+    pub fn cmd_set_viewport_with_count(
+        &mut self,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
         #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_viewport_with_count(viewports);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
         // SAFETY: checked above under runtime_implicit_validations, else the caller's.
         unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
     }
@@ -1277,15 +1288,18 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_viewport_with_count_unchecked(
         &mut self,
         viewports: &[vk::Viewport],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_set_viewport_with_count;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
+        }
+        Ok(())
     }
     /**`vkCmdWaitEvents2`
 
