@@ -11,12 +11,10 @@ cd "$(dirname "$0")/.."
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 cargo clippy -p tuff-runtime -p tuff-tests --all-targets --features tuff-runtime/multi_thread -- -D warnings
-cargo clippy -p tuff-tests --all-targets --features runtime_implicit_validations,multi_thread -- -D warnings
+cargo clippy -p tuff-tests --all-targets --features multi_thread -- -D warnings
 cargo test --workspace
 # The runtime again with Vrc = Arc and Vutex = a mutex.
 cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tuff-tests/multi_thread
-# The wrappers with their dynamic checks of implicit rules compiled in.
-cargo test -p tuff-tests --features runtime_implicit_validations --test implicit_checks --test wrappers
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 bash scripts/valgrind.sh

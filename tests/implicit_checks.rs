@@ -1,9 +1,7 @@
-//! The dynamic checks of `runtime_implicit_validations` on lavapipe, with the
-//! validation layer on: each misuse below is caught by the wrapper with the VUID of
-//! the rule it breaks, before anything reaches the driver, so the layer hears nothing.
-//!
-//! Built only with the `runtime_implicit_validations` feature of this crate (see
-//! `required-features` in Cargo.toml); the README's test command runs it.
+//! The dynamic checks of implicit rules on lavapipe, with the validation layer on:
+//! each misuse below is caught by the wrapper with the VUID of the rule it breaks,
+//! before anything reaches the driver, so the layer hears nothing. The safe methods
+//! run these checks in every build.
 
 #[path = "common/tuff_setup.rs"]
 mod tuff_setup;

@@ -326,7 +326,7 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         &buffer,
     );
     submit(&s, &[&cb], &done).expect("submit");
-    let setter = set_later(&s, &gate);
+    let opener = OpenOnDrop(&s, &gate);
     assert_eq!(
         vuid(submit(&s, &[], &done)),
         "VUID-vkQueueSubmit-fence-00064"
@@ -344,6 +344,10 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkResetFences-pFences-01123"
     );
     assert_silent(&s.messages);
+    // Only now may the gate open: until here the submission is pending for certain,
+    // however slow the run (valgrind); a failed assertion above opens it on its way
+    // out, so the fence's wait in the unwinding does not wait for ever.
+    drop(opener);
     // The same calls without tuff's checks: the layer names the same rules. The
     // program keeps the buffer and the command buffer until the queue is idle.
     // SAFETY: an empty submission signals the fence after the pending one; the
@@ -359,9 +363,22 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
     // SAFETY: as above.
     unsafe { s.device.reset_fences_unchecked(&[&done]) }.expect("unchecked reset");
     assert_layer_reports(&s, "VUID-vkResetFences-pFences-01123");
-    setter.join().expect("setter");
     s.queue.queue_wait_idle().expect("idle");
     assert_silent(&s.messages);
+}
+
+/// Sets the event when dropped, on the way out of a failed assertion too, so that work
+/// it gates completes and nothing waits for it for ever.
+struct OpenOnDrop<'s>(&'s Setup, &'s tuff::Event);
+
+impl Drop for OpenOnDrop<'_> {
+    fn drop(&mut self) {
+        let set_event = self.0.device.fns().fp_v1_0().set_event;
+        // SAFETY: the device and event are live wrappers that outlive this guard, and
+        // nothing else sets or resets the event meanwhile.
+        let r = unsafe { set_event(*self.0.device, **self.1) };
+        assert_eq!(r, vk::Result::SUCCESS);
+    }
 }
 
 #[test]

@@ -3,7 +3,7 @@
 //!
 //! Each function is named in one row of that table, which also lists the rules it
 //! settles, so the report counts exactly what these functions check. `*_checks` run in
-//! every build before the call (after the `runtime_implicit_validations` checks);
+//! every build before the call (after the checks of implicit rules);
 //! `*_before` and `*_done` are the bookkeeping around a successful call; `*_created`,
 //! `*_allocated` and `*_got` finish the wrapper a command returns.
 
@@ -1084,19 +1084,14 @@ pub(crate) fn descriptor_pool_created(
 }
 
 /// The pool remembers its flags, and its family's queue flags for the `cmdpool` checks.
-#[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_variables))]
 pub(crate) fn command_pool_created(
     device: &Device,
     pool: CommandPool,
     create_info: &CommandPoolCreateInfo<'_>,
 ) -> CommandPool {
-    let pool = pool.with_create_flags(create_info.flags);
-    #[cfg(feature = "runtime_implicit_validations")]
-    let pool = pool.with_queue_flags(crate::validation::family_flags(
-        device,
-        create_info.queue_family_index,
-    ));
-    pool
+    let flags = crate::validation::family_flags(device, create_info.queue_family_index);
+    pool.with_create_flags(create_info.flags)
+        .with_queue_flags(flags)
 }
 
 /// The device remembers the allocation's size and memory type, which mapping needs.
@@ -1115,11 +1110,8 @@ pub(crate) fn memory_allocated(
 }
 
 /// The queue remembers its family's flags for the `queuetype` checks.
-#[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_variables))]
 pub(crate) fn queue_got(device: &Device, queue: Queue, queue_family_index: u32) -> Queue {
-    #[cfg(feature = "runtime_implicit_validations")]
-    let queue = queue.with_queue_flags(crate::validation::family_flags(device, queue_family_index));
-    queue
+    queue.with_queue_flags(crate::validation::family_flags(device, queue_family_index))
 }
 
 /// As [`queue_got`], for `vkGetDeviceQueue2`.
@@ -1520,7 +1512,6 @@ pub(crate) fn command_buffers_allocated(
 }
 
 /// The scope of `vkCreateInstance`'s checks: the version and extensions it enables.
-#[cfg(feature = "runtime_implicit_validations")]
 pub(crate) fn create_instance_scope(
     create_info: &InstanceCreateInfo<'_>,
 ) -> crate::validation::Scope<'static> {
@@ -1536,7 +1527,6 @@ pub(crate) fn create_instance_scope(
 
 /// The scope of `vkCreateDevice`'s checks: the instance's, with the device
 /// extensions it enables.
-#[cfg(feature = "runtime_implicit_validations")]
 pub(crate) fn create_device_scope<'p>(
     physical: &'p PhysicalDevice,
     create_info: &DeviceCreateInfo<'_>,

@@ -21,11 +21,9 @@
 /// Which registry, core versions and extensions this crate was generated from.
 #[path = "generated/api_info.rs"]
 pub mod api_info;
-#[cfg(feature = "runtime_implicit_validations")]
 #[path = "generated/checks/mod.rs"]
 #[rustfmt::skip]
 mod checks;
-#[cfg(feature = "runtime_implicit_validations")]
 #[path = "generated/command_checks.rs"]
 #[rustfmt::skip]
 mod command_checks;
@@ -57,7 +55,6 @@ mod submission;
 mod support;
 #[cfg(feature = "khr_swapchain")]
 mod swapchain;
-#[cfg(feature = "runtime_implicit_validations")]
 mod validation;
 
 pub use allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};

@@ -76,12 +76,13 @@ pub struct Recorder<'c, S: State> {
     /// size): the checks depend on nothing else, so a run of equal writes (one before
     /// every draw) is checked once.
     pub(crate) last_push: Option<(vk::PipelineLayout, vk::ShaderStageFlags, u32, usize)>,
+    /// The queue flags of the pool's family, read once for the `cmdpool` check of
+    /// every recorded command.
+    queue_flags: vk::QueueFlags,
     /// The first failed check; later commands are not recorded and `end` returns it.
-    #[cfg(feature = "runtime_implicit_validations")]
     poisoned: Option<Error>,
     /// Whether the open render pass instance was not begun because of a failed
     /// check, so its end is not recorded either.
-    #[cfg(feature = "runtime_implicit_validations")]
     skipped_begin: bool,
     alive: Alive,
     /// The command pool is externally synchronized by every command recorded into
@@ -170,7 +171,6 @@ impl CommandBuffer {
         let still_recording = self
             .uses()
             .check_begin(self.device(), self.parent().resets_buffers())?;
-        #[cfg(feature = "runtime_implicit_validations")]
         crate::checks::check_command_buffer_begin_info(info, &self.device().scope())?;
         if still_recording {
             // SAFETY: the buffer is not pending (checked above) and its pool resets
@@ -198,6 +198,7 @@ impl CommandBuffer {
         }
         self.uses().began(info.flags);
         self.uses().set_recorder(true);
+        let queue_flags = self.parent().queue_flags();
         Ok(Recorder {
             device: self.device().clone(),
             raw: self.raw(),
@@ -208,9 +209,8 @@ impl CommandBuffer {
             last: 0,
             layout: None,
             last_push: None,
-            #[cfg(feature = "runtime_implicit_validations")]
+            queue_flags,
             poisoned: None,
-            #[cfg(feature = "runtime_implicit_validations")]
             skipped_begin: false,
             _state: PhantomData,
         })
@@ -244,7 +244,6 @@ impl<'c, S: State> Recorder<'c, S> {
 
     /// Takes the result of a command's checks: true when the command may be
     /// recorded, false when this or an earlier check failed.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn accept(&mut self, r: Result<()>) -> bool {
         if self.poisoned.is_some() {
             return false;
@@ -258,12 +257,10 @@ impl<'c, S: State> Recorder<'c, S> {
         }
     }
 
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn skip_begin(&mut self, skipped: bool) {
         self.skipped_begin = skipped;
     }
 
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn begin_skipped(&self) -> bool {
         self.skipped_begin
     }
@@ -282,6 +279,12 @@ impl<'c, S: State> Recorder<'c, S> {
         if address != self.last {
             self.retain(make());
         }
+    }
+
+    /// The queue flags of the family of the command buffer's pool.
+    #[inline]
+    pub(crate) fn pool_queue_flags(&self) -> vk::QueueFlags {
+        self.queue_flags
     }
 
     /// The record of a pipeline layout made through the wrappers.
@@ -314,9 +317,8 @@ impl<'c, S: State> Recorder<'c, S> {
             last: self.last,
             layout: self.layout,
             last_push: self.last_push,
-            #[cfg(feature = "runtime_implicit_validations")]
+            queue_flags: self.queue_flags,
             poisoned: self.poisoned,
-            #[cfg(feature = "runtime_implicit_validations")]
             skipped_begin: self.skipped_begin,
             alive: self.alive,
             pool_sync: self.pool_sync,
@@ -334,7 +336,6 @@ impl<'c, S: State> Recorder<'c, S> {
             return Err(Error::Vk(r));
         }
         self.cb.keep_alive(self.kept);
-        #[cfg(feature = "runtime_implicit_validations")]
         if let Some(e) = self.poisoned {
             // The buffer holds only the commands before the failed check: it is
             // ended but not submittable.
@@ -348,7 +349,7 @@ impl<'c, S: State> Recorder<'c, S> {
 
 impl<'c> Recorder<'c, Outside> {
     /// `vkEndCommandBuffer`: ends recording; the command buffer can be submitted.
-    /// With `runtime_implicit_validations`, a check that failed during recording is
+    /// A check of an implicit rule that failed during recording is
     /// returned here, and the buffer cannot be submitted.
     pub fn end(self) -> Result<()> {
         self.finish()

@@ -1,4 +1,4 @@
-//! What the dynamic checks of `runtime_implicit_validations` share: the objects each
+//! What the dynamic checks of implicit rules share: the objects each
 //! device and instance created, and the scope a check runs in (the versions and
 //! extensions enabled where the command is called).
 
@@ -9,16 +9,16 @@ use crate::checks::Exts;
 use crate::handles::{Device, Instance};
 use crate::{Error, Handle};
 use ash::vk;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use tuff_runtime::Vutex;
 
 /// The objects created, allocated or retrieved from one device or instance. Counted,
 /// because non-dispatchable handles need not be unique.
-pub(crate) struct Objects(Vutex<HashMap<(vk::ObjectType, u64), u32>>);
+pub(crate) struct Objects(Vutex<FxHashMap<(vk::ObjectType, u64), u32>>);
 
 impl Default for Objects {
     fn default() -> Self {
-        Objects(Vutex::new(HashMap::new()))
+        Objects(Vutex::new(FxHashMap::default()))
     }
 }
 

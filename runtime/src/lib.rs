@@ -8,8 +8,8 @@
 //!   allocations keep their device alive.
 //! - [`Allocation`]'s typed, checked access to mapped memory, with flushes and
 //!   invalidations of non-coherent memory rounded to `nonCoherentAtomSize`.
-//! - [`RUNTIME_IMPLICIT_VALIDATIONS`]: whether the generated code compiles in its
-//!   run-time checks of implicit rules.
+//! - [`RUNTIME_IMPLICIT_VALIDATIONS`]: always true: the generated code runs its checks
+//!   of implicit rules in every safe method.
 //!
 //! ```
 //! use tuff_runtime::{Vrc, Vutex};
@@ -33,14 +33,13 @@ pub use sync::{
     VutexGuard, Vweak, MULTI_THREAD,
 };
 
-/// True when the `runtime_implicit_validations` feature compiles in the generated
-/// code's run-time checks of implicit rules. When false those checks are not compiled
-/// at all (they cost nothing) and the coverage report lists their rules as left to
-/// the user.
+/// Always true: the generated code runs its checks of implicit rules in every safe
+/// method, so that no build leaves a safe method without the checks its safety needs
+/// (the `unsafe` `_unchecked` twins skip them). The `runtime_implicit_validations`
+/// feature that used to switch them is kept, and changes nothing, so builds that name
+/// it still work.
 ///
 /// ```
-/// if tuff_runtime::RUNTIME_IMPLICIT_VALIDATIONS {
-///     // a generated wrapper would check, e.g., that two handles share a parent
-/// }
+/// assert!(tuff_runtime::RUNTIME_IMPLICIT_VALIDATIONS);
 /// ```
-pub const RUNTIME_IMPLICIT_VALIDATIONS: bool = cfg!(feature = "runtime_implicit_validations");
+pub const RUNTIME_IMPLICIT_VALIDATIONS: bool = true;

@@ -29,7 +29,7 @@ impl Buffer {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(BufferInner {
                 raw,
@@ -56,7 +56,6 @@ impl Buffer {
 child_handle!(Buffer);
 impl Drop for BufferInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -96,7 +95,7 @@ impl BufferView {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(BufferViewInner {
                 raw,
@@ -118,7 +117,6 @@ impl BufferView {
 child_handle!(BufferView);
 impl Drop for BufferViewInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -159,7 +157,6 @@ impl CommandBuffer {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")]
         parent.parent().objects().add(raw);
         let this = Self {
             inner: Vrc::new(CommandBufferInner {
@@ -217,7 +214,6 @@ impl CommandBuffer {
 child_handle!(CommandBuffer);
 impl Drop for CommandBufferInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.parent().objects().remove(self.raw);
         self.parent.parent().live().remove(self.raw);
         if !self.destroy {
@@ -256,7 +252,6 @@ pub struct CommandPool {
 struct CommandPoolInner {
     raw: vk::CommandPool,
     parent: Device,
-    #[cfg(feature = "runtime_implicit_validations")]
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,
     buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>,
@@ -274,12 +269,11 @@ impl CommandPool {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(CommandPoolInner {
                 raw,
                 parent: parent.clone(),
-                #[cfg(feature = "runtime_implicit_validations")]
                 queue_flags: std::sync::OnceLock::new(),
                 create_flags: std::sync::OnceLock::new(),
                 buffers: Vutex::new(Vec::new()),
@@ -298,13 +292,11 @@ impl CommandPool {
         &self.inner.parent
     }
     ///Records the queue flags of the pool's family, for the `cmdpool` checks.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn with_queue_flags(self, flags: vk::QueueFlags) -> Self {
         let _ = self.inner.queue_flags.set(flags);
         self
     }
     ///The queue flags of the pool's family, for the `cmdpool` checks.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags.get().copied().unwrap_or_default()
     }
@@ -365,7 +357,6 @@ impl CommandPool {
 child_handle!(CommandPool);
 impl Drop for CommandPoolInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -408,7 +399,7 @@ impl DebugUtilsMessengerEXT {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(DebugUtilsMessengerEXTInner {
                 raw,
@@ -430,7 +421,6 @@ child_handle!(#[cfg(feature = "ext_debug_utils")] DebugUtilsMessengerEXT);
 #[cfg(feature = "ext_debug_utils")]
 impl Drop for DebugUtilsMessengerEXTInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
@@ -476,7 +466,7 @@ impl DescriptorPool {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(DescriptorPoolInner {
                 raw,
@@ -556,7 +546,6 @@ impl DescriptorPool {
 child_handle!(DescriptorPool);
 impl Drop for DescriptorPoolInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -601,7 +590,6 @@ impl DescriptorSet {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")]
         parent.parent().objects().add(raw);
         let this = Self {
             inner: Vrc::new(DescriptorSetInner {
@@ -630,7 +618,6 @@ impl DescriptorSet {
 child_handle!(DescriptorSet);
 impl Drop for DescriptorSetInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.parent().objects().remove(self.raw);
         self.parent.parent().live().remove(self.raw);
         if !self.destroy {
@@ -684,7 +671,7 @@ impl DescriptorSetLayout {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(DescriptorSetLayoutInner {
                 raw,
@@ -706,7 +693,6 @@ impl DescriptorSetLayout {
 child_handle!(DescriptorSetLayout);
 impl Drop for DescriptorSetLayoutInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -751,7 +737,7 @@ impl DescriptorUpdateTemplate {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(DescriptorUpdateTemplateInner {
                 raw,
@@ -787,7 +773,6 @@ impl DescriptorUpdateTemplate {
 child_handle!(DescriptorUpdateTemplate);
 impl Drop for DescriptorUpdateTemplateInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -835,9 +820,7 @@ struct DeviceInner {
         std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>,
     >,
     live: crate::retention::Live,
-    #[cfg(feature = "runtime_implicit_validations")]
     exts: crate::checks::Exts,
-    #[cfg(feature = "runtime_implicit_validations")]
     objects: crate::validation::Objects,
 }
 impl Device {
@@ -867,7 +850,6 @@ impl Device {
                     .clone(),
             );
         }
-        #[cfg(feature = "runtime_implicit_validations")]
         let exts = {
             let instance = physical.parent();
             // SAFETY: the physical device is a live wrapper of its instance.
@@ -887,20 +869,16 @@ impl Device {
                 ext,
                 command_buffers: Vutex::new(Default::default()),
                 live: Default::default(),
-                #[cfg(feature = "runtime_implicit_validations")]
                 exts,
-                #[cfg(feature = "runtime_implicit_validations")]
                 objects: Default::default(),
             }),
         }
     }
     /// The versions and extensions enabled on this device and its instance.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn exts(&self) -> crate::checks::Exts {
         self.inner.exts
     }
     /// The objects created, allocated or retrieved from this device.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn objects(&self) -> &crate::validation::Objects {
         &self.inner.objects
     }
@@ -1006,7 +984,7 @@ impl DeviceMemory {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(DeviceMemoryInner {
                 raw,
@@ -1028,7 +1006,6 @@ impl DeviceMemory {
 child_handle!(DeviceMemory);
 impl Drop for DeviceMemoryInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1068,7 +1045,7 @@ impl Event {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(EventInner {
                 raw,
@@ -1090,7 +1067,6 @@ impl Event {
 child_handle!(Event);
 impl Drop for EventInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1131,7 +1107,7 @@ impl Fence {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(FenceInner {
                 raw,
@@ -1172,7 +1148,6 @@ impl Fence {
 child_handle!(Fence);
 impl Drop for FenceInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1236,7 +1211,7 @@ impl Framebuffer {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(FramebufferInner {
                 raw,
@@ -1258,7 +1233,6 @@ impl Framebuffer {
 child_handle!(Framebuffer);
 impl Drop for FramebufferInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1299,7 +1273,7 @@ impl Image {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(ImageInner {
                 raw,
@@ -1326,7 +1300,6 @@ impl Image {
 child_handle!(Image);
 impl Drop for ImageInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1366,7 +1339,7 @@ impl ImageView {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(ImageViewInner {
                 raw,
@@ -1388,7 +1361,6 @@ impl ImageView {
 child_handle!(ImageView);
 impl Drop for ImageViewInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1446,9 +1418,7 @@ struct InstanceInner {
     entry: Entry,
     fns: ash::Instance,
     ext: InstanceExtensions,
-    #[cfg(feature = "runtime_implicit_validations")]
     exts: crate::checks::Exts,
-    #[cfg(feature = "runtime_implicit_validations")]
     objects: crate::validation::Objects,
 }
 impl Instance {
@@ -1519,23 +1489,19 @@ impl Instance {
                 entry: entry.clone(),
                 fns,
                 ext,
-                #[cfg(feature = "runtime_implicit_validations")]
                 exts: crate::checks::Exts::new(
                     vk::api_version_minor(api_version),
                     enabled,
                 ),
-                #[cfg(feature = "runtime_implicit_validations")]
                 objects: Default::default(),
             }),
         }
     }
     /// The versions and extensions enabled on this instance.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn exts(&self) -> crate::checks::Exts {
         self.inner.exts
     }
     /// The objects created from this instance.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn objects(&self) -> &crate::validation::Objects {
         &self.inner.objects
     }
@@ -1600,7 +1566,7 @@ impl PhysicalDevice {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(PhysicalDeviceInner {
                 raw,
@@ -1619,10 +1585,8 @@ impl PhysicalDevice {
     }
 }
 child_handle!(PhysicalDevice);
-#[cfg(feature = "runtime_implicit_validations")]
 impl Drop for PhysicalDeviceInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
     }
 }
@@ -1648,7 +1612,7 @@ impl Pipeline {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(PipelineInner {
                 raw,
@@ -1670,7 +1634,6 @@ impl Pipeline {
 child_handle!(Pipeline);
 impl Drop for PipelineInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1710,7 +1673,7 @@ impl PipelineCache {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(PipelineCacheInner {
                 raw,
@@ -1732,7 +1695,6 @@ impl PipelineCache {
 child_handle!(PipelineCache);
 impl Drop for PipelineCacheInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1772,7 +1734,7 @@ impl PipelineLayout {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(PipelineLayoutInner {
                 raw,
@@ -1794,7 +1756,6 @@ impl PipelineLayout {
 child_handle!(PipelineLayout);
 impl Drop for PipelineLayoutInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1838,7 +1799,7 @@ impl PrivateDataSlot {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(PrivateDataSlotInner {
                 raw,
@@ -1860,7 +1821,6 @@ impl PrivateDataSlot {
 child_handle!(PrivateDataSlot);
 impl Drop for PrivateDataSlotInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1904,7 +1864,7 @@ impl QueryPool {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(QueryPoolInner {
                 raw,
@@ -1926,7 +1886,6 @@ impl QueryPool {
 child_handle!(QueryPool);
 impl Drop for QueryPoolInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -1953,7 +1912,6 @@ pub struct Queue {
 struct QueueInner {
     raw: vk::Queue,
     parent: Device,
-    #[cfg(feature = "runtime_implicit_validations")]
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     unfenced: Vutex<Vec<Vrc<crate::submission::Submission>>>,
     keep: Option<Retained>,
@@ -1969,12 +1927,11 @@ impl Queue {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(QueueInner {
                 raw,
                 parent: parent.clone(),
-                #[cfg(feature = "runtime_implicit_validations")]
                 queue_flags: std::sync::OnceLock::new(),
                 unfenced: Vutex::new(Vec::new()),
                 keep,
@@ -1991,13 +1948,11 @@ impl Queue {
         &self.inner.parent
     }
     ///Records the queue flags of the queue's family, for the `queuetype` checks.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn with_queue_flags(self, flags: vk::QueueFlags) -> Self {
         let _ = self.inner.queue_flags.set(flags);
         self
     }
     ///The queue flags of the queue's family, for the `queuetype` checks.
-    #[cfg(feature = "runtime_implicit_validations")]
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags.get().copied().unwrap_or_default()
     }
@@ -2020,7 +1975,6 @@ impl Queue {
 child_handle!(Queue);
 impl Drop for QueueInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         let _queue = self.sync.lock();
@@ -2059,7 +2013,7 @@ impl RenderPass {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(RenderPassInner {
                 raw,
@@ -2081,7 +2035,6 @@ impl RenderPass {
 child_handle!(RenderPass);
 impl Drop for RenderPassInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -2121,7 +2074,7 @@ impl Sampler {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(SamplerInner {
                 raw,
@@ -2143,7 +2096,6 @@ impl Sampler {
 child_handle!(Sampler);
 impl Drop for SamplerInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -2183,7 +2135,7 @@ impl SamplerYcbcrConversion {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(SamplerYcbcrConversionInner {
                 raw,
@@ -2205,7 +2157,6 @@ impl SamplerYcbcrConversion {
 child_handle!(SamplerYcbcrConversion);
 impl Drop for SamplerYcbcrConversionInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -2249,7 +2200,7 @@ impl Semaphore {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(SemaphoreInner {
                 raw,
@@ -2271,7 +2222,6 @@ impl Semaphore {
 child_handle!(Semaphore);
 impl Drop for SemaphoreInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -2311,7 +2261,7 @@ impl ShaderModule {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(ShaderModuleInner {
                 raw,
@@ -2333,7 +2283,6 @@ impl ShaderModule {
 child_handle!(ShaderModule);
 impl Drop for ShaderModuleInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {
@@ -2376,7 +2325,7 @@ impl SurfaceKHR {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(SurfaceKHRInner {
                 raw,
@@ -2398,7 +2347,6 @@ child_handle!(#[cfg(feature = "khr_surface")] SurfaceKHR);
 #[cfg(feature = "khr_surface")]
 impl Drop for SurfaceKHRInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         if !self.destroy {
             return;
@@ -2440,7 +2388,7 @@ impl SwapchainKHR {
         keep: Option<Retained>,
         destroy: bool,
     ) -> Self {
-        #[cfg(feature = "runtime_implicit_validations")] parent.objects().add(raw);
+        parent.objects().add(raw);
         let this = Self {
             inner: Vrc::new(SwapchainKHRInner {
                 raw,
@@ -2463,7 +2411,6 @@ child_handle!(#[cfg(feature = "khr_swapchain")] SwapchainKHR);
 #[cfg(feature = "khr_swapchain")]
 impl Drop for SwapchainKHRInner {
     fn drop(&mut self) {
-        #[cfg(feature = "runtime_implicit_validations")]
         self.parent.objects().remove(self.raw);
         self.parent.live().remove(self.raw);
         if !self.destroy {

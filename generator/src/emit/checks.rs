@@ -454,7 +454,7 @@ pub fn render(check: &Check) -> TokenStream {
             let needed = queue_flags(queues);
             let (flags, msg) = match of {
                 QueueOf::Pool => (
-                    quote!(self.command_buffer().parent().queue_flags()),
+                    quote!(self.pool_queue_flags()),
                     format!("the command buffer's pool does not support {queues} operations"),
                 ),
                 QueueOf::Queue => (

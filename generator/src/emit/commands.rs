@@ -133,7 +133,7 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
         //! wrapper (which keeps its parent alive), every pointer from a reference or
         //! slice that outlives the call, and every count from the length of the slice
         //! it sizes. A checked method calls its `_unchecked` twin after the checks that
-        //! `runtime_implicit_validations` compiles in; the rules it does not check are
+        //! every build runs; the rules it does not check are
         //! listed, rule by rule, in `validation.json`.
         #![allow(clippy::too_many_arguments)]
         // Vulkan commands take as many parameters as the registry gives them.
@@ -151,8 +151,8 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
         false,
     );
     let checks = quote! {
-        //! The dynamic checks of each command, compiled in with
-        //! `runtime_implicit_validations`: one `validate_*` method per checked command,
+        //! The dynamic checks of each command, run in every build: one `validate_*`
+        //! method per checked command,
         //! beside it on the same receiver, which the checked method calls first.
         use crate::handles::*;
         use crate::structs::*;
@@ -927,28 +927,23 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // Only commands with implicit checks get the block that runs them.
         let implicit_block = (!checks.is_empty()).then(|| {
             quote! {
-                #[cfg(feature = "runtime_implicit_validations")]
                 {
                     #run
                     #guard
                 }
             }
         });
-        // A transition changes the recorder it consumes only in its checks (to
-        // remember a refused begin), which exist only with the feature.
-        let mut_only_checked = transition
-            .is_some()
-            .then(|| quote!(#[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]));
         quote! {
             #[doc = #doc]
             #[inline]
-            #mut_only_checked
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #checked_arrow {
                 // Held across the checks too, so what they saw holds at the call.
                 #host_sync
-                #implicit_block
+                // The special cases' checks first: each refuses a call that would
+                // break memory safety, whatever else is wrong with it.
                 #always_code
-                __safety!("checked above under runtime_implicit_validations, else the caller's.");
+                #implicit_block
+                __safety!("the rules the checks above settle hold; the others are the caller's (see the docs).");
                 #call
             }
             #[doc = #unchecked_doc]

@@ -168,9 +168,7 @@ fn emit_instance(cx: &Context) -> TokenStream {
             entry: Entry,
             fns: ash::Instance,
             ext: InstanceExtensions,
-            #[cfg(feature = "runtime_implicit_validations")]
             exts: crate::checks::Exts,
-            #[cfg(feature = "runtime_implicit_validations")]
             objects: crate::validation::Objects,
         }
         impl Instance {
@@ -185,19 +183,15 @@ fn emit_instance(cx: &Context) -> TokenStream {
                 let _ = api_version;
                 Instance { inner: Vrc::new(InstanceInner {
                     raw, entry: entry.clone(), fns, ext,
-                    #[cfg(feature = "runtime_implicit_validations")]
                     exts: crate::checks::Exts::new(vk::api_version_minor(api_version), enabled),
-                    #[cfg(feature = "runtime_implicit_validations")]
                     objects: Default::default(),
                 }) }
             }
             /// The versions and extensions enabled on this instance.
-            #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn exts(&self) -> crate::checks::Exts {
                 self.inner.exts
             }
             /// The objects created from this instance.
-            #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn objects(&self) -> &crate::validation::Objects {
                 &self.inner.objects
             }
@@ -263,9 +257,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             ext: DeviceExtensions,
             command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>>,
             live: crate::retention::Live,
-            #[cfg(feature = "runtime_implicit_validations")]
             exts: crate::checks::Exts,
-            #[cfg(feature = "runtime_implicit_validations")]
             objects: crate::validation::Objects,
         }
         impl Device {
@@ -276,7 +268,6 @@ fn emit_device(cx: &Context) -> TokenStream {
                 let mut ext = DeviceExtensions::default();
                 let _ = enabled;
                 #(#load_stmts)*
-                #[cfg(feature = "runtime_implicit_validations")]
                 let exts = {
                     let instance = physical.parent();
                     __safety!("the physical device is a live wrapper of its instance.");
@@ -286,19 +277,15 @@ fn emit_device(cx: &Context) -> TokenStream {
                 Device { inner: Vrc::new(DeviceInner {
                     raw, physical: physical.clone(), fns, ext, command_buffers: Vutex::new(Default::default()),
                     live: Default::default(),
-                    #[cfg(feature = "runtime_implicit_validations")]
                     exts,
-                    #[cfg(feature = "runtime_implicit_validations")]
                     objects: Default::default(),
                 }) }
             }
             /// The versions and extensions enabled on this device and its instance.
-            #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn exts(&self) -> crate::checks::Exts {
                 self.inner.exts
             }
             /// The objects created, allocated or retrieved from this device.
-            #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn objects(&self) -> &crate::validation::Objects {
                 &self.inner.objects
             }
@@ -422,21 +409,18 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             }
         }
     });
-    // With runtime_implicit_validations, every object is counted in the objects of
-    // the device (or, above devices, the instance) it comes from, for the `parent`
-    // and `commonparent` checks.
+    // Every object is counted in the objects of the device (or, above devices, the
+    // instance) it comes from, for the `parent` and `commonparent` checks.
     let owner = parent
         .as_deref()
         .and_then(|p| path_to(cx, p, "VkDevice").or_else(|| path_to(cx, p, "VkInstance")));
     let register = owner.as_ref().map(|path| {
         quote! {
-            #[cfg(feature = "runtime_implicit_validations")]
             parent #path.objects().add(raw);
         }
     });
     let unregister = owner.as_ref().map(|path| {
         quote! {
-            #[cfg(feature = "runtime_implicit_validations")]
             self.parent #path.objects().remove(self.raw);
         }
     });
@@ -610,7 +594,6 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
         }),
         (None, Some(unregister)) => Some(quote! {
             #cfg
-            #[cfg(feature = "runtime_implicit_validations")]
             impl Drop for #inner {
                 fn drop(&mut self) {
                     #unregister
@@ -892,23 +875,21 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
     }
 }
 
-/// The queue flags of a family, recorded when a pool or queue is made, for the checks
-/// of `runtime_implicit_validations`; `of` says whose family and for which checks.
+/// The queue flags of a family, recorded when a pool or queue is made, for the
+/// `cmdpool` and `queuetype` checks; `of` says whose family and for which checks.
 fn queue_flags_state(of: &str) -> (TokenStream, TokenStream, TokenStream) {
     let set_doc = format!("Records the queue flags of {of}.");
     let get_doc = format!("The queue flags of {of}.");
     (
-        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: std::sync::OnceLock<vk::QueueFlags>,),
-        quote!(#[cfg(feature = "runtime_implicit_validations")] queue_flags: std::sync::OnceLock::new(),),
+        quote!(queue_flags: std::sync::OnceLock<vk::QueueFlags>,),
+        quote!(queue_flags: std::sync::OnceLock::new(),),
         quote! {
             #[doc = #set_doc]
-            #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn with_queue_flags(self, flags: vk::QueueFlags) -> Self {
                 let _ = self.inner.queue_flags.set(flags);
                 self
             }
             #[doc = #get_doc]
-            #[cfg(feature = "runtime_implicit_validations")]
             pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
                 self.inner.queue_flags.get().copied().unwrap_or_default()
             }

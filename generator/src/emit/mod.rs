@@ -309,11 +309,13 @@ ash = "0.38"
 tuff-runtime = { path = "../runtime" }
 bytemuck = "1"
 smallvec = "1"
+rustc-hash = "2"
 thiserror = "2"
 
 [features]
 default = []
-# Compiles in the dynamic checks of implicit rules that types cannot settle.
+# Kept so that builds naming it still work: the dynamic checks of implicit rules
+# are compiled into every safe method now (the `_unchecked` twins skip them).
 runtime_implicit_validations = ["tuff-runtime/runtime_implicit_validations"]
 # Arc and real locks instead of Rc and no-op locks: wrappers become Send + Sync.
 multi_thread = ["tuff-runtime/multi_thread"]

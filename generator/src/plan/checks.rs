@@ -1,4 +1,4 @@
-//! The dynamic checks compiled in with `runtime_implicit_validations`: which implicit
+//! The dynamic checks every safe method runs (its `_unchecked` twin skips them): which implicit
 //! rules get one, and each check as data (a [`CheckKind`] with its VUID), which
 //! `emit::checks` renders into the checked methods and `checks/`.
 //!

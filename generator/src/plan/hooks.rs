@@ -56,7 +56,7 @@ pub struct Special {
     /// The command, `vkQueueSubmit`.
     pub command: &'static str,
     /// Run by the safe method in every build, before the call, after the
-    /// `runtime_implicit_validations` checks; returns `Result<()>`. A recorded command
+    /// implicit-rule checks; returns `Result<()>`. A recorded command
     /// with one returns its error.
     pub check: Option<Call>,
     /// Run by the call's body before the call.
@@ -67,7 +67,7 @@ pub struct Special {
     pub created: Option<Call>,
     /// Builds the error of a failed call from `r`, in place of `Error::Vk(r)`.
     pub error: Option<Call>,
-    /// Builds the scope of the `runtime_implicit_validations` checks (what is enabled
+    /// Builds the scope of the implicit-rule checks (what is enabled
     /// where the call runs), in place of the receiver's: a creation's checks see what
     /// it enables.
     pub scope: Option<Call>,

@@ -36,10 +36,8 @@ pub(super) fn render(r: &Report) -> String {
     let _ = writeln!(
         s,
         "Each rule is **statically solved** (the types make breaking it impossible), \
-         **dynamically solved** (a run-time check returns an error naming the VUID; the \
-         checks are compiled in only with the generated crate's \
-         `runtime_implicit_validations` feature, and without it these rules are the \
-         user's) or \
+         **dynamically solved** (a run-time check, run by the safe method in every build, \
+         returns an error naming the VUID; the `unsafe` `_unchecked` twin skips it) or \
          **left to the user**. Statuses come only from the records the emitters write \
          for the code they generate; a rule no emitter settles is left to the user.\n"
     );

@@ -20,12 +20,12 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_begin_debug_utils_label_ext();
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_begin_debug_utils_label_ext_unchecked(label_info) }
     }
     /**`vkCmdBeginDebugUtilsLabelEXT` without its dynamic checks.
@@ -67,12 +67,12 @@ The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_end_debug_utils_label_ext();
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
     }
     /**`vkCmdEndDebugUtilsLabelEXT` without its dynamic checks.
@@ -111,12 +111,12 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_insert_debug_utils_label_ext();
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
     }
     /**`vkCmdInsertDebugUtilsLabelEXT` without its dynamic checks.
@@ -162,12 +162,12 @@ The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://reg
         &self,
         create_info: &DebugUtilsMessengerCreateInfoEXT<'a>,
     ) -> Result<DebugUtilsMessengerEXT> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_debug_utils_messenger_ext(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_debug_utils_messenger_ext_unchecked(create_info) }
     }
     /**`vkCreateDebugUtilsMessengerEXT` without its dynamic checks.
@@ -221,7 +221,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         message_types: vk::DebugUtilsMessageTypeFlagsEXT,
         callback_data: &DebugUtilsMessengerCallbackDataEXT<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_submit_debug_utils_message_ext(
@@ -231,7 +230,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.submit_debug_utils_message_ext_unchecked(
                 message_severity,
@@ -387,12 +387,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 );
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_set_debug_utils_object_name_ext(name_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.set_debug_utils_object_name_ext_unchecked(name_info) }
     }
     /**`vkSetDebugUtilsObjectNameEXT` without its dynamic checks.
@@ -464,12 +464,12 @@ The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://regist
                 );
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_set_debug_utils_object_tag_ext(tag_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.set_debug_utils_object_tag_ext_unchecked(tag_info) }
     }
     /**`vkSetDebugUtilsObjectTagEXT` without its dynamic checks.

@@ -19,12 +19,12 @@ The rules are on [`vkCreateMetalSurfaceEXT`'s reference page](https://registry.k
         &self,
         create_info: &MetalSurfaceCreateInfoEXT<'a>,
     ) -> Result<SurfaceKHR> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_metal_surface_ext(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_metal_surface_ext_unchecked(create_info) }
     }
     /**`vkCreateMetalSurfaceEXT` without its dynamic checks.

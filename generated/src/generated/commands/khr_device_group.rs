@@ -20,13 +20,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
     ) -> Result<(u32, vk::Result)> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::acquire_next_image2_khr_checks(self, acquire_info)?;
         {
             let r = self.validate_acquire_next_image2_khr(acquire_info);
             r?;
         }
-        crate::hooks::acquire_next_image2_khr_checks(self, acquire_info)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.acquire_next_image2_khr_unchecked(acquire_info) }
     }
     /**`vkAcquireNextImage2KHR` without its dynamic checks.
@@ -114,12 +114,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             syncs.push(surface.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_device_group_surface_present_modes_khr(surface);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
     }
     /**`vkGetDeviceGroupSurfacePresentModesKHR` without its dynamic checks.
@@ -179,12 +179,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             syncs.push(surface.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_present_rectangles_khr(surface);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDevicePresentRectanglesKHR` without its dynamic checks.

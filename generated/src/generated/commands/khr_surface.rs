@@ -21,12 +21,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_surface_capabilities_khr(surface);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR` without its dynamic checks.
@@ -72,12 +72,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_surface_formats_khr(surface);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR` without its dynamic checks.
@@ -129,12 +129,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_surface_present_modes_khr(surface);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR` without its dynamic checks.
@@ -186,12 +186,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         queue_family_index: u32,
         surface: &SurfaceKHR,
     ) -> Result<vk::Bool32> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_surface_support_khr(surface);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_surface_support_khr_unchecked(
                 queue_family_index,

@@ -43,13 +43,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
             }
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::acquire_next_image_khr_checks(self, semaphore)?;
         {
             let r = self.validate_acquire_next_image_khr(swapchain, semaphore, fence);
             r?;
         }
-        crate::hooks::acquire_next_image_khr_checks(self, semaphore)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.acquire_next_image_khr_unchecked(swapchain, timeout, semaphore, fence)
         }
@@ -133,12 +133,12 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
                 );
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_swapchain_khr(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
     }
     /**`vkCreateSwapchainKHR` without its dynamic checks.
@@ -202,12 +202,12 @@ The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.k
         &self,
         swapchain: &SwapchainKHR,
     ) -> Result<Vec<Image>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_swapchain_images_khr(swapchain);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_swapchain_images_khr_unchecked(swapchain) }
     }
     /**`vkGetSwapchainImagesKHR` without its dynamic checks.
@@ -303,13 +303,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
             }
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::queue_present_khr_checks(self, present_info)?;
         {
             let r = self.validate_queue_present_khr(present_info);
             r?;
         }
-        crate::hooks::queue_present_khr_checks(self, present_info)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.queue_present_khr_unchecked(present_info) }
     }
     /**`vkQueuePresentKHR` without its dynamic checks.

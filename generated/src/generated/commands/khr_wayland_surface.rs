@@ -19,12 +19,12 @@ The rules are on [`vkCreateWaylandSurfaceKHR`'s reference page](https://registry
         &self,
         create_info: &WaylandSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_wayland_surface_khr(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_wayland_surface_khr_unchecked(create_info) }
     }
     /**`vkCreateWaylandSurfaceKHR` without its dynamic checks.

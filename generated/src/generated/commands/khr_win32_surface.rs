@@ -19,12 +19,12 @@ The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.k
         &self,
         create_info: &Win32SurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_win32_surface_khr(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_win32_surface_khr_unchecked(create_info) }
     }
     /**`vkCreateWin32SurfaceKHR` without its dynamic checks.

@@ -19,12 +19,12 @@ The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.kh
         &self,
         create_info: &XlibSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_xlib_surface_khr(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_xlib_surface_khr_unchecked(create_info) }
     }
     /**`vkCreateXlibSurfaceKHR` without its dynamic checks.

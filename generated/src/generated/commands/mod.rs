@@ -8,7 +8,7 @@
 //! wrapper (which keeps its parent alive), every pointer from a reference or
 //! slice that outlives the call, and every count from the length of the slice
 //! it sizes. A checked method calls its `_unchecked` twin after the checks that
-//! `runtime_implicit_validations` compiles in; the rules it does not check are
+//! every build runs; the rules it does not check are
 //! listed, rule by rule, in `validation.json`.
 #![allow(clippy::too_many_arguments)]
 use crate::handles::*;

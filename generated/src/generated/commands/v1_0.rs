@@ -25,12 +25,12 @@ The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_allocate_command_buffers(allocate_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.allocate_command_buffers_unchecked(command_pool, allocate_info) }
     }
     /**`vkAllocateCommandBuffers` without its dynamic checks.
@@ -97,12 +97,12 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.allocate_descriptor_sets_unchecked(descriptor_pool, allocate_info)
         }
@@ -166,12 +166,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         &self,
         allocate_info: &MemoryAllocateInfo<'a>,
     ) -> Result<DeviceMemory> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_allocate_memory(allocate_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.allocate_memory_unchecked(allocate_info) }
     }
     /**`vkAllocateMemory` without its dynamic checks.
@@ -233,12 +233,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
             syncs.push(buffer.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_bind_buffer_memory(buffer, memory);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
     }
     /**`vkBindBufferMemory` without its dynamic checks.
@@ -294,12 +294,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
             syncs.push(image.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_bind_image_memory(image, memory);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
     }
     /**`vkBindImageMemory` without its dynamic checks.
@@ -346,12 +346,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         create_info: &BufferCreateInfo<'a>,
     ) -> Result<Buffer> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_buffer(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_buffer_unchecked(create_info) }
     }
     /**`vkCreateBuffer` without its dynamic checks.
@@ -401,12 +401,12 @@ The rules are on [`vkCreateBufferView`'s reference page](https://registry.khrono
         &self,
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<BufferView> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_buffer_view(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_buffer_view_unchecked(create_info) }
     }
     /**`vkCreateBufferView` without its dynamic checks.
@@ -473,12 +473,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_command_pool(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_command_pool_unchecked(create_info) }
     }
     /**`vkCreateCommandPool` without its dynamic checks.
@@ -534,12 +534,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
     }
     /**`vkCreateComputePipelines` without its dynamic checks.
@@ -614,12 +614,12 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
         &self,
         create_info: &DescriptorPoolCreateInfo<'a>,
     ) -> Result<DescriptorPool> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_descriptor_pool(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_descriptor_pool_unchecked(create_info) }
     }
     /**`vkCreateDescriptorPool` without its dynamic checks.
@@ -668,12 +668,12 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<DescriptorSetLayout> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_descriptor_set_layout(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
     }
     /**`vkCreateDescriptorSetLayout` without its dynamic checks.
@@ -743,12 +743,12 @@ The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_event(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_event_unchecked(create_info) }
     }
     /**`vkCreateEvent` without its dynamic checks.
@@ -789,12 +789,12 @@ The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org
 - `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_fence(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_fence_unchecked(create_info) }
     }
     /**`vkCreateFence` without its dynamic checks.
@@ -840,12 +840,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<Framebuffer> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_framebuffer(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_framebuffer_unchecked(create_info) }
     }
     /**`vkCreateFramebuffer` without its dynamic checks.
@@ -916,13 +916,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_create_graphics_pipelines(pipeline_cache, create_infos);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
     }
     /**`vkCreateGraphicsPipelines` without its dynamic checks.
@@ -996,12 +996,12 @@ The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_image(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_image_unchecked(create_info) }
     }
     /**`vkCreateImage` without its dynamic checks.
@@ -1066,12 +1066,12 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
         &self,
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<ImageView> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_image_view(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_image_view_unchecked(create_info) }
     }
     /**`vkCreateImageView` without its dynamic checks.
@@ -1136,12 +1136,12 @@ The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khr
         &self,
         create_info: &PipelineCacheCreateInfo<'a>,
     ) -> Result<PipelineCache> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_pipeline_cache(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_pipeline_cache_unchecked(create_info) }
     }
     /**`vkCreatePipelineCache` without its dynamic checks.
@@ -1185,12 +1185,12 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
         &self,
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<PipelineLayout> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_pipeline_layout(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
     }
     /**`vkCreatePipelineLayout` without its dynamic checks.
@@ -1261,12 +1261,12 @@ The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos
         &self,
         create_info: &QueryPoolCreateInfo<'a>,
     ) -> Result<QueryPool> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_query_pool(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_query_pool_unchecked(create_info) }
     }
     /**`vkCreateQueryPool` without its dynamic checks.
@@ -1316,12 +1316,12 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
         &self,
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_render_pass(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_render_pass_unchecked(create_info) }
     }
     /**`vkCreateRenderPass` without its dynamic checks.
@@ -1367,12 +1367,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<Sampler> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_sampler(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_sampler_unchecked(create_info) }
     }
     /**`vkCreateSampler` without its dynamic checks.
@@ -1437,12 +1437,12 @@ The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos
         &self,
         create_info: &SemaphoreCreateInfo<'a>,
     ) -> Result<Semaphore> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_semaphore(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_semaphore_unchecked(create_info) }
     }
     /**`vkCreateSemaphore` without its dynamic checks.
@@ -1494,12 +1494,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<ShaderModule> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_shader_module(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_shader_module_unchecked(create_info) }
     }
     /**`vkCreateShaderModule` without its dynamic checks.
@@ -1566,12 +1566,12 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
     }
     /**`vkFlushMappedMemoryRanges` without its dynamic checks.
@@ -1609,12 +1609,12 @@ The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://regi
         &self,
         buffer: &Buffer,
     ) -> Result<vk::MemoryRequirements> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_buffer_memory_requirements(buffer);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_buffer_memory_requirements_unchecked(buffer) })
     }
     /**`vkGetBufferMemoryRequirements` without its dynamic checks.
@@ -1650,12 +1650,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         memory: &DeviceMemory,
     ) -> Result<vk::DeviceSize> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_device_memory_commitment(memory);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
     }
     /**`vkGetDeviceMemoryCommitment` without its dynamic checks.
@@ -1709,12 +1709,12 @@ The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_event_status(event);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_event_status_unchecked(event) }
     }
     /**`vkGetEventStatus` without its dynamic checks.
@@ -1746,12 +1746,12 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
 - `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_fence_status(fence);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_fence_status_unchecked(fence) }
     }
     /**`vkGetFenceStatus` without its dynamic checks.
@@ -1790,12 +1790,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         image: &Image,
     ) -> Result<vk::MemoryRequirements> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_image_memory_requirements(image);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
     }
     /**`vkGetImageMemoryRequirements` without its dynamic checks.
@@ -1830,12 +1830,12 @@ The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https:/
         &self,
         image: &Image,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_image_sparse_memory_requirements(image);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_image_sparse_memory_requirements_unchecked(image) }
     }
     /**`vkGetImageSparseMemoryRequirements` without its dynamic checks.
@@ -1880,12 +1880,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
         image: &Image,
         subresource: &vk::ImageSubresource,
     ) -> Result<vk::SubresourceLayout> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_image_subresource_layout(image, subresource);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
     }
     /**`vkGetImageSubresourceLayout` without its dynamic checks.
@@ -1928,12 +1928,12 @@ The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.kh
         &self,
         pipeline_cache: &PipelineCache,
     ) -> Result<Vec<u8>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_pipeline_cache_data(pipeline_cache);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_pipeline_cache_data_unchecked(pipeline_cache) }
     }
     /**`vkGetPipelineCacheData` without its dynamic checks.
@@ -1988,11 +1988,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_get_query_pool_results(query_pool, data, flags);
-            r?;
-        }
         crate::hooks::get_query_pool_results_checks(
             self,
             query_pool,
@@ -2002,7 +1997,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
             stride,
             flags,
         )?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        {
+            let r = self.validate_get_query_pool_results(query_pool, data, flags);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_query_pool_results_unchecked(
                 query_pool,
@@ -2063,12 +2063,12 @@ The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registr
         &self,
         render_pass: &RenderPass,
     ) -> Result<vk::Extent2D> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_render_area_granularity(render_pass);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_render_area_granularity_unchecked(render_pass) })
     }
     /**`vkGetRenderAreaGranularity` without its dynamic checks.
@@ -2101,12 +2101,12 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }
     }
     /**`vkInvalidateMappedMemoryRanges` without its dynamic checks.
@@ -2155,12 +2155,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             syncs.push(dst_cache.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
     }
     /**`vkMergePipelineCaches` without its dynamic checks.
@@ -2222,13 +2222,13 @@ The rules are on [`vkResetCommandPool`'s reference page](https://registry.khrono
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::reset_command_pool_checks(self, command_pool)?;
         {
             let r = self.validate_reset_command_pool(command_pool, flags);
             r?;
         }
-        crate::hooks::reset_command_pool_checks(self, command_pool)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.reset_command_pool_unchecked(command_pool, flags) }
     }
     /**`vkResetCommandPool` without its dynamic checks.
@@ -2280,13 +2280,13 @@ The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khr
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::reset_descriptor_pool_checks(descriptor_pool)?;
         {
             let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
             r?;
         }
-        crate::hooks::reset_descriptor_pool_checks(descriptor_pool)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.reset_descriptor_pool_unchecked(descriptor_pool, flags) }
     }
     /**`vkResetDescriptorPool` without its dynamic checks.
@@ -2334,12 +2334,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_reset_event(event);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.reset_event_unchecked(event) }
     }
     /**`vkResetEvent` without its dynamic checks.
@@ -2384,13 +2384,13 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
             }
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::reset_fences_checks(self, fences)?;
         {
             let r = self.validate_reset_fences(fences);
             r?;
         }
-        crate::hooks::reset_fences_checks(self, fences)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.reset_fences_unchecked(fences) }
     }
     /**`vkResetFences` without its dynamic checks.
@@ -2439,12 +2439,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_set_event(event);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.set_event_unchecked(event) }
     }
     /**`vkSetEvent` without its dynamic checks.
@@ -2485,18 +2485,18 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self
-                .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
-            r?;
-        }
         crate::hooks::update_descriptor_sets_checks(
             self,
             descriptor_writes,
             descriptor_copies,
         )?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        {
+            let r = self
+                .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.update_descriptor_sets_unchecked(descriptor_writes, descriptor_copies)
         };
@@ -2547,12 +2547,12 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
         wait_all: vk::Bool32,
         timeout: u64,
     ) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_wait_for_fences(fences);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
     }
     /**`vkWaitForFences` without its dynamic checks.
@@ -2601,12 +2601,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_device(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_device_unchecked(create_info) }
     }
     /**`vkCreateDevice` without its dynamic checks.
@@ -2716,12 +2716,12 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
         &self,
         format: vk::Format,
     ) -> Result<vk::FormatProperties> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_format_properties(format);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
     }
     /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
@@ -2765,7 +2765,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         usage: vk::ImageUsageFlags,
         flags: vk::ImageCreateFlags,
     ) -> Result<vk::ImageFormatProperties> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_image_format_properties(
@@ -2777,7 +2776,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_image_format_properties_unchecked(
                 format,
@@ -2905,7 +2905,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         usage: vk::ImageUsageFlags,
         tiling: vk::ImageTiling,
     ) -> Result<Vec<vk::SparseImageFormatProperties>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_sparse_image_format_properties(
@@ -2917,7 +2916,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_sparse_image_format_properties_unchecked(
                 format,
@@ -2986,12 +2986,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_instance(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_instance_unchecked(create_info) }
     }
     /**`vkCreateInstance` without its dynamic checks.
@@ -3128,13 +3128,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::queue_bind_sparse_checks(self, bind_info, fence)?;
         {
             let r = self.validate_queue_bind_sparse(bind_info, fence);
             r?;
         }
-        crate::hooks::queue_bind_sparse_checks(self, bind_info, fence)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
     }
     /**`vkQueueBindSparse` without its dynamic checks.
@@ -3204,13 +3204,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::queue_submit_checks(self, submits, fence)?;
         {
             let r = self.validate_queue_submit(submits, fence);
             r?;
         }
-        crate::hooks::queue_submit_checks(self, submits, fence)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.queue_submit_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit` without its dynamic checks.
@@ -3290,13 +3290,13 @@ The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khro
             syncs.push(self.parent().host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::reset_command_buffer_checks(self)?;
         {
             let r = self.validate_reset_command_buffer(flags);
             r?;
         }
-        crate::hooks::reset_command_buffer_checks(self)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.reset_command_buffer_unchecked(flags) }
     }
     /**`vkResetCommandBuffer` without its dynamic checks.

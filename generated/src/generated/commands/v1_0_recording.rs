@@ -24,14 +24,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
         query: u32,
         flags: vk::QueryControlFlags,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_begin_query(query_pool, flags);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_begin_query_unchecked(query_pool, query, flags) }
     }
     /**`vkCmdBeginQuery` without its dynamic checks.
@@ -80,7 +80,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         descriptor_sets: &[&DescriptorSet],
         dynamic_offsets: &[u32],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_bind_descriptor_sets_checks(
+            self,
+            layout,
+            first_set,
+            descriptor_sets,
+            dynamic_offsets,
+        )?;
         {
             let r = self
                 .validate_cmd_bind_descriptor_sets(
@@ -90,14 +96,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 );
             r?;
         }
-        crate::hooks::cmd_bind_descriptor_sets_checks(
-            self,
-            layout,
-            first_set,
-            descriptor_sets,
-            dynamic_offsets,
-        )?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_bind_descriptor_sets_unchecked(
                 pipeline_bind_point,
@@ -173,13 +173,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset)?;
         {
             let r = self.validate_cmd_bind_index_buffer(buffer, index_type);
             r?;
         }
-        crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
     }
     /**`vkCmdBindIndexBuffer` without its dynamic checks.
@@ -223,14 +223,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_bind_pipeline(pipeline_bind_point, pipeline);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
     }
     /**`vkCmdBindPipeline` without its dynamic checks.
@@ -275,11 +275,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         buffers: &[&Buffer],
         offsets: &[vk::DeviceSize],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_bind_vertex_buffers(buffers);
-            r?;
-        }
         if offsets.len() != buffers.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdBindVertexBuffers-pOffsets-parameter",
@@ -290,7 +285,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             });
         }
         crate::hooks::cmd_bind_vertex_buffers_checks(self, buffers, offsets)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        {
+            let r = self.validate_cmd_bind_vertex_buffers(buffers);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
         }
@@ -344,14 +344,14 @@ The rules are on [`vkCmdEndQuery`'s reference page](https://registry.khronos.org
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_end_query(query_pool);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_end_query_unchecked(query_pool, query) }
     }
     /**`vkCmdEndQuery` without its dynamic checks.
@@ -392,13 +392,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 50 (exp
         &mut self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_execute_commands_checks(self, command_buffers)?;
         {
             let r = self.validate_cmd_execute_commands(command_buffers);
             r?;
         }
-        crate::hooks::cmd_execute_commands_checks(self, command_buffers)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
     }
     /**`vkCmdExecuteCommands` without its dynamic checks.
@@ -459,7 +459,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 39 (exp
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_pipeline_barrier(
@@ -473,7 +472,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 39 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_pipeline_barrier_unchecked(
                 src_stage_mask,
@@ -575,11 +575,6 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
         offset: u32,
         values: &[u8],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_push_constants(layout, stage_flags, values);
-            r?;
-        }
         crate::hooks::cmd_push_constants_checks(
             self,
             layout,
@@ -587,7 +582,12 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
             offset,
             values,
         )?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        {
+            let r = self.validate_cmd_push_constants(layout, stage_flags, values);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
     }
     /**`vkCmdPushConstants` without its dynamic checks.
@@ -632,14 +632,14 @@ The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.kh
 - `VUID-vkCmdSetBlendConstants-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_blend_constants();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_blend_constants_unchecked(blend_constants) }
     }
     /**`vkCmdSetBlendConstants` without its dynamic checks.
@@ -675,14 +675,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         depth_bias_clamp: f32,
         depth_bias_slope_factor: f32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_bias();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_set_depth_bias_unchecked(
                 depth_bias_constant_factor,
@@ -732,14 +732,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         min_depth_bounds: f32,
         max_depth_bounds: f32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_bounds();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds)
         }
@@ -773,14 +773,14 @@ The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_line_width();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_line_width_unchecked(line_width) }
     }
     /**`vkCmdSetLineWidth` without its dynamic checks.
@@ -820,13 +820,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
         {
             let r = self.validate_cmd_set_scissor(scissors);
             r?;
         }
-        crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
     }
     /**`vkCmdSetScissor` without its dynamic checks.
@@ -872,14 +872,14 @@ The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registr
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_stencil_compare_mask(face_mask);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
     }
     /**`vkCmdSetStencilCompareMask` without its dynamic checks.
@@ -915,14 +915,14 @@ The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.
         face_mask: vk::StencilFaceFlags,
         reference: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_stencil_reference(face_mask);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_stencil_reference_unchecked(face_mask, reference) }
     }
     /**`vkCmdSetStencilReference` without its dynamic checks.
@@ -958,14 +958,14 @@ The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_stencil_write_mask(face_mask);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_stencil_write_mask_unchecked(face_mask, write_mask) }
     }
     /**`vkCmdSetStencilWriteMask` without its dynamic checks.
@@ -1006,13 +1006,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         first_viewport: u32,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
         {
             let r = self.validate_cmd_set_viewport(viewports);
             r?;
         }
-        crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
     }
     /**`vkCmdSetViewport` without its dynamic checks.
@@ -1069,7 +1069,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_wait_events(
@@ -1083,7 +1082,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_wait_events_unchecked(
                 events,
@@ -1184,14 +1184,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
         query_pool: &QueryPool,
         query: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_write_timestamp(pipeline_stage, query_pool);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_write_timestamp_unchecked(pipeline_stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp` without its dynamic checks.
@@ -1230,13 +1230,11 @@ The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khro
 
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_begin_render_pass<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_begin_render_pass(render_pass_begin, contents);
             if !self.accept(r) {
@@ -1245,7 +1243,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
             }
             self.skip_begin(false);
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
     }
     /**`vkCmdBeginRenderPass` without its dynamic checks.
@@ -1315,7 +1314,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_blit_image(
@@ -1330,7 +1328,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_blit_image_unchecked(
                 src_image,
@@ -1400,14 +1399,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_clear_color_image(image, image_layout, ranges);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
         }
@@ -1466,7 +1465,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_clear_depth_stencil_image(image, image_layout, ranges);
@@ -1474,7 +1472,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_clear_depth_stencil_image_unchecked(
                 image,
@@ -1545,13 +1544,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_copy_buffer_checks(self, src_buffer, dst_buffer, regions)?;
         {
             let r = self.validate_cmd_copy_buffer(src_buffer, dst_buffer, regions);
             r?;
         }
-        crate::hooks::cmd_copy_buffer_checks(self, src_buffer, dst_buffer, regions)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
     }
     /**`vkCmdCopyBuffer` without its dynamic checks.
@@ -1610,7 +1609,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_copy_buffer_to_image(
@@ -1623,7 +1621,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_copy_buffer_to_image_unchecked(
                 src_buffer,
@@ -1690,7 +1689,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_copy_image(
@@ -1704,7 +1702,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_copy_image_unchecked(
                 src_image,
@@ -1772,7 +1771,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_copy_image_to_buffer(
@@ -1785,7 +1783,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_copy_image_to_buffer_unchecked(
                 src_image,
@@ -1851,7 +1850,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_copy_query_pool_results(query_pool, dst_buffer, flags);
@@ -1859,7 +1857,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_copy_query_pool_results_unchecked(
                 query_pool,
@@ -1925,14 +1924,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 61 (exp
         group_count_y: u32,
         group_count_z: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_dispatch();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
         }
@@ -1970,14 +1969,14 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 Left to the caller (listed one by one in the crate's `validation.json`): 60 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_indirect(&mut self, buffer: &Buffer, offset: vk::DeviceSize) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_dispatch_indirect(buffer);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
     }
     /**`vkCmdDispatchIndirect` without its dynamic checks.
@@ -2026,13 +2025,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         size: vk::DeviceSize,
         data: u32,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_fill_buffer_checks(self, dst_buffer, dst_offset, size)?;
         {
             let r = self.validate_cmd_fill_buffer(dst_buffer);
             r?;
         }
-        crate::hooks::cmd_fill_buffer_checks(self, dst_buffer, dst_offset, size)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
     }
     /**`vkCmdFillBuffer` without its dynamic checks.
@@ -2077,14 +2076,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_reset_event(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent` without its dynamic checks.
@@ -2125,14 +2124,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         first_query: u32,
         query_count: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_reset_query_pool(query_pool);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
         }
@@ -2183,7 +2182,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_resolve_image(
@@ -2197,7 +2195,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_resolve_image_unchecked(
                 src_image,
@@ -2255,14 +2254,14 @@ The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org
 Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_event(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdSetEvent` without its dynamic checks.
@@ -2312,13 +2311,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         dst_offset: vk::DeviceSize,
         data: &[u8],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_update_buffer_checks(self, dst_buffer, dst_offset, data)?;
         {
             let r = self.validate_cmd_update_buffer(dst_buffer, data);
             r?;
         }
-        crate::hooks::cmd_update_buffer_checks(self, dst_buffer, dst_offset, data)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
     }
     /**`vkCmdUpdateBuffer` without its dynamic checks.
@@ -2374,14 +2373,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_clear_attachments(attachments, rects);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
     }
     /**`vkCmdClearAttachments` without its dynamic checks.
@@ -2428,14 +2427,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 192 (ex
         first_vertex: u32,
         first_instance: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_draw();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_draw_unchecked(
                 vertex_count,
@@ -2486,14 +2485,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
         vertex_offset: i32,
         first_instance: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_draw_indexed();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_draw_indexed_unchecked(
                 index_count,
@@ -2554,14 +2553,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 200 (ex
         draw_count: u32,
         stride: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_draw_indexed_indirect(buffer);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
         }
@@ -2607,14 +2606,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 198 (ex
         draw_count: u32,
         stride: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_draw_indirect(buffer);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
     }
     /**`vkCmdDrawIndirect` without its dynamic checks.
@@ -2652,9 +2651,7 @@ The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_end_render_pass();
             let _ = self.accept(r);
@@ -2662,7 +2659,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_end_render_pass_unchecked() }
     }
     /**`vkCmdEndRenderPass` without its dynamic checks.
@@ -2694,7 +2692,6 @@ The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_next_subpass(contents);
             let _ = self.accept(r);
@@ -2702,7 +2699,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_next_subpass_unchecked(contents) }
     }
     /**`vkCmdNextSubpass` without its dynamic checks.

@@ -17,12 +17,12 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_bind_buffer_memory2(bind_infos);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.bind_buffer_memory2_unchecked(bind_infos) }
     }
     /**`vkBindBufferMemory2` without its dynamic checks.
@@ -62,12 +62,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_bind_image_memory2(bind_infos);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.bind_image_memory2_unchecked(bind_infos) }
     }
     /**`vkBindImageMemory2` without its dynamic checks.
@@ -106,12 +106,12 @@ The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://r
         &self,
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<DescriptorUpdateTemplate> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_descriptor_update_template(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_descriptor_update_template_unchecked(create_info) }
     }
     /**`vkCreateDescriptorUpdateTemplate` without its dynamic checks.
@@ -183,12 +183,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<SamplerYcbcrConversion> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_sampler_ycbcr_conversion(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
     }
     /**`vkCreateSamplerYcbcrConversion` without its dynamic checks.
@@ -232,12 +232,12 @@ The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://reg
         info: &BufferMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_buffer_memory_requirements2_unchecked(info, memory_requirements)
         };
@@ -279,13 +279,13 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_descriptor_set_layout_support(create_info, support);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_descriptor_set_layout_support_unchecked(create_info, support)
         };
@@ -351,12 +351,12 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
         &self,
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Result<Queue> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_device_queue2(queue_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
     }
     /**`vkGetDeviceQueue2` without its dynamic checks.
@@ -400,13 +400,13 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_image_memory_requirements2(info, memory_requirements);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_image_memory_requirements2_unchecked(info, memory_requirements)
         };
@@ -488,12 +488,12 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_trim_command_pool(command_pool, flags);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.trim_command_pool_unchecked(command_pool, flags) };
         Ok(())
     }
@@ -541,7 +541,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         descriptor_update_template: &DescriptorUpdateTemplate,
         data: *const core::ffi::c_void,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_update_descriptor_set_with_template(
@@ -549,7 +548,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.update_descriptor_set_with_template_unchecked(
                 descriptor_set,
@@ -649,7 +649,6 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_external_buffer_properties(
@@ -657,7 +656,8 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_external_buffer_properties_unchecked(
                 external_buffer_info,
@@ -707,7 +707,6 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_external_fence_properties(
@@ -715,7 +714,8 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_external_fence_properties_unchecked(
                 external_fence_info,
@@ -765,7 +765,6 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_external_semaphore_properties(
@@ -773,7 +772,8 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_external_semaphore_properties_unchecked(
                 external_semaphore_info,
@@ -843,7 +843,6 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_format_properties2(
@@ -852,7 +851,8 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_format_properties2_unchecked(
                 format,
@@ -899,7 +899,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_image_format_properties2(
@@ -908,7 +907,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_image_format_properties2_unchecked(
                 image_format_info,
@@ -959,13 +959,13 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_memory_properties2(memory_properties);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_memory_properties2_unchecked(memory_properties)
         };
@@ -1003,12 +1003,12 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_physical_device_properties2(properties);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_physical_device_properties2_unchecked(properties) };
         Ok(())
     }
@@ -1073,7 +1073,6 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_physical_device_sparse_image_format_properties2(
@@ -1081,7 +1080,8 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_physical_device_sparse_image_format_properties2_unchecked(
                 format_info,

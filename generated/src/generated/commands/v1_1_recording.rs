@@ -26,14 +26,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 65 (exp
         group_count_y: u32,
         group_count_z: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_dispatch_base();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_dispatch_base_unchecked(
                 base_group_x,
@@ -89,14 +89,14 @@ The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khrono
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_device_mask(&mut self, device_mask: u32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_device_mask();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_device_mask_unchecked(device_mask) }
     }
     /**`vkCmdSetDeviceMask` without its dynamic checks.

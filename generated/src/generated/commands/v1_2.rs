@@ -18,12 +18,12 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
         &self,
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_render_pass2(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_render_pass2_unchecked(create_info) }
     }
     /**`vkCreateRenderPass2` without its dynamic checks.
@@ -127,13 +127,13 @@ The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registr
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::get_semaphore_counter_value_checks(self, semaphore)?;
         {
             let r = self.validate_get_semaphore_counter_value(semaphore);
             r?;
         }
-        crate::hooks::get_semaphore_counter_value_checks(self, semaphore)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
     }
     /**`vkGetSemaphoreCounterValue` without its dynamic checks.
@@ -174,12 +174,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
         first_query: u32,
         query_count: u32,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_reset_query_pool(query_pool);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.reset_query_pool_unchecked(query_pool, first_query, query_count) };
         Ok(())
     }
@@ -213,7 +213,8 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
         crate::hooks::signal_semaphore_checks(self, signal_info)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.signal_semaphore_unchecked(signal_info) }
     }
     /**`vkSignalSemaphore` without its dynamic checks.
@@ -250,13 +251,13 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
     ) -> Result<vk::Result> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::wait_semaphores_checks(self, wait_info)?;
         {
             let r = self.validate_wait_semaphores(wait_info);
             r?;
         }
-        crate::hooks::wait_semaphores_checks(self, wait_info)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.wait_semaphores_unchecked(wait_info, timeout) }
     }
     /**`vkWaitSemaphores` without its dynamic checks.

@@ -20,13 +20,11 @@ The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_begin_render_pass2<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_begin_render_pass2(render_pass_begin, subpass_begin_info);
@@ -36,7 +34,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
             }
             self.skip_begin(false);
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
         }
@@ -105,14 +104,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 205 (ex
         max_draw_count: u32,
         stride: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_draw_indexed_indirect_count(buffer, count_buffer);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_draw_indexed_indirect_count_unchecked(
                 buffer,
@@ -181,14 +180,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203 (ex
         max_draw_count: u32,
         stride: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_draw_indirect_count(buffer, count_buffer);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_draw_indirect_count_unchecked(
                 buffer,
@@ -249,12 +248,10 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_end_render_pass2(subpass_end_info);
             let _ = self.accept(r);
@@ -262,7 +259,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
     }
     /**`vkCmdEndRenderPass2` without its dynamic checks.
@@ -304,7 +302,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_next_subpass2(subpass_begin_info, subpass_end_info);
@@ -313,7 +310,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
     }
     /**`vkCmdNextSubpass2` without its dynamic checks.

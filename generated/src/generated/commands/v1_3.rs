@@ -20,12 +20,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &self,
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<PrivateDataSlot> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_create_private_data_slot(create_info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.create_private_data_slot_unchecked(create_info) }
     }
     /**`vkCreatePrivateDataSlot` without its dynamic checks.
@@ -69,7 +69,6 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_device_buffer_memory_requirements(
@@ -78,7 +77,8 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_device_buffer_memory_requirements_unchecked(
                 info,
@@ -123,7 +123,6 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_get_device_image_memory_requirements(
@@ -132,7 +131,8 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
                 );
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.get_device_image_memory_requirements_unchecked(
                 info,
@@ -177,12 +177,12 @@ The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](h
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_get_device_image_sparse_memory_requirements(info);
             r?;
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.get_device_image_sparse_memory_requirements_unchecked(info) }
     }
     /**`vkGetDeviceImageSparseMemoryRequirements` without its dynamic checks.
@@ -233,13 +233,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         object_handle: u64,
         private_data_slot: &PrivateDataSlot,
     ) -> Result<u64> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::get_private_data_checks(self, object_type, object_handle)?;
         {
             let r = self.validate_get_private_data(object_type, private_data_slot);
             r?;
         }
-        crate::hooks::get_private_data_checks(self, object_type, object_handle)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         Ok(unsafe {
             self.get_private_data_unchecked(
                 object_type,
@@ -288,13 +288,13 @@ The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.
         private_data_slot: &PrivateDataSlot,
         data: u64,
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::set_private_data_checks(self, object_type, object_handle)?;
         {
             let r = self.validate_set_private_data(object_type, private_data_slot);
             r?;
         }
-        crate::hooks::set_private_data_checks(self, object_type, object_handle)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.set_private_data_unchecked(
                 object_type,
@@ -387,13 +387,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::queue_submit2_checks(self, submits, fence)?;
         {
             let r = self.validate_queue_submit2(submits, fence);
             r?;
         }
-        crate::hooks::queue_submit2_checks(self, submits, fence)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.queue_submit2_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit2` without its dynamic checks.

@@ -18,12 +18,10 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_begin_rendering<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_begin_rendering(rendering_info);
             if !self.accept(r) {
@@ -32,7 +30,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             }
             self.skip_begin(false);
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
     }
     /**`vkCmdBeginRendering` without its dynamic checks.
@@ -80,14 +79,14 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_blit_image2(blit_image_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
     }
     /**`vkCmdBlitImage2` without its dynamic checks.
@@ -134,14 +133,14 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_copy_buffer2(copy_buffer_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
     }
     /**`vkCmdCopyBuffer2` without its dynamic checks.
@@ -191,14 +190,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
     }
     /**`vkCmdCopyBufferToImage2` without its dynamic checks.
@@ -251,14 +250,14 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_copy_image2(copy_image_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
     }
     /**`vkCmdCopyImage2` without its dynamic checks.
@@ -308,14 +307,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
     }
     /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
@@ -373,14 +372,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_reset_event2(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent2` without its dynamic checks.
@@ -418,14 +417,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_resolve_image2(resolve_image_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
     }
     /**`vkCmdResolveImage2` without its dynamic checks.
@@ -482,14 +481,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_event2(event, dependency_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
     }
     /**`vkCmdSetEvent2` without its dynamic checks.
@@ -559,11 +558,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_bind_vertex_buffers2(buffers);
-            r?;
-        }
         if offsets.len() != buffers.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdBindVertexBuffers2-pOffsets-parameter",
@@ -592,7 +586,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
             });
         }
         crate::hooks::cmd_bind_vertex_buffers2_checks(self, buffers, offsets, sizes)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        {
+            let r = self.validate_cmd_bind_vertex_buffers2(buffers);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_bind_vertex_buffers2_unchecked(
                 first_binding,
@@ -663,14 +662,14 @@ The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khr
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_pipeline_barrier2(dependency_info);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_pipeline_barrier2_unchecked(dependency_info) }
     }
     /**`vkCmdPipelineBarrier2` without its dynamic checks.
@@ -716,14 +715,14 @@ The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_cull_mode(cull_mode);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
     }
     /**`vkCmdSetCullMode` without its dynamic checks.
@@ -751,14 +750,14 @@ The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.k
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_bias_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
     }
     /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
@@ -792,14 +791,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &mut self,
         depth_bounds_test_enable: vk::Bool32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_bounds_test_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
         }
@@ -833,14 +832,14 @@ The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_compare_op(depth_compare_op);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
     }
     /**`vkCmdSetDepthCompareOp` without its dynamic checks.
@@ -871,14 +870,14 @@ The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.k
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_test_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
     }
     /**`vkCmdSetDepthTestEnable` without its dynamic checks.
@@ -909,14 +908,14 @@ The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_depth_write_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
     }
     /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
@@ -948,14 +947,14 @@ The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_front_face(front_face);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_front_face_unchecked(front_face) }
     }
     /**`vkCmdSetFrontFace` without its dynamic checks.
@@ -986,14 +985,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &mut self,
         primitive_restart_enable: vk::Bool32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_primitive_restart_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
         }
@@ -1030,14 +1029,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_primitive_topology(primitive_topology);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
     }
     /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
@@ -1071,14 +1070,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         &mut self,
         rasterizer_discard_enable: vk::Bool32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_rasterizer_discard_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
         }
@@ -1118,13 +1117,13 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
         {
             let r = self.validate_cmd_set_scissor_with_count(scissors);
             r?;
         }
-        crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
     }
     /**`vkCmdSetScissorWithCount` without its dynamic checks.
@@ -1171,7 +1170,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         depth_fail_op: vk::StencilOp,
         compare_op: vk::CompareOp,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self
                 .validate_cmd_set_stencil_op(
@@ -1185,7 +1183,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe {
             self.cmd_set_stencil_op_unchecked(
                 face_mask,
@@ -1230,14 +1229,14 @@ The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_set_stencil_test_enable();
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
     }
     /**`vkCmdSetStencilTestEnable` without its dynamic checks.
@@ -1275,13 +1274,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &mut self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
+        crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
         {
             let r = self.validate_cmd_set_viewport_with_count(viewports);
             r?;
         }
-        crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
     }
     /**`vkCmdSetViewportWithCount` without its dynamic checks.
@@ -1322,11 +1321,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
     ) -> Result<()> {
-        #[cfg(feature = "runtime_implicit_validations")]
-        {
-            let r = self.validate_cmd_wait_events2(events, dependency_infos);
-            r?;
-        }
         if dependency_infos.len() != events.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter",
@@ -1336,7 +1330,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
                 ),
             });
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        {
+            let r = self.validate_cmd_wait_events2(events, dependency_infos);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
     }
     /**`vkCmdWaitEvents2` without its dynamic checks.
@@ -1406,14 +1405,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
         query_pool: &QueryPool,
         query: u32,
     ) {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_write_timestamp2(stage, query_pool);
             if !self.accept(r) {
                 return;
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_write_timestamp2_unchecked(stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp2` without its dynamic checks.
@@ -1449,9 +1448,7 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    #[cfg_attr(not(feature = "runtime_implicit_validations"), allow(unused_mut))]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
-        #[cfg(feature = "runtime_implicit_validations")]
         {
             let r = self.validate_cmd_end_rendering();
             let _ = self.accept(r);
@@ -1459,7 +1456,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
                 return self.into_state();
             }
         }
-        // SAFETY: checked above under runtime_implicit_validations, else the caller's.
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
         unsafe { self.cmd_end_rendering_unchecked() }
     }
     /**`vkCmdEndRendering` without its dynamic checks.
