@@ -882,11 +882,17 @@ pub(crate) fn cmd_bind_vertex_buffers2_checks<S: State>(
 }
 
 /// The checks of `vkCmdBindIndexBuffer` that keep the binding inside the buffer.
-pub(crate) fn cmd_bind_index_buffer_checks<S: State>(
+///
+/// Registries from 1.4 on (maintenance6) let the buffer be absent: then nothing is
+/// read from it, and there is nothing to check.
+pub(crate) fn cmd_bind_index_buffer_checks<'b, S: State>(
     recorder: &Recorder<'_, S>,
-    buffer: &Buffer,
+    buffer: impl Into<Option<&'b Buffer>>,
     offset: vk::DeviceSize,
 ) -> Result<()> {
+    let Some(buffer) = buffer.into() else {
+        return Ok(());
+    };
     let record = used_buffer(
         recorder,
         buffer,
