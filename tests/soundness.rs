@@ -1684,15 +1684,8 @@ fn buffer_copies_stay_inside_their_buffers() {
     rec.end().expect("end");
     assert_silent(&s.messages);
     let done = fence(&s);
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
-        .expect("submit");
-    let waited = s
-        .device
-        .wait_for_fences(&[&done], vk::TRUE, u64::MAX)
-        .expect("wait");
-    assert_eq!(waited, vk::Result::SUCCESS);
+    submit(&s, &[&cb], &done).expect("submit");
+    wait(&s, &done);
     assert_silent(&s.messages);
 
     // Through `_unchecked`: the layer names the same rule for each.
@@ -1762,14 +1755,8 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     .expect("copy");
     rec.end().expect("end");
     let done = fence(&s);
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
-        .expect("submit");
-    let waited = d
-        .wait_for_fences(&[&done], vk::TRUE, u64::MAX)
-        .expect("wait");
-    assert_eq!(waited, vk::Result::SUCCESS);
+    submit(&s, &[&cb], &done).expect("submit");
+    wait(&s, &done);
     drop((cb, pool, done, buffer));
     assert_eq!(
         d.live_object_count(),
@@ -1981,15 +1968,8 @@ fn buffer_commands_stay_inside_their_buffers() {
     rec.end().expect("end");
     assert_silent(&s.messages);
     let done = fence(&s);
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
-        .expect("submit");
-    let waited = s
-        .device
-        .wait_for_fences(&[&done], vk::TRUE, u64::MAX)
-        .expect("wait");
-    assert_eq!(waited, vk::Result::SUCCESS);
+    submit(&s, &[&cb], &done).expect("submit");
+    wait(&s, &done);
     assert_silent(&s.messages);
 
     s.messages.abort_on_error(true);

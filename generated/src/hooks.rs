@@ -700,7 +700,7 @@ fn check_buffer_use(
     record: &BufferRecord,
     usage: vk::BufferUsageFlags,
     (usage_vuid, bound_vuid): (&'static str, &'static str),
-    name: &str,
+    name: &dyn core::fmt::Display,
 ) -> Result<()> {
     if !record.usage.contains(usage) {
         refuse(
@@ -728,7 +728,7 @@ fn used_buffer<S: State>(
     buffer: &Buffer,
     usage: vk::BufferUsageFlags,
     vuids: (&'static str, &'static str),
-    name: &str,
+    name: &dyn core::fmt::Display,
 ) -> Result<BufferRecord> {
     let record = buffer_record(recorder.device(), buffer)?;
     check_buffer_use(&record, usage, vuids, name)?;
@@ -750,7 +750,7 @@ pub(crate) fn cmd_fill_buffer_checks<S: State>(
             "VUID-vkCmdFillBuffer-dstBuffer-00029",
             "VUID-vkCmdFillBuffer-dstBuffer-00031",
         ),
-        "dstBuffer",
+        &"dstBuffer",
     )?;
     if dst_offset >= dst.size {
         refuse("VUID-vkCmdFillBuffer-dstOffset-00024", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
@@ -796,7 +796,7 @@ pub(crate) fn cmd_update_buffer_checks<S: State>(
             "VUID-vkCmdUpdateBuffer-dstBuffer-00034",
             "VUID-vkCmdUpdateBuffer-dstBuffer-00035",
         ),
-        "dstBuffer",
+        &"dstBuffer",
     )?;
     let len = data.len() as u64;
     if dst_offset >= dst.size {
@@ -826,28 +826,53 @@ pub(crate) fn cmd_update_buffer_checks<S: State>(
     Ok(())
 }
 
+/// The rules a vertex-buffer binding breaks: (usage, memory, offset, offset plus size).
+type VertexRules = [&'static str; 4];
+
+/// Each binding of `buffers` at `offsets` (and `sizes`, where given) lies inside its
+/// buffer, which has vertex-buffer usage and memory.
+fn check_vertex_bindings<S: State>(
+    recorder: &Recorder<'_, S>,
+    buffers: &[&Buffer],
+    offsets: &[vk::DeviceSize],
+    sizes: &[vk::DeviceSize],
+    rules: VertexRules,
+) -> Result<()> {
+    for (i, (b, &offset)) in buffers.iter().zip(offsets).enumerate() {
+        let usage = vk::BufferUsageFlags::VERTEX_BUFFER;
+        let record = used_buffer(
+            recorder,
+            b,
+            usage,
+            (rules[0], rules[1]),
+            &format_args!("pBuffers[{i}]"),
+        )?;
+        if offset >= record.size {
+            refuse(rules[2], format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
+        }
+        // VK_WHOLE_SIZE is the rest of the buffer.
+        if let Some(&size) = sizes.get(i).filter(|&&s| s != vk::WHOLE_SIZE) {
+            if size > record.size - offset {
+                refuse(rules[3], format!("pOffsets[{i}] plus pSizes[{i}] must be at most the size of pBuffers[{i}] (offset = {offset}, size = {size}, size of the buffer = {})", record.size))?;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The checks of `vkCmdBindVertexBuffers` that keep each binding inside its buffer.
 pub(crate) fn cmd_bind_vertex_buffers_checks<S: State>(
     recorder: &Recorder<'_, S>,
     buffers: &[&Buffer],
     offsets: &[vk::DeviceSize],
 ) -> Result<()> {
-    for (i, (b, &offset)) in buffers.iter().zip(offsets).enumerate() {
-        let record = used_buffer(
-            recorder,
-            b,
-            vk::BufferUsageFlags::VERTEX_BUFFER,
-            (
-                "VUID-vkCmdBindVertexBuffers-pBuffers-00627",
-                "VUID-vkCmdBindVertexBuffers-pBuffers-00628",
-            ),
-            &format!("pBuffers[{i}]"),
-        )?;
-        if offset >= record.size {
-            refuse("VUID-vkCmdBindVertexBuffers-pOffsets-00626", format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
-        }
-    }
-    Ok(())
+    let rules = [
+        "VUID-vkCmdBindVertexBuffers-pBuffers-00627",
+        "VUID-vkCmdBindVertexBuffers-pBuffers-00628",
+        "VUID-vkCmdBindVertexBuffers-pOffsets-00626",
+        "",
+    ];
+    check_vertex_bindings(recorder, buffers, offsets, &[], rules)
 }
 
 /// The checks of `vkCmdBindVertexBuffers2` that keep each binding inside its buffer.
@@ -857,28 +882,13 @@ pub(crate) fn cmd_bind_vertex_buffers2_checks<S: State>(
     offsets: &[vk::DeviceSize],
     sizes: &[vk::DeviceSize],
 ) -> Result<()> {
-    for (i, (b, &offset)) in buffers.iter().zip(offsets).enumerate() {
-        let record = used_buffer(
-            recorder,
-            b,
-            vk::BufferUsageFlags::VERTEX_BUFFER,
-            (
-                "VUID-vkCmdBindVertexBuffers2-pBuffers-03359",
-                "VUID-vkCmdBindVertexBuffers2-pBuffers-03360",
-            ),
-            &format!("pBuffers[{i}]"),
-        )?;
-        if offset >= record.size {
-            refuse("VUID-vkCmdBindVertexBuffers2-pOffsets-03357", format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
-        }
-        // VK_WHOLE_SIZE is the rest of the buffer.
-        if let Some(&size) = sizes.get(i).filter(|&&s| s != vk::WHOLE_SIZE) {
-            if size > record.size - offset {
-                refuse("VUID-vkCmdBindVertexBuffers2-pSizes-03358", format!("pOffsets[{i}] plus pSizes[{i}] must be at most the size of pBuffers[{i}] (offset = {offset}, size = {size}, size of the buffer = {})", record.size))?;
-            }
-        }
-    }
-    Ok(())
+    let rules = [
+        "VUID-vkCmdBindVertexBuffers2-pBuffers-03359",
+        "VUID-vkCmdBindVertexBuffers2-pBuffers-03360",
+        "VUID-vkCmdBindVertexBuffers2-pOffsets-03357",
+        "VUID-vkCmdBindVertexBuffers2-pSizes-03358",
+    ];
+    check_vertex_bindings(recorder, buffers, offsets, sizes, rules)
 }
 
 /// The checks of `vkCmdBindIndexBuffer` that keep the binding inside the buffer.
@@ -901,7 +911,7 @@ pub(crate) fn cmd_bind_index_buffer_checks<'b, S: State>(
             "VUID-vkCmdBindIndexBuffer-buffer-00433",
             "VUID-vkCmdBindIndexBuffer-buffer-00434",
         ),
-        "buffer",
+        &"buffer",
     )?;
     if offset >= record.size {
         refuse(
@@ -933,7 +943,7 @@ pub(crate) fn cmd_copy_buffer_checks<S: State>(
             "VUID-vkCmdCopyBuffer-srcBuffer-00118",
             "VUID-vkCmdCopyBuffer-srcBuffer-00119",
         ),
-        "srcBuffer",
+        &"srcBuffer",
     )?;
     check_buffer_use(
         &dst,
@@ -942,7 +952,7 @@ pub(crate) fn cmd_copy_buffer_checks<S: State>(
             "VUID-vkCmdCopyBuffer-dstBuffer-00120",
             "VUID-vkCmdCopyBuffer-dstBuffer-00121",
         ),
-        "dstBuffer",
+        &"dstBuffer",
     )?;
     for (i, r) in regions.iter().enumerate() {
         if r.size == 0 {
