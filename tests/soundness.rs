@@ -2705,3 +2705,186 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
     s.messages.abort_on_error(false);
     rec.end().expect("end");
 }
+
+/// Pipeline creation reads each specialization constant from the data at its map
+/// entry, and reads the stages, viewports and scissors through their arrays: an entry
+/// outside the data, or a count whose array is NULL (and not dynamic), is refused, and
+/// the layer names the same rule for the unchecked call.
+#[test]
+fn pipeline_creation_reads_inside_its_arrays() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let target = s.color_target(16, vk::ImageUsageFlags::empty());
+    let module = |bytes: &[u8]| d.create_shader_module_from_spirv(bytes).expect("module");
+    let vert = module(include_bytes!("../shaders/spv/test.vert.spv"));
+    let frag = module(include_bytes!("../shaders/spv/test.frag.spv"));
+    let comp = module(include_bytes!("../shaders/spv/test.comp.spv"));
+    // Layouts that match the shaders' interfaces: the compute shader's uniform and
+    // storage buffers, the fragment shader's push constant.
+    let bindings = [
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE),
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(1)
+            .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE),
+    ];
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let compute_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+        .expect("compute layout");
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 16,
+    }];
+    let layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+        .expect("graphics layout");
+    let entry = |offset, size| vk::SpecializationMapEntry {
+        constant_id: 0,
+        offset,
+        size,
+    };
+    let data = [0u8; 4];
+    let (past, long) = ([entry(8, 4)], [entry(0, 8)]);
+    let specs = [
+        (
+            "VUID-VkSpecializationInfo-offset-00773",
+            tuff::SpecializationInfo::new()
+                .map_entries(&past)
+                .data(&data),
+        ),
+        (
+            "VUID-VkSpecializationInfo-pMapEntries-00774",
+            tuff::SpecializationInfo::new()
+                .map_entries(&long)
+                .data(&data),
+        ),
+    ];
+    let compute = |spec: &tuff::SpecializationInfo<'_>, unchecked: bool| {
+        let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::COMPUTE)
+            .module(Some(&comp))
+            .specialization_info(Some(spec));
+        let info = [tuff::ComputePipelineCreateInfo::new(stage, &compute_layout)];
+        if unchecked {
+            // SAFETY: the layer skips the call, which breaks only the rule under test.
+            unsafe { d.create_compute_pipelines_unchecked(None, &info) }.map(|_| ())
+        } else {
+            d.create_compute_pipelines(None, &info).map(|_| ())
+        }
+    };
+    let stages = [
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::VERTEX)
+            .module(Some(&vert)),
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::FRAGMENT)
+            .module(Some(&frag)),
+    ];
+    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
+    let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
+        .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+    let viewport = tuff::PipelineViewportStateCreateInfo::new()
+        .viewport_count(1)
+        .scissor_count(1);
+    let raster = tuff::PipelineRasterizationStateCreateInfo::new().line_width(1.0);
+    let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
+        .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+    let blend_attachments = [vk::PipelineColorBlendAttachmentState {
+        color_write_mask: vk::ColorComponentFlags::RGBA,
+        ..Default::default()
+    }];
+    let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
+    let only_viewport = [vk::DynamicState::VIEWPORT];
+    let only_scissor = [vk::DynamicState::SCISSOR];
+    let both = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = |states| tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(states);
+    let (dyn_viewport, dyn_scissor, dyn_both) = (
+        dynamic(&only_viewport),
+        dynamic(&only_scissor),
+        dynamic(&both),
+    );
+    let dynamics = [&dyn_viewport, &dyn_scissor, &dyn_both];
+    let graphics = |which: usize, no_stages: bool| {
+        let dynamic_state = dynamics[which];
+        let info = tuff::GraphicsPipelineCreateInfo::new()
+            .stages(&stages)
+            .vertex_input_state(Some(&vertex_input))
+            .input_assembly_state(Some(&assembly))
+            .viewport_state(Some(&viewport))
+            .rasterization_state(Some(&raster))
+            .multisample_state(Some(&multisample))
+            .color_blend_state(Some(&blend))
+            .dynamic_state(Some(dynamic_state))
+            .layout(Some(&layout))
+            .render_pass(Some(&target.render_pass))
+            .subpass(0);
+        if no_stages {
+            info.stage_count(1)
+        } else {
+            info
+        }
+    };
+    let graphics_cases = [
+        (
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130",
+            graphics(1, false),
+        ),
+        (
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131",
+            graphics(0, false),
+        ),
+        (
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-06600",
+            graphics(2, true),
+        ),
+    ];
+    for (expected, spec) in &specs {
+        assert_eq!(vuid(compute(spec, false)), *expected);
+    }
+    for (expected, info) in &graphics_cases {
+        assert_eq!(vuid(d.create_graphics_pipelines(None, &[*info])), *expected);
+    }
+    let inside = [entry(0, 4)];
+    let good = tuff::SpecializationInfo::new()
+        .map_entries(&inside)
+        .data(&data);
+    compute(&good, false).expect("a constant inside the data");
+    let (_pipelines, r) = d
+        .create_graphics_pipelines(None, &[graphics(2, false)])
+        .expect("viewports and scissors both dynamic");
+    assert_eq!(r, vk::Result::SUCCESS);
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    for (expected, spec) in &specs {
+        assert!(compute(spec, true).is_err(), "the layer skipped the call");
+        assert_layer_reports(&s, expected);
+    }
+    // The layer names these two rules by the VUIDs they had before 1.3 (the same
+    // text, renumbered when VIEWPORT_WITH_COUNT joined it).
+    let layer_names = [
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00747",
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00748",
+    ];
+    for ((_, info), name) in graphics_cases.iter().zip(layer_names) {
+        // SAFETY: the layer skips the call, which breaks only the rule under test; the
+        // NULL arrays are never read by the driver.
+        let r = unsafe { d.create_graphics_pipelines_unchecked(None, &[*info]) };
+        assert!(r.is_err(), "the layer skipped the call");
+        assert_layer_reports(&s, name);
+    }
+    s.messages.abort_on_error(false);
+}

@@ -1710,3 +1710,147 @@ pub(crate) fn cmd_set_scissor_with_count_checks<S: State>(
         ),
     )
 }
+
+/// A shader stage's specialization map entries lie inside its data, which drivers read
+/// each constant from.
+fn check_specialization(
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+    at: &dyn core::fmt::Display,
+) -> Result<()> {
+    // SAFETY: the safe struct's setter stores a reference that outlives the create info.
+    let Some(info) = (unsafe { stage.p_specialization_info.as_ref() }) else {
+        return Ok(());
+    };
+    // SAFETY: the safe setter stores the entries with their count.
+    let entries = unsafe { crate::retention::raw_slice(info.p_map_entries, info.map_entry_count) };
+    let size = info.data_size as u64;
+    for (i, e) in entries.iter().enumerate() {
+        let offset = u64::from(e.offset);
+        if offset >= size {
+            refuse(
+                "VUID-VkSpecializationInfo-offset-00773",
+                format!("{at}: pMapEntries[{i}].offset must be less than dataSize (offset = {offset}, dataSize = {size})"),
+            )?;
+        }
+        if e.size as u64 > size - offset {
+            refuse(
+                "VUID-VkSpecializationInfo-pMapEntries-00774",
+                format!("{at}: pMapEntries[{i}].size must be at most dataSize minus offset (size = {}, offset = {offset}, dataSize = {size})", e.size),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCreateComputePipelines` that keep the driver inside the
+/// specialization data.
+pub(crate) fn create_compute_pipelines_checks(
+    create_infos: &[ComputePipelineCreateInfo<'_>],
+) -> Result<()> {
+    for (i, info) in create_infos.iter().enumerate() {
+        check_specialization(
+            &info.as_raw().stage,
+            &format_args!("pCreateInfos[{i}].stage"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkCreateGraphicsPipelines` that keep the driver from reading through
+/// a NULL array or past the specialization data: the stages are given, and the
+/// viewports and scissors are given or dynamic.
+pub(crate) fn create_graphics_pipelines_checks(
+    device: &Device,
+    create_infos: &[GraphicsPipelineCreateInfo<'_>],
+) -> Result<()> {
+    for (i, info) in create_infos.iter().enumerate() {
+        let raw = info.as_raw();
+        if raw.stage_count > 0 && raw.p_stages.is_null() {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-06600",
+                format!(
+                    "pCreateInfos[{i}]: stageCount is {} but pStages is not set",
+                    raw.stage_count
+                ),
+            )?;
+        }
+        // SAFETY: the safe setter stores the stages with their count.
+        let stages = unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) };
+        for (j, stage) in stages.iter().enumerate() {
+            check_specialization(stage, &format_args!("pCreateInfos[{i}].pStages[{j}]"))?;
+        }
+        // SAFETY: the safe setters store references that outlive the create info, and
+        // each array with its count.
+        let (viewport, dynamic, raster) = unsafe {
+            (
+                raw.p_viewport_state.as_ref(),
+                raw.p_dynamic_state.as_ref().map_or(&[][..], |d| {
+                    crate::retention::raw_slice(d.p_dynamic_states, d.dynamic_state_count)
+                }),
+                raw.p_rasterization_state.as_ref(),
+            )
+        };
+        let Some(viewport) = viewport else { continue };
+        let has =
+            |a: vk::DynamicState, b: vk::DynamicState| dynamic.iter().any(|d| *d == a || *d == b);
+        // With rasterization discarded (and not dynamically), the viewport state is
+        // not read.
+        let discarded = raster.is_some_and(|r| r.rasterizer_discard_enable == vk::TRUE)
+            && !has(
+                vk::DynamicState::RASTERIZER_DISCARD_ENABLE,
+                vk::DynamicState::RASTERIZER_DISCARD_ENABLE,
+            );
+        if discarded {
+            continue;
+        }
+        let max = limits(device).max_viewports;
+        let multi = device.live().features().multi_viewport == vk::TRUE;
+        for (count, what, limit_vuid, multi_vuid) in [
+            (
+                viewport.viewport_count,
+                "viewportCount",
+                "VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218",
+                "VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216",
+            ),
+            (
+                viewport.scissor_count,
+                "scissorCount",
+                "VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219",
+                "VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217",
+            ),
+        ] {
+            if !multi && count > 1 {
+                refuse(multi_vuid, format!("pCreateInfos[{i}]: without the multiViewport feature {what} must be at most 1 ({count})"))?;
+            }
+            if count > max {
+                refuse(
+                    limit_vuid,
+                    format!(
+                        "pCreateInfos[{i}]: {what} must be at most maxViewports ({count} > {max})"
+                    ),
+                )?;
+            }
+        }
+        let dynamic_viewports = has(
+            vk::DynamicState::VIEWPORT,
+            vk::DynamicState::VIEWPORT_WITH_COUNT,
+        );
+        if viewport.viewport_count > 0 && viewport.p_viewports.is_null() && !dynamic_viewports {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130",
+                format!("pCreateInfos[{i}]: the viewports are neither given ({} without an array) nor dynamic", viewport.viewport_count),
+            )?;
+        }
+        let dynamic_scissors = has(
+            vk::DynamicState::SCISSOR,
+            vk::DynamicState::SCISSOR_WITH_COUNT,
+        );
+        if viewport.scissor_count > 0 && viewport.p_scissors.is_null() && !dynamic_scissors {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131",
+                format!("pCreateInfos[{i}]: the scissors are neither given ({} without an array) nor dynamic", viewport.scissor_count),
+            )?;
+        }
+    }
+    Ok(())
+}

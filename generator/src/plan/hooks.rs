@@ -134,6 +134,9 @@ const VIEWPORTS: &str =
     "checks the first index plus the count against the device's maxViewports, read once";
 const MULTI_VIEWPORT: &str = "checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers";
 const SCISSORS: &str = "checks each scissor's offset is not negative and its ends do not overflow";
+const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
+const GIVEN_OR_DYNAMIC: &str =
+    "checks the viewports (scissors) are given or dynamic unless rasterization is discarded";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
@@ -576,6 +579,38 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdSetScissorWithCount-x-03399", How::Dynamic(SCISSORS)),
             ("VUID-vkCmdSetScissorWithCount-offset-03400", How::Dynamic(SCISSORS)),
             ("VUID-vkCmdSetScissorWithCount-offset-03401", How::Dynamic(SCISSORS)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateComputePipelines",
+        check: call("hooks::create_compute_pipelines_checks", &["create_infos"]),
+        settles: &[
+            ("VUID-VkSpecializationInfo-offset-00773", How::Dynamic(SPECIALIZATION)),
+            ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateGraphicsPipelines",
+        check: call("hooks::create_graphics_pipelines_checks", &["self", "create_infos"]),
+        settles: &[
+            (
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-06600",
+                How::Dynamic("checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone)"),
+            ),
+            (
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130",
+                How::Dynamic(GIVEN_OR_DYNAMIC),
+            ),
+            (
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131",
+                How::Dynamic(GIVEN_OR_DYNAMIC),
+            ),
+            ("VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216", How::Dynamic(MULTI_VIEWPORT)),
+            ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217", How::Dynamic(MULTI_VIEWPORT)),
+            ("VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218", How::Dynamic(VIEWPORTS)),
+            ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219", How::Dynamic(VIEWPORTS)),
         ],
         ..NONE
     },

@@ -1258,8 +1258,11 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkGraphicsPipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`: dynamic (checks the viewports (scissors) are given or dynamic unless rasterization is discarded)
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`: dynamic (checks the viewports (scissors) are given or dynamic unless rasterization is discarded)
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`: dynamic (checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 293 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 290 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
@@ -2492,14 +2495,18 @@ impl<'a> PipelineVertexInputStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineViewportStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
 - `VUID-VkPipelineViewportStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineViewportStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineViewportStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14.
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
 
-- 12: explicit rule; the wrappers do not check it
+- 8: explicit rule; the wrappers do not check it
 - 2: written by hand in the specification; not derived, so not checked*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -3141,10 +3148,12 @@ impl<'a> SparseMemoryBind<'a> {
 
 The rules are on [`VkSpecializationInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSpecializationInfo.html). Settled by the wrappers:
 
+- `VUID-VkSpecializationInfo-offset-00773`: dynamic (checks each specialization map entry lies inside the specialization data (graphics and compute pipelines))
+- `VUID-VkSpecializationInfo-pMapEntries-00774`: dynamic (checks each specialization map entry lies inside the specialization data (graphics and compute pipelines))
 - `VUID-VkSpecializationInfo-pMapEntries-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSpecializationInfo-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SpecializationInfo<'a> {
