@@ -2888,3 +2888,136 @@ fn pipeline_creation_reads_inside_its_arrays() {
     }
     s.messages.abort_on_error(false);
 }
+
+/// A render pass whose subpasses, dependencies or chained infos name attachments,
+/// subpasses or input attachments it does not have, and chained structs whose counts
+/// disagree with the struct they extend, would have the driver index past its arrays:
+/// each is refused, and the layer names the same rule for the unchecked call.
+#[test]
+fn indices_and_chained_counts_match_what_they_index() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let attachment = [vk::AttachmentDescription {
+        format: vk::Format::R8G8B8A8_UNORM,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::CLEAR,
+        final_layout: vk::ImageLayout::GENERAL,
+        ..Default::default()
+    }];
+    let color = |attachment| {
+        [vk::AttachmentReference {
+            attachment,
+            layout: vk::ImageLayout::GENERAL,
+        }]
+    };
+    let (good_ref, bad_ref) = (color(0), color(1));
+    let good = [tuff::SubpassDescription::new().color_attachments(&good_ref)];
+    let bad = [tuff::SubpassDescription::new().color_attachments(&bad_ref)];
+    let dependency = |src, dst| {
+        [vk::SubpassDependency {
+            src_subpass: src,
+            dst_subpass: dst,
+            ..Default::default()
+        }]
+    };
+    let (src_past, dst_past) = (dependency(1, 0), dependency(vk::SUBPASS_EXTERNAL, 1));
+    let masks = [1u32, 1];
+    let aspect = |subpass, input_attachment_index| {
+        [vk::InputAttachmentAspectReference {
+            subpass,
+            input_attachment_index,
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+        }]
+    };
+    let (subpass_past, input_past) = (aspect(3, 0), aspect(0, 1));
+    let base = || tuff::RenderPassCreateInfo::new().attachments(&attachment);
+    let mut multiview = tuff::RenderPassMultiviewCreateInfo::new().view_masks(&masks);
+    let mut aspects =
+        tuff::RenderPassInputAttachmentAspectCreateInfo::new().aspect_references(&subpass_past);
+    let mut inputs =
+        tuff::RenderPassInputAttachmentAspectCreateInfo::new().aspect_references(&input_past);
+    let cases = [
+        (
+            "VUID-VkRenderPassCreateInfo-attachment-00834",
+            base().subpasses(&bad),
+        ),
+        (
+            "VUID-VkRenderPassCreateInfo-pDependencies-06866",
+            base().subpasses(&good).dependencies(&src_past),
+        ),
+        (
+            "VUID-VkRenderPassCreateInfo-pDependencies-06867",
+            base().subpasses(&good).dependencies(&dst_past),
+        ),
+        (
+            "VUID-VkRenderPassCreateInfo-pNext-01928",
+            base().subpasses(&good).push_next(&mut multiview),
+        ),
+        (
+            "VUID-VkRenderPassCreateInfo-pNext-01926",
+            base().subpasses(&good).push_next(&mut aspects),
+        ),
+        (
+            "VUID-VkRenderPassCreateInfo-pNext-01927",
+            base().subpasses(&good).push_next(&mut inputs),
+        ),
+    ];
+    for (expected, info) in &cases {
+        assert_eq!(vuid(d.create_render_pass(info)), *expected);
+    }
+    d.create_render_pass(&base().subpasses(&good))
+        .expect("a render pass inside its arrays");
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    for (expected, info) in &cases {
+        // SAFETY: the layer skips the call, which breaks only the rule under test, so
+        // the driver never indexes past the arrays.
+        let r = unsafe { d.create_render_pass_unchecked(info) };
+        assert!(r.is_err(), "the layer skipped the call");
+        assert_layer_reports(&s, expected);
+    }
+    s.messages.abort_on_error(false);
+
+    // Chained counts: a device-group info with masks for command buffers the batch
+    // does not have, a variable-count info with counts for sets not allocated.
+    let masks = [1u32];
+    let mut group = tuff::DeviceGroupSubmitInfo::new().command_buffer_device_masks(&masks);
+    let batch = [tuff::SubmitInfo::new().push_next(&mut group)];
+    let done = fence(&s);
+    assert_eq!(
+        vuid(s.queue.queue_submit(&batch, &done)),
+        "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083"
+    );
+    let set_layout = d
+        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
+        .expect("set layout");
+    let pool = d
+        .create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1))
+        .expect("pool");
+    let layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let counts = [1u32, 1];
+    let mut variable =
+        tuff::DescriptorSetVariableDescriptorCountAllocateInfo::new().descriptor_counts(&counts);
+    let allocate = tuff::DescriptorSetAllocateInfo::new(&pool)
+        .set_layouts(&layouts)
+        .push_next(&mut variable);
+    assert_eq!(
+        vuid(d.allocate_descriptor_sets(&pool, &allocate)),
+        "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045"
+    );
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    // SAFETY: the layer skips the call, which breaks only the rule under test.
+    let r = unsafe { s.queue.queue_submit_unchecked(&batch, &done) };
+    assert!(r.is_err(), "the layer skipped the call");
+    assert_layer_reports(&s, "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083");
+    // SAFETY: as above.
+    let r = unsafe { d.allocate_descriptor_sets_unchecked(&pool, &allocate) };
+    assert!(r.is_err(), "the layer skipped the call");
+    assert_layer_reports(
+        &s,
+        "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045",
+    );
+    s.messages.abort_on_error(false);
+}

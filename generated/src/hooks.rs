@@ -83,6 +83,9 @@ pub(crate) fn queue_submit_checks(
         &submit_command_buffers(submits),
         &submission::SUBMIT,
     )?;
+    for (i, b) in submits.iter().enumerate() {
+        check_device_group_submit(i, b)?;
+    }
     for b in submits {
         // SAFETY: `b` is a safe struct.
         unsafe {
@@ -1853,4 +1856,196 @@ pub(crate) fn create_graphics_pipelines_checks(
         }
     }
     Ok(())
+}
+
+/// The struct of type `ty` in a safe struct's `pNext` chain, if it has one.
+///
+/// # Safety
+///
+/// `next` is the `pNext` of a safe struct: it chains only structs pushed through
+/// `push_next`, each a valid Vulkan struct of the Rust type its `sType` names; `T` is
+/// the type `ty` names.
+unsafe fn chained<'c, T>(
+    mut next: *const core::ffi::c_void,
+    ty: vk::StructureType,
+) -> Option<&'c T> {
+    // SAFETY: the caller's promise: every node starts with sType and pNext.
+    while let Some(node) = unsafe { next.cast::<vk::BaseInStructure<'_>>().as_ref() } {
+        if node.s_type == ty {
+            // SAFETY: the sType says the node is a `T`.
+            return Some(unsafe { &*next.cast::<T>() });
+        }
+        next = node.p_next.cast();
+    }
+    None
+}
+
+/// The checks of `vkQueueSubmit` on a chained `VkDeviceGroupSubmitInfo`: drivers read
+/// one device mask and index per command buffer and semaphore of the batch from it.
+fn check_device_group_submit(i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
+    // SAFETY: `b` is a safe struct's.
+    let group: Option<&vk::DeviceGroupSubmitInfo<'_>> =
+        unsafe { chained(b.p_next, vk::StructureType::DEVICE_GROUP_SUBMIT_INFO) };
+    let Some(g) = group else { return Ok(()) };
+    for (vuid, theirs, ours, what) in [
+        (
+            "VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082",
+            g.wait_semaphore_count,
+            b.wait_semaphore_count,
+            "waitSemaphoreCount",
+        ),
+        (
+            "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083",
+            g.command_buffer_count,
+            b.command_buffer_count,
+            "commandBufferCount",
+        ),
+        (
+            "VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084",
+            g.signal_semaphore_count,
+            b.signal_semaphore_count,
+            "signalSemaphoreCount",
+        ),
+    ] {
+        if theirs != ours {
+            refuse(vuid, format!("pSubmits[{i}]: the chained VkDeviceGroupSubmitInfo's {what} ({theirs}) must equal the batch's ({ours})"))?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCreateRenderPass` that keep the driver inside the render pass's
+/// arrays: attachment indices, dependency subpasses, and the chained multiview and
+/// input-attachment-aspect infos.
+pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) -> Result<()> {
+    let raw = create_info.as_raw();
+    let (attachments, subpass_count) = (raw.attachment_count, raw.subpass_count);
+    // SAFETY: the safe setters store each array with its count.
+    let (subpasses, dependencies) = unsafe {
+        (
+            crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count),
+            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+        )
+    };
+    let used = |a: u32| a != vk::ATTACHMENT_UNUSED && a >= attachments;
+    for (i, s) in subpasses.iter().enumerate() {
+        // SAFETY: the safe setters store each array with its count (and the resolve
+        // array with the color attachments' count).
+        let refs = unsafe {
+            let mut refs: Vec<u32> = Vec::new();
+            refs.extend(
+                crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count)
+                    .iter()
+                    .map(|r| r.attachment),
+            );
+            refs.extend(
+                crate::retention::raw_slice(s.p_color_attachments, s.color_attachment_count)
+                    .iter()
+                    .map(|r| r.attachment),
+            );
+            if !s.p_resolve_attachments.is_null() {
+                refs.extend(
+                    crate::retention::raw_slice(s.p_resolve_attachments, s.color_attachment_count)
+                        .iter()
+                        .map(|r| r.attachment),
+                );
+            }
+            refs.extend(s.p_depth_stencil_attachment.as_ref().map(|r| r.attachment));
+            refs.extend(crate::retention::raw_slice(
+                s.p_preserve_attachments,
+                s.preserve_attachment_count,
+            ));
+            refs
+        };
+        if let Some(a) = refs.into_iter().find(|a| used(*a)) {
+            refuse(
+                "VUID-VkRenderPassCreateInfo-attachment-00834",
+                format!(
+                    "pSubpasses[{i}] names attachment {a}, but the render pass has {attachments}"
+                ),
+            )?;
+        }
+    }
+    for (i, d) in dependencies.iter().enumerate() {
+        for (vuid, s, what) in [
+            (
+                "VUID-VkRenderPassCreateInfo-pDependencies-06866",
+                d.src_subpass,
+                "srcSubpass",
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo-pDependencies-06867",
+                d.dst_subpass,
+                "dstSubpass",
+            ),
+        ] {
+            if s != vk::SUBPASS_EXTERNAL && s >= subpass_count {
+                refuse(vuid, format!("pDependencies[{i}].{what} ({s}) must be less than subpassCount ({subpass_count})"))?;
+            }
+        }
+    }
+    // SAFETY: `raw` is a safe struct's.
+    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
+        )
+    };
+    if let Some(m) = multiview.filter(|m| m.subpass_count != 0 && m.subpass_count != subpass_count)
+    {
+        refuse(
+            "VUID-VkRenderPassCreateInfo-pNext-01928",
+            format!("the chained VkRenderPassMultiviewCreateInfo's subpassCount ({}) must be 0 or the render pass's ({subpass_count})", m.subpass_count),
+        )?;
+    }
+    // SAFETY: as above.
+    let aspects: Option<&vk::RenderPassInputAttachmentAspectCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO,
+        )
+    };
+    if let Some(a) = aspects {
+        // SAFETY: the safe setter stores the references with their count.
+        let refs =
+            unsafe { crate::retention::raw_slice(a.p_aspect_references, a.aspect_reference_count) };
+        for (i, r) in refs.iter().enumerate() {
+            let Some(s) = subpasses.get(r.subpass as usize) else {
+                return refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-01926",
+                    format!("pAspectReferences[{i}].subpass ({}) must be less than subpassCount ({subpass_count})", r.subpass),
+                );
+            };
+            if r.input_attachment_index >= s.input_attachment_count {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-01927",
+                    format!("pAspectReferences[{i}].inputAttachmentIndex ({}) must be less than subpass {}'s inputAttachmentCount ({})", r.input_attachment_index, r.subpass, s.input_attachment_count),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The check of `vkAllocateDescriptorSets` on a chained
+/// `VkDescriptorSetVariableDescriptorCountAllocateInfo`: drivers read one count per
+/// set from it.
+pub(crate) fn allocate_descriptor_sets_checks(
+    allocate_info: &DescriptorSetAllocateInfo<'_>,
+) -> Result<()> {
+    let raw = allocate_info.as_raw();
+    // SAFETY: `raw` is a safe struct's.
+    let variable: Option<&vk::DescriptorSetVariableDescriptorCountAllocateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_ALLOCATE_INFO,
+        )
+    };
+    match variable {
+        Some(v) if v.descriptor_set_count != 0 && v.descriptor_set_count != raw.descriptor_set_count => refuse(
+            "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045",
+            format!("the chained variable-count info's descriptorSetCount ({}) must be 0 or the allocation's ({})", v.descriptor_set_count, raw.descriptor_set_count),
+        ),
+        _ => Ok(()),
+    }
 }

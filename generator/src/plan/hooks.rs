@@ -137,6 +137,10 @@ const SCISSORS: &str = "checks each scissor's offset is not negative and its end
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
     "checks the viewports (scissors) are given or dynamic unless rasterization is discarded";
+const CHAINED_COUNT: &str =
+    "checks the chained struct's count against the count of the struct it extends";
+const RENDER_PASS_INDICES: &str =
+    "checks each attachment, subpass and input attachment index against the render pass's counts";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
@@ -159,6 +163,9 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkSubmitInfo-pWaitSemaphores-03239", How::Dynamic(TIMELINE_VALUES)),
             ("VUID-VkSubmitInfo-pNext-03240", How::User(UNPROVEN)),
             ("VUID-VkSubmitInfo-pNext-03241", How::Dynamic(TIMELINE_VALUES)),
+            ("VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082", How::Dynamic(CHAINED_COUNT)),
+            ("VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083", How::Dynamic(CHAINED_COUNT)),
+            ("VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084", How::Dynamic(CHAINED_COUNT)),
         ],
         ..NONE
     },
@@ -615,6 +622,19 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCreateRenderPass",
+        check: call("hooks::create_render_pass_checks", &["create_info"]),
+        settles: &[
+            ("VUID-VkRenderPassCreateInfo-attachment-00834", How::Dynamic(RENDER_PASS_INDICES)),
+            ("VUID-VkRenderPassCreateInfo-pDependencies-06866", How::Dynamic(RENDER_PASS_INDICES)),
+            ("VUID-VkRenderPassCreateInfo-pDependencies-06867", How::Dynamic(RENDER_PASS_INDICES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-01926", How::Dynamic(RENDER_PASS_INDICES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-01927", How::Dynamic(RENDER_PASS_INDICES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-01928", How::Dynamic(CHAINED_COUNT)),
+        ],
+        ..NONE
+    },
+    Special {
         command: "vkCmdCopyBuffer",
         check: call(
             "hooks::cmd_copy_buffer_checks",
@@ -714,6 +734,11 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkAllocateDescriptorSets",
+        check: call("hooks::allocate_descriptor_sets_checks", &["allocate_info"]),
+        settles: &[(
+            "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045",
+            How::Dynamic(CHAINED_COUNT),
+        )],
         created: call(
             "hooks::descriptor_sets_allocated",
             &["self", "created", "descriptor_pool", "allocate_info"],

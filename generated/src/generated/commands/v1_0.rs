@@ -97,6 +97,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        crate::hooks::allocate_descriptor_sets_checks(allocate_info)?;
         {
             let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
@@ -111,7 +112,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
 
 # Safety
 
-The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn allocate_descriptor_sets_unchecked<'a>(
         &self,
@@ -1318,6 +1319,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
         &self,
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
+        crate::hooks::create_render_pass_checks(create_info)?;
         {
             let r = self.validate_create_render_pass(create_info);
             r?;
@@ -1330,7 +1332,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
 
 # Safety
 
-The caller upholds the rules that [`Self::create_render_pass`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_render_pass`] checks at run time: `VUID-VkRenderPassCreateInfo-attachment-00834`, `VUID-VkRenderPassCreateInfo-pDependencies-06866`, `VUID-VkRenderPassCreateInfo-pDependencies-06867`, `VUID-VkRenderPassCreateInfo-pNext-01926`, `VUID-VkRenderPassCreateInfo-pNext-01927`, `VUID-VkRenderPassCreateInfo-pNext-01928`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn create_render_pass_unchecked<'a>(
         &self,
@@ -3219,7 +3221,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,

@@ -2673,6 +2673,9 @@ impl<'a> RenderPassBeginInfo<'a> {
 
 The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkRenderPassCreateInfo-attachment-00834`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo-pDependencies-06866`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo-pDependencies-06867`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
 - `VUID-VkRenderPassCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2681,8 +2684,11 @@ The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkRenderPassCreateInfo-pSubpasses-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-subpassCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkRenderPassCreateInfo-pNext-01926`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo-pNext-01927`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo-pNext-01928`: dynamic (checks the chained struct's count against the count of the struct it extends)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo<'a> {

@@ -463,12 +463,15 @@ unsafe impl<'a> Extends<RenderingInfo<'a>> for DeviceGroupRenderPassBeginInfo<'a
 
 The rules are on [`VkDeviceGroupSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSubmitInfo.html). Settled by the wrappers:
 
+- `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`: dynamic (checks the chained struct's count against the count of the struct it extends)
+- `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`: dynamic (checks the chained struct's count against the count of the struct it extends)
+- `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`: dynamic (checks the chained struct's count against the count of the struct it extends)
 - `VUID-VkDeviceGroupSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupSubmitInfo<'a> {

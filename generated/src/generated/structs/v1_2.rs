@@ -281,10 +281,11 @@ for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {}
 
 The rules are on [`VkDescriptorSetVariableDescriptorCountAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountAllocateInfo.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`: dynamic (checks the chained struct's count against the count of the struct it extends)
 - `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pDescriptorCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
