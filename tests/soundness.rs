@@ -3021,3 +3021,249 @@ fn indices_and_chained_counts_match_what_they_index() {
     );
     s.messages.abort_on_error(false);
 }
+
+/// A dispatch with no compute pipeline bound (the safe call that crashed lavapipe),
+/// or with no set bound where the pipeline's layout has one, and a pipeline bound at
+/// a bind point of the other kind, are refused; the recorder goes on and a correct
+/// dispatch runs. The layer names the same rules for the unchecked calls, which it
+/// then skips.
+#[test]
+fn draws_and_dispatches_need_their_pipeline_and_sets() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(16, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let compute = vk::PipelineBindPoint::COMPUTE;
+    let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    assert_eq!(
+        vuid(rec.cmd_dispatch(1, 1, 1)),
+        "VUID-vkCmdDispatch-None-02700"
+    );
+    assert_eq!(
+        vuid(rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute)),
+        "VUID-vkCmdBindPipeline-pipelineBindPoint-00780"
+    );
+    assert_eq!(
+        vuid(rec.cmd_bind_pipeline(compute, &p.graphics)),
+        "VUID-vkCmdBindPipeline-pipelineBindPoint-00779"
+    );
+    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
+    assert_eq!(
+        vuid(rec.cmd_dispatch(1, 1, 1)),
+        "VUID-vkCmdDispatch-None-02697"
+    );
+    rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
+        .expect("sets");
+    rec.cmd_dispatch(1, 1, 1)
+        .expect("a dispatch with its pipeline and set");
+    rec.end().expect("end");
+    let done = fence(&s);
+    submit(&s, &[&cb], &done).expect("submit");
+    wait(&s, &done);
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    let mut cb = s
+        .device
+        .allocate_command_buffers(
+            &pool,
+            &tuff::CommandBufferAllocateInfo::new(&pool).command_buffer_count(1),
+        )
+        .expect("command buffer")
+        .pop()
+        .expect("one");
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    // SAFETY: the layer skips each call, which breaks only the rule under test; the
+    // command buffer is never submitted.
+    unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdDispatch-None-02700");
+    // SAFETY: as above.
+    unsafe { rec.cmd_bind_pipeline_unchecked(vk::PipelineBindPoint::GRAPHICS, &p.compute) }
+        .expect("recorded");
+    // The layer labels these two rules by the pipeline's kind rather than the bind
+    // point, so each call is reported under the other's VUID.
+    assert_layer_reports(&s, "VUID-vkCmdBindPipeline-pipelineBindPoint-00779");
+    // SAFETY: as above.
+    unsafe { rec.cmd_bind_pipeline_unchecked(compute, &p.graphics) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdBindPipeline-pipelineBindPoint-00780");
+    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
+    // SAFETY: as above.
+    unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) }.expect("recorded");
+    assert_layer_reports(&s, "VUID-vkCmdDispatch-None-02697");
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
+}
+
+/// Every draw and dispatch command refuses to record with no pipeline bound, and the
+/// dispatches with no set bound where the layout has one; the layer names the same
+/// rules for the unchecked calls.
+#[test]
+fn every_draw_and_dispatch_needs_a_bound_pipeline() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(16, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = host_buffer(&s, 256, usage);
+    type Inside<'r> = tuff::Recorder<'r, tuff::InRenderPass>;
+    type Outside<'r> = tuff::Recorder<'r, tuff::Outside>;
+    type DrawCall<'a> = Box<dyn Fn(&mut Inside<'_>, bool) -> tuff::Result<()> + 'a>;
+    type DispatchCall<'a> = Box<dyn Fn(&mut Outside<'_>, bool) -> tuff::Result<()> + 'a>;
+    macro_rules! call {
+        ($rec:ident, $unchecked:ident, $f:ident, $g:ident ($($a:expr),*)) => {
+            if $unchecked {
+                // SAFETY: the layer skips the call, which breaks only the rule under
+                // test; the command buffer is never submitted.
+                unsafe { $rec.$g($($a),*) }
+            } else {
+                $rec.$f($($a),*)
+            }
+        };
+    }
+    let a = &args;
+    let draws: Vec<(&str, DrawCall<'_>)> = vec![
+        (
+            "VUID-vkCmdDraw-None-02700",
+            Box::new(|r, u| call!(r, u, cmd_draw, cmd_draw_unchecked(3, 1, 0, 0))),
+        ),
+        (
+            "VUID-vkCmdDrawIndexed-None-02700",
+            Box::new(|r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indexed,
+                    cmd_draw_indexed_unchecked(3, 1, 0, 0, 0)
+                )
+            }),
+        ),
+        (
+            "VUID-vkCmdDrawIndirect-None-02700",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indirect,
+                    cmd_draw_indirect_unchecked(a, 0, 1, 16)
+                )
+            }),
+        ),
+        (
+            "VUID-vkCmdDrawIndexedIndirect-None-02700",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indexed_indirect,
+                    cmd_draw_indexed_indirect_unchecked(a, 0, 1, 20)
+                )
+            }),
+        ),
+        (
+            "VUID-vkCmdDrawIndirectCount-None-02700",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indirect_count,
+                    cmd_draw_indirect_count_unchecked(a, 0, a, 64, 1, 16)
+                )
+            }),
+        ),
+        (
+            "VUID-vkCmdDrawIndexedIndirectCount-None-02700",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indexed_indirect_count,
+                    cmd_draw_indexed_indirect_count_unchecked(a, 0, a, 64, 1, 20)
+                )
+            }),
+        ),
+    ];
+    let dispatches: Vec<(&str, DispatchCall<'_>)> = vec![
+        (
+            "Dispatch",
+            Box::new(|r, u| call!(r, u, cmd_dispatch, cmd_dispatch_unchecked(1, 1, 1))),
+        ),
+        (
+            "DispatchIndirect",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_dispatch_indirect,
+                    cmd_dispatch_indirect_unchecked(a, 0)
+                )
+            }),
+        ),
+        (
+            "DispatchBase",
+            Box::new(|r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_dispatch_base,
+                    cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1)
+                )
+            }),
+        ),
+    ];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 16,
+                height: 16,
+            },
+        });
+    let clear = [vk::ClearValue::default()];
+    let begin = begin.clear_values(&clear);
+    for unchecked in [false, true] {
+        s.messages.abort_on_error(unchecked);
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        for (name, dispatch) in &dispatches {
+            let no_pipeline = format!("VUID-vkCmd{name}-None-02700");
+            if unchecked {
+                dispatch(&mut rec, true).expect("recorded");
+                assert_layer_reports(&s, &no_pipeline);
+            } else {
+                assert_eq!(vuid(dispatch(&mut rec, false)), no_pipeline);
+            }
+        }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+            .expect("bind");
+        for (name, dispatch) in &dispatches {
+            let no_set = format!("VUID-vkCmd{name}-None-02697");
+            if unchecked {
+                dispatch(&mut rec, true).expect("recorded");
+                assert_layer_reports(&s, &no_set);
+            } else {
+                assert_eq!(vuid(dispatch(&mut rec, false)), no_set);
+            }
+        }
+        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        for (expected, draw) in &draws {
+            if unchecked {
+                draw(&mut rec, true).expect("recorded");
+                assert_layer_reports(&s, expected);
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), *expected);
+            }
+        }
+        s.messages.abort_on_error(false);
+        rec.cmd_end_render_pass().end().expect("end");
+        if !unchecked {
+            assert_silent(&s.messages);
+        }
+    }
+}

@@ -10,7 +10,7 @@
 use crate::handles::*;
 use crate::recorder::{Recorder, State};
 use crate::retention::{
-    BindingRecord, BufferRecord, LayoutRecord, QueryPoolRecord, SetLayoutRecord,
+    BindingRecord, BufferRecord, LayoutRecord, PipelineRecord, QueryPoolRecord, SetLayoutRecord,
 };
 use crate::structs::*;
 use crate::submission::{self, SubmitRules};
@@ -18,6 +18,7 @@ use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
 use smallvec::SmallVec;
+use tuff_runtime::Vrc;
 
 /// The raw command buffers of `vkQueueSubmit` batches.
 fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
@@ -1231,15 +1232,17 @@ pub(crate) fn pipeline_layout_created(
             crate::retention::raw_slice(raw.p_set_layouts, raw.set_layout_count),
         )
     };
-    let set_dynamics = sets
+    let sets: Vec<Vrc<SetLayoutRecord>> = sets
         .iter()
-        .map(|s| device.live().set_layout(*s).map_or(0, |l| l.dynamics()))
+        .map(|s| device.live().set_layout(*s).unwrap_or_default())
         .collect();
+    let set_dynamics = sets.iter().map(|l| l.dynamics()).collect();
     device.live().pipeline_layout_created(
         layout.raw(),
         LayoutRecord {
             push_ranges: ranges.to_vec(),
             set_dynamics,
+            sets,
         },
     );
     layout
@@ -2048,4 +2051,138 @@ pub(crate) fn allocate_descriptor_sets_checks(
         ),
         _ => Ok(()),
     }
+}
+
+/// The device remembers each pipeline's bind point and layout.
+fn pipelines_created(
+    device: &Device,
+    pipelines: &[Pipeline],
+    bind_point: vk::PipelineBindPoint,
+    layouts: impl Iterator<Item = vk::PipelineLayout>,
+) {
+    for (p, layout) in pipelines.iter().zip(layouts) {
+        if let Some(layout) = device.live().pipeline_layout(layout) {
+            device
+                .live()
+                .pipeline_created(p.raw(), PipelineRecord { bind_point, layout });
+        }
+    }
+}
+
+/// [`pipelines_created`] for `vkCreateComputePipelines`.
+pub(crate) fn compute_pipelines_created(
+    device: &Device,
+    created: Vec<Pipeline>,
+    create_infos: &[ComputePipelineCreateInfo<'_>],
+) -> Vec<Pipeline> {
+    let layouts = create_infos.iter().map(|i| i.as_raw().layout);
+    pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, layouts);
+    created
+}
+
+/// [`pipelines_created`] for `vkCreateGraphicsPipelines`.
+pub(crate) fn graphics_pipelines_created(
+    device: &Device,
+    created: Vec<Pipeline>,
+    create_infos: &[GraphicsPipelineCreateInfo<'_>],
+) -> Vec<Pipeline> {
+    let layouts = create_infos.iter().map(|i| i.as_raw().layout);
+    pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, layouts);
+    created
+}
+
+/// The recorder remembers the pipeline bound at its bind point.
+pub(crate) fn cmd_bind_pipeline_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    pipeline_bind_point: vk::PipelineBindPoint,
+    pipeline: &Pipeline,
+) {
+    if let Some(i) = crate::recorder::Bound::index(pipeline_bind_point) {
+        recorder.bound[i].pipeline = recorder.device().live().pipeline(pipeline.raw());
+    }
+}
+
+/// The recorder remembers the layouts of the sets bound at their numbers.
+pub(crate) fn cmd_bind_descriptor_sets_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    pipeline_bind_point: vk::PipelineBindPoint,
+    first_set: u32,
+    descriptor_sets: &[&DescriptorSet],
+) {
+    let Some(i) = crate::recorder::Bound::index(pipeline_bind_point) else {
+        return;
+    };
+    let layouts: Vec<_> = descriptor_sets
+        .iter()
+        .map(|s| recorder.device().live().set_layout_of(s.raw()))
+        .collect();
+    let sets = &mut recorder.bound[i].sets;
+    for (n, layout) in layouts.into_iter().enumerate() {
+        let n = first_set as usize + n;
+        if sets.len() <= n {
+            sets.resize(n + 1, None);
+        }
+        sets[n] = layout;
+    }
+}
+
+/// A draw or dispatch has a pipeline bound at its bind point (02700), and a set
+/// bound at every set number of that pipeline's layout, of the same set layout
+/// (02697). Which sets the shaders use is not known here, so every set of the layout
+/// must be bound: a program that leaves an unused set unbound is refused too.
+pub(crate) fn bound_pipeline_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    bind_point: vk::PipelineBindPoint,
+    pipeline_vuid: &'static str,
+    sets_vuid: &'static str,
+) -> Result<()> {
+    let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
+        return Ok(());
+    };
+    let Some(pipeline) = &bound.pipeline else {
+        return refuse(
+            pipeline_vuid,
+            format!("no {bind_point:?} pipeline is bound"),
+        );
+    };
+    for (n, wanted) in pipeline.layout.sets.iter().enumerate() {
+        let ok = bound
+            .sets
+            .get(n)
+            .and_then(Option::as_ref)
+            .is_some_and(|got| Vrc::ptr_eq(got, wanted) || **got == **wanted);
+        if !ok {
+            refuse(
+                sets_vuid,
+                format!("set {n} of the bound pipeline's layout has no descriptor set of its set layout bound"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a pipeline bound at a bind point of another kind.
+pub(crate) fn cmd_bind_pipeline_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    pipeline_bind_point: vk::PipelineBindPoint,
+    pipeline: &Pipeline,
+) -> Result<()> {
+    let Some(record) = recorder.device().live().pipeline(pipeline.raw()) else {
+        return Ok(());
+    };
+    let vuid = match pipeline_bind_point {
+        vk::PipelineBindPoint::COMPUTE => "VUID-vkCmdBindPipeline-pipelineBindPoint-00779",
+        vk::PipelineBindPoint::GRAPHICS => "VUID-vkCmdBindPipeline-pipelineBindPoint-00780",
+        _ => return Ok(()),
+    };
+    if record.bind_point != pipeline_bind_point {
+        refuse(
+            vuid,
+            format!(
+                "a {:?} pipeline is bound at the {pipeline_bind_point:?} bind point",
+                record.bind_point
+            ),
+        )?;
+    }
+    Ok(())
 }

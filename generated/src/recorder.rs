@@ -48,6 +48,26 @@ impl Drop for Alive {
     }
 }
 
+/// What a recorder has bound at one bind point.
+#[derive(Default)]
+pub(crate) struct Bound {
+    /// The pipeline's record.
+    pub pipeline: Option<crate::retention::PipelineRecord>,
+    /// The set layouts of the sets bound, by set number.
+    pub sets: Vec<Option<Vrc<crate::retention::SetLayoutRecord>>>,
+}
+
+impl Bound {
+    /// The index of a bind point in [`Recorder::bound`], if the recorder tracks it.
+    pub(crate) fn index(bind_point: vk::PipelineBindPoint) -> Option<usize> {
+        match bind_point {
+            vk::PipelineBindPoint::GRAPHICS => Some(0),
+            vk::PipelineBindPoint::COMPUTE => Some(1),
+            _ => None,
+        }
+    }
+}
+
 /// A command buffer in the recording state `S`.
 ///
 /// ```no_run
@@ -79,6 +99,9 @@ pub struct Recorder<'c, S: State> {
     /// The queue flags of the pool's family, read once for the `cmdpool` check of
     /// every recorded command.
     queue_flags: vk::QueueFlags,
+    /// What is bound at each bind point (graphics, compute): the pipeline and the
+    /// layouts of the sets bound by number.
+    pub(crate) bound: [Bound; 2],
     /// The first failed check; later commands are not recorded and `end` returns it.
     poisoned: Option<Error>,
     /// Whether the open render pass instance was not begun because of a failed
@@ -210,6 +233,7 @@ impl CommandBuffer {
             layout: None,
             last_push: None,
             queue_flags,
+            bound: Default::default(),
             poisoned: None,
             skipped_begin: false,
             _state: PhantomData,
@@ -318,6 +342,7 @@ impl<'c, S: State> Recorder<'c, S> {
             layout: self.layout,
             last_push: self.last_push,
             queue_flags: self.queue_flags,
+            bound: self.bound,
             poisoned: self.poisoned,
             skipped_begin: self.skipped_begin,
             alive: self.alive,

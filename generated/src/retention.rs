@@ -67,6 +67,8 @@ pub(crate) struct Live {
     query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
     /// Each pipeline layout's push-constant ranges and sets.
     pipeline_layouts: Vutex<HashMap<u64, Vrc<LayoutRecord>>>,
+    /// Each pipeline's bind point and layout.
+    pipelines: Vutex<HashMap<u64, PipelineRecord>>,
     /// Each descriptor set layout's bindings.
     set_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// Each descriptor set's layout record.
@@ -100,6 +102,18 @@ pub(crate) struct LayoutRecord {
     pub push_ranges: Vec<vk::PushConstantRange>,
     /// For each set layout: its count of dynamic buffer descriptors.
     pub set_dynamics: Vec<u32>,
+    /// The set layouts, by set number.
+    pub sets: Vec<Vrc<SetLayoutRecord>>,
+}
+
+/// A live pipeline's bind point and layout, which the recorder checks draws and
+/// dispatches against.
+#[derive(Clone, Debug)]
+pub(crate) struct PipelineRecord {
+    /// Graphics or compute.
+    pub bind_point: vk::PipelineBindPoint,
+    /// The layout it was created with.
+    pub layout: Vrc<LayoutRecord>,
 }
 
 /// One binding of a descriptor set layout.
@@ -167,6 +181,7 @@ impl Default for Live {
             buffers: Vutex::new(HashMap::new()),
             query_pools: Vutex::new(HashMap::new()),
             pipeline_layouts: Vutex::new(HashMap::new()),
+            pipelines: Vutex::new(HashMap::new()),
             set_layouts: Vutex::new(HashMap::new()),
             sets_layouts: Vutex::new(HashMap::new()),
             limits: std::sync::OnceLock::new(),
@@ -273,6 +288,10 @@ impl Live {
             vk::ObjectType::QUERY_POOL => {
                 self.query_pools.lock().remove(&key.1);
             }
+            vk::ObjectType::PIPELINE => {
+                let record = self.pipelines.lock().remove(&key.1);
+                drop(record);
+            }
             vk::ObjectType::PIPELINE_LAYOUT => {
                 let record = self.pipeline_layouts.lock().remove(&key.1);
                 drop(record);
@@ -332,6 +351,17 @@ impl Live {
     /// The layout record of a live set.
     pub(crate) fn set_layout_of(&self, raw: vk::DescriptorSet) -> Option<Vrc<SetLayoutRecord>> {
         self.sets_layouts.lock().get(&raw.as_raw()).cloned()
+    }
+
+    /// Records a new pipeline's bind point and layout.
+    pub(crate) fn pipeline_created(&self, raw: vk::Pipeline, record: PipelineRecord) {
+        let old = self.pipelines.lock().insert(raw.as_raw(), record);
+        drop(old);
+    }
+
+    /// The record of a live pipeline made through the wrappers.
+    pub(crate) fn pipeline(&self, raw: vk::Pipeline) -> Option<PipelineRecord> {
+        self.pipelines.lock().get(&raw.as_raw()).cloned()
     }
 
     /// Records a new pipeline layout's push-constant ranges and sets.

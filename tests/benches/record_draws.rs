@@ -1,4 +1,5 @@
-//! Recording 10,000 draws, each with a 64-byte push constant, inside a render pass:
+//! Recording 10,000 draws, each with a 16-byte push constant, inside a render pass
+//! with the test pipeline bound (its viewport and scissor set):
 //! raw ash against tuff's `Recorder`, on the same lavapipe command pool. Each round
 //! resets the pool, records one buffer with ash and one with tuff (in an order that
 //! alternates), and the table reports the median time per draw and the geometric mean
@@ -7,6 +8,8 @@
 //! Run with `cargo bench -p tuff-tests --bench record_draws`, and with
 //! `--features multi_thread` for `Vrc` = `Arc` and real locks.
 
+#[path = "../common/pipelines.rs"]
+mod pipelines;
 #[path = "../common/tuff_setup.rs"]
 mod tuff_setup;
 #[path = "../common/vulkan.rs"]
@@ -29,16 +32,10 @@ fn main() {
     let d = &s.device;
     let target = s.color_target(64, vk::ImageUsageFlags::empty());
     let (render_pass, framebuffer) = (&target.render_pass, &target.framebuffer);
-    let ranges = [vk::PushConstantRange {
-        stage_flags: vk::ShaderStageFlags::VERTEX,
-        offset: 0,
-        size: 64,
-    }];
-    let layout = d
-        .create_pipeline_layout(
-            &tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&ranges),
-        )
-        .expect("layout");
+    // The test pipeline: a fragment push constant of 16 bytes, dynamic viewport and
+    // scissor.
+    let p = pipelines::pipelines(&s, &target);
+    let (layout, pipeline) = (&p.graphics_layout, &p.graphics);
     let pool = d
         .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
         .expect("pool");
@@ -59,7 +56,13 @@ fn main() {
             height: 64,
         },
     };
-    let push: [u8; 64] = [7; 64];
+    let push: [u8; 16] = [7; 16];
+    let viewport = vk::Viewport {
+        width: 64.0,
+        height: 64.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
 
     let record_ash = |cb: vk::CommandBuffer| {
         // SAFETY: the command buffer is reset with its pool before each recording, and
@@ -74,11 +77,14 @@ fn main() {
                 .render_area(area)
                 .clear_values(&clear);
             ash_device.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
+            ash_device.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, **pipeline);
+            ash_device.cmd_set_viewport(cb, 0, &[viewport]);
+            ash_device.cmd_set_scissor(cb, 0, &[area]);
             for i in 0..DRAWS {
                 ash_device.cmd_push_constants(
                     cb,
-                    *layout,
-                    vk::ShaderStageFlags::VERTEX,
+                    **layout,
+                    vk::ShaderStageFlags::FRAGMENT,
                     0,
                     black_box(&push),
                 );
@@ -96,10 +102,14 @@ fn main() {
             .render_area(area)
             .clear_values(&clear);
         let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+            .expect("bind");
+        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+        rec.cmd_set_scissor(0, &[area]).expect("scissor");
         for i in 0..DRAWS {
-            rec.cmd_push_constants(&layout, vk::ShaderStageFlags::VERTEX, 0, black_box(&push))
+            rec.cmd_push_constants(layout, vk::ShaderStageFlags::FRAGMENT, 0, black_box(&push))
                 .expect("recorded");
-            rec.cmd_draw(36, 1, black_box(i), 0);
+            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
         }
         rec.cmd_end_render_pass().end().expect("end");
     };

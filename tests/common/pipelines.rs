@@ -300,7 +300,8 @@ impl Pipelines {
                 .clear_values(&clear),
             vk::SubpassContents::INLINE,
         );
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics);
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics)
+            .expect("recorded");
         rec.cmd_set_viewport(
             0,
             &[vk::Viewport {
@@ -322,7 +323,7 @@ impl Pipelines {
             &color,
         )
         .expect("recorded");
-        rec.cmd_draw(3, 1, 0, 0);
+        rec.cmd_draw(3, 1, 0, 0).expect("recorded");
         let mut rec = rec.cmd_end_render_pass();
         if let Some(buffer) = readback {
             let to_transfer = [tuff::ImageMemoryBarrier::new(&target.image)
@@ -367,7 +368,8 @@ impl Pipelines {
                 }],
             );
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute);
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
+            .expect("recorded");
         rec.cmd_bind_descriptor_sets(
             vk::PipelineBindPoint::COMPUTE,
             &self.compute_layout,
@@ -376,7 +378,7 @@ impl Pipelines {
             &[],
         )
         .expect("recorded");
-        rec.cmd_dispatch(1, 1, 1);
+        rec.cmd_dispatch(1, 1, 1).expect("recorded");
         rec
     }
 }

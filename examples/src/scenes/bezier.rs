@@ -131,7 +131,7 @@ impl Scene for Bezier {
             view.time,
             view.extent,
         );
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline);
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
         rec.cmd_bind_descriptor_sets(
             vk::PipelineBindPoint::GRAPHICS,
             &self.layout,
@@ -145,7 +145,7 @@ impl Scene for Bezier {
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and
         // handle went missing; the speckle test caught it).
         for patch in 0..PATCHES.len() as u32 {
-            rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0);
+            rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0)?;
         }
         Ok(())
     }

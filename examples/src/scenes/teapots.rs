@@ -124,7 +124,7 @@ impl Scene for Teapots {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         view: &View,
     ) -> tuff::Result<()> {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline);
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
         rec.cmd_bind_descriptor_sets(
             vk::PipelineBindPoint::GRAPHICS,
             &self.pipeline_layout,
@@ -142,7 +142,7 @@ impl Scene for Teapots {
                 0,
                 bytemuck::bytes_of(&block),
             )?;
-            rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0);
+            rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0)?;
         }
         Ok(())
     }

@@ -25,10 +25,14 @@ use quote::{quote, ToTokens};
 /// `created` standing for the value the method would return without the hook.
 fn hook(c: &Call, created: &TokenStream) -> TokenStream {
     let path = c.path.split("::").map(ident);
+    // A binding is named; anything else (a path, a string literal) is Rust as written.
     let args = c.args.iter().map(|a| match *a {
         "self" => quote!(self),
         "created" => created.clone(),
-        a => ident(a).into_token_stream(),
+        a if a.chars().all(|c| c.is_alphanumeric() || c == '_') => ident(a).into_token_stream(),
+        a => a
+            .parse()
+            .unwrap_or_else(|_| quote!(compile_error!("a hook argument is not Rust"))),
     });
     let call = quote!(crate::#(#path)::*(#(#args),*));
     match c.promise {

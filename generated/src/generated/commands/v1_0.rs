@@ -572,32 +572,36 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
             return Err(Error::Vk(r));
         }
         Ok((
-            out
-                .into_iter()
-                .zip(create_infos.iter())
-                .map(|(raw, info)| Pipeline::from_raw(
-                    raw,
-                    self,
-                    {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        // SAFETY: the safe info stores every array with its length and chains only
-                        // structs pushed through `push_next`.
-                        unsafe {
-                            crate::reach::compute_pipeline_create_info(
-                                info.as_raw(),
-                                live,
-                                &mut kept,
-                            )
-                        };
-                        (!kept.is_empty())
-                            .then(|| {
-                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
-                            })
-                    },
-                    true,
-                ))
-                .collect(),
+            crate::hooks::compute_pipelines_created(
+                self,
+                out
+                    .into_iter()
+                    .zip(create_infos.iter())
+                    .map(|(raw, info)| Pipeline::from_raw(
+                        raw,
+                        self,
+                        {
+                            let live = self.live();
+                            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                            // SAFETY: the safe info stores every array with its length and chains
+                            // only structs pushed through `push_next`.
+                            unsafe {
+                                crate::reach::compute_pipeline_create_info(
+                                    info.as_raw(),
+                                    live,
+                                    &mut kept,
+                                )
+                            };
+                            (!kept.is_empty())
+                                .then(|| {
+                                    tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                                })
+                        },
+                        true,
+                    ))
+                    .collect(),
+                create_infos,
+            ),
             r,
         ))
     }
@@ -956,32 +960,36 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
             return Err(Error::Vk(r));
         }
         Ok((
-            out
-                .into_iter()
-                .zip(create_infos.iter())
-                .map(|(raw, info)| Pipeline::from_raw(
-                    raw,
-                    self,
-                    {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                        // SAFETY: the safe info stores every array with its length and chains only
-                        // structs pushed through `push_next`.
-                        unsafe {
-                            crate::reach::graphics_pipeline_create_info(
-                                info.as_raw(),
-                                live,
-                                &mut kept,
-                            )
-                        };
-                        (!kept.is_empty())
-                            .then(|| {
-                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
-                            })
-                    },
-                    true,
-                ))
-                .collect(),
+            crate::hooks::graphics_pipelines_created(
+                self,
+                out
+                    .into_iter()
+                    .zip(create_infos.iter())
+                    .map(|(raw, info)| Pipeline::from_raw(
+                        raw,
+                        self,
+                        {
+                            let live = self.live();
+                            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                            // SAFETY: the safe info stores every array with its length and chains
+                            // only structs pushed through `push_next`.
+                            unsafe {
+                                crate::reach::graphics_pipeline_create_info(
+                                    info.as_raw(),
+                                    live,
+                                    &mut kept,
+                                )
+                            };
+                            (!kept.is_empty())
+                                .then(|| {
+                                    tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                                })
+                        },
+                        true,
+                    ))
+                    .collect(),
+                create_infos,
+            ),
             r,
         ))
     }

@@ -9,13 +9,15 @@ impl<'c> Recorder<'c, Outside> {
 
 The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchBase.html). Settled by the wrappers:
 
+- `VUID-vkCmdDispatchBase-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
+- `VUID-vkCmdDispatchBase-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 65 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 63 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_base(
         &mut self,
@@ -25,12 +27,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 65 (exp
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
-    ) {
+    ) -> Result<()> {
+        crate::hooks::bound_pipeline_checks(
+            self,
+            vk::PipelineBindPoint::COMPUTE,
+            "VUID-vkCmdDispatchBase-None-02700",
+            "VUID-vkCmdDispatchBase-None-02697",
+        )?;
         {
             let r = self.validate_cmd_dispatch_base();
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -49,7 +55,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 65 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
@@ -59,20 +65,23 @@ The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_1().cmd_dispatch_base;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                base_group_x,
-                base_group_y,
-                base_group_z,
-                group_count_x,
-                group_count_y,
-                group_count_z,
-            )
-        };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    base_group_x,
+                    base_group_y,
+                    base_group_z,
+                    group_count_x,
+                    group_count_y,
+                    group_count_z,
+                )
+            };
+        }
+        Ok(())
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
