@@ -3225,6 +3225,19 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         });
     let clear = [vk::ClearValue::default()];
     let begin = begin.clear_values(&clear);
+    let viewport = vk::Viewport {
+        width: 16.0,
+        height: 16.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let scissor = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 16,
+            height: 16,
+        },
+    };
     for unchecked in [false, true] {
         s.messages.abort_on_error(unchecked);
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -3260,7 +3273,49 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(draw(&mut rec, false)), *expected);
             }
         }
+        // With the graphics pipeline bound: indexed draws need an index buffer, and a
+        // direct one reads only indices inside it.
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+            .expect("bind");
+        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+        rec.cmd_set_scissor(0, &[scissor]).expect("scissor");
+        let no_index: [(&str, &DrawCall<'_>); 3] = [
+            ("VUID-vkCmdDrawIndexed-None-07312", &draws[1].1),
+            ("VUID-vkCmdDrawIndexedIndirect-None-07312", &draws[3].1),
+            ("VUID-vkCmdDrawIndexedIndirectCount-None-07312", &draws[5].1),
+        ];
+        for (expected, draw) in no_index {
+            if unchecked {
+                draw(&mut rec, true).expect("recorded");
+                assert_layer_reports(&s, expected);
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), expected);
+            }
+        }
+        rec.cmd_bind_index_buffer(&args, 0, vk::IndexType::UINT32)
+            .expect("index buffer");
+        // 65 indices of 4 bytes from a buffer of 256.
+        let past = "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825";
+        if unchecked {
+            // SAFETY: as above.
+            unsafe { rec.cmd_draw_indexed_unchecked(65, 1, 0, 0, 0) }.expect("recorded");
+            assert_layer_reports(&s, past);
+        } else {
+            assert_eq!(vuid(rec.cmd_draw_indexed(65, 1, 0, 0, 0)), past);
+        }
         s.messages.abort_on_error(false);
+        if !unchecked {
+            let color = [0u8; 16];
+            rec.cmd_push_constants(
+                &p.graphics_layout,
+                vk::ShaderStageFlags::FRAGMENT,
+                0,
+                &color,
+            )
+            .expect("push");
+            rec.cmd_draw_indexed(64, 1, 0, 0, 0)
+                .expect("64 indices inside the buffer");
+        }
         rec.cmd_end_render_pass().end().expect("end");
         if !unchecked {
             assert_silent(&s.messages);

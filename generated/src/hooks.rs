@@ -2186,3 +2186,57 @@ pub(crate) fn cmd_bind_pipeline_checks<S: State>(
     }
     Ok(())
 }
+
+/// The recorder remembers the index buffer bound: its size, the offset and the index
+/// type, which indexed draws are checked against.
+pub(crate) fn cmd_bind_index_buffer_done<'b, S: State>(
+    recorder: &mut Recorder<'_, S>,
+    buffer: impl Into<Option<&'b Buffer>>,
+    offset: vk::DeviceSize,
+    index_type: vk::IndexType,
+) {
+    let size = buffer
+        .into()
+        .and_then(|b| recorder.device().live().buffer(b.raw()))
+        .map(|r| r.size);
+    recorder.bound[0].index = size.map(|size| (size, offset, index_type));
+}
+
+/// An indexed draw: a pipeline and its sets bound ([`bound_pipeline_checks`]), an index
+/// buffer bound (07312), and, for a direct draw (`range`: index count, first index and
+/// the rule), the indices it reads inside that buffer. Whether robustBufferAccess2 is
+/// enabled is not known here, so the range is checked whatever it is.
+pub(crate) fn indexed_draw_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    pipeline_vuid: &'static str,
+    sets_vuid: &'static str,
+    bound_vuid: &'static str,
+    range: Option<(u32, u32, &'static str)>,
+) -> Result<()> {
+    bound_pipeline_checks(
+        recorder,
+        vk::PipelineBindPoint::GRAPHICS,
+        pipeline_vuid,
+        sets_vuid,
+    )?;
+    let Some((size, offset, ty)) = recorder.bound[0].index else {
+        return refuse(bound_vuid, "no index buffer is bound".into());
+    };
+    let Some((count, first, vuid)) = range else {
+        return Ok(());
+    };
+    let index_size: u64 = match ty {
+        vk::IndexType::UINT16 => 2,
+        vk::IndexType::UINT32 => 4,
+        vk::IndexType::UINT8_EXT => 1,
+        _ => return Ok(()),
+    };
+    let end = index_size * (u64::from(first) + u64::from(count)) + offset;
+    if end > size {
+        refuse(
+            vuid,
+            format!("the draw reads indices up to byte {end} of an index buffer of {size} bytes (firstIndex = {first}, indexCount = {count}, offset = {offset})"),
+        )?;
+    }
+    Ok(())
+}

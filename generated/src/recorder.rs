@@ -55,6 +55,8 @@ pub(crate) struct Bound {
     pub pipeline: Option<crate::retention::PipelineRecord>,
     /// The set layouts of the sets bound, by set number.
     pub sets: Vec<Option<Vrc<crate::retention::SetLayoutRecord>>>,
+    /// The index buffer bound (graphics only): its size, the offset and index type.
+    pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
 }
 
 impl Bound {

@@ -147,6 +147,8 @@ const SETS_BOUND: &str = "checks a set of the right set layout is bound at every
 const BIND_POINT: &str =
     "checks the pipeline was created for the bind point, which the device remembers";
 const SETS_UNPROVEN: &str = "checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
+const INDEX_BOUND: &str = "checks an index buffer is bound, which the recorder tracks";
+const INDEX_RANGE: &str = "checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked)";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
@@ -173,6 +175,28 @@ macro_rules! bound {
                 ),
                 (concat!("VUID-", $command, "-None-02697"), $sets),
             ],
+            ..NONE
+        }
+    };
+}
+
+/// An indexed draw: [`bound!`]'s checks, an index buffer bound, and for a direct draw
+/// the indices it reads inside it (`range`, Rust for an `Option` the hook takes).
+macro_rules! indexed {
+    ($command:literal, $range:literal, $settles:expr) => {
+        Special {
+            command: $command,
+            check: call(
+                "hooks::indexed_draw_checks",
+                &[
+                    "self",
+                    concat!("\"VUID-", $command, "-None-02700\""),
+                    concat!("\"VUID-", $command, "-None-02697\""),
+                    concat!("\"VUID-", $command, "-None-07312\""),
+                    $range,
+                ],
+            ),
+            settles: $settles,
             ..NONE
         }
     };
@@ -464,6 +488,10 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdBindIndexBuffer",
+        after: call(
+            "hooks::cmd_bind_index_buffer_done",
+            &["self", "buffer", "offset", "index_type"],
+        ),
         check: call("hooks::cmd_bind_index_buffer_checks", &["self", "buffer", "offset"]),
         settles: &[
             ("VUID-vkCmdBindIndexBuffer-offset-00431", How::Dynamic(RANGE)),
@@ -702,11 +730,36 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     bound!("vkCmdDraw", GRAPHICS, How::User(SETS_UNPROVEN)),
-    bound!("vkCmdDrawIndexed", GRAPHICS, How::User(SETS_UNPROVEN)),
+    indexed!(
+        "vkCmdDrawIndexed",
+        "Some((index_count, first_index, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\"))",
+        &[
+            ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
+            ("VUID-vkCmdDrawIndexed-None-02697", How::User(SETS_UNPROVEN)),
+            ("VUID-vkCmdDrawIndexed-None-07312", How::Dynamic(INDEX_BOUND)),
+            ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
+        ]
+    ),
     bound!("vkCmdDrawIndirect", GRAPHICS, How::User(SETS_UNPROVEN)),
-    bound!("vkCmdDrawIndexedIndirect", GRAPHICS, How::User(SETS_UNPROVEN)),
+    indexed!(
+        "vkCmdDrawIndexedIndirect",
+        "None",
+        &[
+            ("VUID-vkCmdDrawIndexedIndirect-None-02700", How::Dynamic(PIPELINE_BOUND)),
+            ("VUID-vkCmdDrawIndexedIndirect-None-02697", How::User(SETS_UNPROVEN)),
+            ("VUID-vkCmdDrawIndexedIndirect-None-07312", How::Dynamic(INDEX_BOUND)),
+        ]
+    ),
     bound!("vkCmdDrawIndirectCount", GRAPHICS, How::User(SETS_UNPROVEN)),
-    bound!("vkCmdDrawIndexedIndirectCount", GRAPHICS, How::User(SETS_UNPROVEN)),
+    indexed!(
+        "vkCmdDrawIndexedIndirectCount",
+        "None",
+        &[
+            ("VUID-vkCmdDrawIndexedIndirectCount-None-02700", How::Dynamic(PIPELINE_BOUND)),
+            ("VUID-vkCmdDrawIndexedIndirectCount-None-02697", How::User(SETS_UNPROVEN)),
+            ("VUID-vkCmdDrawIndexedIndirectCount-None-07312", How::Dynamic(INDEX_BOUND)),
+        ]
+    ),
     bound!("vkCmdDispatch", COMPUTE, How::Dynamic(SETS_BOUND)),
     bound!("vkCmdDispatchIndirect", COMPUTE, How::Dynamic(SETS_BOUND)),
     bound!("vkCmdDispatchBase", COMPUTE, How::Dynamic(SETS_BOUND)),

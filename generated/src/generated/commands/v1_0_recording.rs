@@ -204,6 +204,7 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, index_type) };
+            crate::hooks::cmd_bind_index_buffer_done(self, buffer, offset, index_type);
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())
@@ -2520,16 +2521,18 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndexed-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexed-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
+- `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: dynamic (checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked))
 - `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexed-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 193.
+Left to the caller (listed one by one in the crate's `validation.json`): 191.
 
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 192: explicit rule; the wrappers do not check it*/
+- 190: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed(
         &mut self,
@@ -2539,11 +2542,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 193.
         vertex_offset: i32,
         first_instance: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::indexed_draw_checks(
             self,
-            vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDrawIndexed-None-02700",
             "VUID-vkCmdDrawIndexed-None-02697",
+            "VUID-vkCmdDrawIndexed-None-07312",
+            Some((
+                index_count,
+                first_index,
+                "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825",
+            )),
         )?;
         {
             let r = self.validate_cmd_draw_indexed();
@@ -2565,7 +2573,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 193.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -2598,6 +2606,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexedIndirect-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -2606,10 +2615,10 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 199.
+Left to the caller (listed one by one in the crate's `validation.json`): 198.
 
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 198: explicit rule; the wrappers do not check it*/
+- 197: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed_indirect(
         &mut self,
@@ -2618,11 +2627,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 199.
         draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::indexed_draw_checks(
             self,
-            vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDrawIndexedIndirect-None-02700",
             "VUID-vkCmdDrawIndexedIndirect-None-02697",
+            "VUID-vkCmdDrawIndexedIndirect-None-07312",
+            None,
         )?;
         {
             let r = self.validate_cmd_draw_indexed_indirect(buffer);
@@ -2638,7 +2648,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 199.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
