@@ -2716,41 +2716,10 @@ fn pipeline_creation_reads_inside_its_arrays() {
     let s = setup(true);
     let d = &s.device;
     let target = s.color_target(16, vk::ImageUsageFlags::empty());
-    let module = |bytes: &[u8]| d.create_shader_module_from_spirv(bytes).expect("module");
-    let vert = module(include_bytes!("../shaders/spv/test.vert.spv"));
-    let frag = module(include_bytes!("../shaders/spv/test.frag.spv"));
-    let comp = module(include_bytes!("../shaders/spv/test.comp.spv"));
-    // Layouts that match the shaders' interfaces: the compute shader's uniform and
-    // storage buffers, the fragment shader's push constant.
-    let bindings = [
-        tuff::DescriptorSetLayoutBinding::new()
-            .binding(0)
-            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
-            .descriptor_count(1)
-            .stage_flags(vk::ShaderStageFlags::COMPUTE),
-        tuff::DescriptorSetLayoutBinding::new()
-            .binding(1)
-            .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-            .descriptor_count(1)
-            .stage_flags(vk::ShaderStageFlags::COMPUTE),
-    ];
-    let set_layout = d
-        .create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-        )
-        .expect("set layout");
-    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let compute_layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
-        .expect("compute layout");
-    let push = [vk::PushConstantRange {
-        stage_flags: vk::ShaderStageFlags::FRAGMENT,
-        offset: 0,
-        size: 16,
-    }];
-    let layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
-        .expect("graphics layout");
+    // The test pipelines' shaders and the layouts that match their interfaces.
+    let p = pipelines::pipelines(&s, &target);
+    let (vert, frag, comp) = (&p.vert, &p.frag, &p.comp);
+    let (layout, compute_layout) = (&p.graphics_layout, &p.compute_layout);
     let entry = |offset, size| vk::SpecializationMapEntry {
         constant_id: 0,
         offset,
@@ -2775,9 +2744,9 @@ fn pipeline_creation_reads_inside_its_arrays() {
     let compute = |spec: &tuff::SpecializationInfo<'_>, unchecked: bool| {
         let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
             .stage(vk::ShaderStageFlags::COMPUTE)
-            .module(Some(&comp))
+            .module(Some(comp))
             .specialization_info(Some(spec));
-        let info = [tuff::ComputePipelineCreateInfo::new(stage, &compute_layout)];
+        let info = [tuff::ComputePipelineCreateInfo::new(stage, compute_layout)];
         if unchecked {
             // SAFETY: the layer skips the call, which breaks only the rule under test.
             unsafe { d.create_compute_pipelines_unchecked(None, &info) }.map(|_| ())
@@ -2788,10 +2757,10 @@ fn pipeline_creation_reads_inside_its_arrays() {
     let stages = [
         tuff::PipelineShaderStageCreateInfo::new(c"main")
             .stage(vk::ShaderStageFlags::VERTEX)
-            .module(Some(&vert)),
+            .module(Some(vert)),
         tuff::PipelineShaderStageCreateInfo::new(c"main")
             .stage(vk::ShaderStageFlags::FRAGMENT)
-            .module(Some(&frag)),
+            .module(Some(frag)),
     ];
     let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
     let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
@@ -2828,7 +2797,7 @@ fn pipeline_creation_reads_inside_its_arrays() {
             .multisample_state(Some(&multisample))
             .color_blend_state(Some(&blend))
             .dynamic_state(Some(dynamic_state))
-            .layout(Some(&layout))
+            .layout(Some(layout))
             .render_pass(Some(&target.render_pass))
             .subpass(0);
         if no_stages {
