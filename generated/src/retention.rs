@@ -9,7 +9,8 @@
 //! elements until it is rewritten or the set goes.
 
 use ash::vk::{self, Handle as _};
-use std::collections::HashMap;
+// Looked up on every call that keeps or checks an object: a fast hash for handles.
+use rustc_hash::FxHashMap as HashMap;
 use tuff_runtime::{HostSync, Retained, Vrc, Vutex, Vweak};
 
 /// The array a raw struct member points to.
@@ -172,21 +173,21 @@ pub(crate) struct BufferRecord {
 impl Default for Live {
     fn default() -> Self {
         Self {
-            objects: Vutex::new(HashMap::new()),
-            sets: Vutex::new(HashMap::new()),
-            memories: Vutex::new(HashMap::new()),
+            objects: Vutex::new(HashMap::default()),
+            sets: Vutex::new(HashMap::default()),
+            memories: Vutex::new(HashMap::default()),
             ledger: Default::default(),
-            queues: Vutex::new(HashMap::new()),
+            queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
-            buffers: Vutex::new(HashMap::new()),
-            query_pools: Vutex::new(HashMap::new()),
-            pipeline_layouts: Vutex::new(HashMap::new()),
-            pipelines: Vutex::new(HashMap::new()),
-            set_layouts: Vutex::new(HashMap::new()),
-            sets_layouts: Vutex::new(HashMap::new()),
+            buffers: Vutex::new(HashMap::default()),
+            query_pools: Vutex::new(HashMap::default()),
+            pipeline_layouts: Vutex::new(HashMap::default()),
+            pipelines: Vutex::new(HashMap::default()),
+            set_layouts: Vutex::new(HashMap::default()),
+            sets_layouts: Vutex::new(HashMap::default()),
             limits: std::sync::OnceLock::new(),
             features: std::sync::OnceLock::new(),
-            bound_memories: Vutex::new(HashMap::new()),
+            bound_memories: Vutex::new(HashMap::default()),
         }
     }
 }
