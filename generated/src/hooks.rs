@@ -421,6 +421,12 @@ fn raw_writes<'s>(writes: &'s [WriteDescriptorSet<'_>]) -> &'s [vk::WriteDescrip
     unsafe { core::slice::from_raw_parts(writes.as_ptr().cast(), writes.len()) }
 }
 
+/// The safe copy structs as ash's, which they are transparent over.
+fn raw_copies<'s>(copies: &'s [CopyDescriptorSet<'_>]) -> &'s [vk::CopyDescriptorSet<'s>] {
+    // SAFETY: `CopyDescriptorSet` is `repr(transparent)` over ash's struct.
+    unsafe { core::slice::from_raw_parts(copies.as_ptr().cast(), copies.len()) }
+}
+
 /// Refuses a write whose descriptor type selects an array that is not set, and a
 /// write or copy outside its sets' bindings: drivers index their descriptor arrays
 /// with the binding, array element and count.
@@ -459,11 +465,7 @@ pub(crate) fn update_descriptor_sets_checks(
             WRITE_SPAN,
         )?;
     }
-    // SAFETY: `CopyDescriptorSet` is `repr(transparent)` over ash's struct.
-    let copies: &[vk::CopyDescriptorSet<'_>] = unsafe {
-        core::slice::from_raw_parts(descriptor_copies.as_ptr().cast(), descriptor_copies.len())
-    };
-    for (i, c) in copies.iter().enumerate() {
+    for (i, c) in raw_copies(descriptor_copies).iter().enumerate() {
         let at = format!("pDescriptorCopies[{i}]");
         let src = layout_of(c.src_set)?;
         let dst = layout_of(c.dst_set)?;
@@ -604,10 +606,7 @@ pub(crate) fn update_descriptor_sets_done(
     descriptor_writes: &[WriteDescriptorSet<'_>],
     descriptor_copies: &[CopyDescriptorSet<'_>],
 ) {
-    // SAFETY: `CopyDescriptorSet` is `repr(transparent)` over ash's struct.
-    let copies = unsafe {
-        core::slice::from_raw_parts(descriptor_copies.as_ptr().cast(), descriptor_copies.len())
-    };
+    let copies = raw_copies(descriptor_copies);
     // SAFETY: the setters of the safe structs keep every array that is set as long as
     // its count, and `update_descriptor_sets_checks` refused a write whose type
     // selects an array that is not set.
@@ -683,14 +682,9 @@ pub(crate) fn buffer_created(
 
 /// The record of a buffer wrapper, which every buffer made through the wrappers has.
 fn buffer_record(device: &Device, buffer: &Buffer) -> Result<BufferRecord> {
-    device
-        .live()
-        .buffer(buffer.raw())
-        .ok_or_else(|| Error::Validation {
-            vuid: "VUID-vkCmdCopyBuffer-srcBuffer-parameter",
-            message: "the buffer was not created through the wrappers, so its size is unknown"
-                .into(),
-        })
+    device.live().buffer(buffer.raw()).ok_or(Error::Misuse(
+        "the buffer was not created through the wrappers, so its size is unknown",
+    ))
 }
 
 /// A refusal naming the rule, what it says, and the values that break it.
