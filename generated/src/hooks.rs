@@ -1260,7 +1260,7 @@ pub(crate) fn query_pool_created(
 }
 
 /// The physical device's limits, read once per device.
-fn limits(device: &Device) -> &vk::PhysicalDeviceLimits {
+pub(crate) fn limits(device: &Device) -> &vk::PhysicalDeviceLimits {
     device
         .live()
         .limits(|| device.parent().get_physical_device_properties().limits)

@@ -309,6 +309,18 @@ macro_rules! safe_struct {
             pub(crate) fn as_raw_mut(&mut self) -> &mut ash::vk::$name $(<$lt>)? {
                 &mut self.raw
             }
+            /// The ash struct, to change a value member that has no setter of the
+            /// shape wanted (a nested member, one bit of a flags value).
+            ///
+            /// # Safety
+            ///
+            /// Only plain value members may change: the pointer members, the counts
+            /// that go with them and `pNext` must stay as the setters left them, since
+            /// the safe struct's borrows and the checks rely on them.
+            #[inline]
+            pub unsafe fn raw_values_mut(&mut self) -> &mut ash::vk::$name $(<$lt>)? {
+                &mut self.raw
+            }
         }
         $(#[cfg($cfg)])?
         impl<'a> core::ops::Deref for $name<'a> {

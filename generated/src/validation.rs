@@ -59,6 +59,24 @@ impl<'a> Scope<'a> {
         origins.iter().any(|&i| self.exts.has(i))
     }
 
+    /// Whether a Vulkan 1.0 feature is enabled on the scope's device. Without a
+    /// device in scope the answer is yes, so a rule that applies only when a
+    /// feature is off is not enforced where the feature cannot be known.
+    #[inline]
+    pub(crate) fn feature(
+        &self,
+        get: impl FnOnce(&vk::PhysicalDeviceFeatures) -> vk::Bool32,
+    ) -> bool {
+        self.device
+            .is_none_or(|d| get(&d.live().features()) != vk::FALSE)
+    }
+
+    /// The limits of the scope's physical device, where the scope has a device.
+    #[inline]
+    pub(crate) fn limits(&self) -> Option<&'a vk::PhysicalDeviceLimits> {
+        self.device.map(crate::hooks::limits)
+    }
+
     /// Whether `raw` was created, allocated or retrieved from the scope's device.
     pub(crate) fn owned_by_device<H: vk::Handle + Copy>(&self, raw: H) -> bool {
         self.device.is_some_and(|d| d.objects().contains(raw))

@@ -2034,6 +2034,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -2054,6 +2055,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        for x in viewports.iter() {
+            crate::checks::check_viewport(x, s)?;
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_set_viewport_with_count`], run before the call.
@@ -2061,6 +2065,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -2080,6 +2085,9 @@ impl<'c, S: State> Recorder<'c, S> {
                     "`viewportCount` is 0".into(),
                 ),
             );
+        }
+        for x in viewports.iter() {
+            crate::checks::check_viewport(x, s)?;
         }
         Ok(())
     }

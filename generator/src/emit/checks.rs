@@ -17,7 +17,10 @@ use std::collections::{BTreeMap, BTreeSet};
 pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     let model = checker.cx.model;
     let mut needs: BTreeSet<String> = BTreeSet::new();
-    let mut fns = Vec::new();
+    // One file of struct checks per generated module (core version or extension),
+    // so no file grows past what a reader can navigate.
+    let mut fns: std::collections::BTreeMap<String, (Vec<String>, Vec<TokenStream>)> =
+        Default::default();
     for (name, checks) in &checker.struct_cache {
         needs.extend(checks.iter().flat_map(Check::needs));
         let f = ident(&format!("check_{}", snake(name)));
@@ -35,11 +38,13 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
         } else {
             quote!(_s)
         };
-        let doc = format!("The implicit rules of `{name}` that are checked at run time.");
-        fns.push(quote! {
+        let doc = format!("The rules of `{name}` that are checked at run time.");
+        let module = fns.entry(super::module_of(model, name)).or_default();
+        module.0.push(name.clone());
+        module.1.push(quote! {
             #[doc = #doc]
             #cfg
-            pub(crate) fn #f(v: &vk::#ty #lt, #scope_param: &Scope<'_>) -> Result<()> {
+            pub fn #f(v: &vk::#ty #lt, #scope_param: &Scope<'_>) -> Result<()> {
                 #(#codes)*
                 Ok(())
             }
@@ -78,20 +83,20 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
         //! The dynamic checks of implicit rules, compiled in with
         //! `runtime_implicit_validations`: the enabled versions and extensions here,
         //! the checks of enum and flags values in `values`, those of each struct in
-        //! `struct_checks`.
+        //! `structs`, one file per core version and extension.
         #![allow(dead_code, clippy::match_overlapping_arm, clippy::unnecessary_cast, clippy::match_same_arms)]
         use crate::validation::{fail, Scope};
         use crate::Result;
         use ash::vk;
-        mod struct_checks;
+        mod structs;
         mod values;
-        pub(crate) use struct_checks::*;
+        pub(crate) use structs::*;
         pub(crate) use values::*;
         #exts
         #members
         #chain
     };
-    vec![
+    let mut files = vec![
         ("checks/mod.rs".to_owned(), head),
         (
             "checks/values.rs".to_owned(),
@@ -102,15 +107,20 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
                 #(#values)*
             },
         ),
-        (
-            "checks/struct_checks.rs".to_owned(),
-            quote! {
-                //! The checks of each struct's implicit rules, over the ash struct.
-                use super::*;
-                #(#fns)*
-            },
-        ),
-    ]
+    ];
+    files.extend(super::split(
+        model,
+        "checks/structs",
+        "The checks of the rules of each struct",
+        quote! {
+            //! The checks of each struct's rules, over the ash struct, one module per
+            //! core version and extension.
+            use super::*;
+        },
+        fns,
+        true,
+    ));
+    files
 }
 
 /// The `pNext` walk: uniqueness of structure types, then each struct's own checks.
@@ -291,7 +301,7 @@ fn enum_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
         by_origin.entry(origins.indices(&o)).or_default().push(n);
     }
     let arms = by_origin.iter().map(|(idx, values)| {
-        let pats = ranges(values).into_iter().map(|(a, b)| {
+        let pats = super::explicit::ranges(values).into_iter().map(|(a, b)| {
             let (la, lb) = (Literal::i64_unsuffixed(a), Literal::i64_unsuffixed(b));
             if a == b {
                 quote!(#la)
@@ -348,18 +358,6 @@ fn flags_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
             }
         }
     }
-}
-
-/// Sorted values as inclusive ranges of consecutive numbers.
-fn ranges(values: &[i64]) -> Vec<(i64, i64)> {
-    let mut out: Vec<(i64, i64)> = Vec::new();
-    for &v in values {
-        match out.last_mut() {
-            Some((_, end)) if *end + 1 == v => *end = v,
-            _ => out.push((v, v)),
-        }
-    }
-    out
 }
 
 /// The code of one check. It may read `s` (the scope), the method's arguments or
@@ -526,6 +524,7 @@ pub fn render(check: &Check) -> TokenStream {
             };
             quote!(crate::checks::chain(v.p_next, s, #unique)?;)
         }
+        CheckKind::Explicit(r) => super::explicit::render(r),
     }
 }
 

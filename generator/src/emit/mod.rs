@@ -5,6 +5,7 @@
 mod api_info;
 pub mod checks;
 pub mod commands;
+pub mod explicit;
 pub mod handles;
 pub mod reach;
 pub mod structs;
@@ -283,6 +284,10 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
             contents: format(tokens, HEADER),
         });
     }
+    emission.files.push(OutputFile {
+        path: "oracle_cases.rs".into(),
+        contents: explicit::oracle_file(&plans.oracle),
+    });
     emission.files.push(OutputFile {
         path: "Cargo.toml".into(),
         contents: cargo_toml(cx.model),

@@ -197,6 +197,8 @@ pub enum CheckKind {
     /// The `pNext` chain: each node's checks, and no structure type twice when the
     /// rule's VUID is the check's.
     Chain,
+    /// An explicit rule the recognisers read, over the checked struct's members.
+    Explicit(Box<crate::validity::explicit::Recognised>),
 }
 
 impl Check {
@@ -214,6 +216,9 @@ impl Check {
     /// Whether the check reads the scope (`s`): the enabled versions and extensions,
     /// or which objects the device and instance own.
     pub fn uses_scope(&self) -> bool {
+        if let CheckKind::Explicit(r) = &self.kind {
+            return r.check.reads_device();
+        }
         !matches!(
             self.kind,
             CheckKind::FnPointerSet { .. }
@@ -263,6 +268,8 @@ impl Check {
 pub struct Checker<'c, 'm> {
     pub(crate) cx: &'c Context<'m>,
     pub(crate) rules: BTreeMap<&'m str, Vec<&'m DerivedRule>>,
+    /// The explicit rules the recognisers read, by struct.
+    pub(crate) explicit: BTreeMap<&'m str, Vec<&'m crate::validity::explicit::Recognised>>,
     /// Structs that have a check function.
     pub(crate) checked: BTreeSet<String>,
     /// Structs whose check function some emitted command reaches.
@@ -285,9 +292,14 @@ impl<'c, 'm> Checker<'c, 'm> {
         for r in &cx.validity.derived {
             rules.entry(r.item.as_str()).or_default().push(r);
         }
+        let mut explicit: BTreeMap<&str, Vec<_>> = BTreeMap::new();
+        for r in &cx.validity.recognised {
+            explicit.entry(r.item.as_str()).or_default().push(r);
+        }
         let mut checker = Checker {
             cx,
             rules,
+            explicit,
             checked: BTreeSet::new(),
             reachable: BTreeSet::new(),
             dynamic: BTreeMap::new(),
@@ -520,6 +532,14 @@ impl<'c, 'm> Checker<'c, 'm> {
                     kind,
                 });
             }
+        }
+        // Explicit rules the recognisers read.
+        for r in self.explicit.get(name).into_iter().flatten() {
+            out.push(Check {
+                vuid: Some(r.vuid.clone()),
+                what: format!("checks the rule as written (recogniser: {})", r.by),
+                kind: CheckKind::Explicit(Box::new((*r).clone())),
+            });
         }
         // Nested structs' own checks.
         for (m, shape) in &members {

@@ -10,6 +10,7 @@
 pub mod checks;
 pub mod commands;
 pub mod hooks;
+pub mod oracle;
 pub mod reach;
 pub mod settle;
 pub mod shape;
@@ -93,6 +94,8 @@ pub struct Plans<'c, 'm> {
     pub commands: Vec<(String, Result<commands::Plan, String>)>,
     /// The dynamic checks of every command and struct.
     pub checker: checks::Checker<'c, 'm>,
+    /// The oracle's cases, one per recognised rule it can break.
+    pub oracle: Vec<oracle::Case>,
     /// For every rule of the emitted API, how it is settled.
     pub records: Vec<Record>,
     /// The same records by the item (command or struct) each rule belongs to.
@@ -105,7 +108,8 @@ impl<'c, 'm> Plans<'c, 'm> {
         let commands = commands::plans(cx);
         let ok = planned(&commands);
         let checker = checks::Checker::new(cx, &ok);
-        let records = settle::records(cx, &checker, &commands);
+        let oracle = oracle::cases(cx, &checker);
+        let records = settle::records(cx, &checker, &commands, &oracle);
         let item_of: BTreeMap<&str, &str> = cx
             .validity
             .rules
@@ -125,6 +129,7 @@ impl<'c, 'm> Plans<'c, 'm> {
             cx,
             commands,
             checker,
+            oracle,
             records,
             by_item,
         }

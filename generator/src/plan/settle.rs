@@ -15,7 +15,9 @@ pub fn records(
     cx: &Context,
     checker: &Checker,
     commands: &[(String, Result<Plan, String>)],
+    oracle: &[super::oracle::Case],
 ) -> Vec<Record> {
+    let proven: std::collections::BTreeSet<&str> = oracle.iter().map(|c| c.vuid.as_str()).collect();
     let plans: BTreeMap<String, Result<Plan, String>> = commands.iter().cloned().collect();
     let derived: BTreeMap<&str, &crate::validity::DerivedRule> = cx
         .validity
@@ -33,7 +35,19 @@ pub fn records(
             (Category::Implicit, None) => Settlement::User(
                 "written by hand in the specification; not derived, so not checked".into(),
             ),
-            _ => explicit(&rule.vuid, &rule.text),
+            _ => match (
+                explicit(&rule.vuid, &rule.text),
+                checker.dynamic(&rule.vuid),
+            ) {
+                (Settlement::User(_), Some(what)) if proven.contains(rule.vuid.as_str()) => {
+                    Settlement::Dynamic(what.to_owned())
+                }
+                (Settlement::User(_), Some(_)) => Settlement::User(
+                    "checked by the safe methods in every build, but no oracle case breaks it yet"
+                        .into(),
+                ),
+                (settled, _) => settled,
+            },
         };
         out.push(Record {
             vuid: rule.vuid.clone(),

@@ -11,6 +11,11 @@ struct Entry<'a> {
     item: &'a str,
     condition: &'a str,
     emitted: bool,
+    /// In the emitted API and filed by validusage.json under a key that holds for
+    /// it: the rules of the report's stricter table. `None` where the keys carry
+    /// no conditions.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    strict: Option<bool>,
     status: &'a str,
     mechanism: &'a str,
     listed: bool,
@@ -70,6 +75,9 @@ pub(super) fn render(report: &Report) -> String {
             item: &s.rule.item,
             condition: &s.rule.condition,
             emitted: s.rule.emitted,
+            strict: s.rule.key_holds.map(|holds| {
+                holds && s.rule.emitted && (s.rule.listed || !report.validity.explicit_known)
+            }),
             status: s.settlement.status(),
             mechanism: s.settlement.mechanism(),
             listed: s.rule.listed,

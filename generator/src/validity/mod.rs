@@ -6,6 +6,7 @@
 //! as *creation* or *usage* ([`classify`]).
 
 pub mod classify;
+pub mod explicit;
 pub mod implicit;
 
 use crate::model::Model;
@@ -116,6 +117,8 @@ pub struct Validity {
     /// The derived implicit rules with the kind and field each is about, which the
     /// emitters read to settle them.
     pub derived: Vec<DerivedRule>,
+    /// The explicit rules of emitted structs that the recognisers read, as checks.
+    pub recognised: Vec<explicit::Recognised>,
 }
 
 /// Run the pass. Without `validusage`, only the derived implicit rules are known.
@@ -186,10 +189,12 @@ pub fn analyze(model: &Model, validusage: Option<&ValidUsage>) -> Validity {
             });
         }
     }
+    let recognised = explicit::recognise(model, &rules);
     Validity {
         rules,
         comparison,
         explicit_known: validusage.is_some(),
         derived,
+        recognised,
     }
 }

@@ -3,7 +3,7 @@
 //! The dynamic checks of implicit rules, compiled in with
 //! `runtime_implicit_validations`: the enabled versions and extensions here,
 //! the checks of enum and flags values in `values`, those of each struct in
-//! `struct_checks`.
+//! `structs`, one file per core version and extension.
 #![allow(
     dead_code,
     clippy::match_overlapping_arm,
@@ -13,9 +13,9 @@
 use crate::validation::{fail, Scope};
 use crate::Result;
 use ash::vk;
-mod struct_checks;
+mod structs;
 mod values;
-pub(crate) use struct_checks::*;
+pub(crate) use structs::*;
 pub(crate) use values::*;
 /// Names of the versions and extensions that define enum values: the
 /// versions first, in order, then the extensions.

@@ -258,7 +258,7 @@ The rules are on [`VkDebugUtilsObjectTagInfoEXT`'s reference page](https://regis
 - `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

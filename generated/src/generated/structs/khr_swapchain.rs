@@ -87,7 +87,10 @@ The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 30 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 30.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 29: explicit rule; the wrappers do not check it*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

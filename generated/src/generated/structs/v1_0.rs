@@ -232,6 +232,8 @@ impl<'a> BindSparseInfo<'a> {
 
 The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkBufferCreateInfo-size-00912`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkBufferCreateInfo-flags-00915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -240,7 +242,10 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 25.
+
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 22: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -520,7 +525,10 @@ The rules are on [`VkCommandBufferInheritanceInfo`'s reference page](https://reg
 - `VUID-VkCommandBufferInheritanceInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 4: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceInfo<'a> {
@@ -850,7 +858,10 @@ The rules are on [`VkDescriptorPoolCreateInfo`'s reference page](https://registr
 - `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 4: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorPoolCreateInfo<'a> {
@@ -1187,7 +1198,10 @@ The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.k
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkFramebufferCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 58 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 58.
+
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 52: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferCreateInfo<'a> {
@@ -1262,7 +1276,10 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`: dynamic (checks the viewports (scissors) are given or dynamic unless rasterization is discarded)
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`: dynamic (checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 290 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 290.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 289: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
@@ -1460,6 +1477,15 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
 
 The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkImageCreateInfo-extent-00944`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkImageCreateInfo-extent-00945`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkImageCreateInfo-mipLevels-00947`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkImageCreateInfo-arrayLayers-00948`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkImageCreateInfo-imageType-00957`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCreateInfo-imageType-00961`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCreateInfo-usage-00968`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCreateInfo-flags-00969`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageCreateInfo-initialLayout-00993`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1472,8 +1498,12 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkImageCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkImageCreateInfo-format-00943`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 117 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 107.
+
+- 13: checked by the safe methods in every build, but no oracle case breaks it yet
+- 94: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {
@@ -1656,7 +1686,10 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 90 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 90.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 89: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {
@@ -1828,7 +1861,10 @@ The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khro
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 42 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 42.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 41: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateInfo<'a> {
@@ -1927,7 +1963,10 @@ The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https:
 - `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 5: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineColorBlendStateCreateInfo<'a> {
@@ -1994,7 +2033,10 @@ The rules are on [`VkPipelineDepthStencilStateCreateInfo`'s reference page](http
 - `VUID-VkPipelineDepthStencilStateCreateInfo-front-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-back-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDepthStencilStateCreateInfo<'a> {
@@ -2109,7 +2151,10 @@ The rules are on [`VkPipelineInputAssemblyStateCreateInfo`'s reference page](htt
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 5: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineInputAssemblyStateCreateInfo<'a> {
@@ -2149,7 +2194,10 @@ The rules are on [`VkPipelineLayoutCreateInfo`'s reference page](https://registr
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 64 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 64.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 63: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineLayoutCreateInfo<'a> {
@@ -2196,7 +2244,8 @@ The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
-- 4: explicit rule; the wrappers do not check it
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: explicit rule; the wrappers do not check it
 - 1: not settable safely (a pointer whose length the registry gives as an expression)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -2257,7 +2306,10 @@ The rules are on [`VkPipelineRasterizationStateCreateInfo`'s reference page](htt
 - `VUID-VkPipelineRasterizationStateCreateInfo-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineRasterizationStateCreateInfo<'a> {
@@ -2348,7 +2400,10 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38.
+
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 35: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
@@ -2453,7 +2508,10 @@ The rules are on [`VkPipelineVertexInputStateCreateInfo`'s reference page](https
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineVertexInputStateCreateInfo<'a> {
@@ -2569,7 +2627,10 @@ The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 6: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueryPoolCreateInfo<'a> {
@@ -2731,6 +2792,10 @@ impl<'a> RenderPassCreateInfo<'a> {
 
 The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkSamplerCreateInfo-maxLod-01973`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkSamplerCreateInfo-anisotropyEnable-01070`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSamplerCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2742,7 +2807,10 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 42 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 37: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {
@@ -3108,7 +3176,10 @@ The rules are on [`VkSparseMemoryBind`'s reference page](https://registry.khrono
 - `VUID-VkSparseMemoryBind-memory-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSparseMemoryBind-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 8: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseMemoryBind<'a> {
@@ -3268,7 +3339,10 @@ The rules are on [`VkSubpassDescription`'s reference page](https://registry.khro
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 36: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription<'a> {

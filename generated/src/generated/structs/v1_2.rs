@@ -21,7 +21,10 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 28 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 28.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 27: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -95,7 +98,7 @@ The rules are on [`VkAttachmentDescriptionStencilLayout`'s reference page](https
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescriptionStencilLayout<'a> {
@@ -167,7 +170,7 @@ The rules are on [`VkAttachmentReferenceStencilLayout`'s reference page](https:/
 - `VUID-VkAttachmentReferenceStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReferenceStencilLayout<'a> {
@@ -1943,7 +1946,10 @@ The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khro
 - `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 34.
+
+- 5: checked by the safe methods in every build, but no oracle case breaks it yet
+- 29: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {
@@ -2018,7 +2024,10 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 44 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 44.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 42: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {

@@ -19,7 +19,10 @@ The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkBlitImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkBlitImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 47.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 45: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BlitImageInfo2<'a> {
@@ -179,6 +182,44 @@ impl<'a> BufferImageCopy2<'a> {
 
 The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryBarrier2.html). Settled by the wrappers:
 
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03900`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03901`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03902`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03903`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03904`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03905`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03906`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03907`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03909`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03910`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03911`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03912`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03913`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03914`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstStageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstStageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03900`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03901`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03902`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03903`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03904`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03905`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03906`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03907`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03909`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03910`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03911`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03912`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03913`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03914`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -186,8 +227,10 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferMemoryBarrier2-buffer-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkBufferMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 123 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 83 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -441,7 +484,10 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 44 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 44.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 43: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -505,7 +551,10 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 73 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 73.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 71: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {
@@ -574,7 +623,10 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 43.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 42: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
@@ -928,6 +980,44 @@ impl<'a> ImageCopy2<'a> {
 
 The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryBarrier2.html). Settled by the wrappers:
 
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03900`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03901`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03902`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03903`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03904`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03905`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03906`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03907`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03909`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03910`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03911`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03912`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03913`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03914`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstStageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstStageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03900`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03901`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03902`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03903`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03904`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03905`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03906`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03907`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03909`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03910`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03911`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03912`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03913`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03914`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageMemoryBarrier2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -939,8 +1029,10 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier2-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier2-subresourceRange-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 159 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 119 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -1079,13 +1171,53 @@ impl<'a> ImageResolve2<'a> {
 
 The rules are on [`VkMemoryBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryBarrier2.html). Settled by the wrappers:
 
+- `VUID-VkMemoryBarrier2-srcStageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcStageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03900`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03901`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03902`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03903`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03904`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03905`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03906`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03907`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03909`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03910`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03911`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03912`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03913`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03914`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-srcAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstStageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstStageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03900`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03901`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03902`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03903`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03904`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03905`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03906`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03907`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03909`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03910`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03911`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03912`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03913`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03914`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkMemoryBarrier2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 114 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 74 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryBarrier2<'a> {
@@ -1890,7 +2022,10 @@ The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.o
 - `VUID-VkRenderingInfo-pDepthAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 69 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 69.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 68: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingInfo<'a> {
@@ -1976,7 +2111,10 @@ The rules are on [`VkResolveImageInfo2`'s reference page](https://registry.khron
 - `VUID-VkResolveImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkResolveImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 35.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 33: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ResolveImageInfo2<'a> {
@@ -2041,7 +2179,10 @@ The rules are on [`VkSemaphoreSubmitInfo`'s reference page](https://registry.khr
 - `VUID-VkSemaphoreSubmitInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 12: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSubmitInfo<'a> {

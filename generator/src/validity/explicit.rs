@@ -1,0 +1,615 @@
+//! The recogniser pass: reads each explicit rule's text and turns the phrasings it
+//! understands into a typed check ([`Check`]) over the members of the rule's struct.
+//!
+//! Each recogniser is one phrasing of the specification, mined from the rule texts
+//! (the ones that cover the most rules first) and listed in [`RECOGNISERS`]; the
+//! report counts how many rules each one reads. A rule is recognised only when every
+//! name it mentions resolves in the model (a member of the struct, a value of that
+//! member's enum or flags type, a Vulkan 1.0 feature, a device limit), so a check
+//! never guesses.
+
+use crate::model::{Kind, Model};
+use regex::Regex;
+use std::sync::OnceLock;
+
+/// A rule the recognisers read: a check of the members of its struct.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Recognised {
+    /// The rule.
+    pub vuid: String,
+    /// The struct it is about.
+    pub item: String,
+    /// The recogniser that read it.
+    pub by: &'static str,
+    /// The rule as one line of plain text.
+    pub text: String,
+    /// What the rule asks.
+    pub check: Check,
+}
+
+/// A rule as a check: when every `when` holds, `must` must hold.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Check {
+    /// The conditions under which the rule applies.
+    pub when: Vec<Pred>,
+    /// What must hold.
+    pub must: Pred,
+}
+
+/// One value of an enum or bit of a flags type, by its registry name.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Value {
+    /// `VK_...`.
+    pub name: String,
+    /// Its number (the bit's value, for a flag).
+    pub number: i64,
+}
+
+/// A comparison.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Op {
+    /// `<`.
+    Lt,
+    /// `<=`.
+    Le,
+    /// `>`.
+    Gt,
+    /// `>=`.
+    Ge,
+    /// `==`.
+    Eq,
+    /// `!=`.
+    Ne,
+}
+
+/// The right-hand side of a comparison.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Rhs {
+    /// A number, as the text writes it.
+    Const(String),
+    /// Another member of the same struct.
+    Member(String),
+    /// A member of `VkPhysicalDeviceLimits`.
+    Limit(String),
+}
+
+/// A predicate over the struct's members and the device.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Pred {
+    /// A flags member has at least one of these bits set.
+    AnyBit {
+        /// The member.
+        member: String,
+        /// The bits.
+        bits: Vec<Value>,
+    },
+    /// A flags member has none of these bits set.
+    NoBit {
+        /// The member.
+        member: String,
+        /// The bits.
+        bits: Vec<Value>,
+    },
+    /// An enum member is one of these values.
+    OneOf {
+        /// The member.
+        member: String,
+        /// The values.
+        values: Vec<Value>,
+    },
+    /// An enum member is none of these values.
+    NoneOf {
+        /// The member.
+        member: String,
+        /// The values.
+        values: Vec<Value>,
+    },
+    /// A numeric member compared with a constant, another member or a limit.
+    Compare {
+        /// The member.
+        member: String,
+        /// How.
+        op: Op,
+        /// With what.
+        rhs: Rhs,
+        /// Compared as floating-point numbers (one side is a `float`).
+        float: bool,
+        /// The member is an unsigned integer.
+        unsigned: bool,
+    },
+    /// A Vulkan 1.0 feature (a member of `VkPhysicalDeviceFeatures`) is enabled on
+    /// the device.
+    Feature {
+        /// The feature.
+        name: String,
+        /// Enabled rather than not.
+        enabled: bool,
+    },
+}
+
+impl Pred {
+    /// The struct members the predicate reads.
+    pub fn members(&self) -> Vec<&str> {
+        match self {
+            Pred::AnyBit { member, .. }
+            | Pred::NoBit { member, .. }
+            | Pred::OneOf { member, .. }
+            | Pred::NoneOf { member, .. } => vec![member],
+            Pred::Compare { member, rhs, .. } => match rhs {
+                Rhs::Member(other) => vec![member, other],
+                _ => vec![member],
+            },
+            Pred::Feature { .. } => Vec::new(),
+        }
+    }
+}
+
+impl Check {
+    /// Whether the check reads the device: its features or limits.
+    pub fn reads_device(&self) -> bool {
+        self.when
+            .iter()
+            .chain(std::iter::once(&self.must))
+            .any(|p| {
+                matches!(
+                    p,
+                    Pred::Feature { .. }
+                        | Pred::Compare {
+                            rhs: Rhs::Limit(_),
+                            ..
+                        }
+                )
+            })
+    }
+
+    /// The struct members the check reads, each once, in order.
+    pub fn members(&self) -> Vec<&str> {
+        let mut out: Vec<&str> = Vec::new();
+        for m in self
+            .when
+            .iter()
+            .chain(std::iter::once(&self.must))
+            .flat_map(Pred::members)
+        {
+            if !out.contains(&m) {
+                out.push(m);
+            }
+        }
+        out
+    }
+}
+
+/// What a recogniser sees: the rule's text, normalised, and the struct's model.
+pub struct Input<'a> {
+    text: &'a str,
+    item: &'a str,
+    model: &'a Model,
+}
+
+type Recogniser = fn(&Input, &str) -> Option<Pred>;
+
+/// The recognisers: what a rule requires, each a phrasing of the specification
+/// with its name. A rule is `R` or `If C, C, and C, R` (`then` allowed), where each
+/// condition `C` is read by [`condition`].
+pub const RECOGNISERS: &[(&str, Recogniser)] = &[
+    ("flags must (not) include bits", flags_req),
+    ("value must (not) be one of", value_req),
+    (
+        "number compared with a constant, member or limit",
+        compare_req,
+    ),
+];
+
+/// Recognise every explicit rule of `rules` whose item is an emitted struct.
+pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
+    let mut out = Vec::new();
+    for rule in rules {
+        if rule.category == super::Category::Implicit
+            || !rule.emitted
+            || rule.key_holds == Some(false)
+            || model.category(&rule.item) != Some(Kind::Struct)
+        {
+            continue;
+        }
+        let text = plain(&rule.text);
+        let input = Input {
+            text: &text,
+            item: &rule.item,
+            model,
+        };
+        if let Some((by, check)) = read_rule(&input) {
+            out.push(Recognised {
+                vuid: rule.vuid.clone(),
+                item: rule.item.clone(),
+                by,
+                text: text.clone(),
+                check,
+            });
+        }
+    }
+    out
+}
+
+/// The rule's HTML as one line of text, with code in backticks.
+pub fn plain(html: &str) -> String {
+    static TAGS: OnceLock<[Regex; 3]> = OnceLock::new();
+    let [code, pname, tag] = TAGS.get_or_init(|| {
+        [
+            Regex::new(r"<code>([^<]*)</code>").expect("pattern"),
+            Regex::new(r"pname:([A-Za-z0-9_]+)").expect("pattern"),
+            Regex::new(r"<[^>]*>").expect("pattern"),
+        ]
+    });
+    let s = code.replace_all(html, "`$1`");
+    let s = pname.replace_all(&s, "`$1`");
+    let s = tag.replace_all(&s, "");
+    // `VkPhysicalDeviceLimits`::`maxX` is one name.
+    let s = s.replace("`::`", "::");
+    let s = s
+        .replace("&#43;", "+")
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    let s = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    s.trim_end_matches('.').to_owned()
+}
+
+fn re(cell: &'static OnceLock<Regex>, pattern: &str) -> &'static Regex {
+    cell.get_or_init(|| Regex::new(pattern).expect("recogniser pattern"))
+}
+
+/// A list of code spans: `` `A` ``, `` `A` or `B` ``, `` `A`, `B`, or `C` `` (the
+/// specification sometimes drops a comma).
+const LIST: &str = r"`[A-Z0-9_]+`(?:,? (?:or )?`[A-Z0-9_]+`)*";
+
+/// The names in a list matched by [`LIST`].
+fn names(list: &str) -> Vec<&str> {
+    list.split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|s| !s.is_empty())
+        .collect()
+}
+
+/// Split `If C, C, and C, R` into conditions and requirement, and read both.
+fn read_rule(input: &Input) -> Option<(&'static str, Check)> {
+    let (conds, req) = match input.text.strip_prefix("If ") {
+        None => (Vec::new(), input.text),
+        Some(rest) => split_conditions(rest)?,
+    };
+    let when = conds
+        .iter()
+        .map(|c| condition(input, c))
+        .collect::<Option<Vec<_>>>()?;
+    let (by, must) = RECOGNISERS
+        .iter()
+        .find_map(|(name, f)| f(input, req).map(|p| (*name, p)))?;
+    Some((by, Check { when, must }))
+}
+
+/// The conditions of `C, C, and C, R` and the requirement `R`: the requirement is
+/// the last comma-separated part that holds `must`.
+fn split_conditions(rest: &str) -> Option<(Vec<&str>, &str)> {
+    let at = rest.find(" must ")?;
+    let cut = rest[..at].rfind(", ")?;
+    let req = rest[cut + 2..].trim_start_matches("then ");
+    let mut conds = Vec::new();
+    for part in rest[..cut].split(", ") {
+        let part = part.trim_start_matches("and ");
+        for c in part.split(" and ") {
+            conds.push(c);
+        }
+    }
+    Some((conds, req))
+}
+
+/// A member path: a member of the struct, or of a struct member by value
+/// (`extent.width`), without pointers or arrays.
+fn member<'a>(input: &Input<'a>, path: &str) -> Option<&'a crate::model::Field> {
+    let mut ty = input.item;
+    let mut found = None;
+    for part in path.split('.') {
+        let t = input.model.types.get(ty)?;
+        let m = t.members.iter().find(|m| {
+            m.name == part && m.pointers == 0 && m.static_array.is_none() && m.bitfield.is_none()
+        })?;
+        ty = &m.type_name;
+        found = Some(m);
+    }
+    found
+}
+
+/// A condition: `` the `f` feature is (not) enabled ``, `` `flags` includes `A` ``,
+/// `` `flags` does not include `A` ``, `` `value` is (not) (equal to) `A` ``.
+fn condition(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<[Regex; 4]> = OnceLock::new();
+    let [feat, incl, excl, is] = R.get_or_init(|| {
+        [
+            Regex::new(r"^the `(\w+)` feature is (not )?enabled$"),
+            Regex::new(&format!(r"^`([\w.]+)` (?:includes|contains) ({LIST})$")),
+            Regex::new(&format!(
+                r"^`([\w.]+)` does not (?:include|contain) ({LIST})$"
+            )),
+            Regex::new(&format!(r"^`([\w.]+)` is (not )?(?:equal to )?({LIST})$")),
+        ]
+        .map(|r| r.expect("condition pattern"))
+    });
+    if let Some(c) = whole(feat, text) {
+        return Some(Pred::Feature {
+            name: feature(input, &c[0])?,
+            enabled: c[1].is_empty(),
+        });
+    }
+    if let Some(c) = whole(incl, text) {
+        let bits = flag_list(input, &c[0], &c[1])?;
+        return Some(Pred::AnyBit {
+            member: c[0].clone(),
+            bits,
+        });
+    }
+    if let Some(c) = whole(excl, text) {
+        let bits = flag_list(input, &c[0], &c[1])?;
+        return Some(Pred::NoBit {
+            member: c[0].clone(),
+            bits,
+        });
+    }
+    let c = whole(is, text)?;
+    value_pred(input, &c[0], c[1].is_empty(), &c[2])
+}
+
+/// An enum or `VkBool32` member is (not) one of a list, or a number member is (not)
+/// a constant.
+fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<Pred> {
+    let listed = names(list);
+    let m = member(input, path)?;
+    let member_name = path.to_owned();
+    if let [n] = listed.as_slice() {
+        if n.chars().all(|c| c.is_ascii_digit()) && numeric(&m.type_name) {
+            return Some(Pred::Compare {
+                member: member_name,
+                op: if positive { Op::Eq } else { Op::Ne },
+                rhs: Rhs::Const((*n).to_owned()),
+                float: m.type_name == "float",
+                unsigned: unsigned(&m.type_name),
+            });
+        }
+    }
+    let values = if m.type_name == "VkBool32" {
+        listed
+            .iter()
+            .map(|n| {
+                let number = match *n {
+                    "VK_FALSE" => 0,
+                    "VK_TRUE" => 1,
+                    _ => return None,
+                };
+                Some(Value {
+                    name: (*n).to_owned(),
+                    number,
+                })
+            })
+            .collect::<Option<Vec<_>>>()?
+    } else {
+        let (group, kind) = values_group(input, path)?;
+        (kind == Kind::Enum).then_some(())?;
+        resolve(input, group, &listed)?
+    };
+    Some(if positive {
+        Pred::OneOf {
+            member: member_name,
+            values,
+        }
+    } else {
+        Pred::NoneOf {
+            member: member_name,
+            values,
+        }
+    })
+}
+
+/// The values group (enum type, or the bits type of a flags type) of a member.
+fn values_group<'a>(input: &Input<'a>, path: &str) -> Option<(&'a str, Kind)> {
+    let m = member(input, path)?;
+    let t = input.model.types.get(&m.type_name)?;
+    match t.category? {
+        Kind::Enum => Some((&t.name, Kind::Enum)),
+        Kind::Bitmask => Some((t.bit_values.as_deref()?, Kind::Bitmask)),
+        _ => None,
+    }
+}
+
+/// Resolve names of values of `group`; `None` unless every one resolves.
+fn resolve(input: &Input, group: &str, names: &[&str]) -> Option<Vec<Value>> {
+    let known = input.model.enum_values.get(group)?;
+    names
+        .iter()
+        .map(|n| {
+            known.iter().any(|k| k == n).then_some(())?;
+            Some(Value {
+                name: (*n).to_owned(),
+                number: *input.model.enum_numbers.get(*n)?,
+            })
+        })
+        .collect()
+}
+
+/// The bits of a flags member that a list names.
+fn flag_list(input: &Input, path: &str, list: &str) -> Option<Vec<Value>> {
+    let (group, kind) = values_group(input, path)?;
+    (kind == Kind::Bitmask).then_some(())?;
+    resolve(input, group, &names(list))
+}
+
+/// The bits of `group` whose names match a `*` pattern, vendor suffixes allowed.
+fn glob(input: &Input, group: &str, pattern: &str) -> Option<Vec<Value>> {
+    let body = regex::escape(pattern).replace(r"\*", "[A-Z0-9_]*");
+    let re = Regex::new(&format!("^{body}(?:_[A-Z]+)?$")).ok()?;
+    let known = input.model.enum_values.get(group)?;
+    let found: Vec<&str> = known
+        .iter()
+        .filter(|k| re.is_match(k))
+        .map(String::as_str)
+        .collect();
+    (!found.is_empty()).then_some(())?;
+    resolve(input, group, &found)
+}
+
+/// A Vulkan 1.0 feature by name.
+fn feature(input: &Input, name: &str) -> Option<String> {
+    let f = input.model.types.get("VkPhysicalDeviceFeatures")?;
+    f.members
+        .iter()
+        .any(|m| m.name == name)
+        .then(|| name.to_owned())
+}
+
+fn whole(re: &Regex, text: &str) -> Option<Vec<String>> {
+    let c = re.captures(text)?;
+    Some(
+        c.iter()
+            .skip(1)
+            .map(|m| m.map_or(String::new(), |m| m.as_str().to_owned()))
+            .collect(),
+    )
+}
+
+/// `` `flags` must (not) contain/include `A`, `B`, or one of the
+/// `VK_PIPELINE_STAGE_*_SHADER_BIT` stages ``.
+fn flags_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        &format!(
+            r"^`([\w.]+)` must (not )?(?:contain|include) ({LIST})(?:,? or one of (?:the )?`([A-Z0-9_*]+)` stages)?$"
+        ),
+    );
+    let c = whole(r, text)?;
+    let mut bits = flag_list(input, &c[0], &c[2])?;
+    if !c[3].is_empty() {
+        let (group, _) = values_group(input, &c[0])?;
+        bits.extend(glob(input, group, &c[3])?);
+    }
+    let member = c[0].clone();
+    Some(if c[1].is_empty() {
+        Pred::AnyBit { member, bits }
+    } else {
+        Pred::NoBit { member, bits }
+    })
+}
+
+/// `` `value` must (not) be (equal to) `A` or `B` ``, `` `count` must be `1` ``,
+/// `` `x` must not be `0` ``.
+fn value_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        &format!(r"^`([\w.]+)` must (not )?be (?:equal to )?({LIST}),?$"),
+    );
+    let c = whole(r, text)?;
+    value_pred(input, &c[0], c[1].is_empty(), &c[2])
+}
+
+/// `` `x` must be greater than (or equal to) `0` ``, `` less than or equal to
+/// `VkPhysicalDeviceLimits::maxY` ``, `` less than or equal to `y` ``.
+fn compare_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^`([\w.]+)` must be (greater|less) than (or equal to )?`([\w:.]+)`$",
+    );
+    let c = whole(r, text)?;
+    let m = member(input, &c[0])?;
+    numeric(&m.type_name).then_some(())?;
+    let op = match (c[1].as_str(), c[2].is_empty()) {
+        ("greater", true) => Op::Gt,
+        ("greater", false) => Op::Ge,
+        ("less", true) => Op::Lt,
+        _ => Op::Le,
+    };
+    let rhs = &c[3];
+    let limits = input.model.types.get("VkPhysicalDeviceLimits")?;
+    let mut float = m.type_name == "float";
+    let mut limit = |name: &str| {
+        let l = limits
+            .members
+            .iter()
+            .find(|l| l.name == name && l.static_array.is_none() && numeric(&l.type_name))?;
+        float |= l.type_name == "float";
+        Some(Rhs::Limit(name.to_owned()))
+    };
+    let rhs = if rhs.chars().all(|ch| ch.is_ascii_digit() || ch == '.') {
+        Rhs::Const(rhs.clone())
+    } else if let Some(name) = rhs.strip_prefix("VkPhysicalDeviceLimits::") {
+        limit(name)?
+    } else if let Some(other) = member(input, rhs) {
+        numeric(&other.type_name).then_some(())?;
+        float |= other.type_name == "float";
+        Rhs::Member(rhs.clone())
+    } else {
+        // A bare limit name (`maxFramebufferWidth`) where the struct has no such
+        // member.
+        limit(rhs)?
+    };
+    Some(Pred::Compare {
+        member: c[0].clone(),
+        op,
+        rhs,
+        float,
+        unsigned: unsigned(&m.type_name),
+    })
+}
+
+/// A number as the text writes it, written as a Rust literal of the compared type
+/// (`0` of a `float` is `0.0`).
+pub fn number(text: &str, float: bool) -> String {
+    if float && !text.contains('.') {
+        format!("{text}.0")
+    } else {
+        text.to_owned()
+    }
+}
+
+/// Whether a value list names `VkBool32` constants rather than enum values.
+pub fn is_bool(values: &[Value]) -> bool {
+    values
+        .iter()
+        .all(|v| v.name == "VK_TRUE" || v.name == "VK_FALSE")
+}
+
+/// Whether a C type is an unsigned integer.
+pub fn unsigned(c_type: &str) -> bool {
+    matches!(c_type, "uint32_t" | "uint64_t" | "VkDeviceSize" | "size_t")
+}
+
+/// Whether a C type is a number the checks can compare.
+pub fn numeric(c_type: &str) -> bool {
+    matches!(
+        c_type,
+        "uint32_t" | "int32_t" | "uint64_t" | "int64_t" | "VkDeviceSize" | "size_t" | "float"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plain_text_keeps_code_and_drops_markup() {
+        let html = r##" If the <a href="#features-geometryShader"><code>geometryShader</code></a> feature is not enabled, pname:srcStageMask <strong class="purple">must</strong> not contain <code>VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT</code>."##;
+        assert_eq!(
+            plain(html),
+            "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`"
+        );
+    }
+
+    #[test]
+    fn lists_with_and_without_commas() {
+        assert_eq!(names("`A`, `B`, or `C`"), ["A", "B", "C"]);
+        assert_eq!(names("`A` `B`, or `C`"), ["A", "B", "C"]);
+        let r = Regex::new(&format!("^{LIST}$")).expect("pattern");
+        assert!(r.is_match("`A` or `B`"));
+        assert!(r.is_match("`A_BIT` `B_BIT`, or `C_BIT`"));
+        assert!(!r.is_match("`A` and `B`"));
+    }
+}
