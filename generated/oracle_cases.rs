@@ -4,7 +4,7 @@
 // tests/oracle.rs has a fixture for, the change to the fixture's smallest valid
 // value that breaks exactly that rule.
 oracle_cases! {
-    memory_barrier2: MemoryBarrier2 {
+    memory_barrier2: vk::MemoryBarrier2<'_> {
         "VUID-VkMemoryBarrier2-srcStageMask-03929" => |v, l| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
@@ -162,7 +162,7 @@ oracle_cases! {
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
-    buffer_memory_barrier2: BufferMemoryBarrier2 {
+    buffer_memory_barrier2: vk::BufferMemoryBarrier2<'_> {
         "VUID-VkBufferMemoryBarrier2-srcStageMask-03929" => |v, l| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
@@ -320,7 +320,7 @@ oracle_cases! {
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
-    image_memory_barrier2: ImageMemoryBarrier2 {
+    image_memory_barrier2: vk::ImageMemoryBarrier2<'_> {
         "VUID-VkImageMemoryBarrier2-srcStageMask-03929" => |v, l| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
@@ -478,7 +478,59 @@ oracle_cases! {
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
-    buffer_create_info: BufferCreateInfo {
+    attachment_description: vk::AttachmentDescription {
+        "VUID-VkAttachmentDescription-finalLayout-00843" => |v, l| {
+            v.final_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    subpass_description: vk::SubpassDescription<'_> {
+        "VUID-VkSubpassDescription-pipelineBindPoint-00844" => |v, l| {
+            v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
+        },
+    },
+    subpass_dependency: vk::SubpassDependency {
+        "VUID-VkSubpassDependency-srcStageMask-04090" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-VkSubpassDependency-srcStageMask-04091" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-VkSubpassDependency-dstStageMask-04090" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-VkSubpassDependency-dstStageMask-04091" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+    },
+    attachment_description2: vk::AttachmentDescription2<'_> {
+        "VUID-VkAttachmentDescription2-finalLayout-00843" => |v, l| {
+            v.final_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    subpass_description2: vk::SubpassDescription2<'_> {
+        "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l| {
+            v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
+        },
+    },
+    subpass_dependency2: vk::SubpassDependency2<'_> {
+        "VUID-VkSubpassDependency2-srcStageMask-04090" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-VkSubpassDependency2-srcStageMask-04091" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-VkSubpassDependency2-dstStageMask-04090" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-VkSubpassDependency2-dstStageMask-04091" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-VkSubpassDependency2-dependencyFlags-03092" => |v, l| {
+            v.dependency_flags &= !vk::DependencyFlags::from_raw(0x2);
+            v.view_offset = 1;
+        },
+    },
+    buffer_create_info: vk::BufferCreateInfo<'_> {
         "VUID-VkBufferCreateInfo-size-00912" => |v, l| {
             v.size = 0;
         },
@@ -486,7 +538,7 @@ oracle_cases! {
             v.flags |= vk::BufferCreateFlags::from_raw(0x1);
         },
     },
-    image_create_info: ImageCreateInfo {
+    image_create_info: vk::ImageCreateInfo<'_> {
         "VUID-VkImageCreateInfo-extent-00944" => |v, l| {
             v.extent.width = 0;
         },
@@ -501,11 +553,11 @@ oracle_cases! {
         },
         "VUID-VkImageCreateInfo-imageType-00957" => |v, l| {
             v.image_type = vk::ImageType::from_raw(1);
-            v.extent.depth = 1 + 1;
+            v.extent.depth = 2;
         },
         "VUID-VkImageCreateInfo-imageType-00961" => |v, l| {
             v.image_type = vk::ImageType::from_raw(2);
-            v.array_layers = 1 + 1;
+            v.array_layers = 2;
         },
         "VUID-VkImageCreateInfo-usage-00968" => |v, l| {
             v.usage |= vk::ImageUsageFlags::from_raw(0x8);
@@ -521,7 +573,7 @@ oracle_cases! {
             v.format = vk::Format::from_raw(0);
         },
     },
-    sampler_create_info: SamplerCreateInfo {
+    sampler_create_info: vk::SamplerCreateInfo<'_> {
         "VUID-VkSamplerCreateInfo-maxLod-01973" => |v, l| {
             v.max_lod = v.min_lod - 1.0;
         },
@@ -535,6 +587,69 @@ oracle_cases! {
         "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077" => |v, l| {
             v.unnormalized_coordinates = 1;
             v.compare_enable = 1;
+        },
+    },
+    push_constant_range: vk::PushConstantRange {
+        "VUID-VkPushConstantRange-size-00296" => |v, l| {
+            v.size = 0;
+        },
+    },
+    descriptor_pool_create_info: vk::DescriptorPoolCreateInfo<'_> {
+        "VUID-VkDescriptorPoolCreateInfo-maxSets-00301" => |v, l| {
+            v.max_sets = 0;
+        },
+    },
+    descriptor_pool_size: vk::DescriptorPoolSize {
+        "VUID-VkDescriptorPoolSize-descriptorCount-00302" => |v, l| {
+            v.descriptor_count = 0;
+        },
+    },
+    query_pool_create_info: vk::QueryPoolCreateInfo<'_> {
+        "VUID-VkQueryPoolCreateInfo-queryType-00791" => |v, l| {
+            v.query_type = vk::QueryType::from_raw(1);
+        },
+    },
+    vertex_input_binding_description: vk::VertexInputBindingDescription {
+        "VUID-VkVertexInputBindingDescription-binding-00618" => |v, l| {
+            v.binding = l.max_vertex_input_bindings as _;
+        },
+        "VUID-VkVertexInputBindingDescription-stride-00619" => |v, l| {
+            v.stride = (l.max_vertex_input_binding_stride as u64 + 1) as _;
+        },
+    },
+    pipeline_rasterization_state_create_info: vk::PipelineRasterizationStateCreateInfo<'_> {
+        "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782" => |v, l| {
+            v.depth_clamp_enable = 1;
+        },
+        "VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413" => |v, l| {
+            v.polygon_mode = vk::PolygonMode::from_raw(1);
+        },
+    },
+    pipeline_multisample_state_create_info: vk::PipelineMultisampleStateCreateInfo<'_> {
+        "VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784" => |v, l| {
+            v.sample_shading_enable = 1;
+        },
+        "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785" => |v, l| {
+            v.alpha_to_one_enable = 1;
+        },
+    },
+    pipeline_color_blend_state_create_info: vk::PipelineColorBlendStateCreateInfo<'_> {
+        "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606" => |v, l| {
+            v.logic_op_enable = 1;
+        },
+    },
+    pipeline_color_blend_attachment_state: vk::PipelineColorBlendAttachmentState {
+        "VUID-VkPipelineColorBlendAttachmentState-srcColorBlendFactor-00608" => |v, l| {
+            v.src_color_blend_factor = vk::BlendFactor::from_raw(15);
+        },
+        "VUID-VkPipelineColorBlendAttachmentState-dstColorBlendFactor-00609" => |v, l| {
+            v.dst_color_blend_factor = vk::BlendFactor::from_raw(15);
+        },
+        "VUID-VkPipelineColorBlendAttachmentState-srcAlphaBlendFactor-00610" => |v, l| {
+            v.src_alpha_blend_factor = vk::BlendFactor::from_raw(15);
+        },
+        "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611" => |v, l| {
+            v.dst_alpha_blend_factor = vk::BlendFactor::from_raw(15);
         },
     },
 }

@@ -32,13 +32,25 @@ struct Outcome {
 type Case = (&'static str, Box<dyn Fn(&Setup, &Limits) -> Outcome>);
 
 macro_rules! oracle_cases {
-    ($($fixture:ident: $ty:ident { $($vuid:literal => |$v:ident, $l:ident| $body:block),* $(,)? }),* $(,)?) => {
+    ($($fixture:ident: $ty:ty { $($vuid:literal => |$v:ident, $l:ident| $body:block),* $(,)? }),* $(,)?) => {
+        /// Each fixture unchanged, by name: a valid call.
+        fn fixtures() -> Vec<Case> {
+            vec![$(
+                (
+                    stringify!($fixture),
+                    Box::new(|s: &Setup, limits: &Limits| {
+                        $fixture(s, limits, &|_: &mut $ty, _: &Limits| {})
+                    }),
+                ),
+            )*]
+        }
+
         fn cases() -> Vec<Case> {
             vec![$($(
                 (
                     $vuid,
                     Box::new(|s: &Setup, limits: &Limits| {
-                        $fixture(s, limits, &|$v: &mut vk::$ty<'_>, $l: &Limits| {
+                        $fixture(s, limits, &|$v: &mut $ty, $l: &Limits| {
                             let _ = $l;
                             $body
                         })
@@ -212,6 +224,404 @@ fn image_memory_barrier2(
         s,
         &tuff::DependencyInfo::new().image_memory_barriers(&barriers),
     )
+}
+
+/// Creates with the safe method and, under the layer, with its `_unchecked` twin.
+macro_rules! create {
+    ($s:expr, $method:ident, $unchecked:ident, $($arg:expr),+) => {{
+        let safe = $s.device.$method($($arg),+).map(drop);
+        // SAFETY: as in `buffer_create_info`.
+        let layer = under_layer($s, || drop(unsafe { $s.device.$unchecked($($arg),+) }));
+        Outcome { safe, layer }
+    }};
+}
+
+fn descriptor_pool_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::DescriptorPoolCreateInfo<'_>, &Limits),
+) -> Outcome {
+    let sizes = [vk::DescriptorPoolSize {
+        ty: vk::DescriptorType::UNIFORM_BUFFER,
+        descriptor_count: 1,
+    }];
+    let mut info = tuff::DescriptorPoolCreateInfo::new()
+        .max_sets(1)
+        .pool_sizes(&sizes);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { info.raw_values_mut() }, limits);
+    create!(
+        s,
+        create_descriptor_pool,
+        create_descriptor_pool_unchecked,
+        &info
+    )
+}
+
+fn descriptor_pool_size(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::DescriptorPoolSize, &Limits),
+) -> Outcome {
+    let mut size = vk::DescriptorPoolSize {
+        ty: vk::DescriptorType::UNIFORM_BUFFER,
+        descriptor_count: 1,
+    };
+    change(&mut size, limits);
+    let sizes = [size];
+    let info = tuff::DescriptorPoolCreateInfo::new()
+        .max_sets(1)
+        .pool_sizes(&sizes);
+    create!(
+        s,
+        create_descriptor_pool,
+        create_descriptor_pool_unchecked,
+        &info
+    )
+}
+
+fn push_constant_range(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::PushConstantRange, &Limits),
+) -> Outcome {
+    let mut range = vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::VERTEX,
+        offset: 0,
+        size: 16,
+    };
+    change(&mut range, limits);
+    let ranges = [range];
+    let info = tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&ranges);
+    create!(
+        s,
+        create_pipeline_layout,
+        create_pipeline_layout_unchecked,
+        &info
+    )
+}
+
+fn query_pool_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::QueryPoolCreateInfo<'_>, &Limits),
+) -> Outcome {
+    let mut info = tuff::QueryPoolCreateInfo::new()
+        .query_type(vk::QueryType::OCCLUSION)
+        .query_count(1);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { info.raw_values_mut() }, limits);
+    create!(s, create_query_pool, create_query_pool_unchecked, &info)
+}
+
+/// The parts of a one-subpass render pass with one color attachment and one
+/// dependency, for a change to any of them.
+struct RenderPass1<'a> {
+    attachment: vk::AttachmentDescription,
+    subpass: tuff::SubpassDescription<'a>,
+    dependency: vk::SubpassDependency,
+}
+
+const COLOR_OUT: vk::PipelineStageFlags = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+
+fn render_pass(s: &Setup, edit: impl FnOnce(&mut RenderPass1<'_>)) -> Outcome {
+    let color = [vk::AttachmentReference {
+        attachment: 0,
+        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let mut parts = RenderPass1 {
+        attachment: vk::AttachmentDescription {
+            format: vk::Format::R8G8B8A8_UNORM,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::CLEAR,
+            store_op: vk::AttachmentStoreOp::STORE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: vk::ImageLayout::UNDEFINED,
+            final_layout: vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+            ..Default::default()
+        },
+        subpass: tuff::SubpassDescription::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color),
+        dependency: vk::SubpassDependency {
+            src_subpass: vk::SUBPASS_EXTERNAL,
+            dst_subpass: 0,
+            src_stage_mask: COLOR_OUT,
+            dst_stage_mask: COLOR_OUT,
+            src_access_mask: vk::AccessFlags::empty(),
+            dst_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+            dependency_flags: vk::DependencyFlags::empty(),
+        },
+    };
+    edit(&mut parts);
+    let attachments = [parts.attachment];
+    let subpasses = [parts.subpass];
+    let dependencies = [parts.dependency];
+    let info = tuff::RenderPassCreateInfo::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses)
+        .dependencies(&dependencies);
+    create!(s, create_render_pass, create_render_pass_unchecked, &info)
+}
+
+fn subpass_dependency(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::SubpassDependency, &Limits),
+) -> Outcome {
+    render_pass(s, |p| change(&mut p.dependency, limits))
+}
+
+fn attachment_description(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::AttachmentDescription, &Limits),
+) -> Outcome {
+    render_pass(s, |p| change(&mut p.attachment, limits))
+}
+
+fn subpass_description(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::SubpassDescription<'_>, &Limits),
+) -> Outcome {
+    // SAFETY: as in `buffer_create_info`.
+    render_pass(s, |p| change(unsafe { p.subpass.raw_values_mut() }, limits))
+}
+
+/// [`RenderPass1`] through `vkCreateRenderPass2`.
+struct RenderPass2<'a> {
+    attachment: tuff::AttachmentDescription2<'a>,
+    subpass: tuff::SubpassDescription2<'a>,
+    dependency: tuff::SubpassDependency2<'a>,
+}
+
+fn render_pass2(s: &Setup, edit: impl FnOnce(&mut RenderPass2<'_>)) -> Outcome {
+    let color = [tuff::AttachmentReference2::new()
+        .attachment(0)
+        .layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)];
+    let mut parts = RenderPass2 {
+        attachment: tuff::AttachmentDescription2::new()
+            .format(vk::Format::R8G8B8A8_UNORM)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .load_op(vk::AttachmentLoadOp::CLEAR)
+            .store_op(vk::AttachmentStoreOp::STORE)
+            .stencil_load_op(vk::AttachmentLoadOp::DONT_CARE)
+            .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
+            .initial_layout(vk::ImageLayout::UNDEFINED)
+            .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL),
+        subpass: tuff::SubpassDescription2::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color),
+        dependency: tuff::SubpassDependency2::new()
+            .src_subpass(vk::SUBPASS_EXTERNAL)
+            .dst_subpass(0)
+            .src_stage_mask(COLOR_OUT)
+            .dst_stage_mask(COLOR_OUT)
+            .dst_access_mask(vk::AccessFlags::COLOR_ATTACHMENT_WRITE),
+    };
+    edit(&mut parts);
+    let attachments = [parts.attachment];
+    let subpasses = [parts.subpass];
+    let dependencies = [parts.dependency];
+    let info = tuff::RenderPassCreateInfo2::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses)
+        .dependencies(&dependencies);
+    create!(s, create_render_pass2, create_render_pass2_unchecked, &info)
+}
+
+fn subpass_dependency2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::SubpassDependency2<'_>, &Limits),
+) -> Outcome {
+    // SAFETY: as in `buffer_create_info`.
+    render_pass2(s, |p| {
+        change(unsafe { p.dependency.raw_values_mut() }, limits)
+    })
+}
+
+fn attachment_description2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::AttachmentDescription2<'_>, &Limits),
+) -> Outcome {
+    // SAFETY: as in `buffer_create_info`.
+    render_pass2(s, |p| {
+        change(unsafe { p.attachment.raw_values_mut() }, limits)
+    })
+}
+
+fn subpass_description2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::SubpassDescription2<'_>, &Limits),
+) -> Outcome {
+    // SAFETY: as in `buffer_create_info`.
+    render_pass2(s, |p| change(unsafe { p.subpass.raw_values_mut() }, limits))
+}
+
+/// The fixed-function parts of the test graphics pipeline, for a change to any of
+/// them. The pipeline reads no vertex input; a binding is there only for its own
+/// cases (the vertex shader consumes no attribute, so the layer would warn of one).
+struct Graphics<'a> {
+    assembly: tuff::PipelineInputAssemblyStateCreateInfo<'a>,
+    raster: tuff::PipelineRasterizationStateCreateInfo<'a>,
+    multisample: tuff::PipelineMultisampleStateCreateInfo<'a>,
+    blend_attachment: vk::PipelineColorBlendAttachmentState,
+    blend: tuff::PipelineColorBlendStateCreateInfo<'a>,
+    binding: Option<vk::VertexInputBindingDescription>,
+}
+
+fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
+    let d = &s.device;
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let vert = d
+        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.vert.spv"))
+        .expect("vertex shader");
+    let frag = d
+        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.frag.spv"))
+        .expect("fragment shader");
+    // The test fragment shader reads 16 bytes of push constants.
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 16,
+    }];
+    let layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+        .expect("layout");
+    let stages = [
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::VERTEX)
+            .module(Some(&vert)),
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::FRAGMENT)
+            .module(Some(&frag)),
+    ];
+    let mut parts = Graphics {
+        assembly: tuff::PipelineInputAssemblyStateCreateInfo::new()
+            .topology(vk::PrimitiveTopology::TRIANGLE_LIST),
+        raster: tuff::PipelineRasterizationStateCreateInfo::new()
+            .polygon_mode(vk::PolygonMode::FILL)
+            .cull_mode(vk::CullModeFlags::NONE)
+            .line_width(1.0),
+        multisample: tuff::PipelineMultisampleStateCreateInfo::new()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_1),
+        blend_attachment: vk::PipelineColorBlendAttachmentState {
+            color_write_mask: vk::ColorComponentFlags::RGBA,
+            ..Default::default()
+        },
+        blend: tuff::PipelineColorBlendStateCreateInfo::new(),
+        binding: None,
+    };
+    edit(&mut parts);
+    let blend_attachments = [parts.blend_attachment];
+    let blend = parts.blend.attachments(&blend_attachments);
+    let bindings: Vec<_> = parts.binding.into_iter().collect();
+    let vertex_input =
+        tuff::PipelineVertexInputStateCreateInfo::new().vertex_binding_descriptions(&bindings);
+    let viewport = tuff::PipelineViewportStateCreateInfo::new()
+        .viewport_count(1)
+        .scissor_count(1);
+    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
+    let info = tuff::GraphicsPipelineCreateInfo::new()
+        .stages(&stages)
+        .vertex_input_state(Some(&vertex_input))
+        .input_assembly_state(Some(&parts.assembly))
+        .viewport_state(Some(&viewport))
+        .rasterization_state(Some(&parts.raster))
+        .multisample_state(Some(&parts.multisample))
+        .color_blend_state(Some(&blend))
+        .dynamic_state(Some(&dynamic))
+        .layout(Some(&layout))
+        .render_pass(Some(&target.render_pass))
+        .subpass(0);
+    let infos = [info];
+    create!(
+        s,
+        create_graphics_pipelines,
+        create_graphics_pipelines_unchecked,
+        None,
+        &infos
+    )
+}
+
+macro_rules! graphics_fixture {
+    ($name:ident, $ty:ty, |$p:ident| $part:expr) => {
+        fn $name(s: &Setup, limits: &Limits, change: &dyn Fn(&mut $ty, &Limits)) -> Outcome {
+            graphics(s, |$p| change($part, limits))
+        }
+    };
+    ($name:ident, $ty:ty, raw |$p:ident| $part:expr) => {
+        fn $name(s: &Setup, limits: &Limits, change: &dyn Fn(&mut $ty, &Limits)) -> Outcome {
+            // SAFETY: as in `buffer_create_info`.
+            graphics(s, |$p| change(unsafe { $part.raw_values_mut() }, limits))
+        }
+    };
+}
+
+graphics_fixture!(
+    pipeline_color_blend_attachment_state,
+    vk::PipelineColorBlendAttachmentState,
+    |p| &mut p.blend_attachment
+);
+graphics_fixture!(
+    pipeline_color_blend_state_create_info,
+    vk::PipelineColorBlendStateCreateInfo<'_>,
+    raw | p | p.blend
+);
+graphics_fixture!(
+    pipeline_rasterization_state_create_info,
+    vk::PipelineRasterizationStateCreateInfo<'_>,
+    raw | p | p.raster
+);
+graphics_fixture!(
+    pipeline_multisample_state_create_info,
+    vk::PipelineMultisampleStateCreateInfo<'_>,
+    raw | p | p.multisample
+);
+
+const BINDING: vk::VertexInputBindingDescription = vk::VertexInputBindingDescription {
+    binding: 0,
+    stride: 16,
+    input_rate: vk::VertexInputRate::VERTEX,
+};
+
+graphics_fixture!(
+    vertex_input_binding_description,
+    vk::VertexInputBindingDescription,
+    |p| p.binding.insert(BINDING)
+);
+
+/// Each fixture's value, unchanged, is valid: tuff accepts the call and the layer
+/// says nothing. Without this, a case could pass on a rule its fixture already breaks.
+#[test]
+fn every_fixture_is_valid_as_it_stands() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let limits = s.physical.get_physical_device_properties().limits;
+    let fixtures = fixtures();
+    assert!(
+        !fixtures.is_empty(),
+        "generated/oracle_cases.rs has no fixture"
+    );
+    for (name, run) in &fixtures {
+        let out = run(&s, &limits);
+        assert!(
+            out.safe.is_ok(),
+            "{name}: tuff refused the valid call: {:?}",
+            out.safe
+        );
+        assert!(
+            out.layer.is_empty(),
+            "{name}: the layer reported the valid call:\n{}",
+            out.layer.join("\n")
+        );
+    }
 }
 
 /// Every case breaks its rule: tuff refuses it with the rule's VUID, and the layer

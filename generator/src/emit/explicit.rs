@@ -176,12 +176,16 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
          // value that breaks exactly that rule.\n\
          oracle_cases! {\n",
     );
-    let mut items: Vec<&str> = cases.iter().map(|c| c.item.as_str()).collect();
+    let mut items: Vec<(&str, bool)> = cases
+        .iter()
+        .map(|c| (c.item.as_str(), c.lifetime))
+        .collect();
     items.dedup();
-    for item in items {
+    for (item, lifetime) in items {
         let name = crate::names::type_name(item);
+        let lt = if lifetime { "<'_>" } else { "" };
         let fixture = crate::plan::checks::snake(item);
-        let _ = writeln!(s, "    {fixture}: {name} {{");
+        let _ = writeln!(s, "    {fixture}: vk::{name}{lt} {{");
         for c in cases.iter().filter(|c| c.item == item) {
             let _ = writeln!(s, "        {:?} => |v, l| {{", c.vuid);
             for a in &c.assigns {

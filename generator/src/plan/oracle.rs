@@ -23,6 +23,21 @@ pub const FIXTURES: &[&str] = &[
     "VkMemoryBarrier2",
     "VkBufferMemoryBarrier2",
     "VkImageMemoryBarrier2",
+    "VkDescriptorPoolCreateInfo",
+    "VkDescriptorPoolSize",
+    "VkPushConstantRange",
+    "VkQueryPoolCreateInfo",
+    "VkSubpassDependency",
+    "VkSubpassDependency2",
+    "VkAttachmentDescription",
+    "VkAttachmentDescription2",
+    "VkSubpassDescription",
+    "VkSubpassDescription2",
+    "VkPipelineColorBlendAttachmentState",
+    "VkPipelineColorBlendStateCreateInfo",
+    "VkPipelineRasterizationStateCreateInfo",
+    "VkPipelineMultisampleStateCreateInfo",
+    "VkVertexInputBindingDescription",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -42,6 +57,9 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkImageCreateInfo-flags-00949", ONE_D),
     ("VUID-VkImageCreateInfo-flags-00950", ONE_D),
     ("VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076", "enabling anisotropy also breaks `anisotropyEnable-01070` on a device without `samplerAnisotropy`"),
+    ("VUID-VkPushConstantRange-offset-00294", "an offset at the limit leaves no room for a size, so `size-00298` breaks as well"),
+    ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430", "a patch list without tessellation shaders also breaks `VkGraphicsPipelineCreateInfo-topology-00737`"),
+    ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
@@ -116,6 +134,8 @@ pub struct Case {
     pub vuid: String,
     /// The struct (the fixture).
     pub item: String,
+    /// Whether its ash type has a lifetime (`vk::MemoryBarrier2<'_>`).
+    pub lifetime: bool,
     /// The changes, in order.
     pub assigns: Vec<Assign>,
 }
@@ -129,6 +149,10 @@ pub fn cases(cx: &Context, checker: &Checker) -> Vec<Case> {
         .filter(|r| FIXTURES.contains(&r.item.as_str()) && checker.reaches(&r.item))
         .filter(|r| !SKIP.iter().any(|(v, _)| *v == r.vuid))
         .filter_map(|r| case(cx.model, r))
+        .map(|c| Case {
+            lifetime: cx.facts.has_lifetime(&c.item),
+            ..c
+        })
         .collect()
 }
 
@@ -153,6 +177,7 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
     Some(Case {
         vuid: r.vuid.clone(),
         item: r.item.clone(),
+        lifetime: false,
         assigns,
     })
 }
@@ -261,12 +286,8 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
                 (Rhs::Const(c), Op::Gt | Op::Lt | Op::Ne) => {
                     crate::validity::explicit::number(c, *float)
                 }
-                (Rhs::Const(c), Op::Le | Op::Eq) => {
-                    format!("{} + {one}", crate::validity::explicit::number(c, *float))
-                }
-                (Rhs::Const(c), Op::Ge) if c != "0" => {
-                    format!("{} - {one}", crate::validity::explicit::number(c, *float))
-                }
+                (Rhs::Const(c), Op::Le | Op::Eq) => shifted(c, *float, 1)?,
+                (Rhs::Const(c), Op::Ge) if c != "0" => shifted(c, *float, -1)?,
                 (Rhs::Limit(l), Op::Lt) => format!("l.{} as _", crate::names::field(l)),
                 (Rhs::Limit(l), Op::Le) => {
                     format!("(l.{} as u64 + 1) as _", crate::names::field(l))
@@ -284,6 +305,17 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
         _ => return None,
     }
     Some(())
+}
+
+/// A constant of the text moved by `by`, as a literal of the compared type.
+fn shifted(c: &str, float: bool, by: i64) -> Option<String> {
+    if float {
+        let v: f64 = c.parse().ok()?;
+        Some(crate::validity::explicit::number(&format!("{}", v + by as f64), true))
+    } else {
+        let v: i64 = c.parse().ok()?;
+        Some((v + by).to_string())
+    }
 }
 
 /// A member path in Rust (`extent.width`).

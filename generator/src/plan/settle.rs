@@ -58,7 +58,11 @@ pub fn records(
 }
 
 fn explicit(vuid: &str, text: &str) -> Settlement {
-    let t = text.to_lowercase();
+    // Plain text without code marks: `If no `VkAllocationCallbacks` were provided`
+    // reads as `if no vkallocationcallbacks were provided`.
+    let t = crate::validity::explicit::plain(text)
+        .replace('`', "")
+        .to_lowercase();
     if let Some(how) = super::hooks::settled(vuid) {
         match how {
             How::Static(m) => Settlement::Static(m.into()),

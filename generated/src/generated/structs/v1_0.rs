@@ -852,16 +852,14 @@ impl<'a> DescriptorImageInfo<'a> {
 
 The rules are on [`VkDescriptorPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorPoolCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorPoolCreateInfo-maxSets-00301`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkDescriptorPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorPoolCreateInfo<'a> {
@@ -1957,16 +1955,14 @@ impl<'a> PipelineCacheCreateInfo<'a> {
 
 The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorBlendStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineColorBlendStateCreateInfo<'a> {
@@ -2236,15 +2232,16 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
 
 The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineMultisampleStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineMultisampleStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: explicit rule; the wrappers do not check it
 - 1: not settable safely (a pointer whose length the registry gives as an expression)*/
 #[repr(transparent)]
@@ -2298,6 +2295,7 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineRasterizationStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkPipelineRasterizationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineRasterizationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineRasterizationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2305,11 +2303,9 @@ The rules are on [`VkPipelineRasterizationStateCreateInfo`'s reference page](htt
 - `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineRasterizationStateCreateInfo<'a> {
@@ -2621,16 +2617,14 @@ impl<'a> PipelineViewportStateCreateInfo<'a> {
 
 The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkQueryPoolCreateInfo-queryType-00791`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkQueryPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueryPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkQueryPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueryPoolCreateInfo<'a> {
@@ -3338,10 +3332,11 @@ The rules are on [`VkSubpassDescription`'s reference page](https://registry.khro
 - `VUID-VkSubpassDescription-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkSubpassDescription-pipelineBindPoint-00844`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38.
+Left to the caller (listed one by one in the crate's `validation.json`): 37.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 36: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -8,6 +8,7 @@ use super::*;
 
 The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescription2.html). Settled by the wrappers:
 
+- `VUID-VkAttachmentDescription2-finalLayout-00843`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAttachmentDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -21,10 +22,7 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 28.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 27: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -1937,6 +1935,11 @@ impl<'a> SubpassBeginInfo<'a> {
 
 The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDependency2.html). Settled by the wrappers:
 
+- `VUID-VkSubpassDependency2-srcStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkSubpassDependency2-srcStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkSubpassDependency2-dstStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkSubpassDependency2-dstStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkSubpassDependency2-dependencyFlags-03092`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDependency2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDependency2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassDependency2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1946,10 +1949,7 @@ The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khro
 - `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 34.
-
-- 5: checked by the safe methods in every build, but no oracle case breaks it yet
-- 29: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {
@@ -2023,10 +2023,11 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 44.
+Left to the caller (listed one by one in the crate's `validation.json`): 43.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 42: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
