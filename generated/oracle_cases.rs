@@ -4,6 +4,67 @@
 // tests/oracle.rs has a fixture for, the change to the fixture's smallest valid
 // value that breaks exactly that rule.
 oracle_cases! {
+    cmd_set_event: args::CmdSetEvent {
+        "VUID-vkCmdSetEvent-stageMask-04090" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-vkCmdSetEvent-stageMask-04091" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-vkCmdSetEvent-stageMask-01149" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags::from_raw(0x4000);
+        },
+    },
+    cmd_reset_event2: args::CmdResetEvent2 {
+        "VUID-vkCmdResetEvent2-stageMask-03929" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
+        },
+        "VUID-vkCmdResetEvent2-stageMask-03930" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
+        },
+        "VUID-vkCmdResetEvent2-stageMask-03830" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x4000);
+        },
+    },
+    cmd_reset_event: args::CmdResetEvent {
+        "VUID-vkCmdResetEvent-stageMask-04090" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-vkCmdResetEvent-stageMask-04091" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-vkCmdResetEvent-stageMask-01153" => |v, l| {
+            v.stage_mask |= vk::PipelineStageFlags::from_raw(0x4000);
+        },
+    },
+    cmd_wait_events: args::CmdWaitEvents {
+        "VUID-vkCmdWaitEvents-srcStageMask-04090" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-vkCmdWaitEvents-srcStageMask-04091" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-vkCmdWaitEvents-dstStageMask-04090" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-vkCmdWaitEvents-dstStageMask-04091" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+    },
+    cmd_pipeline_barrier: args::CmdPipelineBarrier {
+        "VUID-vkCmdPipelineBarrier-srcStageMask-04090" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-vkCmdPipelineBarrier-srcStageMask-04091" => |v, l| {
+            v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+        "VUID-vkCmdPipelineBarrier-dstStageMask-04090" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
+        },
+        "VUID-vkCmdPipelineBarrier-dstStageMask-04091" => |v, l| {
+            v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+    },
     memory_barrier2: vk::MemoryBarrier2<'_> {
         "VUID-VkMemoryBarrier2-srcStageMask-03929" => |v, l| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
@@ -607,6 +668,45 @@ oracle_cases! {
     query_pool_create_info: vk::QueryPoolCreateInfo<'_> {
         "VUID-VkQueryPoolCreateInfo-queryType-00791" => |v, l| {
             v.query_type = vk::QueryType::from_raw(1);
+        },
+    },
+    cmd_write_timestamp: args::CmdWriteTimestamp {
+        "VUID-vkCmdWriteTimestamp-pipelineStage-04075" => |v, l| {
+            v.pipeline_stage = vk::PipelineStageFlags::from_raw(64);
+        },
+        "VUID-vkCmdWriteTimestamp-pipelineStage-04076" => |v, l| {
+            v.pipeline_stage = vk::PipelineStageFlags::from_raw(16);
+        },
+    },
+    cmd_clear_color_image: args::CmdClearColorImage {
+        "VUID-vkCmdClearColorImage-imageLayout-00005" => |v, l| {
+            v.image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    cmd_copy_image: args::CmdCopyImage {
+        "VUID-vkCmdCopyImage-srcImageLayout-00129" => |v, l| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-vkCmdCopyImage-dstImageLayout-00134" => |v, l| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    cmd_copy_buffer_to_image: args::CmdCopyBufferToImage {
+        "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181" => |v, l| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    cmd_copy_image_to_buffer: args::CmdCopyImageToBuffer {
+        "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190" => |v, l| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    cmd_blit_image: args::CmdBlitImage {
+        "VUID-vkCmdBlitImage-srcImageLayout-00222" => |v, l| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-vkCmdBlitImage-dstImageLayout-00227" => |v, l| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
     vertex_input_binding_description: vk::VertexInputBindingDescription {

@@ -597,6 +597,414 @@ graphics_fixture!(
     |p| p.binding.insert(BINDING)
 );
 
+/// The parameters of a command that its rules name, as its safe method names them.
+mod args {
+    use tuff::vk;
+
+    pub struct CmdSetEvent {
+        pub stage_mask: vk::PipelineStageFlags,
+    }
+    pub type CmdResetEvent = CmdSetEvent;
+    pub struct CmdResetEvent2 {
+        pub stage_mask: vk::PipelineStageFlags2,
+    }
+    pub struct CmdWaitEvents {
+        pub src_stage_mask: vk::PipelineStageFlags,
+        pub dst_stage_mask: vk::PipelineStageFlags,
+    }
+    pub struct CmdPipelineBarrier {
+        pub src_stage_mask: vk::PipelineStageFlags,
+        pub dst_stage_mask: vk::PipelineStageFlags,
+        pub dependency_flags: vk::DependencyFlags,
+    }
+    pub struct CmdWriteTimestamp {
+        pub pipeline_stage: vk::PipelineStageFlags,
+    }
+    pub struct CmdClearColorImage {
+        pub image_layout: vk::ImageLayout,
+    }
+    pub struct CmdCopyImage {
+        pub src_image_layout: vk::ImageLayout,
+        pub dst_image_layout: vk::ImageLayout,
+    }
+    pub struct CmdCopyBufferToImage {
+        pub dst_image_layout: vk::ImageLayout,
+    }
+    pub struct CmdCopyImageToBuffer {
+        pub src_image_layout: vk::ImageLayout,
+    }
+    pub type CmdBlitImage = CmdCopyImage;
+}
+
+/// Records the safe call into one command buffer (whose `end` returns its refusal)
+/// and the unchecked call into another, under the layer.
+fn record(
+    s: &Setup,
+    safe: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>),
+    unchecked: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>),
+) -> Outcome {
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    safe(&mut rec);
+    let safe = rec.end();
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let layer = under_layer(s, || unchecked(&mut rec));
+    rec.end().expect("end");
+    Outcome { safe, layer }
+}
+
+fn event(s: &Setup) -> tuff::Event {
+    s.device
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event")
+}
+
+fn cmd_set_event(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdSetEvent, &Limits),
+) -> Outcome {
+    let mut a = args::CmdSetEvent {
+        stage_mask: vk::PipelineStageFlags::TRANSFER,
+    };
+    change(&mut a, limits);
+    let e = event(s);
+    record(
+        s,
+        |r| r.cmd_set_event(&e, a.stage_mask),
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_set_event_unchecked(&e, a.stage_mask) },
+    )
+}
+
+fn cmd_reset_event(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdResetEvent, &Limits),
+) -> Outcome {
+    let mut a = args::CmdResetEvent {
+        stage_mask: vk::PipelineStageFlags::TRANSFER,
+    };
+    change(&mut a, limits);
+    let e = event(s);
+    record(
+        s,
+        |r| r.cmd_reset_event(&e, a.stage_mask),
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe { r.cmd_reset_event_unchecked(&e, a.stage_mask) },
+    )
+}
+
+fn cmd_reset_event2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdResetEvent2, &Limits),
+) -> Outcome {
+    let mut a = args::CmdResetEvent2 {
+        stage_mask: vk::PipelineStageFlags2::TRANSFER,
+    };
+    change(&mut a, limits);
+    let e = event(s);
+    record(
+        s,
+        |r| r.cmd_reset_event2(&e, a.stage_mask),
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe { r.cmd_reset_event2_unchecked(&e, a.stage_mask) },
+    )
+}
+
+fn cmd_wait_events(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdWaitEvents, &Limits),
+) -> Outcome {
+    let mut a = args::CmdWaitEvents {
+        src_stage_mask: vk::PipelineStageFlags::TRANSFER,
+        dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
+    };
+    change(&mut a, limits);
+    let e = event(s);
+    let events = [&e];
+    record(
+        s,
+        |r| {
+            r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER);
+            r.cmd_wait_events(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[])
+        },
+        |r| {
+            r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER);
+            // SAFETY: as in `cmd_set_event`.
+            unsafe {
+                r.cmd_wait_events_unchecked(
+                    &events,
+                    a.src_stage_mask,
+                    a.dst_stage_mask,
+                    &[],
+                    &[],
+                    &[],
+                )
+            }
+        },
+    )
+}
+
+fn cmd_pipeline_barrier(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdPipelineBarrier, &Limits),
+) -> Outcome {
+    let mut a = args::CmdPipelineBarrier {
+        src_stage_mask: vk::PipelineStageFlags::TRANSFER,
+        dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
+        dependency_flags: vk::DependencyFlags::empty(),
+    };
+    change(&mut a, limits);
+    record(
+        s,
+        |r| {
+            r.cmd_pipeline_barrier(
+                a.src_stage_mask,
+                a.dst_stage_mask,
+                a.dependency_flags,
+                &[],
+                &[],
+                &[],
+            )
+        },
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe {
+            r.cmd_pipeline_barrier_unchecked(
+                a.src_stage_mask,
+                a.dst_stage_mask,
+                a.dependency_flags,
+                &[],
+                &[],
+                &[],
+            )
+        },
+    )
+}
+
+fn timestamps(s: &Setup) -> tuff::QueryPool {
+    s.device
+        .create_query_pool(
+            &tuff::QueryPoolCreateInfo::new()
+                .query_type(vk::QueryType::TIMESTAMP)
+                .query_count(1),
+        )
+        .expect("query pool")
+}
+
+fn cmd_write_timestamp(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdWriteTimestamp, &Limits),
+) -> Outcome {
+    let mut a = args::CmdWriteTimestamp {
+        pipeline_stage: vk::PipelineStageFlags::TRANSFER,
+    };
+    change(&mut a, limits);
+    let pool = timestamps(s);
+    record(
+        s,
+        |r| {
+            r.cmd_reset_query_pool(&pool, 0, 1);
+            r.cmd_write_timestamp(a.pipeline_stage, &pool, 0)
+        },
+        |r| {
+            r.cmd_reset_query_pool(&pool, 0, 1);
+            // SAFETY: as in `cmd_set_event`.
+            unsafe { r.cmd_write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
+        },
+    )
+}
+
+const TRANSFER: vk::ImageUsageFlags = vk::ImageUsageFlags::from_raw(
+    vk::ImageUsageFlags::TRANSFER_SRC.as_raw() | vk::ImageUsageFlags::TRANSFER_DST.as_raw(),
+);
+const WHOLE: vk::ImageSubresourceRange = vk::ImageSubresourceRange {
+    aspect_mask: vk::ImageAspectFlags::COLOR,
+    base_mip_level: 0,
+    level_count: 1,
+    base_array_layer: 0,
+    layer_count: 1,
+};
+const LAYER: vk::ImageSubresourceLayers = vk::ImageSubresourceLayers {
+    aspect_mask: vk::ImageAspectFlags::COLOR,
+    mip_level: 0,
+    base_array_layer: 0,
+    layer_count: 1,
+};
+const EXTENT: vk::Extent3D = vk::Extent3D {
+    width: 4,
+    height: 4,
+    depth: 1,
+};
+
+fn cmd_clear_color_image(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdClearColorImage, &Limits),
+) -> Outcome {
+    let mut a = args::CmdClearColorImage {
+        image_layout: vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+    };
+    change(&mut a, limits);
+    let t = s.color_target(4, TRANSFER);
+    let color = vk::ClearColorValue::default();
+    record(
+        s,
+        |r| r.cmd_clear_color_image(&t.image, a.image_layout, &color, &[WHOLE]),
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe {
+            r.cmd_clear_color_image_unchecked(&t.image, a.image_layout, &color, &[WHOLE])
+        },
+    )
+}
+
+fn cmd_copy_image(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdCopyImage, &Limits),
+) -> Outcome {
+    let mut a = args::CmdCopyImage {
+        src_image_layout: vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+        dst_image_layout: vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+    };
+    change(&mut a, limits);
+    let (src, dst) = (s.color_target(4, TRANSFER), s.color_target(4, TRANSFER));
+    let region = [vk::ImageCopy {
+        src_subresource: LAYER,
+        dst_subresource: LAYER,
+        extent: EXTENT,
+        ..Default::default()
+    }];
+    record(
+        s,
+        |r| {
+            r.cmd_copy_image(
+                &src.image,
+                a.src_image_layout,
+                &dst.image,
+                a.dst_image_layout,
+                &region,
+            )
+        },
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe {
+            r.cmd_copy_image_unchecked(
+                &src.image,
+                a.src_image_layout,
+                &dst.image,
+                a.dst_image_layout,
+                &region,
+            )
+        },
+    )
+}
+
+fn cmd_blit_image(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdBlitImage, &Limits),
+) -> Outcome {
+    let mut a = args::CmdBlitImage {
+        src_image_layout: vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+        dst_image_layout: vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+    };
+    change(&mut a, limits);
+    let (src, dst) = (s.color_target(4, TRANSFER), s.color_target(4, TRANSFER));
+    let corner = vk::Offset3D { x: 4, y: 4, z: 1 };
+    let region = [vk::ImageBlit {
+        src_subresource: LAYER,
+        src_offsets: [vk::Offset3D::default(), corner],
+        dst_subresource: LAYER,
+        dst_offsets: [vk::Offset3D::default(), corner],
+    }];
+    let nearest = vk::Filter::NEAREST;
+    record(
+        s,
+        |r| {
+            r.cmd_blit_image(
+                &src.image,
+                a.src_image_layout,
+                &dst.image,
+                a.dst_image_layout,
+                &region,
+                nearest,
+            )
+        },
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe {
+            r.cmd_blit_image_unchecked(
+                &src.image,
+                a.src_image_layout,
+                &dst.image,
+                a.dst_image_layout,
+                &region,
+                nearest,
+            )
+        },
+    )
+}
+
+fn buffer_image_copy() -> [vk::BufferImageCopy; 1] {
+    [vk::BufferImageCopy {
+        image_subresource: LAYER,
+        image_extent: EXTENT,
+        ..Default::default()
+    }]
+}
+
+fn cmd_copy_buffer_to_image(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdCopyBufferToImage, &Limits),
+) -> Outcome {
+    let mut a = args::CmdCopyBufferToImage {
+        dst_image_layout: vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+    };
+    change(&mut a, limits);
+    let t = s.color_target(4, TRANSFER);
+    let (buffer, _memory) = pipelines::host_buffer(s, 64, vk::BufferUsageFlags::TRANSFER_SRC);
+    let region = buffer_image_copy();
+    record(
+        s,
+        |r| r.cmd_copy_buffer_to_image(&buffer, &t.image, a.dst_image_layout, &region),
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe {
+            r.cmd_copy_buffer_to_image_unchecked(&buffer, &t.image, a.dst_image_layout, &region)
+        },
+    )
+}
+
+fn cmd_copy_image_to_buffer(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdCopyImageToBuffer, &Limits),
+) -> Outcome {
+    let mut a = args::CmdCopyImageToBuffer {
+        src_image_layout: vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+    };
+    change(&mut a, limits);
+    let t = s.color_target(4, TRANSFER);
+    let (buffer, _memory) = pipelines::host_buffer(s, 64, vk::BufferUsageFlags::TRANSFER_DST);
+    let region = buffer_image_copy();
+    record(
+        s,
+        |r| r.cmd_copy_image_to_buffer(&t.image, a.src_image_layout, &buffer, &region),
+        // SAFETY: as in `cmd_set_event`.
+        |r| unsafe {
+            r.cmd_copy_image_to_buffer_unchecked(&t.image, a.src_image_layout, &buffer, &region)
+        },
+    )
+}
+
 /// Each fixture's value, unchanged, is valid: tuff accepts the call and the layer
 /// says nothing. Without this, a case could pass on a rule its fixture already breaks.
 #[test]

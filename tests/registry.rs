@@ -313,7 +313,7 @@ fn rendered_checks_read_what_their_data_says() {
             let code = words(tuff_gen::emit::checks::render(check).to_string());
             for arg in check.reads() {
                 assert!(
-                    code.contains(arg),
+                    code.contains(&arg),
                     "{}: reads `{arg}` but its code does not: {check:?}",
                     plan.name
                 );

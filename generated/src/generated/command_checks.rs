@@ -1264,6 +1264,7 @@ impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_bind_vertex_buffers`], run before the call.
     pub(crate) fn validate_cmd_bind_vertex_buffers(
         &self,
+        first_binding: u32,
         buffers: &[&Buffer],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -1298,11 +1299,28 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindVertexBuffers-firstBinding-00624",
+                    format!(
+                        "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
+                        first_binding
+                    ),
+                ),
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_bind_vertex_buffers2`], run before the call.
     pub(crate) fn validate_cmd_bind_vertex_buffers2(
         &self,
+        first_binding: u32,
         buffers: &[&Buffer],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -1336,6 +1354,22 @@ impl<'c, S: State> Recorder<'c, S> {
                     ),
                 );
             }
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindVertexBuffers2-firstBinding-03355",
+                    format!(
+                        "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
+                        first_binding
+                    ),
+                ),
+            );
         }
         Ok(())
     }
@@ -1449,6 +1483,50 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        if !s.feature(|f| f.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier-srcStageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                        src_stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (src_stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier-srcStageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                        src_stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier-dstStageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                        dst_stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (dst_stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier-dstStageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                        dst_stage_mask
+                    ),
+                ),
+            );
+        }
         for x in memory_barriers.iter() {
             crate::checks::check_memory_barrier(x, s)?;
         }
@@ -1483,6 +1561,7 @@ impl<'c, S: State> Recorder<'c, S> {
         &self,
         layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
+        offset: u32,
         values: &[u8],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -1522,6 +1601,20 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdPushConstants-commonparent",
                     "`layout` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| (offset as i128) >= (l.max_push_constants_size as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-offset-00370",
+                    format!(
+                        "`offset` must be less than `VkPhysicalDeviceLimits::maxPushConstantsSize` (`offset` = {:?})",
+                        offset
+                    ),
                 ),
             );
         }
@@ -1569,7 +1662,11 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_set_depth_bias`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bias(&self) -> Result<()> {
+    pub(crate) fn validate_cmd_set_depth_bias(
+        &self,
+        depth_bias_clamp: f32,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -1579,6 +1676,19 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
                     "the command buffer's pool does not support graphics operations"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.depth_bias_clamp) && (depth_bias_clamp as f64).is_nan()
+            || depth_bias_clamp != 0.0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBias-depthBiasClamp-00790",
+                    format!(
+                        "If the `depthBiasClamp` feature is not enabled, `depthBiasClamp` must be `0.0` (`depthBiasClamp` = {:?})",
+                        depth_bias_clamp
+                    ),
                 ),
             );
         }
@@ -1731,7 +1841,8 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_set_line_width`], run before the call.
-    pub(crate) fn validate_cmd_set_line_width(&self) -> Result<()> {
+    pub(crate) fn validate_cmd_set_line_width(&self, line_width: f32) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -1741,6 +1852,19 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
                     "the command buffer's pool does not support graphics operations"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.wide_lines) && (line_width as f64).is_nan()
+            || line_width != 1.0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetLineWidth-lineWidth-00788",
+                    format!(
+                        "If the `wideLines` feature is not enabled, `lineWidth` must be `1.0` (`lineWidth` = {:?})",
+                        line_width
+                    ),
                 ),
             );
         }
@@ -1806,8 +1930,10 @@ impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
     pub(crate) fn validate_cmd_set_scissor(
         &self,
+        first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -1825,6 +1951,17 @@ impl<'c, S: State> Recorder<'c, S> {
                 fail(
                     "VUID-vkCmdSetScissor-scissorCount-arraylength",
                     "`scissorCount` is 0".into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.multi_viewport) && first_scissor != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissor-firstScissor-00593",
+                    format!(
+                        "If the `multiViewport` feature is not enabled, `firstScissor` must be `0` (`firstScissor` = {:?})",
+                        first_scissor
+                    ),
                 ),
             );
         }
@@ -2032,6 +2169,7 @@ impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
     pub(crate) fn validate_cmd_set_viewport(
         &self,
+        first_viewport: u32,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -2052,6 +2190,17 @@ impl<'c, S: State> Recorder<'c, S> {
                 fail(
                     "VUID-vkCmdSetViewport-viewportCount-arraylength",
                     "`viewportCount` is 0".into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.multi_viewport) && first_viewport != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewport-firstViewport-01224",
+                    format!(
+                        "If the `multiViewport` feature is not enabled, `firstViewport` must be `0` (`firstViewport` = {:?})",
+                        first_viewport
+                    ),
                 ),
             );
         }
@@ -2142,6 +2291,50 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
+        if !s.feature(|f| f.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents-srcStageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                        src_stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (src_stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents-srcStageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                        src_stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents-dstStageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                        dst_stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (dst_stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents-dstStageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                        dst_stage_mask
+                    ),
+                ),
+            );
+        }
         for x in memory_barriers.iter() {
             crate::checks::check_memory_barrier(x, s)?;
         }
@@ -2226,6 +2419,30 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        if !s.feature(|f| f.geometry_shader) && matches!(pipeline_stage.as_raw(), 64) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp-pipelineStage-04075",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`pipelineStage` = {:?})",
+                        pipeline_stage
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader)
+            && matches!(pipeline_stage.as_raw(), 16 | 32)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp-pipelineStage-04076",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`pipelineStage` = {:?})",
+                        pipeline_stage
+                    ),
+                ),
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_write_timestamp2`], run before the call.
@@ -2258,6 +2475,28 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdWriteTimestamp2-commonparent",
                     "`queryPool` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.geometry_shader) && (stage.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp2-stage-03929",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stage` = {:?})",
+                        stage
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (stage.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp2-stage-03930",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stage` = {:?})",
+                        stage
+                    ),
                 ),
             );
         }
@@ -2412,6 +2651,28 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBlitImage-srcImageLayout-00222",
+                    format!(
+                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                        src_image_layout
+                    ),
+                ),
+            );
+        }
+        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBlitImage-dstImageLayout-00227",
+                    format!(
+                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                        dst_image_layout
+                    ),
+                ),
+            );
+        }
         for x in regions.iter() {
             crate::checks::check_image_blit(x, s)?;
         }
@@ -2477,6 +2738,17 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdClearColorImage-commonparent",
                     "`image` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !matches!(image_layout.as_raw(), 1 | 7) {
+            return Err(
+                fail(
+                    "VUID-vkCmdClearColorImage-imageLayout-00005",
+                    format!(
+                        "`imageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`imageLayout` = {:?})",
+                        image_layout
+                    ),
                 ),
             );
         }
@@ -2653,6 +2925,17 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+            return Err(
+                fail(
+                    "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181",
+                    format!(
+                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                        dst_image_layout
+                    ),
+                ),
+            );
+        }
         for x in regions.iter() {
             crate::checks::check_buffer_image_copy(x, s)?;
         }
@@ -2737,6 +3020,28 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+            return Err(
+                fail(
+                    "VUID-vkCmdCopyImage-srcImageLayout-00129",
+                    format!(
+                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                        src_image_layout
+                    ),
+                ),
+            );
+        }
+        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+            return Err(
+                fail(
+                    "VUID-vkCmdCopyImage-dstImageLayout-00134",
+                    format!(
+                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                        dst_image_layout
+                    ),
+                ),
+            );
+        }
         for x in regions.iter() {
             crate::checks::check_image_copy(x, s)?;
         }
@@ -2812,6 +3117,17 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdCopyImageToBuffer-commonparent",
                     "`dstBuffer` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+            return Err(
+                fail(
+                    "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190",
+                    format!(
+                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                        src_image_layout
+                    ),
                 ),
             );
         }
@@ -3003,6 +3319,39 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !s.feature(|f| f.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-stageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-stageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (stage_mask.as_raw() & 16384) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-stageMask-01153",
+                    format!(
+                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_reset_event2`], run before the call.
@@ -3035,6 +3384,39 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdResetEvent2-commonparent",
                     "`event` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-stageMask-03929",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-stageMask-03930",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (stage_mask.as_raw() & 16384) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-stageMask-03830",
+                    format!(
+                        "`stageMask` must not include `VK_PIPELINE_STAGE_2_HOST_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
                 ),
             );
         }
@@ -3127,6 +3509,28 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+            return Err(
+                fail(
+                    "VUID-vkCmdResolveImage-srcImageLayout-00261",
+                    format!(
+                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                        src_image_layout
+                    ),
+                ),
+            );
+        }
+        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+            return Err(
+                fail(
+                    "VUID-vkCmdResolveImage-dstImageLayout-00263",
+                    format!(
+                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                        dst_image_layout
+                    ),
+                ),
+            );
+        }
         for x in regions.iter() {
             crate::checks::check_image_resolve(x, s)?;
         }
@@ -3183,6 +3587,39 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdSetEvent-commonparent",
                     "`event` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-stageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-stageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (stage_mask.as_raw() & 16384) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-stageMask-01149",
+                    format!(
+                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
                 ),
             );
         }
@@ -3335,6 +3772,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
     pub(crate) fn validate_cmd_draw_indexed_indirect(
         &self,
         buffer: &Buffer,
+        draw_count: u32,
     ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
@@ -3355,6 +3793,31 @@ impl<'c, S: Inside> Recorder<'c, S> {
                     "VUID-vkCmdDrawIndexedIndirect-commonparent",
                     "`buffer` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirect-drawCount-02718",
+                    format!(
+                        "If the `multiDrawIndirect` feature is not enabled, `drawCount` must be `0` or `1` (`drawCount` = {:?})",
+                        draw_count
+                    ),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| (draw_count as i128) > (l.max_draw_indirect_count as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirect-drawCount-02719",
+                    format!(
+                        "`drawCount` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount` (`drawCount` = {:?})",
+                        draw_count
+                    ),
                 ),
             );
         }
@@ -3400,7 +3863,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_draw_indirect`], run before the call.
-    pub(crate) fn validate_cmd_draw_indirect(&self, buffer: &Buffer) -> Result<()> {
+    pub(crate) fn validate_cmd_draw_indirect(
+        &self,
+        buffer: &Buffer,
+        draw_count: u32,
+    ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -3420,6 +3887,31 @@ impl<'c, S: Inside> Recorder<'c, S> {
                     "VUID-vkCmdDrawIndirect-commonparent",
                     "`buffer` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirect-drawCount-02718",
+                    format!(
+                        "If the `multiDrawIndirect` feature is not enabled, `drawCount` must be `0` or `1` (`drawCount` = {:?})",
+                        draw_count
+                    ),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| (draw_count as i128) > (l.max_draw_indirect_count as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirect-drawCount-02719",
+                    format!(
+                        "`drawCount` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount` (`drawCount` = {:?})",
+                        draw_count
+                    ),
                 ),
             );
         }

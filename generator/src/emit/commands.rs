@@ -841,11 +841,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let read: Vec<(&TokenStream, &TokenStream)> = args
             .iter()
             .zip(&names)
-            .filter(|(_, n)| {
-                checks
-                    .iter()
-                    .any(|c| c.reads().contains(&n.to_string().as_str()))
-            })
+            .filter(|(_, n)| checks.iter().any(|c| c.reads().contains(&n.to_string())))
             .collect();
         let v_args = read.iter().map(|(a, _)| a);
         let v_names = read.iter().map(|(_, n)| n);

@@ -7,10 +7,17 @@ use crate::validity::explicit::{Check, Op, Pred, Recognised, Rhs};
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-/// A member path (`extent.width`) of `v`.
-pub fn member(path: &str) -> TokenStream {
-    let parts = path.split('.').map(field_ident);
-    quote!(v #(.#parts)*)
+/// A member path (`extent.width`) of `v`, or of a command's parameter.
+pub fn member(path: &str, on_command: bool) -> TokenStream {
+    let mut parts = path.split('.');
+    let head = if on_command {
+        let p = crate::names::ident(&crate::names::param(parts.next().unwrap_or_default()));
+        quote!(#p)
+    } else {
+        quote!(v)
+    };
+    let rest = parts.map(field_ident);
+    quote!(#head #(.#rest)*)
 }
 
 /// A number as the text writes it, as a literal of the compared type.
@@ -47,7 +54,8 @@ fn inverse(o: Op) -> Op {
 
 /// A predicate as a `bool` expression; with `negated`, the expression that holds
 /// exactly when the predicate does not (a NaN never satisfies a comparison).
-fn pred(p: &Pred, negated: bool) -> TokenStream {
+fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
+    let member = |m: &str| member(m, on_command);
     match p {
         Pred::AnyBit { member: m, bits } | Pred::NoBit { member: m, bits } => {
             let mask = bits.iter().fold(0u64, |acc, b| acc | b.number as u64);
@@ -145,8 +153,8 @@ fn pred(p: &Pred, negated: bool) -> TokenStream {
 pub fn render(r: &Recognised) -> TokenStream {
     let Check { when, must } = &r.check;
     let vuid = &r.vuid;
-    let when = when.iter().map(|p| pred(p, false));
-    let broken = pred(must, true);
+    let when = when.iter().map(|p| pred(p, false, r.on_command));
+    let broken = pred(must, true, r.on_command);
     let members = r.check.members();
     let shown = members
         .iter()
@@ -154,7 +162,7 @@ pub fn render(r: &Recognised) -> TokenStream {
         .collect::<Vec<_>>()
         .join(", ");
     let text = format!("{} ({shown})", r.text.replace('{', "{{").replace('}', "}}"));
-    let args = members.iter().map(|m| member(m));
+    let args = members.iter().map(|m| member(m, r.on_command));
     quote! {
         if #(#when &&)* #broken {
             return Err(fail(#vuid, format!(#text, #(#args),*)));
@@ -164,7 +172,8 @@ pub fn render(r: &Recognised) -> TokenStream {
 
 /// `oracle_cases.rs`: the oracle's cases as one `oracle_cases!` invocation, which
 /// `tests/oracle.rs` defines; each case is a closure that changes the fixture's
-/// value `v` (given the device's limits `l`).
+/// value `v` (a struct, or a command's `args::` struct), given the device's
+/// limits `l`.
 pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
     use crate::plan::oracle::{path, Assign};
     use std::fmt::Write;
@@ -176,18 +185,30 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
          // value that breaks exactly that rule.\n\
          oracle_cases! {\n",
     );
-    let mut items: Vec<(&str, bool)> = cases
-        .iter()
-        .map(|c| (c.item.as_str(), c.lifetime))
-        .collect();
-    items.dedup();
-    for (item, lifetime) in items {
-        let name = crate::names::type_name(item);
-        let lt = if lifetime { "<'_>" } else { "" };
-        let fixture = crate::plan::checks::snake(item);
-        let _ = writeln!(s, "    {fixture}: vk::{name}{lt} {{");
+    let mut items: Vec<&crate::plan::oracle::Case> = Vec::new();
+    for c in cases {
+        if items.last().is_none_or(|l| l.item != c.item) {
+            items.push(c);
+        }
+    }
+    for first in items {
+        let item = first.item.as_str();
+        let (fixture, ty) = if first.on_command {
+            // `vkCmdSetEvent` -> `cmd_set_event: args::CmdSetEvent`.
+            let f = crate::names::command_fn(item);
+            let t = item.strip_prefix("vk").unwrap_or(item).to_owned();
+            (f, format!("args::{t}"))
+        } else {
+            let lt = if first.lifetime { "<'_>" } else { "" };
+            (
+                crate::plan::checks::snake(item),
+                format!("vk::{}{lt}", crate::names::type_name(item)),
+            )
+        };
+        let _ = writeln!(s, "    {fixture}: {ty} {{");
         for c in cases.iter().filter(|c| c.item == item) {
             let _ = writeln!(s, "        {:?} => |v, l| {{", c.vuid);
+            let path = |m: &str| path(m, c.on_command);
             for a in &c.assigns {
                 let line = match a {
                     Assign::SetBits { member, ty, bits } => format!(

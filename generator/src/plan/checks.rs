@@ -231,8 +231,21 @@ impl Check {
     }
 
     /// The method arguments the check reads, by their Rust names.
-    pub fn reads(&self) -> Vec<&str> {
-        match &self.kind {
+    pub fn reads(&self) -> Vec<String> {
+        if let CheckKind::Explicit(r) = &self.kind {
+            if !r.on_command {
+                return Vec::new();
+            }
+            let mut out: Vec<String> = Vec::new();
+            for m in r.check.members() {
+                let a = param(m.split('.').next().unwrap_or_default());
+                if !out.contains(&a) {
+                    out.push(a);
+                }
+            }
+            return out;
+        }
+        let borrowed: Vec<&str> = match &self.kind {
             CheckKind::Value { at, .. }
             | CheckKind::NonZero { at, .. }
             | CheckKind::NotEmpty { at, .. }
@@ -260,7 +273,8 @@ impl Check {
                 ..
             } => vec![a],
             _ => Vec::new(),
-        }
+        };
+        borrowed.into_iter().map(str::to_owned).collect()
     }
 }
 
@@ -706,6 +720,21 @@ impl<'c, 'm> Checker<'c, 'm> {
                     vuid: Some(vuid.to_owned()),
                     what,
                     kind,
+                });
+            }
+        }
+        // Explicit rules the recognisers read, over parameters the method takes as
+        // they are (a count the method derives from a slice is not one).
+        for r in self.explicit.get(plan.name.as_str()).into_iter().flatten() {
+            let by_value = r.check.members().iter().all(|m| {
+                let first = m.split('.').next().unwrap_or_default();
+                matches!(arg(first), Some((_, Param::Value)))
+            });
+            if by_value {
+                out.push(Check {
+                    vuid: Some(r.vuid.clone()),
+                    what: format!("checks the rule as written (recogniser: {})", r.by),
+                    kind: CheckKind::Explicit(Box::new((*r).clone())),
                 });
             }
         }

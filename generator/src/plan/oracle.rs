@@ -13,9 +13,10 @@ use super::Context;
 use crate::model::Model;
 use crate::validity::explicit::{Op, Pred, Recognised, Rhs, Value};
 
-/// The structs `tests/oracle.rs` has a fixture for: a smallest valid value and the
-/// safe call (and its `_unchecked` twin) that takes it. Each name is the fixture
-/// function's, in snake case without `Vk`.
+/// The structs and commands `tests/oracle.rs` has a fixture for: a smallest valid
+/// value and the safe call (and its `_unchecked` twin) that takes it. A struct's
+/// fixture function is its name in snake case without `Vk`; a command's is its
+/// method's name, over an `args::` struct of the parameters a rule can name.
 pub const FIXTURES: &[&str] = &[
     "VkBufferCreateInfo",
     "VkImageCreateInfo",
@@ -38,6 +39,17 @@ pub const FIXTURES: &[&str] = &[
     "VkPipelineRasterizationStateCreateInfo",
     "VkPipelineMultisampleStateCreateInfo",
     "VkVertexInputBindingDescription",
+    "vkCmdSetEvent",
+    "vkCmdResetEvent",
+    "vkCmdResetEvent2",
+    "vkCmdWaitEvents",
+    "vkCmdPipelineBarrier",
+    "vkCmdWriteTimestamp",
+    "vkCmdClearColorImage",
+    "vkCmdCopyImage",
+    "vkCmdCopyBufferToImage",
+    "vkCmdCopyImageToBuffer",
+    "vkCmdBlitImage",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -59,10 +71,13 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076", "enabling anisotropy also breaks `anisotropyEnable-01070` on a device without `samplerAnisotropy`"),
     ("VUID-VkPushConstantRange-offset-00294", "an offset at the limit leaves no room for a size, so `size-00298` breaks as well"),
     ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430", "a patch list without tessellation shaders also breaks `VkGraphicsPipelineCreateInfo-topology-00737`"),
+    ("VUID-vkCmdWriteTimestamp2-stage-03929", ONE_STAGE),
+    ("VUID-vkCmdWriteTimestamp2-stage-03930", ONE_STAGE),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
+const ONE_STAGE: &str = "the stage is a single bit; the case adds the forbidden one to the fixture's, which breaks `stage-03859` as well";
 const ONE_D: &str = "the other image type the case picks is 1D, and the fixture's 4x4 image breaks `imageType-00956` (a 1D image has height 1) as well";
 
 /// One change to a fixture's value.
@@ -136,6 +151,9 @@ pub struct Case {
     pub item: String,
     /// Whether its ash type has a lifetime (`vk::MemoryBarrier2<'_>`).
     pub lifetime: bool,
+    /// The item is a command: the fixture's value is the test's `args::Cmd*`
+    /// struct of its parameters.
+    pub on_command: bool,
     /// The changes, in order.
     pub assigns: Vec<Assign>,
 }
@@ -146,7 +164,7 @@ pub fn cases(cx: &Context, checker: &Checker) -> Vec<Case> {
     cx.validity
         .recognised
         .iter()
-        .filter(|r| FIXTURES.contains(&r.item.as_str()) && checker.reaches(&r.item))
+        .filter(|r| FIXTURES.contains(&r.item.as_str()) && checker.dynamic(&r.vuid).is_some())
         .filter(|r| !SKIP.iter().any(|(v, _)| *v == r.vuid))
         .filter_map(|r| case(cx.model, r))
         .map(|c| Case {
@@ -164,10 +182,11 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
     make_false(model, &r.item, &r.check.must, &mut assigns)?;
     // A count that goes with a pointer member is not the fixture's to change: the
     // safe struct's setters keep the two together.
-    let counts: Vec<&str> = model
-        .types
-        .get(&r.item)?
-        .members
+    let fields = match model.commands.get(&r.item) {
+        Some(cmd) => &cmd.params,
+        None => &model.types.get(&r.item)?.members,
+    };
+    let counts: Vec<&str> = fields
         .iter()
         .filter_map(|m| m.len.as_deref()?.split(',').next())
         .collect();
@@ -178,14 +197,25 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
         vuid: r.vuid.clone(),
         item: r.item.clone(),
         lifetime: false,
+        on_command: r.on_command,
         assigns,
     })
 }
 
-/// The C type of a member path.
+/// The C type of a member path (of a command's parameters, for a command).
 fn member_type(model: &Model, item: &str, path: &str) -> Option<String> {
+    let mut parts = path.split('.');
     let mut ty = item.to_owned();
-    for part in path.split('.') {
+    if let Some(cmd) = model.commands.get(item) {
+        let first = parts.next()?;
+        ty = cmd
+            .params
+            .iter()
+            .find(|p| p.name == first)?
+            .type_name
+            .clone();
+    }
+    for part in parts {
         ty = model
             .types
             .get(&ty)?
@@ -292,9 +322,9 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
                 (Rhs::Limit(l), Op::Le) => {
                     format!("(l.{} as u64 + 1) as _", crate::names::field(l))
                 }
-                (Rhs::Member(m), Op::Gt | Op::Lt) => format!("v.{}", path(m)),
-                (Rhs::Member(m), Op::Ge) => format!("v.{} - {one}", path(m)),
-                (Rhs::Member(m), Op::Le) => format!("v.{} + {one}", path(m)),
+                (Rhs::Member(m), Op::Gt | Op::Lt) => format!("v.{}", path(m, false)),
+                (Rhs::Member(m), Op::Ge) => format!("v.{} - {one}", path(m, false)),
+                (Rhs::Member(m), Op::Le) => format!("v.{} + {one}", path(m, false)),
                 _ => return None,
             };
             out.push(Assign::Number {
@@ -311,17 +341,28 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
 fn shifted(c: &str, float: bool, by: i64) -> Option<String> {
     if float {
         let v: f64 = c.parse().ok()?;
-        Some(crate::validity::explicit::number(&format!("{}", v + by as f64), true))
+        Some(crate::validity::explicit::number(
+            &format!("{}", v + by as f64),
+            true,
+        ))
     } else {
         let v: i64 = c.parse().ok()?;
         Some((v + by).to_string())
     }
 }
 
-/// A member path in Rust (`extent.width`).
-pub fn path(p: &str) -> String {
+/// A member path in Rust (`extent.width`); a command's parameter is named as the
+/// safe method names it.
+pub fn path(p: &str, on_command: bool) -> String {
     p.split('.')
-        .map(crate::names::field)
+        .enumerate()
+        .map(|(i, s)| {
+            if i == 0 && on_command {
+                crate::names::param(s)
+            } else {
+                crate::names::field(s)
+            }
+        })
         .collect::<Vec<_>>()
         .join(".")
 }

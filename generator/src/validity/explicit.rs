@@ -23,6 +23,9 @@ pub struct Recognised {
     pub by: &'static str,
     /// The rule as one line of plain text.
     pub text: String,
+    /// The item is a command, whose parameters the paths name (rather than a
+    /// struct's members).
+    pub on_command: bool,
     /// What the rule asks.
     pub check: Check,
 }
@@ -200,14 +203,16 @@ pub const RECOGNISERS: &[(&str, Recogniser)] = &[
     ),
 ];
 
-/// Recognise every explicit rule of `rules` whose item is an emitted struct.
+/// Recognise every explicit rule of `rules` whose item is an emitted struct or
+/// command.
 pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
     let mut out = Vec::new();
     for rule in rules {
         if rule.category == super::Category::Implicit
             || !rule.emitted
             || rule.key_holds == Some(false)
-            || model.category(&rule.item) != Some(Kind::Struct)
+            || (model.category(&rule.item) != Some(Kind::Struct)
+                && !model.commands.contains_key(&rule.item))
         {
             continue;
         }
@@ -223,6 +228,7 @@ pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
                 item: rule.item.clone(),
                 by,
                 text: text.clone(),
+                on_command: model.commands.contains_key(&rule.item),
                 check,
             });
         }
@@ -260,7 +266,7 @@ fn re(cell: &'static OnceLock<Regex>, pattern: &str) -> &'static Regex {
 
 /// A list of code spans: `` `A` ``, `` `A` or `B` ``, `` `A`, `B`, or `C` `` (the
 /// specification sometimes drops a comma).
-const LIST: &str = r"`[A-Z0-9_]+`(?:,? (?:or )?`[A-Z0-9_]+`)*";
+const LIST: &str = r"`[A-Z0-9_.]+`(?:,? (?:or )?`[A-Z0-9_.]+`)*";
 
 /// The names in a list matched by [`LIST`].
 fn names(list: &str) -> Vec<&str> {
@@ -306,13 +312,22 @@ fn split_conditions(rest: &str) -> Option<(Vec<&str>, &str)> {
 /// A member path: a member of the struct, or of a struct member by value
 /// (`extent.width`), without pointers or arrays.
 fn member<'a>(input: &Input<'a>, path: &str) -> Option<&'a crate::model::Field> {
-    let mut ty = input.item;
+    let plain = |m: &&crate::model::Field, part: &str| {
+        m.name == part && m.pointers == 0 && m.static_array.is_none() && m.bitfield.is_none()
+    };
+    let mut parts = path.split('.');
     let mut found = None;
-    for part in path.split('.') {
+    let mut ty = input.item;
+    if let Some(cmd) = input.model.commands.get(input.item) {
+        // A command's parameter by value, then members of it.
+        let first = parts.next()?;
+        let p = cmd.params.iter().find(|p| plain(p, first))?;
+        ty = &p.type_name;
+        found = Some(p);
+    }
+    for part in parts {
         let t = input.model.types.get(ty)?;
-        let m = t.members.iter().find(|m| {
-            m.name == part && m.pointers == 0 && m.static_array.is_none() && m.bitfield.is_none()
-        })?;
+        let m = t.members.iter().find(|m| plain(m, part))?;
         ty = &m.type_name;
         found = Some(m);
     }
@@ -364,8 +379,9 @@ fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<P
     let listed = names(list);
     let m = member(input, path)?;
     let member_name = path.to_owned();
-    if let [n] = listed.as_slice() {
-        if n.chars().all(|c| c.is_ascii_digit()) && numeric(&m.type_name) {
+    let is_number = |n: &&str| n.chars().all(|c| c.is_ascii_digit() || c == '.');
+    if numeric(&m.type_name) && listed.iter().all(is_number) {
+        if let [n] = listed.as_slice() {
             return Some(Pred::Compare {
                 member: member_name,
                 op: if positive { Op::Eq } else { Op::Ne },
@@ -374,6 +390,27 @@ fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<P
                 unsigned: unsigned(&m.type_name),
             });
         }
+        // `drawCount must be 0 or 1`: whole numbers only.
+        let values = listed
+            .iter()
+            .map(|n| {
+                Some(Value {
+                    name: (*n).to_owned(),
+                    number: n.parse().ok()?,
+                })
+            })
+            .collect::<Option<Vec<_>>>()?;
+        return Some(if positive {
+            Pred::OneOf {
+                member: member_name,
+                values,
+            }
+        } else {
+            Pred::NoneOf {
+                member: member_name,
+                values,
+            }
+        });
     }
     let values = if m.type_name == "VkBool32" {
         listed
@@ -570,11 +607,14 @@ pub fn number(text: &str, float: bool) -> String {
     }
 }
 
-/// Whether a value list names `VkBool32` constants rather than enum values.
+/// Whether a value list names `VkBool32` constants or numbers rather than enum
+/// values, so the member is compared as it is rather than through `as_raw()`.
 pub fn is_bool(values: &[Value]) -> bool {
-    values
-        .iter()
-        .all(|v| v.name == "VK_TRUE" || v.name == "VK_FALSE")
+    values.iter().all(|v| {
+        v.name == "VK_TRUE"
+            || v.name == "VK_FALSE"
+            || v.name.starts_with(|c: char| c.is_ascii_digit())
+    })
 }
 
 /// Whether a C type is an unsigned integer.

@@ -279,7 +279,10 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_bind_vertex_buffers(
         &mut self,
@@ -298,7 +301,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         }
         crate::hooks::cmd_bind_vertex_buffers_checks(self, buffers, offsets)?;
         {
-            let r = self.validate_cmd_bind_vertex_buffers(buffers);
+            let r = self.validate_cmd_bind_vertex_buffers(first_binding, buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -311,7 +314,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers_unchecked(
         &mut self,
@@ -450,6 +453,10 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
 
 The rules are on [`vkCmdPipelineBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier.html). Settled by the wrappers:
 
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdPipelineBarrier-srcStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdPipelineBarrier-dstStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdPipelineBarrier-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -460,7 +467,7 @@ The rules are on [`vkCmdPipelineBarrier`'s reference page](https://registry.khro
 - `VUID-vkCmdPipelineBarrier-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 39 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_pipeline_barrier<'a>(
         &mut self,
@@ -501,7 +508,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 39 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier-srcStageMask-04090`, `VUID-vkCmdPipelineBarrier-srcStageMask-04091`, `VUID-vkCmdPipelineBarrier-dstStageMask-04090`, `VUID-vkCmdPipelineBarrier-dstStageMask-04091`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier_unchecked<'a>(
         &mut self,
@@ -595,7 +602,8 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
             values,
         )?;
         {
-            let r = self.validate_cmd_push_constants(layout, stage_flags, values);
+            let r = self
+                .validate_cmd_push_constants(layout, stage_flags, offset, values);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -606,7 +614,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_push_constants_unchecked(
         &mut self,
@@ -679,7 +687,7 @@ The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
     #[inline]
     pub fn cmd_set_depth_bias(
         &mut self,
@@ -688,7 +696,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         depth_bias_slope_factor: f32,
     ) {
         {
-            let r = self.validate_cmd_set_depth_bias();
+            let r = self.validate_cmd_set_depth_bias(depth_bias_clamp);
             if !self.accept(r) {
                 return;
             }
@@ -707,7 +715,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run time: `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run time: `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`, `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_depth_bias_unchecked(
         &mut self,
@@ -782,11 +790,11 @@ The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
         {
-            let r = self.validate_cmd_set_line_width();
+            let r = self.validate_cmd_set_line_width(line_width);
             if !self.accept(r) {
                 return;
             }
@@ -799,7 +807,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, `VUID-vkCmdSetLineWidth-lineWidth-00788`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) {
         let fp = self.device().fns().fp_v1_0().cmd_set_line_width;
@@ -834,7 +842,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<()> {
         crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
         {
-            let r = self.validate_cmd_set_scissor(scissors);
+            let r = self.validate_cmd_set_scissor(first_scissor, scissors);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -845,7 +853,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_scissor_unchecked(
         &mut self,
@@ -1020,7 +1028,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<()> {
         crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
         {
-            let r = self.validate_cmd_set_viewport(viewports);
+            let r = self.validate_cmd_set_viewport(first_viewport, viewports);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -1031,7 +1039,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_viewport_unchecked(
         &mut self,
@@ -1058,6 +1066,10 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
 
 The rules are on [`vkCmdWaitEvents`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents.html). Settled by the wrappers:
 
+- `VUID-vkCmdWaitEvents-srcStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdWaitEvents-srcStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdWaitEvents-dstStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdWaitEvents-dstStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdWaitEvents-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWaitEvents-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWaitEvents-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -1070,7 +1082,7 @@ The rules are on [`vkCmdWaitEvents`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdWaitEvents-eventCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWaitEvents-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 37 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_wait_events<'a>(
         &mut self,
@@ -1111,7 +1123,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_wait_events_unchecked<'a>(
         &mut self,
@@ -1181,6 +1193,8 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
 
 The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp.html). Settled by the wrappers:
 
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04075`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04076`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdWriteTimestamp-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWriteTimestamp-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1188,7 +1202,7 @@ The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khron
 - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_timestamp(
         &mut self,
@@ -1210,7 +1224,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_write_timestamp_unchecked(
         &mut self,
@@ -1314,8 +1328,10 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBlitImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBlitImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdBlitImage-srcImageLayout-00222`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-vkCmdBlitImage-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 47 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image(
         &mut self,
@@ -1357,7 +1373,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_blit_image_unchecked(
         &mut self,
@@ -1401,8 +1417,9 @@ The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khro
 - `VUID-vkCmdClearColorImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdClearColorImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdClearColorImage-imageLayout-00005`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_clear_color_image(
         &mut self,
@@ -1427,7 +1444,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-imageLayout-00005`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_clear_color_image_unchecked(
         &mut self,
@@ -1611,8 +1628,9 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 44 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image(
         &mut self,
@@ -1648,7 +1666,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 45 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image_unchecked(
         &mut self,
@@ -1690,8 +1708,10 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdCopyImage-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-vkCmdCopyImage-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 76 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 74 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image(
         &mut self,
@@ -1730,7 +1750,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 76 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_unchecked(
         &mut self,
@@ -1773,8 +1793,9 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 43 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 42 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer(
         &mut self,
@@ -1810,7 +1831,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 43 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer_unchecked(
         &mut self,
@@ -2095,6 +2116,9 @@ The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: 
 
 The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent.html). Settled by the wrappers:
 
+- `VUID-vkCmdResetEvent-stageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent-stageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent-stageMask-01153`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdResetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -2103,7 +2127,7 @@ The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdResetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_event(
         &mut self,
@@ -2124,7 +2148,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_reset_event_unchecked(
         &mut self,
@@ -2206,7 +2230,10 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 - `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 36: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_resolve_image(
         &mut self,
@@ -2245,7 +2272,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_resolve_image_unchecked(
         &mut self,
@@ -2277,6 +2304,9 @@ The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time
 
 The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetEvent-stageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdSetEvent-stageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdSetEvent-stageMask-01149`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdSetEvent-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdSetEvent-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -2285,7 +2315,7 @@ The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdSetEvent-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_event(&mut self, event: &Event, stage_mask: vk::PipelineStageFlags) {
         {
@@ -2302,7 +2332,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 15 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, `VUID-vkCmdSetEvent-stageMask-04090`, `VUID-vkCmdSetEvent-stageMask-04091`, `VUID-vkCmdSetEvent-stageMask-01149`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_event_unchecked(
         &mut self,
@@ -2617,8 +2647,9 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 198.
 
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 197: explicit rule; the wrappers do not check it*/
+- 195: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed_indirect(
         &mut self,
@@ -2635,7 +2666,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 198.
             None,
         )?;
         {
-            let r = self.validate_cmd_draw_indexed_indirect(buffer);
+            let r = self.validate_cmd_draw_indexed_indirect(buffer, draw_count);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2648,7 +2679,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 198.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -2682,8 +2713,9 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 197.
 
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 196: explicit rule; the wrappers do not check it*/
+- 194: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indirect(
         &mut self,
@@ -2699,7 +2731,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 197.
             "VUID-vkCmdDrawIndirect-None-02697",
         )?;
         {
-            let r = self.validate_cmd_draw_indirect(buffer);
+            let r = self.validate_cmd_draw_indirect(buffer, draw_count);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2710,7 +2742,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 197.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

@@ -357,6 +357,9 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
 
 The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
 
+- `VUID-vkCmdResetEvent2-stageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent2-stageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent2-stageMask-03830`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -365,7 +368,7 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_reset_event2(
         &mut self,
@@ -386,7 +389,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_reset_event2_unchecked(
         &mut self,
@@ -548,7 +551,10 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 5: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_bind_vertex_buffers2(
         &mut self,
@@ -587,7 +593,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         }
         crate::hooks::cmd_bind_vertex_buffers2_checks(self, buffers, offsets, sizes)?;
         {
-            let r = self.validate_cmd_bind_vertex_buffers2(buffers);
+            let r = self.validate_cmd_bind_vertex_buffers2(first_binding, buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -606,7 +612,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
         &mut self,
@@ -1397,7 +1403,10 @@ The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khro
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 21 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 21.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 19: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_write_timestamp2(
         &mut self,
@@ -1419,7 +1428,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_write_timestamp2_unchecked(
         &mut self,
