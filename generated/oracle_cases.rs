@@ -5,750 +5,801 @@
 // value that breaks exactly that rule.
 oracle_cases! {
     cmd_set_event: args::CmdSetEvent {
-        "VUID-vkCmdSetEvent-stageMask-04090" => |v, l| {
+        "VUID-vkCmdSetEvent-stageMask-04090" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-vkCmdSetEvent-stageMask-04091" => |v, l| {
+        "VUID-vkCmdSetEvent-stageMask-04091" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-vkCmdSetEvent-stageMask-01149" => |v, l| {
+        "VUID-vkCmdSetEvent-stageMask-01149" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x4000);
         },
     },
     cmd_reset_event2: args::CmdResetEvent2 {
-        "VUID-vkCmdResetEvent2-stageMask-03929" => |v, l| {
+        "VUID-vkCmdResetEvent2-stageMask-03929" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-vkCmdResetEvent2-stageMask-03930" => |v, l| {
+        "VUID-vkCmdResetEvent2-stageMask-03930" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-vkCmdResetEvent2-stageMask-03830" => |v, l| {
+        "VUID-vkCmdResetEvent2-stageMask-03830" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x4000);
         },
     },
     cmd_reset_event: args::CmdResetEvent {
-        "VUID-vkCmdResetEvent-stageMask-04090" => |v, l| {
+        "VUID-vkCmdResetEvent-stageMask-04090" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-vkCmdResetEvent-stageMask-04091" => |v, l| {
+        "VUID-vkCmdResetEvent-stageMask-04091" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-vkCmdResetEvent-stageMask-01153" => |v, l| {
+        "VUID-vkCmdResetEvent-stageMask-01153" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x4000);
         },
     },
     cmd_wait_events: args::CmdWaitEvents {
-        "VUID-vkCmdWaitEvents-srcStageMask-04090" => |v, l| {
+        "VUID-vkCmdWaitEvents-srcStageMask-04090" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-vkCmdWaitEvents-srcStageMask-04091" => |v, l| {
+        "VUID-vkCmdWaitEvents-srcStageMask-04091" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-vkCmdWaitEvents-dstStageMask-04090" => |v, l| {
+        "VUID-vkCmdWaitEvents-dstStageMask-04090" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-vkCmdWaitEvents-dstStageMask-04091" => |v, l| {
+        "VUID-vkCmdWaitEvents-dstStageMask-04091" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
     },
     cmd_pipeline_barrier: args::CmdPipelineBarrier {
-        "VUID-vkCmdPipelineBarrier-srcStageMask-04090" => |v, l| {
+        "VUID-vkCmdPipelineBarrier-srcStageMask-04090" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-vkCmdPipelineBarrier-srcStageMask-04091" => |v, l| {
+        "VUID-vkCmdPipelineBarrier-srcStageMask-04091" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-vkCmdPipelineBarrier-dstStageMask-04090" => |v, l| {
+        "VUID-vkCmdPipelineBarrier-dstStageMask-04090" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-vkCmdPipelineBarrier-dstStageMask-04091" => |v, l| {
+        "VUID-vkCmdPipelineBarrier-dstStageMask-04091" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
     },
     memory_barrier2: vk::MemoryBarrier2<'_> {
-        "VUID-VkMemoryBarrier2-srcStageMask-03929" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcStageMask-03929" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-VkMemoryBarrier2-srcStageMask-03930" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcStageMask-03930" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03900" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03900" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x1);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03901" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03901" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x2);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03902" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03902" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x4);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03903" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03903" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x10);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03904" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03904" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x8);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03905" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03905" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x100000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03906" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03906" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x200000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03907" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03907" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x400000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03909" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03909" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x40);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03910" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03910" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x80);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03911" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03911" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x100);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03912" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03912" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x200);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03913" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03913" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x400);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03914" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03914" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x800);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03915" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03915" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x1000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03916" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03916" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x2000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03917" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03917" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstStageMask-03929" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstStageMask-03929" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-VkMemoryBarrier2-dstStageMask-03930" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstStageMask-03930" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03900" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03900" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x1);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03901" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03901" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x2);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03902" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03902" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03903" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03903" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x10);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03904" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03904" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x8);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03905" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03905" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x100000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03906" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03906" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x200000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03907" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03907" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x400000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03909" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03909" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x40);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03910" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03910" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x80);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03911" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03911" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x100);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03912" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03912" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x200);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03913" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03913" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x400);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03914" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03914" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x800);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03915" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03915" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x1000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03916" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03916" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x2000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03917" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03917" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-srcAccessMask-03908" => |v, l| {
+        "VUID-VkMemoryBarrier2-srcAccessMask-03908" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x20);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkMemoryBarrier2-dstAccessMask-03908" => |v, l| {
+        "VUID-VkMemoryBarrier2-dstAccessMask-03908" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x20);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
     buffer_memory_barrier2: vk::BufferMemoryBarrier2<'_> {
-        "VUID-VkBufferMemoryBarrier2-srcStageMask-03929" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcStageMask-03929" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-VkBufferMemoryBarrier2-srcStageMask-03930" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcStageMask-03930" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03900" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03900" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x1);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03901" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03901" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x2);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03902" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03902" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x4);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03903" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03903" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x10);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03904" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03904" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x8);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03905" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03905" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x100000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03906" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03906" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x200000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03907" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03907" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x400000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03909" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03909" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x40);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03910" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03910" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x80);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03911" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03911" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x100);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03912" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03912" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x200);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03913" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03913" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x400);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03914" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03914" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x800);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03915" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03915" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x1000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03916" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03916" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x2000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03917" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03917" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstStageMask-03929" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstStageMask-03929" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-VkBufferMemoryBarrier2-dstStageMask-03930" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstStageMask-03930" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03900" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03900" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x1);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03901" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03901" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x2);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03902" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03902" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03903" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03903" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x10);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03904" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03904" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x8);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03905" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03905" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x100000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03906" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03906" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x200000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03907" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03907" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x400000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03909" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03909" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x40);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03910" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03910" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x80);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03911" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03911" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x100);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03912" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03912" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x200);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03913" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03913" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x400);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03914" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03914" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x800);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03915" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03915" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x1000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03916" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03916" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x2000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03917" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03917" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03908" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-offset-01187" => |v, l, o| {
+            v.offset = o.buffer.size as _;
+        },
+        "VUID-VkBufferMemoryBarrier2-buffer-01931" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+        "VUID-VkBufferMemoryBarrier2-srcAccessMask-03908" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x20);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03908" => |v, l| {
+        "VUID-VkBufferMemoryBarrier2-dstAccessMask-03908" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x20);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
     image_memory_barrier2: vk::ImageMemoryBarrier2<'_> {
-        "VUID-VkImageMemoryBarrier2-srcStageMask-03929" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcStageMask-03929" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-VkImageMemoryBarrier2-srcStageMask-03930" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcStageMask-03930" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03900" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03900" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x1);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03901" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03901" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x2);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03902" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03902" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x4);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03903" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03903" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x10);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03904" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03904" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x8);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03905" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03905" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x100000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03906" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03906" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x200000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03907" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03907" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x400000000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03909" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03909" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x40);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03910" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03910" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x80);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03911" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03911" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x100);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03912" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03912" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x200);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03913" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03913" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x400);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03914" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03914" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x800);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03915" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03915" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x1000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03916" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03916" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x2000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03917" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03917" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstStageMask-03929" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstStageMask-03929" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
         },
-        "VUID-VkImageMemoryBarrier2-dstStageMask-03930" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstStageMask-03930" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03900" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03900" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x1);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03901" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03901" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x2);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03902" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03902" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03903" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03903" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x10);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03904" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03904" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x8);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03905" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03905" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x100000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03906" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03906" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x200000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03907" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03907" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x400000000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03909" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03909" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x40);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03910" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03910" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x80);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03911" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03911" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x100);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03912" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03912" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x200);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03913" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03913" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x400);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03914" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03914" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x800);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03915" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03915" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x1000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03916" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03916" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x2000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03917" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03917" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-srcAccessMask-03908" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-image-01932" => |v, l, o| {
+            o.image.bind = false;
+        },
+        "VUID-VkImageMemoryBarrier2-srcAccessMask-03908" => |v, l, o| {
             v.src_access_mask |= vk::AccessFlags2::from_raw(0x20);
             v.src_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
-        "VUID-VkImageMemoryBarrier2-dstAccessMask-03908" => |v, l| {
+        "VUID-VkImageMemoryBarrier2-dstAccessMask-03908" => |v, l, o| {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x20);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
     attachment_description: vk::AttachmentDescription {
-        "VUID-VkAttachmentDescription-finalLayout-00843" => |v, l| {
+        "VUID-VkAttachmentDescription-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
         },
     },
     subpass_description: vk::SubpassDescription<'_> {
-        "VUID-VkSubpassDescription-pipelineBindPoint-00844" => |v, l| {
+        "VUID-VkSubpassDescription-pipelineBindPoint-00844" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
     },
     subpass_dependency: vk::SubpassDependency {
-        "VUID-VkSubpassDependency-srcStageMask-04090" => |v, l| {
+        "VUID-VkSubpassDependency-srcStageMask-04090" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-VkSubpassDependency-srcStageMask-04091" => |v, l| {
+        "VUID-VkSubpassDependency-srcStageMask-04091" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-VkSubpassDependency-dstStageMask-04090" => |v, l| {
+        "VUID-VkSubpassDependency-dstStageMask-04090" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-VkSubpassDependency-dstStageMask-04091" => |v, l| {
+        "VUID-VkSubpassDependency-dstStageMask-04091" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
     },
     attachment_description2: vk::AttachmentDescription2<'_> {
-        "VUID-VkAttachmentDescription2-finalLayout-00843" => |v, l| {
+        "VUID-VkAttachmentDescription2-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
         },
     },
     subpass_description2: vk::SubpassDescription2<'_> {
-        "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l| {
+        "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
     },
     subpass_dependency2: vk::SubpassDependency2<'_> {
-        "VUID-VkSubpassDependency2-srcStageMask-04090" => |v, l| {
+        "VUID-VkSubpassDependency2-srcStageMask-04090" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-VkSubpassDependency2-srcStageMask-04091" => |v, l| {
+        "VUID-VkSubpassDependency2-srcStageMask-04091" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-VkSubpassDependency2-dstStageMask-04090" => |v, l| {
+        "VUID-VkSubpassDependency2-dstStageMask-04090" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
         },
-        "VUID-VkSubpassDependency2-dstStageMask-04091" => |v, l| {
+        "VUID-VkSubpassDependency2-dstStageMask-04091" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
-        "VUID-VkSubpassDependency2-dependencyFlags-03092" => |v, l| {
+        "VUID-VkSubpassDependency2-dependencyFlags-03092" => |v, l, o| {
             v.dependency_flags &= !vk::DependencyFlags::from_raw(0x2);
             v.view_offset = 1;
         },
     },
     buffer_create_info: vk::BufferCreateInfo<'_> {
-        "VUID-VkBufferCreateInfo-size-00912" => |v, l| {
+        "VUID-VkBufferCreateInfo-size-00912" => |v, l, o| {
             v.size = 0;
         },
-        "VUID-VkBufferCreateInfo-flags-00915" => |v, l| {
+        "VUID-VkBufferCreateInfo-flags-00915" => |v, l, o| {
             v.flags |= vk::BufferCreateFlags::from_raw(0x1);
         },
     },
     image_create_info: vk::ImageCreateInfo<'_> {
-        "VUID-VkImageCreateInfo-extent-00944" => |v, l| {
+        "VUID-VkImageCreateInfo-extent-00944" => |v, l, o| {
             v.extent.width = 0;
         },
-        "VUID-VkImageCreateInfo-extent-00945" => |v, l| {
+        "VUID-VkImageCreateInfo-extent-00945" => |v, l, o| {
             v.extent.height = 0;
         },
-        "VUID-VkImageCreateInfo-mipLevels-00947" => |v, l| {
+        "VUID-VkImageCreateInfo-mipLevels-00947" => |v, l, o| {
             v.mip_levels = 0;
         },
-        "VUID-VkImageCreateInfo-arrayLayers-00948" => |v, l| {
+        "VUID-VkImageCreateInfo-arrayLayers-00948" => |v, l, o| {
             v.array_layers = 0;
         },
-        "VUID-VkImageCreateInfo-imageType-00957" => |v, l| {
+        "VUID-VkImageCreateInfo-imageType-00957" => |v, l, o| {
             v.image_type = vk::ImageType::from_raw(1);
             v.extent.depth = 2;
         },
-        "VUID-VkImageCreateInfo-imageType-00961" => |v, l| {
+        "VUID-VkImageCreateInfo-imageType-00961" => |v, l, o| {
             v.image_type = vk::ImageType::from_raw(2);
             v.array_layers = 2;
         },
-        "VUID-VkImageCreateInfo-usage-00968" => |v, l| {
+        "VUID-VkImageCreateInfo-usage-00968" => |v, l, o| {
             v.usage |= vk::ImageUsageFlags::from_raw(0x8);
             v.samples = vk::SampleCountFlags::from_raw(2);
         },
-        "VUID-VkImageCreateInfo-flags-00969" => |v, l| {
+        "VUID-VkImageCreateInfo-flags-00969" => |v, l, o| {
             v.flags |= vk::ImageCreateFlags::from_raw(0x1);
         },
-        "VUID-VkImageCreateInfo-initialLayout-00993" => |v, l| {
+        "VUID-VkImageCreateInfo-initialLayout-00993" => |v, l, o| {
             v.initial_layout = vk::ImageLayout::from_raw(1);
         },
-        "VUID-VkImageCreateInfo-format-00943" => |v, l| {
+        "VUID-VkImageCreateInfo-format-00943" => |v, l, o| {
             v.format = vk::Format::from_raw(0);
         },
     },
     sampler_create_info: vk::SamplerCreateInfo<'_> {
-        "VUID-VkSamplerCreateInfo-maxLod-01973" => |v, l| {
+        "VUID-VkSamplerCreateInfo-maxLod-01973" => |v, l, o| {
             v.max_lod = v.min_lod - 1.0;
         },
-        "VUID-VkSamplerCreateInfo-anisotropyEnable-01070" => |v, l| {
+        "VUID-VkSamplerCreateInfo-anisotropyEnable-01070" => |v, l, o| {
             v.anisotropy_enable = 1;
         },
-        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073" => |v, l| {
+        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073" => |v, l, o| {
             v.unnormalized_coordinates = 1;
             v.mipmap_mode = vk::SamplerMipmapMode::from_raw(1);
         },
-        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077" => |v, l| {
+        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077" => |v, l, o| {
             v.unnormalized_coordinates = 1;
             v.compare_enable = 1;
         },
     },
     push_constant_range: vk::PushConstantRange {
-        "VUID-VkPushConstantRange-size-00296" => |v, l| {
+        "VUID-VkPushConstantRange-size-00296" => |v, l, o| {
             v.size = 0;
         },
     },
     descriptor_pool_create_info: vk::DescriptorPoolCreateInfo<'_> {
-        "VUID-VkDescriptorPoolCreateInfo-maxSets-00301" => |v, l| {
+        "VUID-VkDescriptorPoolCreateInfo-maxSets-00301" => |v, l, o| {
             v.max_sets = 0;
         },
     },
     descriptor_pool_size: vk::DescriptorPoolSize {
-        "VUID-VkDescriptorPoolSize-descriptorCount-00302" => |v, l| {
+        "VUID-VkDescriptorPoolSize-descriptorCount-00302" => |v, l, o| {
             v.descriptor_count = 0;
         },
     },
     query_pool_create_info: vk::QueryPoolCreateInfo<'_> {
-        "VUID-VkQueryPoolCreateInfo-queryType-00791" => |v, l| {
+        "VUID-VkQueryPoolCreateInfo-queryType-00791" => |v, l, o| {
             v.query_type = vk::QueryType::from_raw(1);
         },
     },
     cmd_write_timestamp: args::CmdWriteTimestamp {
-        "VUID-vkCmdWriteTimestamp-pipelineStage-04075" => |v, l| {
+        "VUID-vkCmdWriteTimestamp-pipelineStage-04075" => |v, l, o| {
             v.pipeline_stage = vk::PipelineStageFlags::from_raw(64);
         },
-        "VUID-vkCmdWriteTimestamp-pipelineStage-04076" => |v, l| {
+        "VUID-vkCmdWriteTimestamp-pipelineStage-04076" => |v, l, o| {
             v.pipeline_stage = vk::PipelineStageFlags::from_raw(16);
         },
     },
     cmd_clear_color_image: args::CmdClearColorImage {
-        "VUID-vkCmdClearColorImage-imageLayout-00005" => |v, l| {
+        "VUID-vkCmdClearColorImage-image-00002" => |v, l, o| {
+            o.image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdClearColorImage-image-00003" => |v, l, o| {
+            o.image.bind = false;
+        },
+        "VUID-vkCmdClearColorImage-imageLayout-00005" => |v, l, o| {
             v.image_layout = vk::ImageLayout::from_raw(0);
         },
     },
     cmd_copy_image: args::CmdCopyImage {
-        "VUID-vkCmdCopyImage-srcImageLayout-00129" => |v, l| {
+        "VUID-vkCmdCopyImage-srcImageLayout-00129" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
-        "VUID-vkCmdCopyImage-dstImageLayout-00134" => |v, l| {
+        "VUID-vkCmdCopyImage-dstImageLayout-00134" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
     cmd_copy_buffer_to_image: args::CmdCopyBufferToImage {
-        "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181" => |v, l| {
+        "VUID-vkCmdCopyBufferToImage-srcBuffer-00174" => |v, l, o| {
+            o.src_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x1);
+        },
+        "VUID-vkCmdCopyBufferToImage-srcBuffer-00176" => |v, l, o| {
+            o.src_buffer.bind = false;
+        },
+        "VUID-vkCmdCopyBufferToImage-dstImage-00177" => |v, l, o| {
+            o.dst_image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdCopyBufferToImage-dstImage-00178" => |v, l, o| {
+            o.dst_image.bind = false;
+        },
+        "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
     cmd_copy_image_to_buffer: args::CmdCopyImageToBuffer {
-        "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190" => |v, l| {
+        "VUID-vkCmdCopyImageToBuffer-srcImage-00186" => |v, l, o| {
+            o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
+        },
+        "VUID-vkCmdCopyImageToBuffer-srcImage-00187" => |v, l, o| {
+            o.src_image.bind = false;
+        },
+        "VUID-vkCmdCopyImageToBuffer-dstBuffer-00191" => |v, l, o| {
+            o.dst_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdCopyImageToBuffer-dstBuffer-00192" => |v, l, o| {
+            o.dst_buffer.bind = false;
+        },
+        "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
     cmd_blit_image: args::CmdBlitImage {
-        "VUID-vkCmdBlitImage-srcImageLayout-00222" => |v, l| {
+        "VUID-vkCmdBlitImage-srcImage-00219" => |v, l, o| {
+            o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
+        },
+        "VUID-vkCmdBlitImage-srcImage-00220" => |v, l, o| {
+            o.src_image.bind = false;
+        },
+        "VUID-vkCmdBlitImage-dstImage-00224" => |v, l, o| {
+            o.dst_image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdBlitImage-dstImage-00225" => |v, l, o| {
+            o.dst_image.bind = false;
+        },
+        "VUID-vkCmdBlitImage-srcImageLayout-00222" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
-        "VUID-vkCmdBlitImage-dstImageLayout-00227" => |v, l| {
+        "VUID-vkCmdBlitImage-dstImageLayout-00227" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
     vertex_input_binding_description: vk::VertexInputBindingDescription {
-        "VUID-VkVertexInputBindingDescription-binding-00618" => |v, l| {
+        "VUID-VkVertexInputBindingDescription-binding-00618" => |v, l, o| {
             v.binding = l.max_vertex_input_bindings as _;
         },
-        "VUID-VkVertexInputBindingDescription-stride-00619" => |v, l| {
+        "VUID-VkVertexInputBindingDescription-stride-00619" => |v, l, o| {
             v.stride = (l.max_vertex_input_binding_stride as u64 + 1) as _;
         },
     },
     pipeline_rasterization_state_create_info: vk::PipelineRasterizationStateCreateInfo<'_> {
-        "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782" => |v, l| {
+        "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782" => |v, l, o| {
             v.depth_clamp_enable = 1;
         },
-        "VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413" => |v, l| {
+        "VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413" => |v, l, o| {
             v.polygon_mode = vk::PolygonMode::from_raw(1);
         },
     },
     pipeline_multisample_state_create_info: vk::PipelineMultisampleStateCreateInfo<'_> {
-        "VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784" => |v, l| {
+        "VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784" => |v, l, o| {
             v.sample_shading_enable = 1;
         },
-        "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785" => |v, l| {
+        "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785" => |v, l, o| {
             v.alpha_to_one_enable = 1;
         },
     },
     pipeline_color_blend_state_create_info: vk::PipelineColorBlendStateCreateInfo<'_> {
-        "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606" => |v, l| {
+        "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606" => |v, l, o| {
             v.logic_op_enable = 1;
         },
     },
     pipeline_color_blend_attachment_state: vk::PipelineColorBlendAttachmentState {
-        "VUID-VkPipelineColorBlendAttachmentState-srcColorBlendFactor-00608" => |v, l| {
+        "VUID-VkPipelineColorBlendAttachmentState-srcColorBlendFactor-00608" => |v, l, o| {
             v.src_color_blend_factor = vk::BlendFactor::from_raw(15);
         },
-        "VUID-VkPipelineColorBlendAttachmentState-dstColorBlendFactor-00609" => |v, l| {
+        "VUID-VkPipelineColorBlendAttachmentState-dstColorBlendFactor-00609" => |v, l, o| {
             v.dst_color_blend_factor = vk::BlendFactor::from_raw(15);
         },
-        "VUID-VkPipelineColorBlendAttachmentState-srcAlphaBlendFactor-00610" => |v, l| {
+        "VUID-VkPipelineColorBlendAttachmentState-srcAlphaBlendFactor-00610" => |v, l, o| {
             v.src_alpha_blend_factor = vk::BlendFactor::from_raw(15);
         },
-        "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611" => |v, l| {
+        "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611" => |v, l, o| {
             v.dst_alpha_blend_factor = vk::BlendFactor::from_raw(15);
         },
     },

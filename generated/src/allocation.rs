@@ -252,6 +252,7 @@ impl Device {
             self.fns()
                 .bind_image_memory(image.raw(), allocation.memory(), allocation.offset())
         }?;
+        self.live().image_bound(image.raw());
         let memory = BoundMemory::new(allocation);
         image.retain_memory(memory.cell.clone());
         Ok(Bound {

@@ -10,7 +10,8 @@
 use crate::handles::*;
 use crate::recorder::{Recorder, State};
 use crate::retention::{
-    BindingRecord, BufferRecord, LayoutRecord, PipelineRecord, QueryPoolRecord, SetLayoutRecord,
+    BindingRecord, BufferRecord, ImageRecord, LayoutRecord, PipelineRecord, QueryPoolRecord,
+    SetLayoutRecord,
 };
 use crate::structs::*;
 use crate::submission::{self, SubmitRules};
@@ -654,11 +655,32 @@ pub(crate) fn bind_buffer_memory2_done(device: &Device, bind_infos: &[BindBuffer
     }
 }
 
-/// Each image keeps its memory alive.
+/// Each image keeps its memory alive; commands that use it may now read it.
 pub(crate) fn bind_image_memory2_done(device: &Device, bind_infos: &[BindImageMemoryInfo<'_>]) {
     for info in bind_infos {
         device.live().bound2(info.image, info.memory);
+        device.live().image_bound(info.image);
     }
+}
+
+/// The device remembers the image's creation parameters for the checks of the
+/// commands and structs that name it.
+pub(crate) fn image_created(
+    device: &Device,
+    image: Image,
+    create_info: &ImageCreateInfo<'_>,
+) -> Image {
+    device.live().image_created(
+        image.raw(),
+        ImageRecord {
+            flags: create_info.flags,
+            mip_levels: create_info.mip_levels,
+            array_layers: create_info.array_layers,
+            usage: create_info.usage,
+            bound: false,
+        },
+    );
+    image
 }
 
 /// The device remembers the buffer's size, usage and flags for the checks of the
@@ -1004,8 +1026,9 @@ pub(crate) fn cmd_copy_buffer_checks<S: State>(
 }
 
 /// The image keeps its memory alive.
-pub(crate) fn bind_image_memory_done(image: &Image, memory: &DeviceMemory) {
+pub(crate) fn bind_image_memory_done(device: &Device, image: &Image, memory: &DeviceMemory) {
     image.retain_memory(memory.retained());
+    device.live().image_bound(image.raw());
 }
 
 /// Every queue operation of the queue is complete.

@@ -24,7 +24,7 @@ pub mod api_info;
 #[path = "generated/checks/mod.rs"]
 #[rustfmt::skip]
 mod checks;
-#[path = "generated/command_checks.rs"]
+#[path = "generated/command_checks/mod.rs"]
 #[rustfmt::skip]
 mod command_checks;
 #[path = "generated/commands/mod.rs"]

@@ -64,6 +64,8 @@ pub(crate) struct Live {
     timelines: Vutex<std::collections::HashSet<u64>>,
     /// What the checks of commands that use a buffer need to know of it.
     buffers: Vutex<HashMap<u64, BufferRecord>>,
+    /// What the checks of commands and structs that name an image need to know of it.
+    images: Vutex<HashMap<u64, ImageRecord>>,
     /// Each query pool's type, query count and statistics.
     query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
     /// Each pipeline layout's push-constant ranges and sets.
@@ -170,6 +172,21 @@ pub(crate) struct BufferRecord {
     pub bound: bool,
 }
 
+/// An image's creation parameters, as its checks read them.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ImageRecord {
+    /// `VkImageCreateInfo::flags`.
+    pub flags: vk::ImageCreateFlags,
+    /// `VkImageCreateInfo::mipLevels`.
+    pub mip_levels: u32,
+    /// `VkImageCreateInfo::arrayLayers`.
+    pub array_layers: u32,
+    /// `VkImageCreateInfo::usage`.
+    pub usage: vk::ImageUsageFlags,
+    /// Whether memory is bound to it.
+    pub bound: bool,
+}
+
 impl Default for Live {
     fn default() -> Self {
         Self {
@@ -180,6 +197,7 @@ impl Default for Live {
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
             buffers: Vutex::new(HashMap::default()),
+            images: Vutex::new(HashMap::default()),
             query_pools: Vutex::new(HashMap::default()),
             pipeline_layouts: Vutex::new(HashMap::default()),
             pipelines: Vutex::new(HashMap::default()),
@@ -285,6 +303,9 @@ impl Live {
             _ if !unlisted => {}
             vk::ObjectType::BUFFER => {
                 self.buffers.lock().remove(&key.1);
+            }
+            vk::ObjectType::IMAGE => {
+                self.images.lock().remove(&key.1);
             }
             vk::ObjectType::QUERY_POOL => {
                 self.query_pools.lock().remove(&key.1);
@@ -405,6 +426,23 @@ impl Live {
         if let Some(r) = self.buffers.lock().get_mut(&raw.as_raw()) {
             r.bound = true;
         }
+    }
+
+    /// Records a new image's creation parameters.
+    pub(crate) fn image_created(&self, raw: vk::Image, record: ImageRecord) {
+        self.images.lock().insert(raw.as_raw(), record);
+    }
+
+    /// Records that memory is bound to an image.
+    pub(crate) fn image_bound(&self, raw: vk::Image) {
+        if let Some(r) = self.images.lock().get_mut(&raw.as_raw()) {
+            r.bound = true;
+        }
+    }
+
+    /// The record of a live image made through the wrappers (not a swapchain's).
+    pub(crate) fn image(&self, raw: vk::Image) -> Option<ImageRecord> {
+        self.images.lock().get(&raw.as_raw()).copied()
     }
 
     /// The record of a live buffer made through the wrappers.

@@ -71,6 +71,18 @@ impl<'a> Scope<'a> {
             .is_none_or(|d| get(&d.live().features()) != vk::FALSE)
     }
 
+    /// The record of a buffer made through the wrappers on the scope's device.
+    #[inline]
+    pub(crate) fn buffer(&self, raw: vk::Buffer) -> Option<crate::retention::BufferRecord> {
+        self.device.and_then(|d| d.live().buffer(raw))
+    }
+
+    /// The record of an image made through the wrappers on the scope's device.
+    #[inline]
+    pub(crate) fn image(&self, raw: vk::Image) -> Option<crate::retention::ImageRecord> {
+        self.device.and_then(|d| d.live().image(raw))
+    }
+
     /// The limits of the scope's physical device, where the scope has a device.
     #[inline]
     pub(crate) fn limits(&self) -> Option<&'a vk::PhysicalDeviceLimits> {

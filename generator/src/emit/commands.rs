@@ -101,23 +101,29 @@ fn hook_stmt(c: &Call) -> TokenStream {
 
 /// The `commands` module, and the `command_checks` module with the named dynamic checks
 /// that its checked methods call.
-pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>, TokenStream) {
+/// Generated files by path, as `emit::split` writes them.
+type Files = Vec<(String, TokenStream)>;
+
+pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Files, Files) {
     let mut modules: std::collections::BTreeMap<String, (Vec<String>, ImplBlocks)> =
         Default::default();
-    let mut validators = ImplBlocks::default();
+    let mut validators: std::collections::BTreeMap<String, (Vec<String>, ImplBlocks)> =
+        Default::default();
     for plan in plans {
         let (header, item, validator) = emit_command(all, plan);
         if item.is_empty() {
             continue;
-        }
-        if let Some(v) = validator {
-            validators.push(header.clone(), v);
         }
         // Core versions keep their recorded commands apart: Vulkan 1.0's alone would
         // make one file of 6,000 lines.
         let mut module = super::module_of(all.cx.model, &plan.name);
         if recorded(plan) && module.starts_with("v1_") {
             module.push_str("_recording");
+        }
+        if let Some(v) = validator {
+            let (names, blocks) = validators.entry(module.clone()).or_default();
+            names.push(plan.name.clone());
+            blocks.push(header.clone(), v);
         }
         let (names, blocks) = modules.entry(module).or_default();
         names.push(plan.name.clone());
@@ -127,7 +133,10 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
         .into_iter()
         .map(|(m, (names, blocks))| (m, (names, blocks.render().collect())))
         .collect();
-    let validators = validators.render();
+    let validators = validators
+        .into_iter()
+        .map(|(m, (names, blocks))| (m, (names, blocks.render().collect())))
+        .collect();
     let head = quote! {
         //! Commands as methods on the wrappers they dispatch on, one module per core
         //! version and extension.
@@ -154,17 +163,25 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Vec<(String, TokenStream)>,
         modules,
         false,
     );
-    let checks = quote! {
+    let checks_head = quote! {
         //! The dynamic checks of each command, run in every build: one `validate_*`
         //! method per checked command,
-        //! beside it on the same receiver, which the checked method calls first.
+        //! beside it on the same receiver, which the checked method calls first;
+        //! one module per core version and extension, as the commands are.
         use crate::handles::*;
         use crate::structs::*;
         use crate::validation::fail;
         use crate::{recorder::*, Entry, Handle, Result};
         use ash::vk;
-        #(#validators)*
     };
+    let checks = super::split(
+        all.cx.model,
+        "command_checks",
+        "The dynamic checks of the commands",
+        checks_head,
+        validators,
+        false,
+    );
     (commands, checks)
 }
 

@@ -3,7 +3,7 @@
 //! struct `v`, the scope `s` (features, limits) and nothing else.
 
 use crate::names::field_ident;
-use crate::validity::explicit::{Check, Op, Pred, Recognised, Rhs};
+use crate::validity::explicit::{Check, Object, Op, Pred, Recognised, Rhs};
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
@@ -39,6 +39,21 @@ fn op(o: Op) -> TokenStream {
 }
 
 use crate::validity::explicit::is_bool;
+
+/// The device's record of the object a handle names: `Option<BufferRecord>` or
+/// `Option<ImageRecord>`.
+fn record(path: &str, object: Object, on_command: bool) -> TokenStream {
+    let raw = if on_command {
+        let h = member(path, true);
+        quote!(#h.raw())
+    } else {
+        member(path, false)
+    };
+    match object {
+        Object::Buffer => quote!(s.buffer(#raw)),
+        Object::Image => quote!(s.image(#raw)),
+    }
+}
 
 /// The comparison that fails exactly when `o` holds (for numbers that compare).
 fn inverse(o: Op) -> Op {
@@ -136,6 +151,44 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                         quote!(s.limits().is_none_or(|l| #cmp))
                     }
                 }
+                Rhs::Created {
+                    handle: h,
+                    object,
+                    field,
+                } => {
+                    let record = record(h, *object, on_command);
+                    let f = field_ident(field);
+                    let cmp = quote!((#m as #cast) #ot (r.#f as #cast));
+                    // An object the wrappers did not make has no record: not known.
+                    if negated {
+                        quote!(#record.is_some_and(|r| #cmp))
+                    } else {
+                        quote!(#record.is_none_or(|r| #cmp))
+                    }
+                }
+            }
+        }
+        Pred::Usage {
+            handle: h,
+            object,
+            bits,
+        } => {
+            let record = record(h, *object, on_command);
+            let mask = Literal::u64_unsuffixed(bits.iter().fold(0u64, |a, b| a | b.number as u64));
+            if negated {
+                quote!(#record.is_some_and(|r| (u64::from(r.usage.as_raw()) & #mask) != #mask))
+            } else {
+                quote!(#record.is_none_or(|r| (u64::from(r.usage.as_raw()) & #mask) == #mask))
+            }
+        }
+        Pred::Bound { handle: h, object } => {
+            let record = record(h, *object, on_command);
+            // `SPARSE_BINDING` is bit 0 of both objects' create flags.
+            let bound = quote!((r.bound || (r.flags.as_raw() & 1) != 0));
+            if negated {
+                quote!(#record.is_some_and(|r| !#bound))
+            } else {
+                quote!(#record.is_none_or(|r| #bound))
             }
         }
         Pred::Feature { name, enabled } => {
@@ -161,6 +214,15 @@ pub fn render(r: &Recognised) -> TokenStream {
         .map(|m| format!("`{m}` = {{:?}}"))
         .collect::<Vec<_>>()
         .join(", ");
+    if members.is_empty() {
+        // The rule reads only the records of the objects it names.
+        let text = &r.text;
+        return quote! {
+            if #(#when &&)* #broken {
+                return Err(fail(#vuid, #text.into()));
+            }
+        };
+    }
     let text = format!("{} ({shown})", r.text.replace('{', "{{").replace('}', "}}"));
     let args = members.iter().map(|m| member(m, r.on_command));
     quote! {
@@ -173,7 +235,7 @@ pub fn render(r: &Recognised) -> TokenStream {
 /// `oracle_cases.rs`: the oracle's cases as one `oracle_cases!` invocation, which
 /// `tests/oracle.rs` defines; each case is a closure that changes the fixture's
 /// value `v` (a struct, or a command's `args::` struct), given the device's
-/// limits `l`.
+/// limits `l`, and how the fixture makes the objects it names (`o`).
 pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
     use crate::plan::oracle::{path, Assign};
     use std::fmt::Write;
@@ -207,7 +269,7 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
         };
         let _ = writeln!(s, "    {fixture}: {ty} {{");
         for c in cases.iter().filter(|c| c.item == item) {
-            let _ = writeln!(s, "        {:?} => |v, l| {{", c.vuid);
+            let _ = writeln!(s, "        {:?} => |v, l, o| {{", c.vuid);
             let path = |m: &str| path(m, c.on_command);
             for a in &c.assigns {
                 let line = match a {
@@ -233,6 +295,24 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
                         crate::names::type_name(ty).replace("FlagBits", "Flags")
                     ),
                     Assign::Number { member, expr } => format!("v.{} = {expr};", path(member)),
+                    // The fixture makes its objects from `o` after the change, so
+                    // the handle's name is the spec's (a parameter as the method
+                    // names it).
+                    Assign::ClearUsage {
+                        handle,
+                        object,
+                        bits,
+                    } => format!(
+                        "o.{}.usage &= !vk::{}UsageFlags::from_raw({bits:#x});",
+                        crate::names::param(handle),
+                        match object {
+                            crate::validity::explicit::Object::Buffer => "Buffer",
+                            crate::validity::explicit::Object::Image => "Image",
+                        }
+                    ),
+                    Assign::Unbound { handle } => {
+                        format!("o.{}.bind = false;", crate::names::param(handle))
+                    }
                 };
                 let _ = writeln!(s, "            {line}");
             }

@@ -272,9 +272,9 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
     let (commands, command_checks) = commands::emit(plans, &ok);
     let mut files = vec![
         ("handles.rs".to_owned(), handles::emit(cx)),
-        ("command_checks.rs".to_owned(), command_checks),
         ("reach.rs".to_owned(), reach::emit(cx)),
     ];
+    files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));
     files.extend(structs::emit(plans));
     files.extend(commands);

@@ -237,7 +237,7 @@ impl Check {
                 return Vec::new();
             }
             let mut out: Vec<String> = Vec::new();
-            for m in r.check.members() {
+            for m in r.check.members().into_iter().chain(r.check.handles()) {
                 let a = param(m.split('.').next().unwrap_or_default());
                 if !out.contains(&a) {
                     out.push(a);
@@ -729,7 +729,11 @@ impl<'c, 'm> Checker<'c, 'm> {
             let by_value = r.check.members().iter().all(|m| {
                 let first = m.split('.').next().unwrap_or_default();
                 matches!(arg(first), Some((_, Param::Value)))
-            });
+            }) && r
+                .check
+                .handles()
+                .iter()
+                .all(|h| matches!(arg(h), Some((_, Param::Handle { optional: false }))));
             if by_value {
                 out.push(Check {
                     vuid: Some(r.vuid.clone()),

@@ -426,6 +426,11 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCreateImage",
+        created: call("hooks::image_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
         command: "vkCmdFillBuffer",
         check: call(
             "hooks::cmd_fill_buffer_checks",
@@ -788,7 +793,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkBindImageMemory",
-        after: call("hooks::bind_image_memory_done", &["image", "memory"]),
+        after: call("hooks::bind_image_memory_done", &["self", "image", "memory"]),
         ..NONE
     },
     Special {

@@ -11,7 +11,7 @@
 use super::checks::Checker;
 use super::Context;
 use crate::model::Model;
-use crate::validity::explicit::{Op, Pred, Recognised, Rhs, Value};
+use crate::validity::explicit::{Object, Op, Pred, Recognised, Rhs, Value};
 
 /// The structs and commands `tests/oracle.rs` has a fixture for: a smallest valid
 /// value and the safe call (and its `_unchecked` twin) that takes it. A struct's
@@ -73,6 +73,8 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430", "a patch list without tessellation shaders also breaks `VkGraphicsPipelineCreateInfo-topology-00737`"),
     ("VUID-vkCmdWriteTimestamp2-stage-03929", ONE_STAGE),
     ("VUID-vkCmdWriteTimestamp2-stage-03930", ONE_STAGE),
+    ("VUID-VkImageMemoryBarrier2-subresourceRange-01486", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01724` as well"),
+    ("VUID-VkImageMemoryBarrier2-subresourceRange-01488", "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layer is past the image's"),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
@@ -119,8 +121,22 @@ pub enum Assign {
         /// The value.
         value: i64,
     },
-    /// Set a `VkBool32` or number member to a Rust expression over `v` (the value)
-    /// and `l` (the device's limits).
+    /// Create the object a handle names without these usage bits.
+    ClearUsage {
+        /// The handle's path.
+        handle: String,
+        /// What it names.
+        object: Object,
+        /// The bits.
+        bits: u64,
+    },
+    /// Create the object a handle names without binding memory to it.
+    Unbound {
+        /// The handle's path.
+        handle: String,
+    },
+    /// Set a `VkBool32` or number member to a Rust expression over `v` (the value),
+    /// `l` (the device's limits) and `o` (how the fixture makes its objects).
     Number {
         /// The member path.
         member: String,
@@ -138,6 +154,7 @@ impl Assign {
             | Assign::ClearBits { member, .. }
             | Assign::Enum { member, .. }
             | Assign::Number { member, .. } => member,
+            Assign::ClearUsage { handle, .. } | Assign::Unbound { handle } => handle,
         }
     }
 }
@@ -304,6 +321,31 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
                 value: other.number,
             });
         }
+        Pred::Usage {
+            handle,
+            object,
+            bits,
+        } => out.push(Assign::ClearUsage {
+            handle: handle.clone(),
+            object: *object,
+            bits: mask(bits),
+        }),
+        Pred::Bound { handle, .. } => out.push(Assign::Unbound {
+            handle: handle.clone(),
+        }),
+        Pred::Compare {
+            member,
+            op: Op::Lt,
+            rhs: Rhs::Created { handle, field, .. },
+            ..
+        } => out.push(Assign::Number {
+            member: member.clone(),
+            expr: format!(
+                "o.{}.{} as _",
+                crate::names::param(handle),
+                crate::names::field(field)
+            ),
+        }),
         Pred::Compare {
             member,
             op,

@@ -65,6 +65,34 @@ pub enum Op {
     Ne,
 }
 
+/// An object whose creation parameters the device records, named by a handle
+/// member or parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Object {
+    /// A `VkBuffer`.
+    Buffer,
+    /// A `VkImage`.
+    Image,
+}
+
+impl Object {
+    fn of(c_type: &str) -> Option<Object> {
+        match c_type {
+            "VkBuffer" => Some(Object::Buffer),
+            "VkImage" => Some(Object::Image),
+            _ => None,
+        }
+    }
+
+    /// The registry's name of its usage bits.
+    pub fn usage_bits(self) -> &'static str {
+        match self {
+            Object::Buffer => "VkBufferUsageFlagBits",
+            Object::Image => "VkImageUsageFlagBits",
+        }
+    }
+}
+
 /// The right-hand side of a comparison.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Rhs {
@@ -74,6 +102,16 @@ pub enum Rhs {
     Member(String),
     /// A member of `VkPhysicalDeviceLimits`.
     Limit(String),
+    /// A creation parameter of the object a handle names, as the device recorded
+    /// it (`size` of a buffer, `mipLevels` of an image).
+    Created {
+        /// The handle's path.
+        handle: String,
+        /// What it names.
+        object: Object,
+        /// The creation parameter, as the registry names it.
+        field: String,
+    },
 }
 
 /// A predicate over the struct's members and the device.
@@ -120,6 +158,22 @@ pub enum Pred {
         /// The member is an unsigned integer.
         unsigned: bool,
     },
+    /// The object a handle names was created with every one of these usage bits.
+    Usage {
+        /// The handle's path.
+        handle: String,
+        /// What it names.
+        object: Object,
+        /// The bits.
+        bits: Vec<Value>,
+    },
+    /// The object a handle names has memory bound, or was created sparse.
+    Bound {
+        /// The handle's path.
+        handle: String,
+        /// What it names.
+        object: Object,
+    },
     /// A Vulkan 1.0 feature (a member of `VkPhysicalDeviceFeatures`) is enabled on
     /// the device.
     Feature {
@@ -142,7 +196,20 @@ impl Pred {
                 Rhs::Member(other) => vec![member, other],
                 _ => vec![member],
             },
-            Pred::Feature { .. } => Vec::new(),
+            Pred::Feature { .. } | Pred::Usage { .. } | Pred::Bound { .. } => Vec::new(),
+        }
+    }
+
+    /// The handles whose objects' records the predicate reads.
+    pub fn handles(&self) -> Vec<&str> {
+        match self {
+            Pred::Usage { handle, .. }
+            | Pred::Bound { handle, .. }
+            | Pred::Compare {
+                rhs: Rhs::Created { handle, .. },
+                ..
+            } => vec![handle],
+            _ => Vec::new(),
         }
     }
 }
@@ -157,12 +224,30 @@ impl Check {
                 matches!(
                     p,
                     Pred::Feature { .. }
+                        | Pred::Usage { .. }
+                        | Pred::Bound { .. }
                         | Pred::Compare {
-                            rhs: Rhs::Limit(_),
+                            rhs: Rhs::Limit(_) | Rhs::Created { .. },
                             ..
                         }
                 )
             })
+    }
+
+    /// The handles whose objects' records the check reads, each once, in order.
+    pub fn handles(&self) -> Vec<&str> {
+        let mut out: Vec<&str> = Vec::new();
+        for h in self
+            .when
+            .iter()
+            .chain(std::iter::once(&self.must))
+            .flat_map(Pred::handles)
+        {
+            if !out.contains(&h) {
+                out.push(h);
+            }
+        }
+        out
     }
 
     /// The struct members the check reads, each once, in order.
@@ -200,6 +285,12 @@ pub const RECOGNISERS: &[(&str, Recogniser)] = &[
     (
         "number compared with a constant, member or limit",
         compare_req,
+    ),
+    ("object created with usage bits", usage_req),
+    ("object bound to memory unless sparse", bound_req),
+    (
+        "number less than a creation parameter of an object",
+        created_req,
     ),
 ];
 
@@ -279,6 +370,20 @@ fn names(list: &str) -> Vec<&str> {
 
 /// Split `If C, C, and C, R` into conditions and requirement, and read both.
 fn read_rule(input: &Input) -> Option<(&'static str, Check)> {
+    // A requirement that is itself phrased with `If` (`If buffer is non-sparse then
+    // it must be bound ...`) is one requirement, with no conditions.
+    if let Some((by, must)) = RECOGNISERS
+        .iter()
+        .find_map(|(name, f)| f(input, input.text).map(|p| (*name, p)))
+    {
+        return Some((
+            by,
+            Check {
+                when: Vec::new(),
+                must,
+            },
+        ));
+    }
     let (conds, req) = match input.text.strip_prefix("If ") {
         None => (Vec::new(), input.text),
         Some(rest) => split_conditions(rest)?,
@@ -614,6 +719,86 @@ pub fn is_bool(values: &[Value]) -> bool {
         v.name == "VK_TRUE"
             || v.name == "VK_FALSE"
             || v.name.starts_with(|c: char| c.is_ascii_digit())
+    })
+}
+
+/// A handle member or parameter that names a buffer or an image.
+fn object(input: &Input, path: &str) -> Option<Object> {
+    Object::of(&member(input, path)?.type_name)
+}
+
+/// `` `buffer` must have been created with `E` usage flag ``, `` ... with the `E`
+/// bit set ``, `` ... with the `E` usage bit set ``.
+fn usage_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        &format!(
+            r"^`([\w.]+)` must have been created with (?:the )?({LIST}) (?:usage flag|usage bit set|bit set)$"
+        ),
+    );
+    let c = whole(r, text)?;
+    let object = object(input, &c[0])?;
+    let bits = resolve(input, object.usage_bits(), &names(&c[1]))?;
+    Some(Pred::Usage {
+        handle: c[0].clone(),
+        object,
+        bits,
+    })
+}
+
+/// `` If `buffer` is non-sparse then it must be bound completely and contiguously to
+/// a single `VkDeviceMemory` object ``.
+fn bound_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^If `([\w.]+)` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object$",
+    );
+    let c = whole(r, text)?;
+    Some(Pred::Bound {
+        object: object(input, &c[0])?,
+        handle: c[0].clone(),
+    })
+}
+
+/// `` `offset` must be less than the size of `buffer` ``, `` `mipLevel` must be less
+/// than the `mipLevels` specified in VkImageCreateInfo when `image` was created ``.
+fn created_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<[Regex; 2]> = OnceLock::new();
+    let [size, image] = R.get_or_init(|| {
+        [
+            Regex::new(r"^`([\w.]+)` must be less than the size of `([\w.]+)`$"),
+            Regex::new(
+                r"^`([\w.]+)` must be less than the `(mipLevels|arrayLayers)` specified in VkImageCreateInfo when `([\w.]+)` was created$",
+            ),
+        ]
+        .map(|r| r.expect("recogniser pattern"))
+    });
+    let (m, handle, object, field) = if let Some(c) = whole(size, text) {
+        (
+            c[0].clone(),
+            c[1].clone(),
+            Object::Buffer,
+            "size".to_owned(),
+        )
+    } else {
+        let c = whole(image, text)?;
+        (c[0].clone(), c[2].clone(), Object::Image, c[1].clone())
+    };
+    (self::object(input, &handle)? == object).then_some(())?;
+    let t = &member(input, &m)?.type_name;
+    numeric(t).then_some(())?;
+    Some(Pred::Compare {
+        member: m,
+        op: Op::Lt,
+        rhs: Rhs::Created {
+            handle,
+            object,
+            field,
+        },
+        float: false,
+        unsigned: unsigned(t),
     })
 }
 

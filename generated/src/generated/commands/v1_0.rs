@@ -327,7 +327,7 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_image_memory_done(image, memory);
+        crate::hooks::bind_image_memory_done(self, image, memory);
         Ok(())
     }
     /**`vkCreateBuffer`
@@ -1040,25 +1040,31 @@ The caller upholds the rules that [`Self::create_image`] checks at run time (tho
             return Err(Error::Vk(r));
         }
         Ok(
-            Image::from_raw(
-                out,
+            crate::hooks::image_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::image_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                Image::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::image_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }

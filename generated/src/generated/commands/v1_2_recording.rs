@@ -97,8 +97,9 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 
 Left to the caller (listed one by one in the crate's `validation.json`): 203.
 
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 202: explicit rule; the wrappers do not check it*/
+- 198: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -137,7 +138,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
         &mut self,
@@ -185,8 +186,9 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 202.
 
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 201: explicit rule; the wrappers do not check it*/
+- 197: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indirect_count(
         &mut self,
@@ -224,7 +226,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 202.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count_unchecked(
         &mut self,

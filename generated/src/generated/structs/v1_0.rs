@@ -296,7 +296,10 @@ The rules are on [`VkBufferMemoryBarrier`'s reference page](https://registry.khr
 - `VUID-VkBufferMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 8: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -373,7 +376,10 @@ The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkBufferViewCreateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBufferViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 13: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferViewCreateInfo<'a> {
@@ -769,7 +775,10 @@ The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.kh
 
 - `VUID-VkDescriptorBufferInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 4: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {
@@ -1598,7 +1607,10 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 45 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 45.
+
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 42: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {
@@ -1686,8 +1698,8 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 90.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 89: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 87: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {

@@ -21,8 +21,8 @@ The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 47.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 45: explicit rule; the wrappers do not check it*/
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 41: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BlitImageInfo2<'a> {
@@ -220,6 +220,8 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferMemoryBarrier2-offset-01187`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBufferMemoryBarrier2-buffer-01931`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBufferMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -230,7 +232,7 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 83 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 81 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -427,7 +429,10 @@ The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos
 - `VUID-VkCopyBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9.
+
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 5: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferInfo2<'a> {
@@ -486,8 +491,8 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 44.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 43: explicit rule; the wrappers do not check it*/
+- 5: checked by the safe methods in every build, but no oracle case breaks it yet
+- 39: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -625,8 +630,8 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 43.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 42: explicit rule; the wrappers do not check it*/
+- 5: checked by the safe methods in every build, but no oracle case breaks it yet
+- 38: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
@@ -1018,6 +1023,7 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-image-01932`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageMemoryBarrier2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1032,7 +1038,10 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 119 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 118.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 116: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -2113,8 +2122,8 @@ The rules are on [`VkResolveImageInfo2`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 35.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 33: explicit rule; the wrappers do not check it*/
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 29: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ResolveImageInfo2<'a> {

@@ -207,6 +207,33 @@ pub fn check_buffer_image_copy(v: &vk::BufferImageCopy, s: &Scope<'_>) -> Result
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     Ok(())
 }
+///The rules of `VkBufferMemoryBarrier` that are checked at run time.
+pub fn check_buffer_memory_barrier(
+    v: &vk::BufferMemoryBarrier<'_>,
+    s: &Scope<'_>,
+) -> Result<()> {
+    if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier-offset-01187",
+                format!(
+                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
+                    v.offset
+                ),
+            ),
+        );
+    }
+    if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier-buffer-01931",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    Ok(())
+}
 ///The rules of `VkBufferViewCreateInfo` that are checked at run time.
 pub fn check_buffer_view_create_info(
     v: &vk::BufferViewCreateInfo<'_>,
@@ -225,6 +252,26 @@ pub fn check_buffer_view_create_info(
         s,
         "VUID-VkBufferViewCreateInfo-format-parameter",
     )?;
+    if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
+        return Err(
+            fail(
+                "VUID-VkBufferViewCreateInfo-offset-00925",
+                format!(
+                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
+                    v.offset
+                ),
+            ),
+        );
+    }
+    if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkBufferViewCreateInfo-buffer-00935",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
     crate::checks::chain(v.p_next, s, Some("VUID-VkBufferViewCreateInfo-sType-unique"))?;
     Ok(())
 }
@@ -427,6 +474,24 @@ pub fn check_copy_descriptor_set(
                 "VUID-VkCopyDescriptorSet-commonparent",
                 "`dstSet` does not come from the VkDevice the command is called on"
                     .into(),
+            ),
+        );
+    }
+    Ok(())
+}
+///The rules of `VkDescriptorBufferInfo` that are checked at run time.
+pub fn check_descriptor_buffer_info(
+    v: &vk::DescriptorBufferInfo,
+    s: &Scope<'_>,
+) -> Result<()> {
+    if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
+        return Err(
+            fail(
+                "VUID-VkDescriptorBufferInfo-offset-00340",
+                format!(
+                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
+                    v.offset
+                ),
             ),
         );
     }
@@ -1274,6 +1339,47 @@ pub fn check_image_memory_barrier(
         "VUID-VkImageMemoryBarrier-newLayout-parameter",
     )?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
+    if s
+        .image(v.image)
+        .is_some_and(|r| {
+            (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-subresourceRange-01486",
+                format!(
+                    "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
+                    v.subresource_range.base_mip_level
+                ),
+            ),
+        );
+    }
+    if s
+        .image(v.image)
+        .is_some_and(|r| {
+            (v.subresource_range.base_array_layer as i128) >= (r.array_layers as i128)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-subresourceRange-01488",
+                format!(
+                    "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
+                    v.subresource_range.base_array_layer
+                ),
+            ),
+        );
+    }
+    if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-image-01932",
+                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
     crate::checks::chain(v.p_next, s, Some("VUID-VkImageMemoryBarrier-sType-unique"))?;
     Ok(())
@@ -1384,6 +1490,31 @@ pub fn check_image_view_create_info(
                     "If the `imageCubeArray` feature is not enabled, `viewType` must not be `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` (`viewType` = {:?})",
                     v.view_type
                 ),
+            ),
+        );
+    }
+    if s
+        .image(v.image)
+        .is_some_and(|r| {
+            (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageViewCreateInfo-subresourceRange-01478",
+                format!(
+                    "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
+                    v.subresource_range.base_mip_level
+                ),
+            ),
+        );
+    }
+    if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkImageViewCreateInfo-image-01020",
+                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
             ),
         );
     }
@@ -2724,6 +2855,10 @@ pub fn check_write_descriptor_set(
     // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_image_info, v.descriptor_count) } {
         crate::checks::check_descriptor_image_info(e, s)?;
+    }
+    // SAFETY: the safe setter stored this array and its count.
+    for e in unsafe { members(v.p_buffer_info, v.descriptor_count) } {
+        crate::checks::check_descriptor_buffer_info(e, s)?;
     }
     crate::checks::chain(v.p_next, s, Some("VUID-VkWriteDescriptorSet-sType-unique"))?;
     Ok(())

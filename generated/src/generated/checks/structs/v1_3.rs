@@ -41,6 +41,42 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
+    if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+        return Err(
+            fail(
+                "VUID-VkBlitImageInfo2-srcImage-00219",
+                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.src_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkBlitImageInfo2-srcImage-00220",
+                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+        return Err(
+            fail(
+                "VUID-VkBlitImageInfo2-dstImage-00224",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.dst_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkBlitImageInfo2-dstImage-00225",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
     if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
             fail(
@@ -590,6 +626,26 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
+    if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier2-offset-01187",
+                format!(
+                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
+                    v.offset
+                ),
+            ),
+        );
+    }
+    if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier2-buffer-01931",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
     if (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2199060580600) == 0
     {
@@ -684,6 +740,44 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
+    if s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferInfo2-srcBuffer-00118",
+                "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.src_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferInfo2-srcBuffer-00119",
+                "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferInfo2-dstBuffer-00120",
+                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.dst_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferInfo2-dstBuffer-00121",
+                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkCopyBufferToImageInfo2` that are checked at run time.
@@ -718,6 +812,43 @@ pub fn check_copy_buffer_to_image_info2(
             fail(
                 "VUID-VkCopyBufferToImageInfo2-commonparent",
                 "`dstImage` does not come from the VkDevice the command is called on"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferToImageInfo2-srcBuffer-00174",
+                "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.src_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferToImageInfo2-srcBuffer-00176",
+                "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferToImageInfo2-dstImage-00177",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.dst_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkCopyBufferToImageInfo2-dstImage-00178",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                     .into(),
             ),
         );
@@ -837,6 +968,43 @@ pub fn check_copy_image_to_buffer_info2(
             fail(
                 "VUID-VkCopyImageToBufferInfo2-commonparent",
                 "`dstBuffer` does not come from the VkDevice the command is called on"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+        return Err(
+            fail(
+                "VUID-VkCopyImageToBufferInfo2-srcImage-00186",
+                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.src_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkCopyImageToBufferInfo2-srcImage-00187",
+                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+        return Err(
+            fail(
+                "VUID-VkCopyImageToBufferInfo2-dstBuffer-00191",
+                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.buffer(v.dst_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
+        return Err(
+            fail(
+                "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
+                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                     .into(),
             ),
         );
@@ -1446,6 +1614,47 @@ pub fn check_image_memory_barrier2(
                     "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
                     v.dst_access_mask, v.dst_stage_mask
                 ),
+            ),
+        );
+    }
+    if s
+        .image(v.image)
+        .is_some_and(|r| {
+            (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-subresourceRange-01486",
+                format!(
+                    "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
+                    v.subresource_range.base_mip_level
+                ),
+            ),
+        );
+    }
+    if s
+        .image(v.image)
+        .is_some_and(|r| {
+            (v.subresource_range.base_array_layer as i128) >= (r.array_layers as i128)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-subresourceRange-01488",
+                format!(
+                    "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
+                    v.subresource_range.base_array_layer
+                ),
+            ),
+        );
+    }
+    if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-image-01932",
+                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
             ),
         );
     }
@@ -2166,6 +2375,42 @@ pub fn check_resolve_image_info2(
             fail(
                 "VUID-VkResolveImageInfo2-commonparent",
                 "`dstImage` does not come from the VkDevice the command is called on"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.src_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkResolveImageInfo2-srcImage-00256",
+                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.dst_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+        return Err(
+            fail(
+                "VUID-VkResolveImageInfo2-dstImage-00258",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+        return Err(
+            fail(
+                "VUID-VkResolveImageInfo2-srcImage-06762",
+                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
+                    .into(),
+            ),
+        );
+    }
+    if s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+        return Err(
+            fail(
+                "VUID-VkResolveImageInfo2-dstImage-06764",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
                     .into(),
             ),
         );
