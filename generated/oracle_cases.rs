@@ -600,6 +600,17 @@ oracle_cases! {
             v.view_offset = 1;
         },
     },
+    framebuffer_create_info: vk::FramebufferCreateInfo<'_> {
+        "VUID-VkFramebufferCreateInfo-width-00885" => |v, l, o| {
+            v.width = 0;
+        },
+        "VUID-VkFramebufferCreateInfo-height-00887" => |v, l, o| {
+            v.height = 0;
+        },
+        "VUID-VkFramebufferCreateInfo-layers-00889" => |v, l, o| {
+            v.layers = 0;
+        },
+    },
     buffer_create_info: vk::BufferCreateInfo<'_> {
         "VUID-VkBufferCreateInfo-size-00912" => |v, l, o| {
             v.size = 0;
@@ -641,6 +652,11 @@ oracle_cases! {
         },
         "VUID-VkImageCreateInfo-format-00943" => |v, l, o| {
             v.format = vk::Format::from_raw(0);
+        },
+    },
+    image_view_create_info: vk::ImageViewCreateInfo<'_> {
+        "VUID-VkImageViewCreateInfo-image-01020" => |v, l, o| {
+            o.image.bind = false;
         },
     },
     sampler_create_info: vk::SamplerCreateInfo<'_> {

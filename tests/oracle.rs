@@ -65,7 +65,9 @@ impl Default for Objects {
             bind: true,
         };
         let image = ImageSpec {
-            usage: vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST,
+            usage: vk::ImageUsageFlags::TRANSFER_SRC
+                | vk::ImageUsageFlags::TRANSFER_DST
+                | vk::ImageUsageFlags::SAMPLED,
             mip_levels: 1,
             array_layers: 1,
             bind: true,
@@ -350,6 +352,45 @@ macro_rules! create {
         let layer = under_layer($s, || drop(unsafe { $s.device.$unchecked($($arg),+) }));
         Outcome { safe, layer }
     }};
+}
+
+fn image_view_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::ImageViewCreateInfo<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    // As in `buffer_memory_barrier2`.
+    let mut o = Objects::default();
+    change(&mut Default::default(), limits, &mut o);
+    let (image, _memory) = make_image(s, &o.image);
+    let mut info = tuff::ImageViewCreateInfo::new(&image)
+        .view_type(vk::ImageViewType::TYPE_2D)
+        .format(vk::Format::R8G8B8A8_UNORM)
+        .subresource_range(WHOLE);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { info.raw_values_mut() }, limits, &mut o.clone());
+    create!(s, create_image_view, create_image_view_unchecked, &info)
+}
+
+fn framebuffer_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::FramebufferCreateInfo<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let views = tuff::HandleSlice::new(&[&target.view]);
+    let mut info = tuff::FramebufferCreateInfo::new(&target.render_pass)
+        .attachments(&views)
+        .width(4)
+        .height(4)
+        .layers(1);
+    // SAFETY: as in `buffer_create_info`.
+    change(
+        unsafe { info.raw_values_mut() },
+        limits,
+        &mut Objects::default(),
+    );
+    create!(s, create_framebuffer, create_framebuffer_unchecked, &info)
 }
 
 fn descriptor_pool_create_info(

@@ -39,6 +39,8 @@ pub const FIXTURES: &[&str] = &[
     "VkPipelineRasterizationStateCreateInfo",
     "VkPipelineMultisampleStateCreateInfo",
     "VkVertexInputBindingDescription",
+    "VkImageViewCreateInfo",
+    "VkFramebufferCreateInfo",
     "vkCmdSetEvent",
     "vkCmdResetEvent",
     "vkCmdResetEvent2",
@@ -73,12 +75,18 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430", "a patch list without tessellation shaders also breaks `VkGraphicsPipelineCreateInfo-topology-00737`"),
     ("VUID-vkCmdWriteTimestamp2-stage-03929", ONE_STAGE),
     ("VUID-vkCmdWriteTimestamp2-stage-03930", ONE_STAGE),
+    ("VUID-VkFramebufferCreateInfo-width-00886", PAST_ATTACHMENT),
+    ("VUID-VkFramebufferCreateInfo-height-00888", PAST_ATTACHMENT),
+    ("VUID-VkFramebufferCreateInfo-layers-00890", PAST_ATTACHMENT),
+    ("VUID-VkImageViewCreateInfo-viewType-01004", "a cube-array view of the fixture's one layer also breaks `viewType-02961` (a multiple of six layers)"),
+    ("VUID-VkImageViewCreateInfo-subresourceRange-01478", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01718` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01486", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01724` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01488", "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layer is past the image's"),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
+const PAST_ATTACHMENT: &str = "a framebuffer larger than the limit is larger than its attachment too, which breaks `flags-04533` (or `04534`, `04535`) as well";
 const ONE_STAGE: &str = "the stage is a single bit; the case adds the forbidden one to the fixture's, which breaks `stage-03859` as well";
 const ONE_D: &str = "the other image type the case picks is 1D, and the fixture's 4x4 image breaks `imageType-00956` (a 1D image has height 1) as well";
 

@@ -1198,6 +1198,9 @@ impl<'a> FenceCreateInfo<'a> {
 
 The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkFramebufferCreateInfo-width-00885`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkFramebufferCreateInfo-height-00887`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkFramebufferCreateInfo-layers-00889`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkFramebufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFramebufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkFramebufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1205,9 +1208,9 @@ The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.k
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkFramebufferCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 58.
+Left to the caller (listed one by one in the crate's `validation.json`): 55.
 
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
 - 52: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1686,6 +1689,7 @@ impl<'a> ImageMemoryBarrier<'a> {
 
 The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkImageViewCreateInfo-image-01020`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1696,9 +1700,9 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 90.
+Left to the caller (listed one by one in the crate's `validation.json`): 89.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 87: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
