@@ -12,6 +12,10 @@ pub struct Config {
     pub api_version: String,
     /// Extensions to emit besides core, by name.
     pub extensions: Vec<String>,
+    /// Folders of Rust programs that use the generated crate (relative to the config
+    /// file); the report lists the methods they call first.
+    #[serde(default)]
+    pub scene_sources: Vec<String>,
 }
 
 impl Config {
@@ -68,6 +72,7 @@ mod tests {
         let c = Config {
             api_version: "3".into(),
             extensions: vec![],
+            scene_sources: vec![],
         };
         assert!(c.api_minor().is_err());
     }
@@ -77,6 +82,7 @@ mod tests {
         let c = Config {
             api_version: "1.2".into(),
             extensions: vec![],
+            scene_sources: vec![],
         };
         assert_eq!(
             c.enabled_versions(),

@@ -93,6 +93,39 @@ pub struct Generation {
     pub comparison: Option<validity::Comparison>,
 }
 
+/// The method names the programs in the config's `scene_sources` call (every
+/// `.name(` in their `.rs` files). A folder that cannot be read names nothing.
+fn scene_calls(config_path: &Path, config: &config::Config) -> std::collections::BTreeSet<String> {
+    let base = config_path.parent().unwrap_or(Path::new("."));
+    let mut out = std::collections::BTreeSet::new();
+    let mut todo: Vec<PathBuf> = config.scene_sources.iter().map(|d| base.join(d)).collect();
+    while let Some(path) = todo.pop() {
+        if let Ok(entries) = std::fs::read_dir(&path) {
+            todo.extend(entries.filter_map(|e| e.ok().map(|e| e.path())));
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            for (i, _) in text.match_indices('(') {
+                let name: String = text[..i]
+                    .chars()
+                    .rev()
+                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                    .collect::<Vec<_>>()
+                    .into_iter()
+                    .rev()
+                    .collect();
+                let before = text[..i - name.len()]
+                    .chars()
+                    .rev()
+                    .find(|c| !c.is_whitespace());
+                if !name.is_empty() && before == Some('.') {
+                    out.insert(name);
+                }
+            }
+        }
+    }
+    out
+}
+
 /// Run every pass and return the files to write. Reads the inputs; writes nothing.
 pub fn generate(opts: &Options) -> Result<Generation> {
     let config = config::Config::load(&opts.config)?;
@@ -116,7 +149,8 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     let cx = plan::Context::new(&model, &validity);
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans, &config);
-    let report = report::build(&model, &validity, &plans.records);
+    let mut report = report::build(&model, &validity, &plans.records);
+    report.add_methods(&plans.methods, &scene_calls(&opts.config, &config));
     let mut files = emission.files;
     files.extend(report::render(&report));
     Ok(Generation {
@@ -126,4 +160,31 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         registry: report.registry,
         comparison: validity.comparison.clone(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scene_calls_are_the_method_calls_of_the_scene_sources() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        std::fs::create_dir(dir.path().join("scenes")).expect("folder");
+        std::fs::write(
+            dir.path().join("scenes/a.rs"),
+            "fn f() { let b = device.create_buffer(&info)?; helper(b); x.\ncmd_draw(3, 1, 0, 0); }",
+        )
+        .expect("source");
+        std::fs::write(dir.path().join("scenes/notes.txt"), "device.not_rust()").expect("text");
+        let config = config::Config {
+            api_version: "1.3".into(),
+            extensions: vec![],
+            scene_sources: vec!["scenes".into(), "missing".into()],
+        };
+        let calls = scene_calls(&dir.path().join("tuff-gen.toml"), &config);
+        assert_eq!(
+            calls.into_iter().collect::<Vec<_>>(),
+            ["cmd_draw", "create_buffer"]
+        );
+    }
 }

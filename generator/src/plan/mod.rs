@@ -10,6 +10,7 @@
 pub mod checks;
 pub mod commands;
 pub mod hooks;
+pub mod methods;
 pub mod oracle;
 pub mod reach;
 pub mod settle;
@@ -96,6 +97,8 @@ pub struct Plans<'c, 'm> {
     pub checker: checks::Checker<'c, 'm>,
     /// The oracle's cases, one per recognised rule it can break.
     pub oracle: Vec<oracle::Case>,
+    /// Each emitted method with the items whose rules apply to it.
+    pub methods: Vec<methods::MethodRow>,
     /// For every rule of the emitted API, how it is settled.
     pub records: Vec<Record>,
     /// The same records by the item (command or struct) each rule belongs to.
@@ -109,6 +112,7 @@ impl<'c, 'm> Plans<'c, 'm> {
         let ok = planned(&commands);
         let checker = checks::Checker::new(cx, &ok);
         let oracle = oracle::cases(cx, &checker);
+        let methods = methods::rows(cx, &ok);
         let records = settle::records(cx, &checker, &commands, &oracle);
         let item_of: BTreeMap<&str, &str> = cx
             .validity
@@ -130,6 +134,7 @@ impl<'c, 'm> Plans<'c, 'm> {
             commands,
             checker,
             oracle,
+            methods,
             records,
             by_item,
         }

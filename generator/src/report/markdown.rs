@@ -185,6 +185,7 @@ pub(super) fn render(r: &Report) -> String {
         let _ = writeln!(s, "- `{}`: {}", st.rule.vuid, st.settlement.mechanism());
     }
 
+    methods_section(&mut s, r);
     let _ = writeln!(s, "\n## Per item (emitted API)\n");
     let _ = writeln!(
         s,
@@ -310,4 +311,31 @@ fn explicit_section(s: &mut String, r: &Report) {
          one.",
         totals[0], totals[1], totals[2]
     );
+}
+
+/// The rules that apply to each method and who settles them.
+fn methods_section(s: &mut String, r: &Report) {
+    if r.methods.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "\n## Per method (emitted API)\n\n\
+         The rules that apply to a call of each safe method: its command's own and those \
+         of every struct it can pass (members and `pNext` chains), counted as in the \
+         stricter table. Every method listed is safe today and its `_unchecked` twin is \
+         `unsafe`; the last column is what a caller of the safe method still owns. The \
+         methods the scenes call come first.\n\n\
+         | Method | Scenes | Rules | Static | Dynamic | Left to the caller |\n\
+         |---|---|---|---|---|---|"
+    );
+    for m in &r.methods {
+        let [n, st, dy, user] = m.counts;
+        let scenes = if m.scenes { "yes" } else { "" };
+        let _ = writeln!(
+            s,
+            "| `{}` | {scenes} | {n} | {st} | {dy} | {user} |",
+            m.method
+        );
+    }
 }

@@ -92,6 +92,69 @@ pub struct Report<'a> {
     pub unknown_records: Vec<String>,
     /// The validity pass's result.
     pub validity: &'a Validity,
+    /// The rules that apply to each emitted method, tallied; empty unless
+    /// [`Report::add_methods`] ran.
+    pub methods: Vec<MethodTally>,
+}
+
+/// The rules that apply to one emitted method: its command's and those of every
+/// struct a call can pass.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MethodTally {
+    /// The safe method.
+    pub method: String,
+    /// Whether the scenes call it.
+    pub scenes: bool,
+    /// Rules that apply, statically solved, dynamically solved, left to the caller.
+    pub counts: [usize; 4],
+}
+
+impl Report<'_> {
+    /// Tally the rules of each method's items (strict rules where the registry's keys
+    /// say which hold), the methods `scene_calls` names first.
+    pub fn add_methods(
+        &mut self,
+        rows: &[crate::plan::methods::MethodRow],
+        scene_calls: &std::collections::BTreeSet<String>,
+    ) {
+        let mut by_item: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
+        for st in &self.settled {
+            let counted = st.rule.emitted
+                && (st.rule.listed || !self.validity.explicit_known)
+                && st.rule.key_holds != Some(false);
+            if counted {
+                by_item
+                    .entry(st.rule.item.as_str())
+                    .or_default()
+                    .push(st.settlement.status());
+            }
+        }
+        let mut out: Vec<MethodTally> = rows
+            .iter()
+            .map(|row| {
+                let mut counts = [0usize; 4];
+                for status in row
+                    .items
+                    .iter()
+                    .flat_map(|i| by_item.get(i.as_str()).into_iter().flatten())
+                {
+                    counts[0] += 1;
+                    counts[match *status {
+                        "static" => 1,
+                        "dynamic" => 2,
+                        _ => 3,
+                    }] += 1;
+                }
+                MethodTally {
+                    method: row.method.clone(),
+                    scenes: scene_calls.contains(&row.method),
+                    counts,
+                }
+            })
+            .collect();
+        out.sort_by(|a, b| b.scenes.cmp(&a.scenes).then(a.method.cmp(&b.method)));
+        self.methods = out;
+    }
 }
 
 /// Tally the rules with the emitters' records.
@@ -112,6 +175,7 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         unlisted_derived: 0,
         unknown_records: Vec::new(),
         validity,
+        methods: Vec::new(),
     };
     let known: std::collections::BTreeSet<&str> =
         validity.rules.iter().map(|r| r.vuid.as_str()).collect();

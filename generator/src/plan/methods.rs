@@ -1,0 +1,55 @@
+//! The rules that apply to each emitted method: its command's own and those of every
+//! struct it takes, through members and `pNext` chains, for the report's per-method
+//! table.
+
+use super::commands::Plan;
+use super::Context;
+use crate::model::Kind;
+use std::collections::BTreeSet;
+
+/// One emitted method and the items whose rules apply to a call of it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MethodRow {
+    /// The registry command.
+    pub command: String,
+    /// The safe method's name.
+    pub method: String,
+    /// The command and every struct a call can pass, in name order.
+    pub items: Vec<String>,
+}
+
+/// A row for every planned command.
+pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
+    let model = cx.model;
+    plans
+        .iter()
+        .map(|plan| {
+            let mut seen: BTreeSet<String> = BTreeSet::new();
+            let mut todo: Vec<String> = model.commands[&plan.name]
+                .params
+                .iter()
+                .map(|p| p.type_name.clone())
+                .collect();
+            while let Some(t) = todo.pop() {
+                let Some(def) = model.types.get(&t) else {
+                    continue;
+                };
+                if def.category != Some(Kind::Struct)
+                    || !model.emitted.contains(&t)
+                    || !seen.insert(t.clone())
+                {
+                    continue;
+                }
+                todo.extend(def.members.iter().map(|m| m.type_name.clone()));
+                todo.extend(model.extended_by.get(&t).into_iter().flatten().cloned());
+            }
+            let mut items = vec![plan.name.clone()];
+            items.extend(seen);
+            MethodRow {
+                command: plan.name.clone(),
+                method: crate::names::command_fn(&plan.name),
+                items,
+            }
+        })
+        .collect()
+}
