@@ -413,9 +413,20 @@ pub fn render(check: &Check) -> TokenStream {
             let each = handles.iter().map(|(at, msg)| {
                 let fail = fail(msg);
                 match at {
+                    // A device child's wrapper names its device: a pointer-sized
+                    // comparison instead of a lookup in the device's object list.
                     HandleAt::Arg {
                         name,
                         optional: false,
+                        parent_is_ancestor: true,
+                    } => {
+                        let a = ident(name);
+                        quote!(if s.device.is_none_or(|d| #a.parent().raw() != d.raw()) { #fail })
+                    }
+                    HandleAt::Arg {
+                        name,
+                        optional: false,
+                        ..
                     } => {
                         let a = ident(name);
                         quote!(if !s.#owner(#a.raw()) { #fail })
@@ -423,6 +434,7 @@ pub fn render(check: &Check) -> TokenStream {
                     HandleAt::Arg {
                         name,
                         optional: true,
+                        ..
                     } => {
                         let a = ident(name);
                         quote!(if let Some(h) = #a { if !s.#owner(h.raw()) { #fail } })

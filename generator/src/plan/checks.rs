@@ -77,6 +77,9 @@ pub enum HandleAt {
         name: String,
         /// `Option<&T>`.
         optional: bool,
+        /// The wrapper's `parent()` is the ancestor the check asks about (a device
+        /// child's device), so comparing the two answers it without a lookup.
+        parent_is_ancestor: bool,
     },
     /// A slice of wrapper arguments.
     ArgSlice(String),
@@ -307,7 +310,14 @@ impl<'c, 'm> Checker<'c, 'm> {
             rules.entry(r.item.as_str()).or_default().push(r);
         }
         let mut explicit: BTreeMap<&str, Vec<_>> = BTreeMap::new();
-        for r in &cx.validity.recognised {
+        // A rule the special-case table already settles keeps its hand-written check
+        // alone: a second, generated one would only cost time.
+        for r in cx
+            .validity
+            .recognised
+            .iter()
+            .filter(|r| super::hooks::settled(&r.vuid).is_none())
+        {
             explicit.entry(r.item.as_str()).or_default().push(r);
         }
         let mut checker = Checker {
@@ -825,7 +835,21 @@ impl<'c, 'm> Checker<'c, 'm> {
             }
             let msg =
                 format!("`{name}` does not come from the {ancestor} the command is called on");
-            handles.push((handle_at(shape, param(name))?, msg));
+            let mut at = handle_at(shape, param(name))?;
+            if let HandleAt::Arg {
+                parent_is_ancestor, ..
+            } = &mut at
+            {
+                *parent_is_ancestor = ancestor == "VkDevice"
+                    && self
+                        .cx
+                        .model
+                        .handles
+                        .get(&cmd.params[i].type_name)
+                        .and_then(|h| h.parent_chain.first())
+                        .is_some_and(|p| p == "VkDevice");
+            }
+            handles.push((at, msg));
         }
         Some((
             CheckKind::OwnedBy { ancestor, handles },
@@ -846,6 +870,7 @@ fn handle_at(shape: &Param, name: String) -> Option<HandleAt> {
         Param::Handle { optional } => Some(HandleAt::Arg {
             name,
             optional: *optional,
+            parent_is_ancestor: false,
         }),
         Param::HandleSlice => Some(HandleAt::ArgSlice(name)),
         _ => None,

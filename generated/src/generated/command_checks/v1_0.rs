@@ -824,7 +824,7 @@ impl Queue {
                 ),
             );
         }
-        if !s.owned_by_device(fence.raw()) {
+        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkQueueBindSparse-commonparent",
@@ -845,7 +845,7 @@ impl Queue {
         fence: &Fence,
     ) -> Result<()> {
         let s = &self.parent().scope();
-        if !s.owned_by_device(fence.raw()) {
+        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkQueueSubmit-commonparent",

@@ -27,7 +27,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdBeginQuery-commonparent",
@@ -71,7 +71,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(layout.raw()) {
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdBindDescriptorSets-commonparent",
@@ -97,7 +97,6 @@ impl<'c, S: State> Recorder<'c, S> {
     pub(crate) fn validate_cmd_bind_index_buffer(
         &self,
         buffer: &Buffer,
-        offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -118,34 +117,11 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(buffer.raw()) {
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdBindIndexBuffer-commonparent",
                     "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if s.buffer(buffer.raw()).is_some_and(|r| (offset as i128) >= (r.size as i128)) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindIndexBuffer-offset-00431",
-                    format!(
-                        "`offset` must be less than the size of `buffer` (`offset` = {:?})",
-                        offset
-                    ),
-                ),
-            );
-        }
-        if s
-            .buffer(buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindIndexBuffer-buffer-00434",
-                    "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                         .into(),
                 ),
             );
@@ -176,7 +152,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(pipeline.raw()) {
+        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdBindPipeline-commonparent",
@@ -258,7 +234,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdEndQuery-commonparent",
@@ -414,7 +390,6 @@ impl<'c, S: State> Recorder<'c, S> {
         &self,
         layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
-        offset: u32,
         values: &[u8],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -448,26 +423,12 @@ impl<'c, S: State> Recorder<'c, S> {
                 fail("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0".into()),
             );
         }
-        if !s.owned_by_device(layout.raw()) {
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdPushConstants-commonparent",
                     "`layout` does not come from the VkDevice the command is called on"
                         .into(),
-                ),
-            );
-        }
-        if s
-            .limits()
-            .is_some_and(|l| (offset as i128) >= (l.max_push_constants_size as i128))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-offset-00370",
-                    format!(
-                        "`offset` must be less than `VkPhysicalDeviceLimits::maxPushConstantsSize` (`offset` = {:?})",
-                        offset
-                    ),
                 ),
             );
         }
@@ -571,10 +532,8 @@ impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
     pub(crate) fn validate_cmd_set_scissor(
         &self,
-        first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
-        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -592,17 +551,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 fail(
                     "VUID-vkCmdSetScissor-scissorCount-arraylength",
                     "`scissorCount` is 0".into(),
-                ),
-            );
-        }
-        if !s.feature(|f| f.multi_viewport) && first_scissor != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-firstScissor-00593",
-                    format!(
-                        "If the `multiViewport` feature is not enabled, `firstScissor` must be `0` (`firstScissor` = {:?})",
-                        first_scissor
-                    ),
                 ),
             );
         }
@@ -710,7 +658,6 @@ impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
     pub(crate) fn validate_cmd_set_viewport(
         &self,
-        first_viewport: u32,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -731,17 +678,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 fail(
                     "VUID-vkCmdSetViewport-viewportCount-arraylength",
                     "`viewportCount` is 0".into(),
-                ),
-            );
-        }
-        if !s.feature(|f| f.multi_viewport) && first_viewport != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-firstViewport-01224",
-                    format!(
-                        "If the `multiViewport` feature is not enabled, `firstViewport` must be `0` (`firstViewport` = {:?})",
-                        first_viewport
-                    ),
                 ),
             );
         }
@@ -881,7 +817,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp-commonparent",
@@ -995,7 +931,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(src_image.raw()) {
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdBlitImage-commonparent",
@@ -1004,7 +940,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_image.raw()) {
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdBlitImage-commonparent",
@@ -1121,7 +1057,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(image.raw()) {
+        if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdClearColorImage-commonparent",
@@ -1200,7 +1136,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(image.raw()) {
+        if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdClearDepthStencilImage-commonparent",
@@ -1254,7 +1190,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(src_buffer.raw()) {
+        if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyBuffer-commonparent",
@@ -1263,59 +1199,11 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_buffer.raw()) {
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyBuffer-commonparent",
                     "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(src_buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-srcBuffer-00118",
-                    "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(src_buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-srcBuffer-00119",
-                    "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-dstBuffer-00120",
-                    "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-dstBuffer-00121",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                         .into(),
                 ),
             );
@@ -1356,7 +1244,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(src_buffer.raw()) {
+        if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyBufferToImage-commonparent",
@@ -1365,7 +1253,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_image.raw()) {
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyBufferToImage-commonparent",
@@ -1478,7 +1366,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(src_image.raw()) {
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImage-commonparent",
@@ -1487,7 +1375,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_image.raw()) {
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImage-commonparent",
@@ -1557,7 +1445,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(src_image.raw()) {
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImageToBuffer-commonparent",
@@ -1566,7 +1454,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_buffer.raw()) {
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImageToBuffer-commonparent",
@@ -1665,7 +1553,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyQueryPoolResults-commonparent",
@@ -1674,7 +1562,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_buffer.raw()) {
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdCopyQueryPoolResults-commonparent",
@@ -1754,7 +1642,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(buffer.raw()) {
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDispatchIndirect-commonparent",
@@ -1790,11 +1678,7 @@ impl<'c> Recorder<'c, Outside> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_fill_buffer`], run before the call.
-    pub(crate) fn validate_cmd_fill_buffer(
-        &self,
-        dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
-    ) -> Result<()> {
+    pub(crate) fn validate_cmd_fill_buffer(&self, dst_buffer: &Buffer) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -1808,49 +1692,11 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_buffer.raw()) {
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdFillBuffer-commonparent",
                     "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| (dst_offset as i128) >= (r.size as i128))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdFillBuffer-dstOffset-00024",
-                    format!(
-                        "`dstOffset` must be less than the size of `dstBuffer` (`dstOffset` = {:?})",
-                        dst_offset
-                    ),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdFillBuffer-dstBuffer-00029",
-                    "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdFillBuffer-dstBuffer-00031",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                         .into(),
                 ),
             );
@@ -1881,7 +1727,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(event.raw()) {
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent-commonparent",
@@ -1943,7 +1789,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdResetQueryPool-commonparent",
@@ -1994,7 +1840,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(src_image.raw()) {
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdResolveImage-commonparent",
@@ -2003,7 +1849,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_image.raw()) {
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdResolveImage-commonparent",
@@ -2111,7 +1957,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(event.raw()) {
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdSetEvent-commonparent",
@@ -2159,7 +2005,6 @@ impl<'c> Recorder<'c, Outside> {
     pub(crate) fn validate_cmd_update_buffer(
         &self,
         dst_buffer: &Buffer,
-        dst_offset: vk::DeviceSize,
         data: &[u8],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -2183,49 +2028,11 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(dst_buffer.raw()) {
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdUpdateBuffer-commonparent",
                     "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| (dst_offset as i128) >= (r.size as i128))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdUpdateBuffer-dstOffset-00032",
-                    format!(
-                        "`dstOffset` must be less than the size of `dstBuffer` (`dstOffset` = {:?})",
-                        dst_offset
-                    ),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdUpdateBuffer-dstBuffer-00034",
-                    "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
-            );
-        }
-        if s
-            .buffer(dst_buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdUpdateBuffer-dstBuffer-00035",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                         .into(),
                 ),
             );
@@ -2325,7 +2132,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(buffer.raw()) {
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndexedIndirect-commonparent",
@@ -2404,7 +2211,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(buffer.raw()) {
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndirect-commonparent",

@@ -55,7 +55,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(buffer.raw()) {
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
@@ -64,7 +64,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(count_buffer.raw()) {
+        if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
@@ -142,7 +142,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(buffer.raw()) {
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndirectCount-commonparent",
@@ -151,7 +151,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(count_buffer.raw()) {
+        if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndirectCount-commonparent",

@@ -96,7 +96,7 @@ impl Queue {
         fence: &Fence,
     ) -> Result<()> {
         let s = &self.parent().scope();
-        if !s.owned_by_device(fence.raw()) {
+        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkQueueSubmit2-commonparent",

@@ -153,7 +153,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(event.raw()) {
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-commonparent",
@@ -237,7 +237,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.owned_by_device(event.raw()) {
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdSetEvent2-commonparent",
@@ -722,7 +722,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.owned_by_device(query_pool.raw()) {
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp2-commonparent",

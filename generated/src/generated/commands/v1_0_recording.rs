@@ -181,7 +181,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<()> {
         crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset)?;
         {
-            let r = self.validate_cmd_bind_index_buffer(buffer, offset, index_type);
+            let r = self.validate_cmd_bind_index_buffer(buffer, index_type);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -192,7 +192,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_bind_index_buffer_unchecked(
         &mut self,
@@ -603,8 +603,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
             values,
         )?;
         {
-            let r = self
-                .validate_cmd_push_constants(layout, stage_flags, offset, values);
+            let r = self.validate_cmd_push_constants(layout, stage_flags, values);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -615,7 +614,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_push_constants_unchecked(
         &mut self,
@@ -843,7 +842,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<()> {
         crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
         {
-            let r = self.validate_cmd_set_scissor(first_scissor, scissors);
+            let r = self.validate_cmd_set_scissor(scissors);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -854,7 +853,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_scissor_unchecked(
         &mut self,
@@ -1029,7 +1028,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<()> {
         crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
         {
-            let r = self.validate_cmd_set_viewport(first_viewport, viewports);
+            let r = self.validate_cmd_set_viewport(viewports);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -1040,7 +1039,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_set_viewport_unchecked(
         &mut self,
@@ -1597,7 +1596,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_unchecked(
         &mut self,
@@ -2112,7 +2111,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<()> {
         crate::hooks::cmd_fill_buffer_checks(self, dst_buffer, dst_offset, size)?;
         {
-            let r = self.validate_cmd_fill_buffer(dst_buffer, dst_offset);
+            let r = self.validate_cmd_fill_buffer(dst_buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2123,7 +2122,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_fill_buffer_unchecked(
         &mut self,
@@ -2407,7 +2406,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<()> {
         crate::hooks::cmd_update_buffer_checks(self, dst_buffer, dst_offset, data)?;
         {
-            let r = self.validate_cmd_update_buffer(dst_buffer, dst_offset, data);
+            let r = self.validate_cmd_update_buffer(dst_buffer, data);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2418,7 +2417,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_update_buffer_unchecked(
         &mut self,

@@ -2106,30 +2106,6 @@ pub fn check_pipeline_viewport_state_create_info(
             ),
         );
     }
-    if s.limits().is_some_and(|l| (v.viewport_count as i128) > (l.max_viewports as i128))
-    {
-        return Err(
-            fail(
-                "VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218",
-                format!(
-                    "`viewportCount` must be less than or equal to `VkPhysicalDeviceLimits::maxViewports` (`viewportCount` = {:?})",
-                    v.viewport_count
-                ),
-            ),
-        );
-    }
-    if s.limits().is_some_and(|l| (v.scissor_count as i128) > (l.max_viewports as i128))
-    {
-        return Err(
-            fail(
-                "VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219",
-                format!(
-                    "`scissorCount` must be less than or equal to `VkPhysicalDeviceLimits::maxViewports` (`scissorCount` = {:?})",
-                    v.scissor_count
-                ),
-            ),
-        );
-    }
     // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_viewports, v.viewport_count) } {
         crate::checks::check_viewport(e, s)?;
