@@ -111,11 +111,9 @@ fn draws_ash(b: &Bench) {
     let d = b.s.device.fns();
     let cb = *b.cb;
     let clear = [vk::ClearValue::default()];
-    // SAFETY: the command buffer is reset before each recording (its pool allows it),
-    // and every handle passed lives as long as `b`.
+    // SAFETY: beginning the command buffer resets it (its pool allows that), as
+    // tuff's `begin` does, and every handle passed lives as long as `b`.
     unsafe {
-        d.reset_command_buffer(cb, vk::CommandBufferResetFlags::empty())
-            .expect("reset");
         d.begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default())
             .expect("begin");
         let begin = vk::RenderPassBeginInfo::default()
