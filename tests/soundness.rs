@@ -3291,3 +3291,120 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
     }
 }
+
+/// A pipeline whose layout lacks what its shader reads would have the driver index
+/// past its descriptor tables (lavapipe crashes on a dispatch of one): tuff refuses
+/// the compute pipeline whose layout has no set for the shader's bindings, and the
+/// graphics pipeline whose layout has no push-constant range for its fragment shader,
+/// and the layer names the same rule for each unchecked call (which it then skips).
+#[test]
+fn a_pipeline_layout_must_have_what_its_shaders_read() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let comp = d
+        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.comp.spv"))
+        .expect("compute shader");
+    let empty = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("empty layout");
+    let stage = || {
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::COMPUTE)
+            .module(Some(&comp))
+    };
+    let compute = [tuff::ComputePipelineCreateInfo::new(stage(), &empty)];
+    assert_eq!(
+        vuid(d.create_compute_pipelines(None, &compute)),
+        "VUID-VkComputePipelineCreateInfo-layout-00703"
+    );
+    // A binding of the right number but visible to another stage only.
+    let bindings = [0, 1].map(|binding| {
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(binding)
+            .descriptor_type(if binding == 0 {
+                vk::DescriptorType::UNIFORM_BUFFER
+            } else {
+                vk::DescriptorType::STORAGE_BUFFER
+            })
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::VERTEX)
+    });
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let sets = tuff::HandleSlice::new(&[&set_layout]);
+    let vertex_only = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&sets))
+        .expect("layout");
+    let hidden = [tuff::ComputePipelineCreateInfo::new(stage(), &vertex_only)];
+    assert_eq!(
+        vuid(d.create_compute_pipelines(None, &hidden)),
+        "VUID-VkComputePipelineCreateInfo-layout-00703"
+    );
+    assert_silent(&s.messages);
+
+    // The graphics pipeline: the test fragment shader pushes 16 bytes.
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let vert = d
+        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.vert.spv"))
+        .expect("vertex shader");
+    let frag = d
+        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.frag.spv"))
+        .expect("fragment shader");
+    let stages = [
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::VERTEX)
+            .module(Some(&vert)),
+        tuff::PipelineShaderStageCreateInfo::new(c"main")
+            .stage(vk::ShaderStageFlags::FRAGMENT)
+            .module(Some(&frag)),
+    ];
+    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
+    let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
+        .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+    let viewport = tuff::PipelineViewportStateCreateInfo::new()
+        .viewport_count(1)
+        .scissor_count(1);
+    let raster = tuff::PipelineRasterizationStateCreateInfo::new()
+        .polygon_mode(vk::PolygonMode::FILL)
+        .line_width(1.0);
+    let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
+        .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+    let attachments = [vk::PipelineColorBlendAttachmentState {
+        color_write_mask: vk::ColorComponentFlags::RGBA,
+        ..Default::default()
+    }];
+    let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&attachments);
+    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
+    let graphics = [tuff::GraphicsPipelineCreateInfo::new()
+        .stages(&stages)
+        .vertex_input_state(Some(&vertex_input))
+        .input_assembly_state(Some(&assembly))
+        .viewport_state(Some(&viewport))
+        .rasterization_state(Some(&raster))
+        .multisample_state(Some(&multisample))
+        .color_blend_state(Some(&blend))
+        .dynamic_state(Some(&dynamic))
+        .layout(Some(&empty))
+        .render_pass(Some(&target.render_pass))
+        .subpass(0)];
+    assert_eq!(
+        vuid(d.create_graphics_pipelines(None, &graphics)),
+        "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
+    );
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    // SAFETY: the messenger makes the layer skip each call, which breaks only the
+    // rule under test.
+    drop(unsafe { d.create_compute_pipelines_unchecked(None, &compute) });
+    assert_layer_reports(&s, "VUID-VkComputePipelineCreateInfo-layout-00703");
+    // SAFETY: as above.
+    drop(unsafe { d.create_graphics_pipelines_unchecked(None, &graphics) });
+    assert_layer_reports(&s, "VUID-VkGraphicsPipelineCreateInfo-layout-00756");
+    s.messages.abort_on_error(false);
+}

@@ -1768,12 +1768,96 @@ fn check_specialization(
 /// The checks of `vkCreateComputePipelines` that keep the driver inside the
 /// specialization data.
 pub(crate) fn create_compute_pipelines_checks(
+    device: &Device,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Result<()> {
     for (i, info) in create_infos.iter().enumerate() {
-        check_specialization(
-            &info.as_raw().stage,
+        let raw = info.as_raw();
+        check_specialization(&raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
+        check_shader_layout(
+            device,
+            &raw.stage,
+            raw.layout,
+            "VUID-VkComputePipelineCreateInfo-layout-00703",
             &format_args!("pCreateInfos[{i}].stage"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The device remembers what the module's shaders need from a pipeline layout.
+pub(crate) fn shader_module_created(
+    device: &Device,
+    module: ShaderModule,
+    create_info: &ShaderModuleCreateInfo<'_>,
+) -> ShaderModule {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the code slice with its size in bytes.
+    let words = unsafe { crate::retention::raw_slice(raw.p_code, (raw.code_size / 4) as u32) };
+    device
+        .live()
+        .shader_module_created(module.raw(), crate::spirv::interface(words));
+    module
+}
+
+/// A stage's shader against the pipeline layout: every resource variable its module
+/// declares has a binding in the layout's set, visible to the stage and with as
+/// many descriptors, and push constants have a range for the stage. A shader that
+/// reads a descriptor the layout lacks has the driver index past its tables.
+fn check_shader_layout(
+    device: &Device,
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+    layout: vk::PipelineLayout,
+    vuid: &'static str,
+    at: &dyn std::fmt::Display,
+) -> Result<()> {
+    let live = device.live();
+    let (Some(interface), Some(layout)) = (
+        live.shader_module(stage.module),
+        live.pipeline_layout(layout),
+    ) else {
+        return Ok(());
+    };
+    let stage_flags = stage.stage;
+    for r in &interface.resources {
+        let found = layout
+            .sets
+            .get(r.set as usize)
+            .and_then(|set| set.bindings.iter().find(|b| b.binding == r.binding));
+        match found {
+            None => refuse(
+                vuid,
+                format!(
+                    "{at}: the shader uses set {} binding {}, which the pipeline layout does not have",
+                    r.set, r.binding
+                ),
+            )?,
+            Some(b) if !b.stages.contains(stage_flags) => refuse(
+                vuid,
+                format!(
+                    "{at}: set {} binding {} is not visible to the {stage_flags:?} stage (its stages are {:?})",
+                    r.set, r.binding, b.stages
+                ),
+            )?,
+            Some(b) if r.count > b.count => refuse(
+                vuid,
+                format!(
+                    "{at}: the shader uses {} descriptors at set {} binding {}, which has {}",
+                    r.count, r.set, r.binding, b.count
+                ),
+            )?,
+            Some(_) => {}
+        }
+    }
+    if interface.push_constants
+        && !layout
+            .push_ranges
+            .iter()
+            .any(|p| p.stage_flags.contains(stage_flags))
+    {
+        refuse(
+            vuid,
+            format!("{at}: the shader uses push constants, which the pipeline layout has no range for in the {stage_flags:?} stage"),
         )?;
     }
     Ok(())
@@ -1801,6 +1885,13 @@ pub(crate) fn create_graphics_pipelines_checks(
         let stages = unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) };
         for (j, stage) in stages.iter().enumerate() {
             check_specialization(stage, &format_args!("pCreateInfos[{i}].pStages[{j}]"))?;
+            check_shader_layout(
+                device,
+                stage,
+                raw.layout,
+                "VUID-VkGraphicsPipelineCreateInfo-layout-00756",
+                &format_args!("pCreateInfos[{i}].pStages[{j}]"),
+            )?;
         }
         // SAFETY: the safe setters store references that outlive the create info, and
         // each array with its count.

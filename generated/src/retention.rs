@@ -64,6 +64,8 @@ pub(crate) struct Live {
     timelines: Vutex<std::collections::HashSet<u64>>,
     /// What the checks of commands that use a buffer need to know of it.
     buffers: Vutex<HashMap<u64, BufferRecord>>,
+    /// Each shader module's interface, which pipeline creation checks layouts against.
+    shader_modules: Vutex<HashMap<u64, Vrc<crate::spirv::Interface>>>,
     /// What the checks of commands and structs that name an image need to know of it.
     images: Vutex<HashMap<u64, ImageRecord>>,
     /// Each query pool's type, query count and statistics.
@@ -198,6 +200,7 @@ impl Default for Live {
             timelines: Vutex::new(std::collections::HashSet::new()),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
+            shader_modules: Vutex::new(HashMap::default()),
             query_pools: Vutex::new(HashMap::default()),
             pipeline_layouts: Vutex::new(HashMap::default()),
             pipelines: Vutex::new(HashMap::default()),
@@ -306,6 +309,10 @@ impl Live {
             }
             vk::ObjectType::IMAGE => {
                 self.images.lock().remove(&key.1);
+            }
+            vk::ObjectType::SHADER_MODULE => {
+                let record = self.shader_modules.lock().remove(&key.1);
+                drop(record);
             }
             vk::ObjectType::QUERY_POOL => {
                 self.query_pools.lock().remove(&key.1);
@@ -426,6 +433,25 @@ impl Live {
         if let Some(r) = self.buffers.lock().get_mut(&raw.as_raw()) {
             r.bound = true;
         }
+    }
+
+    /// Records a new shader module's interface.
+    pub(crate) fn shader_module_created(
+        &self,
+        raw: vk::ShaderModule,
+        interface: crate::spirv::Interface,
+    ) {
+        self.shader_modules
+            .lock()
+            .insert(raw.as_raw(), Vrc::new(interface));
+    }
+
+    /// The interface of a live shader module made through the wrappers.
+    pub(crate) fn shader_module(
+        &self,
+        raw: vk::ShaderModule,
+    ) -> Option<Vrc<crate::spirv::Interface>> {
+        self.shader_modules.lock().get(&raw.as_raw()).cloned()
     }
 
     /// Records a new image's creation parameters.

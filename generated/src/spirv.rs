@@ -78,3 +78,135 @@ pub fn spirv_words(bytes: &[u8]) -> Result<Vec<u32>> {
     }
     Ok(words)
 }
+
+/// A resource variable a module declares: its set, binding and array size (0 for a
+/// runtime-sized array).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Resource {
+    /// `DescriptorSet`.
+    pub set: u32,
+    /// `Binding`.
+    pub binding: u32,
+    /// Descriptors the variable spans: 1, an array's length, or 0 for a runtime array.
+    pub count: u32,
+}
+
+/// What a module's shaders need from a pipeline layout: every resource variable it
+/// declares with a set and binding, and whether it declares push constants. A
+/// module whose entry points do not all use every variable asks for more than the
+/// one in a pipeline needs; that errs on the side of refusing.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Interface {
+    /// The resource variables.
+    pub resources: Vec<Resource>,
+    /// Whether a `PushConstant` variable is declared.
+    pub push_constants: bool,
+}
+
+/// The interface of the SPIR-V module in `words` (in the host's byte order, as
+/// [`spirv_words`] returns them). Malformed instructions end the walk; what was read
+/// until then is kept.
+pub(crate) fn interface(words: &[u32]) -> Interface {
+    use std::collections::HashMap;
+    const OP_DECORATE: u32 = 71;
+    const OP_VARIABLE: u32 = 59;
+    const OP_TYPE_POINTER: u32 = 32;
+    const OP_TYPE_ARRAY: u32 = 28;
+    const OP_TYPE_RUNTIME_ARRAY: u32 = 29;
+    const OP_CONSTANT: u32 = 43;
+    const BINDING: u32 = 33;
+    const DESCRIPTOR_SET: u32 = 34;
+    const PUSH_CONSTANT: u32 = 9;
+    let mut sets: HashMap<u32, u32> = HashMap::new();
+    let mut bindings: HashMap<u32, u32> = HashMap::new();
+    let mut pointers: HashMap<u32, u32> = HashMap::new();
+    let mut arrays: HashMap<u32, Option<u32>> = HashMap::new();
+    let mut constants: HashMap<u32, u32> = HashMap::new();
+    let mut variables: Vec<(u32, u32, u32)> = Vec::new();
+    // The header is five words; instructions follow.
+    let mut at = 5;
+    while at < words.len() {
+        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        if count == 0 || at + count > words.len() {
+            break;
+        }
+        let w = &words[at..at + count];
+        match (op, w.len()) {
+            (OP_DECORATE, 4..) if w[2] == DESCRIPTOR_SET => {
+                sets.insert(w[1], w[3]);
+            }
+            (OP_DECORATE, 4..) if w[2] == BINDING => {
+                bindings.insert(w[1], w[3]);
+            }
+            (OP_TYPE_POINTER, 4..) => {
+                pointers.insert(w[1], w[3]);
+            }
+            (OP_TYPE_ARRAY, 4..) => {
+                arrays.insert(w[1], Some(w[3]));
+            }
+            (OP_TYPE_RUNTIME_ARRAY, 3..) => {
+                arrays.insert(w[1], None);
+            }
+            (OP_CONSTANT, 4..) => {
+                constants.insert(w[2], w[3]);
+            }
+            (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
+            _ => {}
+        }
+        at += count;
+    }
+    let mut out = Interface::default();
+    for (ty, id, storage) in variables {
+        if storage == PUSH_CONSTANT {
+            out.push_constants = true;
+        }
+        let (Some(&set), Some(&binding)) = (sets.get(&id), bindings.get(&id)) else {
+            continue;
+        };
+        let pointee = pointers.get(&ty).copied().unwrap_or(ty);
+        let count = match arrays.get(&pointee) {
+            Some(Some(length)) => constants.get(length).copied().unwrap_or(1),
+            Some(None) => 0,
+            None => 1,
+        };
+        out.resources.push(Resource {
+            set,
+            binding,
+            count,
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn words(bytes: &[u8]) -> Vec<u32> {
+        spirv_words(bytes).expect("SPIR-V")
+    }
+
+    #[test]
+    fn the_test_shaders_interfaces() {
+        let comp = interface(&words(include_bytes!("../../shaders/spv/test.comp.spv")));
+        let mut found: Vec<(u32, u32, u32)> = comp
+            .resources
+            .iter()
+            .map(|r| (r.set, r.binding, r.count))
+            .collect();
+        found.sort_unstable();
+        assert_eq!(found, [(0, 0, 1), (0, 1, 1)]);
+        assert!(!comp.push_constants);
+        let frag = interface(&words(include_bytes!("../../shaders/spv/test.frag.spv")));
+        assert!(frag.resources.is_empty());
+        assert!(frag.push_constants);
+    }
+
+    #[test]
+    fn a_truncated_module_keeps_what_was_read() {
+        let mut w = words(include_bytes!("../../shaders/spv/test.comp.spv"));
+        w.truncate(20);
+        let _ = interface(&w);
+        assert_eq!(interface(&w[..3]), Interface::default());
+    }
+}

@@ -535,7 +535,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, vk::Result)> {
-        crate::hooks::create_compute_pipelines_checks(create_infos)?;
+        crate::hooks::create_compute_pipelines_checks(self, create_infos)?;
         {
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
@@ -548,7 +548,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -936,7 +936,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn create_graphics_pipelines_unchecked<'a>(
         &self,
@@ -1544,7 +1544,13 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(ShaderModule::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::shader_module_created(
+                self,
+                ShaderModule::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkDeviceWaitIdle`
 

@@ -629,7 +629,10 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 21 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 21.
+
+- 1: checks every resource variable the stage's module declares has a binding in the layout for that stage, with as many descriptors, and push constants a range for the stage; descriptor types and push-constant sizes are not compared, so the rule stays the caller's
+- 20: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -1289,7 +1292,8 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 290.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 289: explicit rule; the wrappers do not check it*/
+- 1: checks every resource variable the stage's module declares has a binding in the layout for that stage, with as many descriptors, and push constants a range for the stage; descriptor types and push-constant sizes are not compared, so the rule stays the caller's
+- 288: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
