@@ -3294,9 +3294,11 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
 
 /// A pipeline whose layout lacks what its shader reads would have the driver index
 /// past its descriptor tables (lavapipe crashes on a dispatch of one): tuff refuses
-/// the compute pipeline whose layout has no set for the shader's bindings, and the
-/// graphics pipeline whose layout has no push-constant range for its fragment shader,
-/// and the layer names the same rule for each unchecked call (which it then skips).
+/// the compute pipeline whose layout has no set for the shader's bindings, a binding
+/// visible to another stage only, or one of the wrong descriptor type, and the
+/// graphics pipeline whose layout has no push-constant range for its fragment shader
+/// or one too short, and the layer names the same rule for each unchecked call (which
+/// it then skips).
 #[test]
 fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let _serial = vulkan::serial();
@@ -3342,6 +3344,29 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let hidden = [tuff::ComputePipelineCreateInfo::new(stage(), &vertex_only)];
     assert_eq!(
         vuid(d.create_compute_pipelines(None, &hidden)),
+        "VUID-VkComputePipelineCreateInfo-layout-00703"
+    );
+    // Both bindings visible to the compute stage, but the uniform block's binding
+    // holds storage buffers.
+    let swapped = [0, 1].map(|binding| {
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(binding)
+            .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE)
+    });
+    let storage_only = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&swapped),
+        )
+        .expect("set layout");
+    let storage_sets = tuff::HandleSlice::new(&[&storage_only]);
+    let wrong_type = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&storage_sets))
+        .expect("layout");
+    let mistyped = [tuff::ComputePipelineCreateInfo::new(stage(), &wrong_type)];
+    assert_eq!(
+        vuid(d.create_compute_pipelines(None, &mistyped)),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     assert_silent(&s.messages);
@@ -3396,6 +3421,21 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         vuid(d.create_graphics_pipelines(None, &graphics)),
         "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
     );
+    // A range for the fragment stage, but of 8 of the block's 16 bytes.
+    let short = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 8,
+    }];
+    let short_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&short))
+        .expect("layout");
+    let mut short_info = graphics;
+    short_info[0] = short_info[0].layout(Some(&short_layout));
+    assert_eq!(
+        vuid(d.create_graphics_pipelines(None, &short_info)),
+        "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
+    );
     assert_silent(&s.messages);
 
     s.messages.abort_on_error(true);
@@ -3404,7 +3444,13 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     drop(unsafe { d.create_compute_pipelines_unchecked(None, &compute) });
     assert_layer_reports(&s, "VUID-VkComputePipelineCreateInfo-layout-00703");
     // SAFETY: as above.
+    drop(unsafe { d.create_compute_pipelines_unchecked(None, &mistyped) });
+    assert_layer_reports(&s, "VUID-VkComputePipelineCreateInfo-layout-00703");
+    // SAFETY: as above.
     drop(unsafe { d.create_graphics_pipelines_unchecked(None, &graphics) });
+    assert_layer_reports(&s, "VUID-VkGraphicsPipelineCreateInfo-layout-00756");
+    // SAFETY: as above.
+    drop(unsafe { d.create_graphics_pipelines_unchecked(None, &short_info) });
     assert_layer_reports(&s, "VUID-VkGraphicsPipelineCreateInfo-layout-00756");
     s.messages.abort_on_error(false);
 }

@@ -1801,9 +1801,10 @@ pub(crate) fn shader_module_created(
 }
 
 /// A stage's shader against the pipeline layout: every resource variable its module
-/// declares has a binding in the layout's set, visible to the stage and with as
-/// many descriptors, and push constants have a range for the stage. A shader that
-/// reads a descriptor the layout lacks has the driver index past its tables.
+/// declares has a binding in the layout's set, of a descriptor type that can back
+/// it, visible to the stage and with as many descriptors, and its push-constant
+/// block lies inside a range for the stage. A shader that reads a descriptor the
+/// layout lacks has the driver index past its tables.
 fn check_shader_layout(
     device: &Device,
     stage: &vk::PipelineShaderStageCreateInfo<'_>,
@@ -1839,6 +1840,13 @@ fn check_shader_layout(
                     r.set, r.binding, b.stages
                 ),
             )?,
+            Some(b) if !r.kind.accepts(b.ty) => refuse(
+                vuid,
+                format!(
+                    "{at}: the shader reads set {} binding {} as {:?}, which a {:?} descriptor cannot back",
+                    r.set, r.binding, r.kind, b.ty
+                ),
+            )?,
             Some(b) if r.count > b.count => refuse(
                 vuid,
                 format!(
@@ -1849,16 +1857,18 @@ fn check_shader_layout(
             Some(_) => {}
         }
     }
-    if interface.push_constants
-        && !layout
-            .push_ranges
-            .iter()
-            .any(|p| p.stage_flags.contains(stage_flags))
-    {
-        refuse(
-            vuid,
-            format!("{at}: the shader uses push constants, which the pipeline layout has no range for in the {stage_flags:?} stage"),
-        )?;
+    if let Some((start, end)) = interface.push_constants {
+        let covered = layout.push_ranges.iter().any(|p| {
+            p.stage_flags.contains(stage_flags)
+                && p.offset <= start
+                && u64::from(p.offset) + u64::from(p.size) >= u64::from(end)
+        });
+        if !covered {
+            refuse(
+                vuid,
+                format!("{at}: the shader's push constants span bytes {start}..{end}, which no push-constant range of the pipeline layout for the {stage_flags:?} stage covers"),
+            )?;
+        }
     }
     Ok(())
 }

@@ -79,49 +79,246 @@ pub fn spirv_words(bytes: &[u8]) -> Result<Vec<u32>> {
     Ok(words)
 }
 
-/// A resource variable a module declares: its set, binding and array size (0 for a
-/// runtime-sized array).
+/// What kind of descriptor a resource variable reads, from its storage class and
+/// type (the specification's table of shader resources and descriptor types).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ResourceKind {
+    /// A `Block` in `Uniform` storage.
+    UniformBuffer,
+    /// `StorageBuffer` storage, or a `BufferBlock` in `Uniform`.
+    StorageBuffer,
+    /// `OpTypeSampler`.
+    Sampler,
+    /// `OpTypeImage` read through a sampler.
+    SampledImage,
+    /// `OpTypeImage` read and written without one.
+    StorageImage,
+    /// `OpTypeSampledImage`.
+    CombinedImageSampler,
+    /// A buffer-dimensioned image read through a sampler.
+    UniformTexelBuffer,
+    /// A buffer-dimensioned storage image.
+    StorageTexelBuffer,
+    /// A `SubpassData` image.
+    InputAttachment,
+    /// Anything else (an acceleration structure, an extension's type): not compared.
+    Other,
+}
+
+impl ResourceKind {
+    /// Whether a descriptor of type `ty` can back a variable of this kind.
+    pub(crate) fn accepts(self, ty: ash::vk::DescriptorType) -> bool {
+        use ash::vk::DescriptorType as T;
+        // A mutable descriptor may hold any type; the caller writes the right one.
+        if ty == T::MUTABLE_EXT {
+            return true;
+        }
+        match self {
+            ResourceKind::UniformBuffer => matches!(
+                ty,
+                T::UNIFORM_BUFFER | T::UNIFORM_BUFFER_DYNAMIC | T::INLINE_UNIFORM_BLOCK
+            ),
+            ResourceKind::StorageBuffer => {
+                matches!(ty, T::STORAGE_BUFFER | T::STORAGE_BUFFER_DYNAMIC)
+            }
+            ResourceKind::Sampler => matches!(ty, T::SAMPLER | T::COMBINED_IMAGE_SAMPLER),
+            ResourceKind::SampledImage => {
+                matches!(ty, T::SAMPLED_IMAGE | T::COMBINED_IMAGE_SAMPLER)
+            }
+            ResourceKind::StorageImage => ty == T::STORAGE_IMAGE,
+            ResourceKind::CombinedImageSampler => ty == T::COMBINED_IMAGE_SAMPLER,
+            ResourceKind::UniformTexelBuffer => ty == T::UNIFORM_TEXEL_BUFFER,
+            ResourceKind::StorageTexelBuffer => ty == T::STORAGE_TEXEL_BUFFER,
+            ResourceKind::InputAttachment => ty == T::INPUT_ATTACHMENT,
+            ResourceKind::Other => true,
+        }
+    }
+}
+
+/// A resource variable a module declares: its set, binding, kind and array size (0
+/// for a runtime-sized array).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Resource {
     /// `DescriptorSet`.
     pub set: u32,
     /// `Binding`.
     pub binding: u32,
+    /// What descriptor it reads.
+    pub kind: ResourceKind,
     /// Descriptors the variable spans: 1, an array's length, or 0 for a runtime array.
     pub count: u32,
 }
 
 /// What a module's shaders need from a pipeline layout: every resource variable it
-/// declares with a set and binding, and whether it declares push constants. A
+/// declares with a set and binding, and the bytes of its push-constant block. A
 /// module whose entry points do not all use every variable asks for more than the
 /// one in a pipeline needs; that errs on the side of refusing.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Interface {
     /// The resource variables.
     pub resources: Vec<Resource>,
-    /// Whether a `PushConstant` variable is declared.
-    pub push_constants: bool,
+    /// The byte range `start..end` of the push-constant block, if one is declared.
+    pub push_constants: Option<(u32, u32)>,
+}
+
+/// The instructions of a module that the interface reads, by result id.
+#[derive(Default)]
+struct Module {
+    decorations: std::collections::HashMap<(u32, u32), u32>,
+    member_decorations: std::collections::HashMap<(u32, u32, u32), u32>,
+    /// Result id to (opcode, operands after the result id).
+    types: std::collections::HashMap<u32, (u32, Vec<u32>)>,
+    constants: std::collections::HashMap<u32, u32>,
+    flags: std::collections::HashSet<(u32, u32)>,
+}
+
+const OP_TYPE_INT: u32 = 21;
+const OP_TYPE_FLOAT: u32 = 22;
+const OP_TYPE_VECTOR: u32 = 23;
+const OP_TYPE_MATRIX: u32 = 24;
+const OP_TYPE_IMAGE: u32 = 25;
+const OP_TYPE_SAMPLER: u32 = 26;
+const OP_TYPE_SAMPLED_IMAGE: u32 = 27;
+const OP_TYPE_ARRAY: u32 = 28;
+const OP_TYPE_RUNTIME_ARRAY: u32 = 29;
+const OP_TYPE_STRUCT: u32 = 30;
+const OP_TYPE_POINTER: u32 = 32;
+const DEC_BLOCK: u32 = 2;
+const DEC_BUFFER_BLOCK: u32 = 3;
+const DEC_ARRAY_STRIDE: u32 = 6;
+const DEC_MATRIX_STRIDE: u32 = 7;
+const DEC_OFFSET: u32 = 35;
+
+impl Module {
+    fn ty(&self, id: u32) -> Option<(u32, &[u32])> {
+        self.types.get(&id).map(|(op, w)| (*op, w.as_slice()))
+    }
+
+    /// The type under any arrays, with the descriptor count they give.
+    fn element(&self, mut id: u32) -> (u32, u32) {
+        let mut count = 1u32;
+        for _ in 0..8 {
+            match self.ty(id) {
+                Some((OP_TYPE_ARRAY, [elem, len, ..])) => {
+                    count = count.saturating_mul(self.constants.get(len).copied().unwrap_or(1));
+                    id = *elem;
+                }
+                Some((OP_TYPE_RUNTIME_ARRAY, [elem, ..])) => {
+                    count = 0;
+                    id = *elem;
+                }
+                _ => break,
+            }
+        }
+        (id, count)
+    }
+
+    fn kind(&self, storage: u32, element: u32) -> ResourceKind {
+        const UNIFORM_CONSTANT: u32 = 0;
+        const UNIFORM: u32 = 2;
+        const STORAGE_BUFFER: u32 = 12;
+        const DIM_BUFFER: u32 = 5;
+        const DIM_SUBPASS_DATA: u32 = 6;
+        match (storage, self.ty(element)) {
+            (UNIFORM, _) if self.flags.contains(&(element, DEC_BUFFER_BLOCK)) => {
+                ResourceKind::StorageBuffer
+            }
+            (UNIFORM, _) if self.flags.contains(&(element, DEC_BLOCK)) => {
+                ResourceKind::UniformBuffer
+            }
+            (STORAGE_BUFFER, _) => ResourceKind::StorageBuffer,
+            (UNIFORM_CONSTANT, Some((OP_TYPE_SAMPLER, _))) => ResourceKind::Sampler,
+            (UNIFORM_CONSTANT, Some((OP_TYPE_SAMPLED_IMAGE, _))) => {
+                ResourceKind::CombinedImageSampler
+            }
+            // Operands: sampled type, Dim, Depth, Arrayed, MS, Sampled, format.
+            (UNIFORM_CONSTANT, Some((OP_TYPE_IMAGE, [_, dim, _, _, _, sampled, ..]))) => {
+                match (*dim, *sampled) {
+                    (DIM_BUFFER, 2) => ResourceKind::StorageTexelBuffer,
+                    (DIM_BUFFER, _) => ResourceKind::UniformTexelBuffer,
+                    (DIM_SUBPASS_DATA, _) => ResourceKind::InputAttachment,
+                    (_, 2) => ResourceKind::StorageImage,
+                    _ => ResourceKind::SampledImage,
+                }
+            }
+            _ => ResourceKind::Other,
+        }
+    }
+
+    /// The size in bytes of a type as laid out in a block; `stride` is the
+    /// `MatrixStride` of the member it is, for a matrix.
+    fn size(&self, id: u32, stride: Option<u32>, depth: u32) -> u32 {
+        if depth > 16 {
+            return 0;
+        }
+        match self.ty(id) {
+            Some((OP_TYPE_INT | OP_TYPE_FLOAT, [width, ..])) => width / 8,
+            Some((OP_TYPE_VECTOR, [component, count, ..])) => {
+                count.saturating_mul(self.size(*component, None, depth + 1))
+            }
+            Some((OP_TYPE_MATRIX, [column, columns, ..])) => columns
+                .saturating_mul(stride.unwrap_or_else(|| self.size(*column, None, depth + 1))),
+            Some((OP_TYPE_ARRAY, [elem, len, ..])) => {
+                let len = self.constants.get(len).copied().unwrap_or(1);
+                let stride = self
+                    .decorations
+                    .get(&(id, DEC_ARRAY_STRIDE))
+                    .copied()
+                    .unwrap_or_else(|| self.size(*elem, None, depth + 1));
+                len.saturating_mul(stride)
+            }
+            Some((OP_TYPE_STRUCT, members)) => {
+                let mut end = 0u32;
+                for (i, m) in members.iter().enumerate() {
+                    let i = i as u32;
+                    let offset = self
+                        .member_decorations
+                        .get(&(id, i, DEC_OFFSET))
+                        .copied()
+                        .unwrap_or(0);
+                    let stride = self
+                        .member_decorations
+                        .get(&(id, i, DEC_MATRIX_STRIDE))
+                        .copied();
+                    end = end.max(offset.saturating_add(self.size(*m, stride, depth + 1)));
+                }
+                end
+            }
+            // Booleans and anything unknown: one word.
+            _ => 4,
+        }
+    }
+
+    /// The bytes a push-constant block of struct type `id` spans.
+    fn block_range(&self, id: u32) -> (u32, u32) {
+        let Some((OP_TYPE_STRUCT, members)) = self.ty(id) else {
+            return (0, self.size(id, None, 0));
+        };
+        let mut start = u32::MAX;
+        for i in 0..members.len() as u32 {
+            let offset = self
+                .member_decorations
+                .get(&(id, i, DEC_OFFSET))
+                .copied()
+                .unwrap_or(0);
+            start = start.min(offset);
+        }
+        (start.min(self.size(id, None, 0)), self.size(id, None, 0))
+    }
 }
 
 /// The interface of the SPIR-V module in `words` (in the host's byte order, as
 /// [`spirv_words`] returns them). Malformed instructions end the walk; what was read
 /// until then is kept.
 pub(crate) fn interface(words: &[u32]) -> Interface {
-    use std::collections::HashMap;
-    const OP_DECORATE: u32 = 71;
-    const OP_VARIABLE: u32 = 59;
-    const OP_TYPE_POINTER: u32 = 32;
-    const OP_TYPE_ARRAY: u32 = 28;
-    const OP_TYPE_RUNTIME_ARRAY: u32 = 29;
     const OP_CONSTANT: u32 = 43;
+    const OP_DECORATE: u32 = 71;
+    const OP_MEMBER_DECORATE: u32 = 72;
+    const OP_VARIABLE: u32 = 59;
     const BINDING: u32 = 33;
     const DESCRIPTOR_SET: u32 = 34;
     const PUSH_CONSTANT: u32 = 9;
-    let mut sets: HashMap<u32, u32> = HashMap::new();
-    let mut bindings: HashMap<u32, u32> = HashMap::new();
-    let mut pointers: HashMap<u32, u32> = HashMap::new();
-    let mut arrays: HashMap<u32, Option<u32>> = HashMap::new();
-    let mut constants: HashMap<u32, u32> = HashMap::new();
+    let mut m = Module::default();
     let mut variables: Vec<(u32, u32, u32)> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
@@ -132,23 +329,20 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
         }
         let w = &words[at..at + count];
         match (op, w.len()) {
-            (OP_DECORATE, 4..) if w[2] == DESCRIPTOR_SET => {
-                sets.insert(w[1], w[3]);
+            (OP_DECORATE, 3) => {
+                m.flags.insert((w[1], w[2]));
             }
-            (OP_DECORATE, 4..) if w[2] == BINDING => {
-                bindings.insert(w[1], w[3]);
+            (OP_DECORATE, 4..) => {
+                m.decorations.insert((w[1], w[2]), w[3]);
             }
-            (OP_TYPE_POINTER, 4..) => {
-                pointers.insert(w[1], w[3]);
+            (OP_MEMBER_DECORATE, 5..) => {
+                m.member_decorations.insert((w[1], w[2], w[3]), w[4]);
             }
-            (OP_TYPE_ARRAY, 4..) => {
-                arrays.insert(w[1], Some(w[3]));
-            }
-            (OP_TYPE_RUNTIME_ARRAY, 3..) => {
-                arrays.insert(w[1], None);
+            (OP_TYPE_INT..=OP_TYPE_POINTER, 2..) => {
+                m.types.insert(w[1], (op, w[2..].to_vec()));
             }
             (OP_CONSTANT, 4..) => {
-                constants.insert(w[2], w[3]);
+                m.constants.insert(w[2], w[3]);
             }
             (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
             _ => {}
@@ -157,21 +351,29 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     }
     let mut out = Interface::default();
     for (ty, id, storage) in variables {
+        let pointee = match m.ty(ty) {
+            Some((OP_TYPE_POINTER, [_, pointee, ..])) => *pointee,
+            _ => continue,
+        };
         if storage == PUSH_CONSTANT {
-            out.push_constants = true;
+            let (start, end) = m.block_range(pointee);
+            out.push_constants = Some(match out.push_constants {
+                Some((s, e)) => (s.min(start), e.max(end)),
+                None => (start, end),
+            });
+            continue;
         }
-        let (Some(&set), Some(&binding)) = (sets.get(&id), bindings.get(&id)) else {
+        let (Some(&set), Some(&binding)) = (
+            m.decorations.get(&(id, DESCRIPTOR_SET)),
+            m.decorations.get(&(id, BINDING)),
+        ) else {
             continue;
         };
-        let pointee = pointers.get(&ty).copied().unwrap_or(ty);
-        let count = match arrays.get(&pointee) {
-            Some(Some(length)) => constants.get(length).copied().unwrap_or(1),
-            Some(None) => 0,
-            None => 1,
-        };
+        let (element, count) = m.element(pointee);
         out.resources.push(Resource {
             set,
             binding,
+            kind: m.kind(storage, element),
             count,
         });
     }
@@ -189,17 +391,24 @@ mod tests {
     #[test]
     fn the_test_shaders_interfaces() {
         let comp = interface(&words(include_bytes!("../../shaders/spv/test.comp.spv")));
-        let mut found: Vec<(u32, u32, u32)> = comp
+        let mut found: Vec<(u32, u32, ResourceKind, u32)> = comp
             .resources
             .iter()
-            .map(|r| (r.set, r.binding, r.count))
+            .map(|r| (r.set, r.binding, r.kind, r.count))
             .collect();
-        found.sort_unstable();
-        assert_eq!(found, [(0, 0, 1), (0, 1, 1)]);
-        assert!(!comp.push_constants);
+        found.sort_unstable_by_key(|r| (r.0, r.1));
+        assert_eq!(
+            found,
+            [
+                (0, 0, ResourceKind::UniformBuffer, 1),
+                (0, 1, ResourceKind::StorageBuffer, 1)
+            ]
+        );
+        assert_eq!(comp.push_constants, None);
         let frag = interface(&words(include_bytes!("../../shaders/spv/test.frag.spv")));
         assert!(frag.resources.is_empty());
-        assert!(frag.push_constants);
+        // The test fragment shader pushes one vec4.
+        assert_eq!(frag.push_constants, Some((0, 16)));
     }
 
     #[test]

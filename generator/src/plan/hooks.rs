@@ -134,7 +134,7 @@ const VIEWPORTS: &str =
     "checks the first index plus the count against the device's maxViewports, read once";
 const MULTI_VIEWPORT: &str = "checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers";
 const SCISSORS: &str = "checks each scissor's offset is not negative and its ends do not overflow";
-const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares has a binding in the layout for that stage, with as many descriptors, and push constants a range for the stage; descriptor types and push-constant sizes are not compared, so the rule stays the caller's";
+const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
     "checks the viewports (scissors) are given or dynamic unless rasterization is discarded";
@@ -675,7 +675,7 @@ pub const SPECIALS: &[Special] = &[
         settles: &[
             ("VUID-VkSpecializationInfo-offset-00773", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
-            ("VUID-VkComputePipelineCreateInfo-layout-00703", How::User(SHADER_LAYOUT)),
+            ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
         ],
         ..NONE
     },
@@ -687,7 +687,7 @@ pub const SPECIALS: &[Special] = &[
             &["self", "created", "create_infos"],
         ),
         settles: &[
-            ("VUID-VkGraphicsPipelineCreateInfo-layout-00756", How::User(SHADER_LAYOUT)),
+            ("VUID-VkGraphicsPipelineCreateInfo-layout-00756", How::Dynamic(SHADER_LAYOUT)),
             (
                 "VUID-VkGraphicsPipelineCreateInfo-pStages-06600",
                 How::Dynamic("checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone)"),

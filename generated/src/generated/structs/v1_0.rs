@@ -621,6 +621,7 @@ impl<'a> CommandPoolCreateInfo<'a> {
 
 The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkComputePipelineCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkComputePipelineCreateInfo-layout-00703`: dynamic (checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage)
 - `VUID-VkComputePipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkComputePipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -629,10 +630,7 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 21.
-
-- 1: checks every resource variable the stage's module declares has a binding in the layout for that stage, with as many descriptors, and push constants a range for the stage; descriptor types and push-constant sizes are not compared, so the rule stays the caller's
-- 20: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -1279,6 +1277,7 @@ impl<'a> FramebufferCreateInfo<'a> {
 
 The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsPipelineCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkGraphicsPipelineCreateInfo-layout-00756`: dynamic (checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage)
 - `VUID-VkGraphicsPipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkGraphicsPipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkGraphicsPipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1289,10 +1288,9 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`: dynamic (checks the viewports (scissors) are given or dynamic unless rasterization is discarded)
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`: dynamic (checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 290.
+Left to the caller (listed one by one in the crate's `validation.json`): 289.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: checks every resource variable the stage's module declares has a binding in the layout for that stage, with as many descriptors, and push constants a range for the stage; descriptor types and push-constant sizes are not compared, so the rule stays the caller's
 - 288: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
