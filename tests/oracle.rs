@@ -667,12 +667,8 @@ struct Graphics<'a> {
 fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
     let d = &s.device;
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
-    let vert = d
-        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.vert.spv"))
-        .expect("vertex shader");
-    let frag = d
-        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.frag.spv"))
-        .expect("fragment shader");
+    let vert = tuff_setup::shader(s, include_bytes!("../shaders/spv/test.vert.spv"));
+    let frag = tuff_setup::shader(s, include_bytes!("../shaders/spv/test.frag.spv"));
     // The test fragment shader reads 16 bytes of push constants.
     let push = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::FRAGMENT,

@@ -3304,9 +3304,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let comp = d
-        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.comp.spv"))
-        .expect("compute shader");
+    let comp = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.comp.spv"));
     let empty = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("empty layout");
@@ -3373,12 +3371,8 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
 
     // The graphics pipeline: the test fragment shader pushes 16 bytes.
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
-    let vert = d
-        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.vert.spv"))
-        .expect("vertex shader");
-    let frag = d
-        .create_shader_module_from_spirv(include_bytes!("../shaders/spv/test.frag.spv"))
-        .expect("fragment shader");
+    let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.vert.spv"));
+    let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.frag.spv"));
     let stages = [
         tuff::PipelineShaderStageCreateInfo::new(c"main")
             .stage(vk::ShaderStageFlags::VERTEX)

@@ -43,6 +43,19 @@ macro_rules! spirv {
     };
 }
 
+/// A shader module from one of the scenes' compiled shaders (`spirv!`).
+///
+/// This is where the scenes make tuff's shader promise, once for all of them.
+pub fn shader(device: &tuff::Device, bytes: &[u8]) -> tuff::Result<tuff::ShaderModule> {
+    // SAFETY: the shader promise. The scenes' shaders are compiled from the GLSL in
+    // `shaders/` by `scripts/shaders.sh` (a test fails if the committed SPIR-V is
+    // stale), are valid SPIR-V for Vulkan 1.3, use no feature the scenes' devices do
+    // not enable, terminate, and read and write only the uniform buffers, push
+    // constants and attachments their pipelines give them, at indices their own
+    // vertex and instance counts bound.
+    unsafe { device.create_shader_module_from_spirv(bytes) }
+}
+
 /// Runs `main`, printing an error and its causes on failure.
 pub fn exit(main: impl FnOnce() -> anyhow::Result<()>) -> std::process::ExitCode {
     match main() {

@@ -3,10 +3,17 @@
 //!
 //! ```no_run
 //! # fn f(device: &tuff::Device, bytes: &[u8]) -> tuff::Result<()> {
-//! let module = device.create_shader_module_from_spirv(bytes)?;
+//! // SAFETY: the shader promise: `bytes` is this program's own compiled shader,
+//! // valid for Vulkan, and it stays inside the resources its pipelines give it.
+//! let module = unsafe { device.create_shader_module_from_spirv(bytes) }?;
 //! # let _ = module;
 //! # Ok(()) }
 //! ```
+//!
+//! Making a shader module is where a program vouches for its shaders, once: the
+//! method is `unsafe`, and its `# Safety` section is the promise. Pipelines and the
+//! commands that run them check what they can read from the module's interface and
+//! the recorded state, and stay safe.
 
 use crate::handles::{Device, ShaderModule};
 use crate::structs::ShaderModuleCreateInfo;
@@ -18,9 +25,15 @@ const MAGIC: u32 = 0x0723_0203;
 impl Device {
     /// `vkCreateShaderModule` from the bytes of a SPIR-V module (a `.spv` file),
     /// which may be in either byte order. See [`spirv_words`] for what is checked.
-    pub fn create_shader_module_from_spirv(&self, bytes: &[u8]) -> Result<ShaderModule> {
+    ///
+    /// # Safety
+    ///
+    /// The shader promise of [`Device::create_shader_module`], for the module the
+    /// bytes hold.
+    pub unsafe fn create_shader_module_from_spirv(&self, bytes: &[u8]) -> Result<ShaderModule> {
         let words = spirv_words(bytes)?;
-        self.create_shader_module(&ShaderModuleCreateInfo::new().code(&words))
+        // SAFETY: the caller makes the shader promise for these words.
+        unsafe { self.create_shader_module(&ShaderModuleCreateInfo::new().code(&words)) }
     }
 }
 

@@ -89,10 +89,7 @@ pub fn access_memory(
 /// descriptor set at its buffers through a descriptor update template.
 pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
     let d = &s.device;
-    let module = |bytes: &[u8]| {
-        d.create_shader_module_from_spirv(bytes)
-            .expect("shader module")
-    };
+    let module = |bytes: &[u8]| super::tuff_setup::shader(s, bytes);
     let vert = module(include_bytes!("../../shaders/spv/test.vert.spv"));
     let frag = module(include_bytes!("../../shaders/spv/test.frag.spv"));
     let comp = module(include_bytes!("../../shaders/spv/test.comp.spv"));

@@ -281,3 +281,12 @@ impl Setup {
         }
     }
 }
+
+/// A shader module from one of the repository's compiled test shaders.
+pub fn shader(s: &Setup, bytes: &[u8]) -> tuff::ShaderModule {
+    // SAFETY: the shader promise. The repository's shaders are compiled from its GLSL
+    // by `scripts/shaders.sh` (a test fails if the committed SPIR-V is stale), are
+    // valid SPIR-V for Vulkan 1.3, need no feature the test device lacks, terminate,
+    // and read only the resources their pipelines give them.
+    unsafe { s.device.create_shader_module_from_spirv(bytes) }.expect("shader module")
+}

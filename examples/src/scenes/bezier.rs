@@ -31,10 +31,10 @@ impl Bezier {
             );
         }
         let (d, a) = (&gpu.device, &gpu.allocator);
-        let vert = d.create_shader_module_from_spirv(crate::spirv!("bezier.vert"))?;
-        let tesc = d.create_shader_module_from_spirv(crate::spirv!("bezier.tesc"))?;
-        let tese = d.create_shader_module_from_spirv(crate::spirv!("bezier.tese"))?;
-        let frag = d.create_shader_module_from_spirv(crate::spirv!("bezier.frag"))?;
+        let vert = crate::shader(d, crate::spirv!("bezier.vert"))?;
+        let tesc = crate::shader(d, crate::spirv!("bezier.tesc"))?;
+        let tese = crate::shader(d, crate::spirv!("bezier.tese"))?;
+        let frag = crate::shader(d, crate::spirv!("bezier.frag"))?;
         let bindings = [tuff::DescriptorSetLayoutBinding::new()
             .binding(0)
             .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)

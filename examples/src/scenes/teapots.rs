@@ -30,8 +30,8 @@ impl Teapots {
     /// Builds the scene for `render_pass`.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass, layout: Layout) -> Result<Teapots> {
         let (d, a) = (&gpu.device, &gpu.allocator);
-        let vert = d.create_shader_module_from_spirv(crate::spirv!("teapot.vert"))?;
-        let frag = d.create_shader_module_from_spirv(crate::spirv!("teapot.frag"))?;
+        let vert = crate::shader(d, crate::spirv!("teapot.vert"))?;
+        let frag = crate::shader(d, crate::spirv!("teapot.frag"))?;
         let bindings = [tuff::DescriptorSetLayoutBinding::new()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)

@@ -20,8 +20,8 @@ impl Triangle {
     /// Builds the pipeline for `render_pass` and uploads the vertices.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass) -> Result<Triangle> {
         let (d, a) = (&gpu.device, &gpu.allocator);
-        let vert = d.create_shader_module_from_spirv(crate::spirv!("triangle.vert"))?;
-        let frag = d.create_shader_module_from_spirv(crate::spirv!("triangle.frag"))?;
+        let vert = crate::shader(d, crate::spirv!("triangle.vert"))?;
+        let frag = crate::shader(d, crate::spirv!("triangle.frag"))?;
         let layout = pipeline::layout(gpu, &[], vk::ShaderStageFlags::empty(), 0)?;
         let pipeline = pipeline::graphics(
             gpu,

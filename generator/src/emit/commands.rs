@@ -776,17 +776,19 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         .filter(|(_, s)| matches!(s, Param::RawData))
         .map(|(p, _)| format!("`{}`", param(&p.name)))
         .collect();
-    let (unsafe_kw, safety) = if raw_data.is_empty() {
-        (quote!(), String::new())
-    } else {
-        (
+    let contract = special.and_then(|s| s.contract);
+    let (unsafe_kw, safety) = match (raw_data.is_empty(), contract) {
+        (true, None) => (quote!(), String::new()),
+        (true, Some(promise)) => (quote!(unsafe), format!("\n\n# Safety\n\n{promise}")),
+        (false, _) => (
             quote!(unsafe),
             format!(
-                "\n\n# Safety\n\n{} is passed to Vulkan as is: it must point to data laid out as the specification of `{}` describes, readable for the whole call.",
+                "\n\n# Safety\n\n{} is passed to Vulkan as is: it must point to data laid out as the specification of `{}` describes, readable for the whole call.{}",
                 raw_data.join(", "),
-                plan.name
+                plan.name,
+                contract.map_or(String::new(), |c| format!(" {c}"))
             ),
-        )
+        ),
     };
     // No `-> ()`: a unit return is left out, as hand-written code would.
     let ret_arrow = if ret.to_string() == "()" {

@@ -79,6 +79,9 @@ pub struct Special {
     pub required: &'static [&'static str],
     /// The rules the row settles.
     pub settles: &'static [(&'static str, How)],
+    /// What a caller of the safe method promises, for a method that cannot check
+    /// what its safety rests on: the method is `unsafe`, and this is its `# Safety`.
+    pub contract: Option<&'static str>,
 }
 
 const NONE: Special = Special {
@@ -92,6 +95,7 @@ const NONE: Special = Special {
     keeps: Keeps::Reached,
     required: &[],
     settles: &[],
+    contract: None,
 };
 
 const fn call(path: &'static str, args: &'static [&'static str]) -> Option<Call> {
@@ -134,6 +138,9 @@ const VIEWPORTS: &str =
     "checks the first index plus the count against the device's maxViewports, read once";
 const MULTI_VIEWPORT: &str = "checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers";
 const SCISSORS: &str = "checks each scissor's offset is not negative and its ends do not overflow";
+/// The shader promise: the one place where a program vouches for code tuff cannot
+/// check, so that the pipelines and commands that run it can stay safe.
+pub const SHADER_CONTRACT: &str = "The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.";
 const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
@@ -429,6 +436,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateShaderModule",
         created: call("hooks::shader_module_created", &["self", "created", "create_info"]),
+        contract: Some(SHADER_CONTRACT),
         ..NONE
     },
     Special {

@@ -1497,6 +1497,10 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
     }
     /**`vkCreateShaderModule`
 
+# Safety
+
+The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.
+
 # Valid usage
 
 The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateShaderModule.html). Settled by the wrappers:
@@ -1508,7 +1512,7 @@ The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khro
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_shader_module<'a>(
+    pub unsafe fn create_shader_module<'a>(
         &self,
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<ShaderModule> {
@@ -1524,7 +1528,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_shader_module`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_shader_module`] checks at run time (those of the structs it takes). The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.*/
     #[inline]
     pub unsafe fn create_shader_module_unchecked<'a>(
         &self,
