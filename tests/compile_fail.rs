@@ -7,6 +7,7 @@ fn misuse_does_not_compile() {
     t.compile_fail("compile_fail/draw_outside_render_pass.rs");
     t.compile_fail("compile_fail/record_without_begin.rs");
     t.compile_fail("compile_fail/push_non_extending.rs");
+    t.compile_fail("compile_fail/shader_code_in_a_stage_chain.rs");
     t.compile_fail("compile_fail/pushed_struct_reused.rs");
     t.compile_fail("compile_fail/outside_command_in_continuing_secondary.rs");
     t.compile_fail("compile_fail/raw_handle_for_wrapper.rs");

@@ -3318,6 +3318,15 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         vuid(d.create_compute_pipelines(None, &compute)),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
+    // A stage without a module: no code that had the shader promise.
+    let no_module = [tuff::ComputePipelineCreateInfo::new(
+        stage().module(None),
+        &empty,
+    )];
+    assert_eq!(
+        vuid(d.create_compute_pipelines(None, &no_module)),
+        "VUID-VkPipelineShaderStageCreateInfo-module-06716"
+    );
     // A binding of the right number but visible to another stage only.
     let bindings = [0, 1].map(|binding| {
         tuff::DescriptorSetLayoutBinding::new()

@@ -1812,6 +1812,14 @@ fn check_shader_layout(
     vuid: &'static str,
     at: &dyn std::fmt::Display,
 ) -> Result<()> {
+    if stage.module == vk::ShaderModule::null() {
+        // Without the extensions that let a stage name its code another way (not
+        // emitted), a stage needs a module: it is how its code got the shader promise.
+        return refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-module-06716",
+            format!("{at}: module is not set"),
+        );
+    }
     let live = device.live();
     let (Some(interface), Some(layout)) = (
         live.shader_module(stage.module),

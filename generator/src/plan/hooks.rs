@@ -138,9 +138,23 @@ const VIEWPORTS: &str =
     "checks the first index plus the count against the device's maxViewports, read once";
 const MULTI_VIEWPORT: &str = "checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers";
 const SCISSORS: &str = "checks each scissor's offset is not negative and its ends do not overflow";
+/// Chains the registry allows but the safe structs refuse (no `Extends` between
+/// them), each with why.
+pub const UNCHAINED: &[(&str, &str, &str)] = &[(
+    "VkShaderModuleCreateInfo",
+    "VkPipelineShaderStageCreateInfo",
+    "it carries shader code, which enters only through the unsafe `create_shader_module` and its shader promise",
+)];
+
+/// Whether the safe structs refuse to chain `ext` into `head`.
+pub fn unchained(ext: &str, head: &str) -> bool {
+    UNCHAINED.iter().any(|(e, h, _)| *e == ext && *h == head)
+}
+
 /// The shader promise: the one place where a program vouches for code tuff cannot
 /// check, so that the pipelines and commands that run it can stay safe.
 pub const SHADER_CONTRACT: &str = "The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.";
+const STAGE_MODULE: &str = "checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver)";
 const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
@@ -684,6 +698,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkSpecializationInfo-offset-00773", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
+            ("VUID-VkPipelineShaderStageCreateInfo-module-06716", How::Dynamic(STAGE_MODULE)),
         ],
         ..NONE
     },

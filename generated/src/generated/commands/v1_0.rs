@@ -548,7 +548,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,

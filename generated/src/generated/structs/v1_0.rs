@@ -2413,11 +2413,12 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 - `VUID-VkPipelineShaderStageCreateInfo-module-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkPipelineShaderStageCreateInfo-module-06716`: dynamic (checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38.
+Left to the caller (listed one by one in the crate's `validation.json`): 37.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 35: explicit rule; the wrappers do not check it*/
+- 34: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
@@ -2988,8 +2989,6 @@ impl<'a> ShaderModuleCreateInfo<'a> {
         self
     }
 }
-unsafe impl<'a> Extends<PipelineShaderStageCreateInfo<'a>>
-for ShaderModuleCreateInfo<'a> {}
 /**Safe counterpart of [`vk::SparseBufferMemoryBindInfo`].
 
 # Valid usage
