@@ -678,14 +678,7 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
     let layout = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
         .expect("layout");
-    let stages = [
-        tuff::PipelineShaderStageCreateInfo::new(c"main")
-            .stage(vk::ShaderStageFlags::VERTEX)
-            .module(Some(&vert)),
-        tuff::PipelineShaderStageCreateInfo::new(c"main")
-            .stage(vk::ShaderStageFlags::FRAGMENT)
-            .module(Some(&frag)),
-    ];
+    let stages = pipelines::test_stages(&vert, &frag);
     let mut parts = Graphics {
         assembly: tuff::PipelineInputAssemblyStateCreateInfo::new()
             .topology(vk::PrimitiveTopology::TRIANGLE_LIST),
@@ -807,6 +800,16 @@ mod args {
     pub struct CmdResetEvent2 {
         pub stage_mask: vk::PipelineStageFlags2,
     }
+    impl From<vk::PipelineStageFlags> for CmdSetEvent {
+        fn from(stage_mask: vk::PipelineStageFlags) -> Self {
+            Self { stage_mask }
+        }
+    }
+    impl From<vk::PipelineStageFlags2> for CmdResetEvent2 {
+        fn from(stage_mask: vk::PipelineStageFlags2) -> Self {
+            Self { stage_mask }
+        }
+    }
     pub struct CmdWaitEvents {
         pub src_stage_mask: vk::PipelineStageFlags,
         pub dst_stage_mask: vk::PipelineStageFlags,
@@ -863,59 +866,46 @@ fn event(s: &Setup) -> tuff::Event {
         .expect("event")
 }
 
-fn cmd_set_event(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut args::CmdSetEvent, &Limits, &mut Objects),
-) -> Outcome {
-    let mut a = args::CmdSetEvent {
-        stage_mask: vk::PipelineStageFlags::TRANSFER,
+/// A fixture for a command on one event with a stage mask: set, reset, reset2.
+macro_rules! event_fixture {
+    ($name:ident, $args:ty, $stage:expr, $unchecked:ident) => {
+        fn $name(
+            s: &Setup,
+            limits: &Limits,
+            change: &dyn Fn(&mut $args, &Limits, &mut Objects),
+        ) -> Outcome {
+            let mut a = <$args>::from($stage);
+            change(&mut a, limits, &mut Objects::default());
+            let e = event(s);
+            record(
+                s,
+                |r| r.$name(&e, a.stage_mask),
+                // SAFETY: as in `buffer_create_info`; the command buffer is never
+                // submitted.
+                |r| unsafe { r.$unchecked(&e, a.stage_mask) },
+            )
+        }
     };
-    change(&mut a, limits, &mut Objects::default());
-    let e = event(s);
-    record(
-        s,
-        |r| r.cmd_set_event(&e, a.stage_mask),
-        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_event_unchecked(&e, a.stage_mask) },
-    )
 }
 
-fn cmd_reset_event(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut args::CmdResetEvent, &Limits, &mut Objects),
-) -> Outcome {
-    let mut a = args::CmdResetEvent {
-        stage_mask: vk::PipelineStageFlags::TRANSFER,
-    };
-    change(&mut a, limits, &mut Objects::default());
-    let e = event(s);
-    record(
-        s,
-        |r| r.cmd_reset_event(&e, a.stage_mask),
-        // SAFETY: as in `cmd_set_event`.
-        |r| unsafe { r.cmd_reset_event_unchecked(&e, a.stage_mask) },
-    )
-}
-
-fn cmd_reset_event2(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut args::CmdResetEvent2, &Limits, &mut Objects),
-) -> Outcome {
-    let mut a = args::CmdResetEvent2 {
-        stage_mask: vk::PipelineStageFlags2::TRANSFER,
-    };
-    change(&mut a, limits, &mut Objects::default());
-    let e = event(s);
-    record(
-        s,
-        |r| r.cmd_reset_event2(&e, a.stage_mask),
-        // SAFETY: as in `cmd_set_event`.
-        |r| unsafe { r.cmd_reset_event2_unchecked(&e, a.stage_mask) },
-    )
-}
+event_fixture!(
+    cmd_set_event,
+    args::CmdSetEvent,
+    vk::PipelineStageFlags::TRANSFER,
+    cmd_set_event_unchecked
+);
+event_fixture!(
+    cmd_reset_event,
+    args::CmdResetEvent,
+    vk::PipelineStageFlags::TRANSFER,
+    cmd_reset_event_unchecked
+);
+event_fixture!(
+    cmd_reset_event2,
+    args::CmdResetEvent2,
+    vk::PipelineStageFlags2::TRANSFER,
+    cmd_reset_event2_unchecked
+);
 
 fn cmd_wait_events(
     s: &Setup,
@@ -937,7 +927,7 @@ fn cmd_wait_events(
         },
         |r| {
             r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER);
-            // SAFETY: as in `cmd_set_event`.
+            // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe {
                 r.cmd_wait_events_unchecked(
                     &events,
@@ -975,7 +965,7 @@ fn cmd_pipeline_barrier(
                 &[],
             )
         },
-        // SAFETY: as in `cmd_set_event`.
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_pipeline_barrier_unchecked(
                 a.src_stage_mask,
@@ -1017,7 +1007,7 @@ fn cmd_write_timestamp(
         },
         |r| {
             r.cmd_reset_query_pool(&pool, 0, 1);
-            // SAFETY: as in `cmd_set_event`.
+            // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe { r.cmd_write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
         },
     )
@@ -1057,7 +1047,7 @@ fn cmd_clear_color_image(
     record(
         s,
         |r| r.cmd_clear_color_image(&image, a.image_layout, &color, &[WHOLE]),
-        // SAFETY: as in `cmd_set_event`.
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.cmd_clear_color_image_unchecked(&image, a.image_layout, &color, &[WHOLE]) },
     )
 }
@@ -1084,7 +1074,7 @@ fn cmd_copy_image(
     record(
         s,
         |r| r.cmd_copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region),
-        // SAFETY: as in `cmd_set_event`.
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_image_unchecked(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)
         },
@@ -1124,7 +1114,7 @@ fn cmd_blit_image(
                 nearest,
             )
         },
-        // SAFETY: as in `cmd_set_event`.
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_blit_image_unchecked(
                 &src,
@@ -1162,7 +1152,7 @@ fn cmd_copy_buffer_to_image(
     record(
         s,
         |r| r.cmd_copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region),
-        // SAFETY: as in `cmd_set_event`.
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_buffer_to_image_unchecked(&buffer, &image, a.dst_image_layout, &region)
         },
@@ -1185,7 +1175,7 @@ fn cmd_copy_image_to_buffer(
     record(
         s,
         |r| r.cmd_copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region),
-        // SAFETY: as in `cmd_set_event`.
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_image_to_buffer_unchecked(&image, a.src_image_layout, &buffer, &region)
         },

@@ -3327,50 +3327,40 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         vuid(d.create_compute_pipelines(None, &no_module)),
         "VUID-VkPipelineShaderStageCreateInfo-module-06716"
     );
-    // A binding of the right number but visible to another stage only.
-    let bindings = [0, 1].map(|binding| {
-        tuff::DescriptorSetLayoutBinding::new()
-            .binding(binding)
-            .descriptor_type(if binding == 0 {
-                vk::DescriptorType::UNIFORM_BUFFER
-            } else {
-                vk::DescriptorType::STORAGE_BUFFER
-            })
-            .descriptor_count(1)
-            .stage_flags(vk::ShaderStageFlags::VERTEX)
-    });
-    let set_layout = d
-        .create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+    // A one-set layout whose bindings 0 and 1 have these types and stages.
+    let layout_of = |types: [vk::DescriptorType; 2], stages: vk::ShaderStageFlags| {
+        let bindings = [0, 1].map(|binding| {
+            tuff::DescriptorSetLayoutBinding::new()
+                .binding(binding)
+                .descriptor_type(types[binding as usize])
+                .descriptor_count(1)
+                .stage_flags(stages)
+        });
+        let set_layout = d
+            .create_descriptor_set_layout(
+                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+            )
+            .expect("set layout");
+        d.create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
         )
-        .expect("set layout");
-    let sets = tuff::HandleSlice::new(&[&set_layout]);
-    let vertex_only = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&sets))
-        .expect("layout");
+        .expect("layout")
+    };
+    let (uniform, storage) = (
+        vk::DescriptorType::UNIFORM_BUFFER,
+        vk::DescriptorType::STORAGE_BUFFER,
+    );
+    // Bindings of the right types but visible to another stage only.
+    let vertex_only = layout_of([uniform, storage], vk::ShaderStageFlags::VERTEX);
     let hidden = [tuff::ComputePipelineCreateInfo::new(stage(), &vertex_only)];
     assert_eq!(
         vuid(d.create_compute_pipelines(None, &hidden)),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
-    // Both bindings visible to the compute stage, but the uniform block's binding
-    // holds storage buffers.
-    let swapped = [0, 1].map(|binding| {
-        tuff::DescriptorSetLayoutBinding::new()
-            .binding(binding)
-            .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-            .descriptor_count(1)
-            .stage_flags(vk::ShaderStageFlags::COMPUTE)
-    });
-    let storage_only = d
-        .create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&swapped),
-        )
-        .expect("set layout");
-    let storage_sets = tuff::HandleSlice::new(&[&storage_only]);
-    let wrong_type = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&storage_sets))
-        .expect("layout");
+    // Visible to the compute stage, but the uniform block's binding holds storage
+    // buffers.
+    let wrong_type = layout_of([storage, storage], vk::ShaderStageFlags::COMPUTE);
     let mistyped = [tuff::ComputePipelineCreateInfo::new(stage(), &wrong_type)];
     assert_eq!(
         vuid(d.create_compute_pipelines(None, &mistyped)),
@@ -3382,48 +3372,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.vert.spv"));
     let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.frag.spv"));
-    let stages = [
-        tuff::PipelineShaderStageCreateInfo::new(c"main")
-            .stage(vk::ShaderStageFlags::VERTEX)
-            .module(Some(&vert)),
-        tuff::PipelineShaderStageCreateInfo::new(c"main")
-            .stage(vk::ShaderStageFlags::FRAGMENT)
-            .module(Some(&frag)),
-    ];
-    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
-    let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
-        .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
-    let viewport = tuff::PipelineViewportStateCreateInfo::new()
-        .viewport_count(1)
-        .scissor_count(1);
-    let raster = tuff::PipelineRasterizationStateCreateInfo::new()
-        .polygon_mode(vk::PolygonMode::FILL)
-        .line_width(1.0);
-    let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
-        .rasterization_samples(vk::SampleCountFlags::TYPE_1);
-    let attachments = [vk::PipelineColorBlendAttachmentState {
-        color_write_mask: vk::ColorComponentFlags::RGBA,
-        ..Default::default()
-    }];
-    let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&attachments);
-    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
-    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
-    let graphics = [tuff::GraphicsPipelineCreateInfo::new()
-        .stages(&stages)
-        .vertex_input_state(Some(&vertex_input))
-        .input_assembly_state(Some(&assembly))
-        .viewport_state(Some(&viewport))
-        .rasterization_state(Some(&raster))
-        .multisample_state(Some(&multisample))
-        .color_blend_state(Some(&blend))
-        .dynamic_state(Some(&dynamic))
-        .layout(Some(&empty))
-        .render_pass(Some(&target.render_pass))
-        .subpass(0)];
-    assert_eq!(
-        vuid(d.create_graphics_pipelines(None, &graphics)),
-        "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
-    );
+    let stages = pipelines::test_stages(&vert, &frag);
     // A range for the fragment stage, but of 8 of the block's 16 bytes.
     let short = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::FRAGMENT,
@@ -3433,12 +3382,15 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let short_layout = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&short))
         .expect("layout");
-    let mut short_info = graphics;
-    short_info[0] = short_info[0].layout(Some(&short_layout));
-    assert_eq!(
-        vuid(d.create_graphics_pipelines(None, &short_info)),
-        "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
-    );
+    let rp = &target.render_pass;
+    for layout in [&empty, &short_layout] {
+        pipelines::with_graphics_info(&stages, layout, rp, |info| {
+            assert_eq!(
+                vuid(d.create_graphics_pipelines(None, &[info])),
+                "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
+            );
+        });
+    }
     assert_silent(&s.messages);
 
     s.messages.abort_on_error(true);
@@ -3449,11 +3401,12 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     // SAFETY: as above.
     drop(unsafe { d.create_compute_pipelines_unchecked(None, &mistyped) });
     assert_layer_reports(&s, "VUID-VkComputePipelineCreateInfo-layout-00703");
-    // SAFETY: as above.
-    drop(unsafe { d.create_graphics_pipelines_unchecked(None, &graphics) });
-    assert_layer_reports(&s, "VUID-VkGraphicsPipelineCreateInfo-layout-00756");
-    // SAFETY: as above.
-    drop(unsafe { d.create_graphics_pipelines_unchecked(None, &short_info) });
-    assert_layer_reports(&s, "VUID-VkGraphicsPipelineCreateInfo-layout-00756");
+    for layout in [&empty, &short_layout] {
+        pipelines::with_graphics_info(&stages, layout, rp, |info| {
+            // SAFETY: as above.
+            drop(unsafe { d.create_graphics_pipelines_unchecked(None, &[info]) });
+        });
+        assert_layer_reports(&s, "VUID-VkGraphicsPipelineCreateInfo-layout-00756");
+    }
     s.messages.abort_on_error(false);
 }

@@ -85,31 +85,30 @@ pub fn access_memory(
     }
 }
 
-/// Builds both pipelines for `target`'s render pass, and points the compute shader's
-/// descriptor set at its buffers through a descriptor update template.
-pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
-    let d = &s.device;
-    let module = |bytes: &[u8]| super::tuff_setup::shader(s, bytes);
-    let vert = module(include_bytes!("../../shaders/spv/test.vert.spv"));
-    let frag = module(include_bytes!("../../shaders/spv/test.frag.spv"));
-    let comp = module(include_bytes!("../../shaders/spv/test.comp.spv"));
-
-    let push = [vk::PushConstantRange {
-        stage_flags: vk::ShaderStageFlags::FRAGMENT,
-        offset: 0,
-        size: 16,
-    }];
-    let graphics_layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
-        .expect("graphics layout");
-    let stages = [
+/// The test vertex and fragment shaders as the two stages of a pipeline.
+pub fn test_stages<'a>(
+    vert: &'a tuff::ShaderModule,
+    frag: &'a tuff::ShaderModule,
+) -> [tuff::PipelineShaderStageCreateInfo<'a>; 2] {
+    [
         tuff::PipelineShaderStageCreateInfo::new(c"main")
             .stage(vk::ShaderStageFlags::VERTEX)
-            .module(Some(&vert)),
+            .module(Some(vert)),
         tuff::PipelineShaderStageCreateInfo::new(c"main")
             .stage(vk::ShaderStageFlags::FRAGMENT)
-            .module(Some(&frag)),
-    ];
+            .module(Some(frag)),
+    ]
+}
+
+/// Gives `f` the test graphics pipeline's create info over `stages`, `layout` and
+/// subpass 0 of `render_pass`: triangles, no vertex input, no culling, a dynamic
+/// viewport and scissor, and one color attachment written whole.
+pub fn with_graphics_info<R>(
+    stages: &[tuff::PipelineShaderStageCreateInfo<'_>],
+    layout: &tuff::PipelineLayout,
+    render_pass: &tuff::RenderPass,
+    f: impl FnOnce(tuff::GraphicsPipelineCreateInfo<'_>) -> R,
+) -> R {
     let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
     let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
         .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
@@ -129,8 +128,8 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
     let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
     let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
     let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
-    let info = tuff::GraphicsPipelineCreateInfo::new()
-        .stages(&stages)
+    f(tuff::GraphicsPipelineCreateInfo::new()
+        .stages(stages)
         .vertex_input_state(Some(&vertex_input))
         .input_assembly_state(Some(&assembly))
         .viewport_state(Some(&viewport))
@@ -138,11 +137,33 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
         .multisample_state(Some(&multisample))
         .color_blend_state(Some(&blend))
         .dynamic_state(Some(&dynamic))
-        .layout(Some(&graphics_layout))
-        .render_pass(Some(&target.render_pass))
-        .subpass(0);
-    let (mut graphics, r) = d
-        .create_graphics_pipelines(None, &[info])
+        .layout(Some(layout))
+        .render_pass(Some(render_pass))
+        .subpass(0))
+}
+
+/// Builds both pipelines for `target`'s render pass, and points the compute shader's
+/// descriptor set at its buffers through a descriptor update template.
+pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
+    let d = &s.device;
+    let module = |bytes: &[u8]| super::tuff_setup::shader(s, bytes);
+    let vert = module(include_bytes!("../../shaders/spv/test.vert.spv"));
+    let frag = module(include_bytes!("../../shaders/spv/test.frag.spv"));
+    let comp = module(include_bytes!("../../shaders/spv/test.comp.spv"));
+
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 16,
+    }];
+    let graphics_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+        .expect("graphics layout");
+    let stages = test_stages(&vert, &frag);
+    let (mut graphics, r) =
+        with_graphics_info(&stages, &graphics_layout, &target.render_pass, |info| {
+            d.create_graphics_pipelines(None, &[info])
+        })
         .expect("graphics pipeline");
     assert_eq!(r, vk::Result::SUCCESS);
     let graphics = graphics.pop().expect("one pipeline");
