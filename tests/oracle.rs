@@ -114,19 +114,7 @@ fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceM
     if !spec.bind {
         return (image, None);
     }
-    let reqs = d
-        .get_image_memory_requirements(&image)
-        .expect("requirements");
-    let memory = d
-        .allocate_memory(
-            &tuff::MemoryAllocateInfo::new()
-                .allocation_size(reqs.size)
-                .memory_type_index(
-                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                ),
-        )
-        .expect("image memory");
-    d.bind_image_memory(&image, &memory, 0).expect("bind image");
+    let memory = s.bind_image(&image);
     (image, Some(memory))
 }
 
@@ -530,40 +518,72 @@ fn render_pass(s: &Setup, edit: impl FnOnce(&mut RenderPass1<'_>)) -> Outcome {
     create!(s, create_render_pass, create_render_pass_unchecked, &info)
 }
 
-fn subpass_dependency(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut vk::SubpassDependency, &Limits, &mut Objects),
-) -> Outcome {
-    render_pass(s, |p| {
-        change(&mut p.dependency, limits, &mut Objects::default())
-    })
+/// A fixture for one part of a render pass: `$build` makes the render pass from
+/// the parts after `$part` (a plain struct, or a safe one with `raw`) is changed.
+macro_rules! render_pass_fixture {
+    ($name:ident, $ty:ty, $build:ident, |$p:ident| $part:expr) => {
+        fn $name(
+            s: &Setup,
+            limits: &Limits,
+            change: &dyn Fn(&mut $ty, &Limits, &mut Objects),
+        ) -> Outcome {
+            $build(s, |$p| change($part, limits, &mut Objects::default()))
+        }
+    };
+    ($name:ident, $ty:ty, $build:ident, raw |$p:ident| $part:expr) => {
+        fn $name(
+            s: &Setup,
+            limits: &Limits,
+            change: &dyn Fn(&mut $ty, &Limits, &mut Objects),
+        ) -> Outcome {
+            // SAFETY: as in `buffer_create_info`.
+            $build(s, |$p| {
+                change(
+                    unsafe { $part.raw_values_mut() },
+                    limits,
+                    &mut Objects::default(),
+                )
+            })
+        }
+    };
 }
 
-fn attachment_description(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut vk::AttachmentDescription, &Limits, &mut Objects),
-) -> Outcome {
-    render_pass(s, |p| {
-        change(&mut p.attachment, limits, &mut Objects::default())
-    })
-}
-
-fn subpass_description(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut vk::SubpassDescription<'_>, &Limits, &mut Objects),
-) -> Outcome {
-    // SAFETY: as in `buffer_create_info`.
-    render_pass(s, |p| {
-        change(
-            unsafe { p.subpass.raw_values_mut() },
-            limits,
-            &mut Objects::default(),
-        )
-    })
-}
+render_pass_fixture!(
+    subpass_dependency,
+    vk::SubpassDependency,
+    render_pass,
+    |p| &mut p.dependency
+);
+render_pass_fixture!(
+    attachment_description,
+    vk::AttachmentDescription,
+    render_pass,
+    |p| &mut p.attachment
+);
+render_pass_fixture!(
+    subpass_description,
+    vk::SubpassDescription<'_>,
+    render_pass,
+    raw | p | p.subpass
+);
+render_pass_fixture!(
+    subpass_dependency2,
+    vk::SubpassDependency2<'_>,
+    render_pass2,
+    raw | p | p.dependency
+);
+render_pass_fixture!(
+    attachment_description2,
+    vk::AttachmentDescription2<'_>,
+    render_pass2,
+    raw | p | p.attachment
+);
+render_pass_fixture!(
+    subpass_description2,
+    vk::SubpassDescription2<'_>,
+    render_pass2,
+    raw | p | p.subpass
+);
 
 /// [`RenderPass1`] through `vkCreateRenderPass2`.
 struct RenderPass2<'a> {
@@ -605,51 +625,6 @@ fn render_pass2(s: &Setup, edit: impl FnOnce(&mut RenderPass2<'_>)) -> Outcome {
         .subpasses(&subpasses)
         .dependencies(&dependencies);
     create!(s, create_render_pass2, create_render_pass2_unchecked, &info)
-}
-
-fn subpass_dependency2(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut vk::SubpassDependency2<'_>, &Limits, &mut Objects),
-) -> Outcome {
-    // SAFETY: as in `buffer_create_info`.
-    render_pass2(s, |p| {
-        change(
-            unsafe { p.dependency.raw_values_mut() },
-            limits,
-            &mut Objects::default(),
-        )
-    })
-}
-
-fn attachment_description2(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut vk::AttachmentDescription2<'_>, &Limits, &mut Objects),
-) -> Outcome {
-    // SAFETY: as in `buffer_create_info`.
-    render_pass2(s, |p| {
-        change(
-            unsafe { p.attachment.raw_values_mut() },
-            limits,
-            &mut Objects::default(),
-        )
-    })
-}
-
-fn subpass_description2(
-    s: &Setup,
-    limits: &Limits,
-    change: &dyn Fn(&mut vk::SubpassDescription2<'_>, &Limits, &mut Objects),
-) -> Outcome {
-    // SAFETY: as in `buffer_create_info`.
-    render_pass2(s, |p| {
-        change(
-            unsafe { p.subpass.raw_values_mut() },
-            limits,
-            &mut Objects::default(),
-        )
-    })
 }
 
 /// The fixed-function parts of the test graphics pipeline, for a change to any of

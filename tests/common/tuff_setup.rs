@@ -191,6 +191,25 @@ pub struct ColorTarget {
 }
 
 impl Setup {
+    /// Allocates memory for `image` and binds it.
+    pub fn bind_image(&self, image: &tuff::Image) -> tuff::DeviceMemory {
+        let d = &self.device;
+        let reqs = d
+            .get_image_memory_requirements(image)
+            .expect("memory requirements");
+        let memory = d
+            .allocate_memory(
+                &tuff::MemoryAllocateInfo::new()
+                    .allocation_size(reqs.size)
+                    .memory_type_index(
+                        self.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                    ),
+            )
+            .expect("image memory");
+        d.bind_image_memory(image, &memory, 0).expect("bind image");
+        memory
+    }
+
     /// A color target of `size` x `size` pixels; `usage` is added to COLOR_ATTACHMENT.
     pub fn color_target(&self, size: u32, usage: vk::ImageUsageFlags) -> ColorTarget {
         let d = &self.device;
@@ -210,19 +229,7 @@ impl Setup {
                     .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
             )
             .expect("image");
-        let reqs = d
-            .get_image_memory_requirements(&image)
-            .expect("memory requirements");
-        let memory = d
-            .allocate_memory(
-                &tuff::MemoryAllocateInfo::new()
-                    .allocation_size(reqs.size)
-                    .memory_type_index(
-                        self.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                    ),
-            )
-            .expect("image memory");
-        d.bind_image_memory(&image, &memory, 0).expect("bind image");
+        let memory = self.bind_image(&image);
         let view = d
             .create_image_view(
                 &tuff::ImageViewCreateInfo::new(&image)

@@ -236,31 +236,25 @@ impl Check {
 
     /// The handles whose objects' records the check reads, each once, in order.
     pub fn handles(&self) -> Vec<&str> {
-        let mut out: Vec<&str> = Vec::new();
-        for h in self
-            .when
-            .iter()
-            .chain(std::iter::once(&self.must))
-            .flat_map(Pred::handles)
-        {
-            if !out.contains(&h) {
-                out.push(h);
-            }
-        }
-        out
+        self.each_once(Pred::handles)
     }
 
     /// The struct members the check reads, each once, in order.
     pub fn members(&self) -> Vec<&str> {
+        self.each_once(Pred::members)
+    }
+
+    /// What `of` names in each predicate, each name once, in order.
+    fn each_once<'a>(&'a self, of: impl Fn(&'a Pred) -> Vec<&'a str>) -> Vec<&'a str> {
         let mut out: Vec<&str> = Vec::new();
-        for m in self
+        for name in self
             .when
             .iter()
             .chain(std::iter::once(&self.must))
-            .flat_map(Pred::members)
+            .flat_map(of)
         {
-            if !out.contains(&m) {
-                out.push(m);
+            if !out.contains(&name) {
+                out.push(name);
             }
         }
         out
