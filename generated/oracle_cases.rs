@@ -714,11 +714,33 @@ oracle_cases! {
             v.image_layout = vk::ImageLayout::from_raw(0);
         },
     },
+    copy_buffer_info2: vk::CopyBufferInfo2<'_> {
+        "VUID-VkCopyBufferInfo2-srcBuffer-00118" => |v, l, o| {
+            o.src_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x1);
+        },
+        "VUID-VkCopyBufferInfo2-srcBuffer-00119" => |v, l, o| {
+            o.src_buffer.bind = false;
+        },
+        "VUID-VkCopyBufferInfo2-dstBuffer-00120" => |v, l, o| {
+            o.dst_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x2);
+        },
+        "VUID-VkCopyBufferInfo2-dstBuffer-00121" => |v, l, o| {
+            o.dst_buffer.bind = false;
+        },
+    },
     cmd_copy_image: args::CmdCopyImage {
         "VUID-vkCmdCopyImage-srcImageLayout-00129" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
         "VUID-vkCmdCopyImage-dstImageLayout-00134" => |v, l, o| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    copy_image_info2: vk::CopyImageInfo2<'_> {
+        "VUID-VkCopyImageInfo2-srcImageLayout-00129" => |v, l, o| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-VkCopyImageInfo2-dstImageLayout-00134" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
@@ -756,6 +778,40 @@ oracle_cases! {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
+    copy_buffer_to_image_info2: vk::CopyBufferToImageInfo2<'_> {
+        "VUID-VkCopyBufferToImageInfo2-srcBuffer-00174" => |v, l, o| {
+            o.src_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x1);
+        },
+        "VUID-VkCopyBufferToImageInfo2-srcBuffer-00176" => |v, l, o| {
+            o.src_buffer.bind = false;
+        },
+        "VUID-VkCopyBufferToImageInfo2-dstImage-00177" => |v, l, o| {
+            o.dst_image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-VkCopyBufferToImageInfo2-dstImage-00178" => |v, l, o| {
+            o.dst_image.bind = false;
+        },
+        "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181" => |v, l, o| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    copy_image_to_buffer_info2: vk::CopyImageToBufferInfo2<'_> {
+        "VUID-VkCopyImageToBufferInfo2-srcImage-00186" => |v, l, o| {
+            o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
+        },
+        "VUID-VkCopyImageToBufferInfo2-srcImage-00187" => |v, l, o| {
+            o.src_image.bind = false;
+        },
+        "VUID-VkCopyImageToBufferInfo2-dstBuffer-00191" => |v, l, o| {
+            o.dst_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x2);
+        },
+        "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192" => |v, l, o| {
+            o.dst_buffer.bind = false;
+        },
+        "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190" => |v, l, o| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
     cmd_blit_image: args::CmdBlitImage {
         "VUID-vkCmdBlitImage-srcImage-00219" => |v, l, o| {
             o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
@@ -773,6 +829,26 @@ oracle_cases! {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
         "VUID-vkCmdBlitImage-dstImageLayout-00227" => |v, l, o| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    blit_image_info2: vk::BlitImageInfo2<'_> {
+        "VUID-VkBlitImageInfo2-srcImage-00219" => |v, l, o| {
+            o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
+        },
+        "VUID-VkBlitImageInfo2-srcImage-00220" => |v, l, o| {
+            o.src_image.bind = false;
+        },
+        "VUID-VkBlitImageInfo2-dstImage-00224" => |v, l, o| {
+            o.dst_image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-VkBlitImageInfo2-dstImage-00225" => |v, l, o| {
+            o.dst_image.bind = false;
+        },
+        "VUID-VkBlitImageInfo2-srcImageLayout-00222" => |v, l, o| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-VkBlitImageInfo2-dstImageLayout-00227" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },

@@ -1157,14 +1157,156 @@ fn cmd_copy_image_to_buffer(
     )
 }
 
+/// Rules the 1.3.239 layer reports under another name than their VUID, each seen in
+/// its message for the case that breaks the rule.
+const LAYER_NAMES: &[(&str, &str)] = &[(
+    "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
+    "[ vkCmdCopyImageToBuffer-dstBuffer2-00192 ]",
+)];
+
 /// Whether a layer message names `vuid`. The 1.3.239 layer names a few rules
-/// without the prefix (`[ vkCmdCopyImageToBuffer dstBuffer-00192 ]`).
+/// without the prefix (`[ vkCmdCopyImageToBuffer dstBuffer-00192 ]`), and a few
+/// under another name ([`LAYER_NAMES`]).
 fn names(message: &str, vuid: &str) -> bool {
     let bare = vuid
         .strip_prefix("VUID-")
         .map(|rest| rest.replacen('-', " ", 1));
-    message.contains(vuid) || bare.is_some_and(|b| message.contains(&format!("[ {b} ]")))
+    message.contains(vuid)
+        || bare.is_some_and(|b| message.contains(&format!("[ {b} ]")))
+        || LAYER_NAMES
+            .iter()
+            .any(|(v, name)| *v == vuid && message.contains(name))
 }
+
+/// A fixture for one of the `vkCmd*2` transfer commands: its info struct is built
+/// over the objects the change asks for (the change runs once for them, then on the
+/// info), and recorded through the safe method and the unchecked one.
+macro_rules! transfer2_fixture {
+    ($name:ident, $ty:ident, $cmd:ident, $unchecked:ident, |$s:ident, $o:ident| $build:block) => {
+        fn $name(
+            s: &Setup,
+            limits: &Limits,
+            change: &dyn Fn(&mut vk::$ty<'_>, &Limits, &mut Objects),
+        ) -> Outcome {
+            let mut $o = Objects::default();
+            change(&mut Default::default(), limits, &mut $o);
+            let $s = s;
+            let build = $build;
+            build(&mut |info: &mut tuff::$ty<'_>| {
+                // SAFETY: as in `buffer_create_info`.
+                change(unsafe { info.raw_values_mut() }, limits, &mut $o.clone());
+                record(
+                    s,
+                    |r| r.$cmd(info),
+                    // SAFETY: as in `buffer_create_info`; the command buffer is never
+                    // submitted.
+                    |r| unsafe { r.$unchecked(info) },
+                )
+            })
+        }
+    };
+}
+
+const SRC: vk::ImageLayout = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+const DST: vk::ImageLayout = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
+
+transfer2_fixture!(
+    copy_buffer_info2,
+    CopyBufferInfo2,
+    cmd_copy_buffer2,
+    cmd_copy_buffer2_unchecked,
+    |s, o| {
+        |run: &mut dyn FnMut(&mut tuff::CopyBufferInfo2<'_>) -> Outcome| {
+            let (src, _m1) = make_buffer(s, &o.src_buffer);
+            let (dst, _m2) = make_buffer(s, &o.dst_buffer);
+            let regions = [tuff::BufferCopy2::new().size(16)];
+            run(&mut tuff::CopyBufferInfo2::new(&src, &dst).regions(&regions))
+        }
+    }
+);
+
+transfer2_fixture!(
+    copy_image_info2,
+    CopyImageInfo2,
+    cmd_copy_image2,
+    cmd_copy_image2_unchecked,
+    |s, o| {
+        |run: &mut dyn FnMut(&mut tuff::CopyImageInfo2<'_>) -> Outcome| {
+            let (src, _m1) = make_image(s, &o.src_image);
+            let (dst, _m2) = make_image(s, &o.dst_image);
+            let regions = [tuff::ImageCopy2::new()
+                .src_subresource(LAYER)
+                .dst_subresource(LAYER)
+                .extent(EXTENT)];
+            run(&mut tuff::CopyImageInfo2::new(&src, &dst)
+                .src_image_layout(SRC)
+                .dst_image_layout(DST)
+                .regions(&regions))
+        }
+    }
+);
+
+transfer2_fixture!(
+    blit_image_info2,
+    BlitImageInfo2,
+    cmd_blit_image2,
+    cmd_blit_image2_unchecked,
+    |s, o| {
+        |run: &mut dyn FnMut(&mut tuff::BlitImageInfo2<'_>) -> Outcome| {
+            let (src, _m1) = make_image(s, &o.src_image);
+            let (dst, _m2) = make_image(s, &o.dst_image);
+            let corner = vk::Offset3D { x: 4, y: 4, z: 1 };
+            let regions = [tuff::ImageBlit2::new()
+                .src_subresource(LAYER)
+                .src_offsets([vk::Offset3D::default(), corner])
+                .dst_subresource(LAYER)
+                .dst_offsets([vk::Offset3D::default(), corner])];
+            run(&mut tuff::BlitImageInfo2::new(&src, &dst)
+                .src_image_layout(SRC)
+                .dst_image_layout(DST)
+                .regions(&regions)
+                .filter(vk::Filter::NEAREST))
+        }
+    }
+);
+
+transfer2_fixture!(
+    copy_buffer_to_image_info2,
+    CopyBufferToImageInfo2,
+    cmd_copy_buffer_to_image2,
+    cmd_copy_buffer_to_image2_unchecked,
+    |s, o| {
+        |run: &mut dyn FnMut(&mut tuff::CopyBufferToImageInfo2<'_>) -> Outcome| {
+            let (src, _m1) = make_buffer(s, &o.src_buffer);
+            let (dst, _m2) = make_image(s, &o.dst_image);
+            let regions = [tuff::BufferImageCopy2::new()
+                .image_subresource(LAYER)
+                .image_extent(EXTENT)];
+            run(&mut tuff::CopyBufferToImageInfo2::new(&src, &dst)
+                .dst_image_layout(DST)
+                .regions(&regions))
+        }
+    }
+);
+
+transfer2_fixture!(
+    copy_image_to_buffer_info2,
+    CopyImageToBufferInfo2,
+    cmd_copy_image_to_buffer2,
+    cmd_copy_image_to_buffer2_unchecked,
+    |s, o| {
+        |run: &mut dyn FnMut(&mut tuff::CopyImageToBufferInfo2<'_>) -> Outcome| {
+            let (src, _m1) = make_image(s, &o.src_image);
+            let (dst, _m2) = make_buffer(s, &o.dst_buffer);
+            let regions = [tuff::BufferImageCopy2::new()
+                .image_subresource(LAYER)
+                .image_extent(EXTENT)];
+            run(&mut tuff::CopyImageToBufferInfo2::new(&src, &dst)
+                .src_image_layout(SRC)
+                .regions(&regions))
+        }
+    }
+);
 
 /// Each fixture's value, unchanged, is valid: tuff accepts the call and the layer
 /// says nothing. Without this, a case could pass on a rule its fixture already breaks.

@@ -8,6 +8,10 @@ use super::*;
 
 The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBlitImageInfo2.html). Settled by the wrappers:
 
+- `VUID-VkBlitImageInfo2-srcImage-00219`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkBlitImageInfo2-srcImage-00220`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkBlitImageInfo2-dstImage-00224`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkBlitImageInfo2-dstImage-00225`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBlitImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBlitImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBlitImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -18,11 +22,10 @@ The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkBlitImageInfo2-filter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBlitImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkBlitImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkBlitImageInfo2-srcImageLayout-00222`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkBlitImageInfo2-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 47.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 41: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 41 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BlitImageInfo2<'a> {
@@ -421,6 +424,10 @@ impl<'a> CommandBufferSubmitInfo<'a> {
 
 The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferInfo2.html). Settled by the wrappers:
 
+- `VUID-VkCopyBufferInfo2-srcBuffer-00118`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkCopyBufferInfo2-srcBuffer-00119`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkCopyBufferInfo2-dstBuffer-00120`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkCopyBufferInfo2-dstBuffer-00121`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -429,10 +436,7 @@ The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos
 - `VUID-VkCopyBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9.
-
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferInfo2<'a> {
@@ -480,6 +484,10 @@ impl<'a> CopyBufferInfo2<'a> {
 
 The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferToImageInfo2.html). Settled by the wrappers:
 
+- `VUID-VkCopyBufferToImageInfo2-srcBuffer-00174`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkCopyBufferToImageInfo2-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkCopyBufferToImageInfo2-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkCopyBufferToImageInfo2-dstImage-00178`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyBufferToImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -488,11 +496,9 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 44.
-
-- 5: checked by the safe methods in every build, but no oracle case breaks it yet
-- 39: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 39 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -555,11 +561,10 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkCopyImageInfo2-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkCopyImageInfo2-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 73.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 71: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 71 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {
@@ -619,6 +624,10 @@ impl<'a> CopyImageInfo2<'a> {
 
 The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyImageToBufferInfo2.html). Settled by the wrappers:
 
+- `VUID-VkCopyImageToBufferInfo2-srcImage-00186`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkCopyImageToBufferInfo2-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkCopyImageToBufferInfo2-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkCopyImageToBufferInfo2-dstBuffer-00192`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyImageToBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageToBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -627,11 +636,9 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 43.
-
-- 5: checked by the safe methods in every build, but no oracle case breaks it yet
-- 38: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
