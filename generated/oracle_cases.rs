@@ -852,6 +852,28 @@ oracle_cases! {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
+    cmd_draw_indirect: args::CmdDrawIndirect {
+        "VUID-vkCmdDrawIndirect-buffer-02708" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+        "VUID-vkCmdDrawIndirect-buffer-02709" => |v, l, o| {
+            o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndirect-drawCount-02718" => |v, l, o| {
+            v.draw_count = 2;
+        },
+    },
+    cmd_draw_indexed_indirect: args::CmdDrawIndexedIndirect {
+        "VUID-vkCmdDrawIndexedIndirect-buffer-02708" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+        "VUID-vkCmdDrawIndexedIndirect-buffer-02709" => |v, l, o| {
+            o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndexedIndirect-drawCount-02718" => |v, l, o| {
+            v.draw_count = 2;
+        },
+    },
     vertex_input_binding_description: vk::VertexInputBindingDescription {
         "VUID-VkVertexInputBindingDescription-binding-00618" => |v, l, o| {
             v.binding = l.max_vertex_input_bindings as _;
@@ -893,6 +915,14 @@ oracle_cases! {
         },
         "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611" => |v, l, o| {
             v.dst_alpha_blend_factor = vk::BlendFactor::from_raw(15);
+        },
+    },
+    cmd_dispatch_indirect: args::CmdDispatchIndirect {
+        "VUID-vkCmdDispatchIndirect-buffer-02708" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+        "VUID-vkCmdDispatchIndirect-buffer-02709" => |v, l, o| {
+            o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
         },
     },
 }

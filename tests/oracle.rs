@@ -60,7 +60,9 @@ struct Objects {
 impl Default for Objects {
     fn default() -> Self {
         let buffer = BufferSpec {
-            usage: vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST,
+            usage: vk::BufferUsageFlags::TRANSFER_SRC
+                | vk::BufferUsageFlags::TRANSFER_DST
+                | vk::BufferUsageFlags::INDIRECT_BUFFER,
             size: 64,
             bind: true,
         };
@@ -811,6 +813,11 @@ mod args {
         pub src_image_layout: vk::ImageLayout,
     }
     pub type CmdBlitImage = CmdCopyImage;
+    pub struct CmdDrawIndirect {
+        pub draw_count: u32,
+    }
+    pub type CmdDrawIndexedIndirect = CmdDrawIndirect;
+    pub struct CmdDispatchIndirect;
 }
 
 /// Records the safe call into one command buffer (whose `end` returns its refusal)
@@ -1307,6 +1314,164 @@ transfer2_fixture!(
         }
     }
 );
+
+/// Records a draw inside the test pipeline's render pass (pipeline, viewport,
+/// scissor and push constants set), through the safe call and, under the layer, the
+/// unchecked one; the safe call's result is the outcome.
+fn draw(
+    s: &Setup,
+    safe: impl FnOnce(&mut tuff::Recorder<'_, tuff::InRenderPass>) -> tuff::Result<()>,
+    unchecked: impl FnOnce(&mut tuff::Recorder<'_, tuff::InRenderPass>),
+) -> Outcome {
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(s, &target);
+    let clear = [vk::ClearValue::default()];
+    let area = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 4,
+            height: 4,
+        },
+    };
+    let viewport = vk::Viewport {
+        width: 4.0,
+        height: 4.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let push = [0u8; 16];
+    let inside =
+        |cb: &mut tuff::CommandBuffer,
+         call: &mut dyn FnMut(&mut tuff::Recorder<'_, tuff::InRenderPass>)| {
+            let rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = rec.cmd_begin_render_pass(
+                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                    .render_area(area)
+                    .clear_values(&clear),
+                vk::SubpassContents::INLINE,
+            );
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+                .expect("bind");
+            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+            rec.cmd_set_scissor(0, &[area]).expect("scissor");
+            rec.cmd_push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
+                .expect("push");
+            call(&mut rec);
+            let _ = rec.cmd_end_render_pass().end();
+        };
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut safe = Some(safe);
+    let mut result = Ok(());
+    inside(&mut cb, &mut |rec| {
+        if let Some(f) = safe.take() {
+            result = f(rec);
+        }
+    });
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut unchecked = Some(unchecked);
+    let layer = under_layer(s, || {
+        inside(&mut cb, &mut |rec| {
+            if let Some(f) = unchecked.take() {
+                f(rec);
+            }
+        })
+    });
+    Outcome {
+        safe: result,
+        layer,
+    }
+}
+
+fn cmd_draw_indirect(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDrawIndirect, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdDrawIndirect { draw_count: 1 };
+    let mut o = Objects::default();
+    change(&mut a, limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    draw(
+        s,
+        |r| r.cmd_draw_indirect(&buffer, 0, a.draw_count, 16),
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| drop(unsafe { r.cmd_draw_indirect_unchecked(&buffer, 0, a.draw_count, 16) }),
+    )
+}
+
+fn cmd_draw_indexed_indirect(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDrawIndexedIndirect, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdDrawIndexedIndirect { draw_count: 1 };
+    let mut o = Objects::default();
+    change(&mut a, limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let (indices, _index_memory) =
+        pipelines::host_buffer(s, 64, vk::BufferUsageFlags::INDEX_BUFFER);
+    let index = vk::IndexType::UINT32;
+    draw(
+        s,
+        |r| {
+            r.cmd_bind_index_buffer(&indices, 0, index)
+                .expect("index buffer");
+            r.cmd_draw_indexed_indirect(&buffer, 0, a.draw_count, 20)
+        },
+        |r| {
+            r.cmd_bind_index_buffer(&indices, 0, index)
+                .expect("index buffer");
+            // SAFETY: as in `buffer_create_info`; the command buffer is never
+            // submitted.
+            drop(unsafe { r.cmd_draw_indexed_indirect_unchecked(&buffer, 0, a.draw_count, 20) })
+        },
+    )
+}
+
+fn cmd_dispatch_indirect(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDispatchIndirect, &Limits, &mut Objects),
+) -> Outcome {
+    let mut o = Objects::default();
+    change(&mut args::CmdDispatchIndirect, limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(s, &target);
+    let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
+        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+            .expect("bind");
+        r.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &p.compute_layout,
+            0,
+            &[&p.set],
+            &[],
+        )
+        .expect("sets");
+    };
+    let mut result = Ok(());
+    let mut out = record(
+        s,
+        |r| {
+            bind(r);
+            result = r.cmd_dispatch_indirect(&buffer, 0);
+        },
+        |r| {
+            bind(r);
+            // SAFETY: as in `buffer_create_info`; the command buffer is never
+            // submitted.
+            drop(unsafe { r.cmd_dispatch_indirect_unchecked(&buffer, 0) });
+        },
+    );
+    // A dispatch returns its refusal itself, rather than through `end`.
+    if result.is_err() {
+        out.safe = result;
+    }
+    out
+}
 
 /// Each fixture's value, unchanged, is valid: tuff accepts the call and the layer
 /// says nothing. Without this, a case could pass on a rule its fixture already breaks.

@@ -57,6 +57,9 @@ pub const FIXTURES: &[&str] = &[
     "vkCmdCopyBufferToImage",
     "vkCmdCopyImageToBuffer",
     "vkCmdBlitImage",
+    "vkCmdDrawIndirect",
+    "vkCmdDrawIndexedIndirect",
+    "vkCmdDispatchIndirect",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -87,11 +90,14 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkImageViewCreateInfo-subresourceRange-01478", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01718` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01486", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01724` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01488", "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layer is past the image's"),
+    ("VUID-vkCmdDrawIndirect-drawCount-02719", MULTI_DRAW),
+    ("VUID-vkCmdDrawIndexedIndirect-drawCount-02719", MULTI_DRAW),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
 const PAST_ATTACHMENT: &str = "a framebuffer larger than the limit is larger than its attachment too, which breaks `flags-04533` (or `04534`, `04535`) as well";
+const MULTI_DRAW: &str = "a draw count past the limit is more than one draw, which breaks `drawCount-02718` as well on a device without `multiDrawIndirect`";
 const ONE_STAGE: &str = "the stage is a single bit; the case adds the forbidden one to the fixture's, which breaks `stage-03859` as well";
 const ONE_D: &str = "the other image type the case picks is 1D, and the fixture's 4x4 image breaks `imageType-00956` (a 1D image has height 1) as well";
 
@@ -315,7 +321,14 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
             out.push(value_of(model, item, member, values.first()?)?)
         }
         Pred::OneOf { member, values } if crate::validity::explicit::is_bool(values) => {
-            let v = if values.iter().any(|v| v.number == 1) {
+            // A number outside the list (`drawCount` of 2 for `0 or 1`), or the other
+            // `VkBool32`.
+            let numbers = values
+                .iter()
+                .all(|v| v.name.starts_with(|c: char| c.is_ascii_digit()));
+            let v = if numbers {
+                values.iter().map(|v| v.number).max()? + 1
+            } else if values.iter().any(|v| v.number == 1) {
                 0
             } else {
                 1

@@ -2028,6 +2028,8 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 
 - `VUID-vkCmdDispatchIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatchIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatchIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDispatchIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDispatchIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDispatchIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -2036,10 +2038,7 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 58.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 56: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_dispatch_indirect(
         &mut self,
@@ -2665,6 +2664,9 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdDrawIndexedIndirect-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -2674,9 +2676,9 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 198.
+Left to the caller (listed one by one in the crate's `validation.json`): 195.
 
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
 - 193: explicit rule; the wrappers do not check it*/
     #[inline]
@@ -2732,6 +2734,9 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDrawIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdDrawIndirect-drawCount-02718`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdDrawIndirect-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndirect-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirect-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -2740,9 +2745,9 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 197.
+Left to the caller (listed one by one in the crate's `validation.json`): 194.
 
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
 - 192: explicit rule; the wrappers do not check it*/
     #[inline]
