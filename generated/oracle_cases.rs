@@ -387,6 +387,14 @@ oracle_cases! {
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
+    buffer_memory_barrier: vk::BufferMemoryBarrier<'_> {
+        "VUID-VkBufferMemoryBarrier-offset-01187" => |v, l, o| {
+            v.offset = o.buffer.size as _;
+        },
+        "VUID-VkBufferMemoryBarrier-buffer-01931" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+    },
     image_memory_barrier2: vk::ImageMemoryBarrier2<'_> {
         "VUID-VkImageMemoryBarrier2-srcStageMask-03929" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
@@ -548,6 +556,11 @@ oracle_cases! {
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
     },
+    image_memory_barrier: vk::ImageMemoryBarrier<'_> {
+        "VUID-VkImageMemoryBarrier-image-01932" => |v, l, o| {
+            o.image.bind = false;
+        },
+    },
     attachment_description: vk::AttachmentDescription {
         "VUID-VkAttachmentDescription-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
@@ -617,6 +630,14 @@ oracle_cases! {
         },
         "VUID-VkBufferCreateInfo-flags-00915" => |v, l, o| {
             v.flags |= vk::BufferCreateFlags::from_raw(0x1);
+        },
+    },
+    buffer_view_create_info: vk::BufferViewCreateInfo<'_> {
+        "VUID-VkBufferViewCreateInfo-offset-00925" => |v, l, o| {
+            v.offset = o.buffer.size as _;
+        },
+        "VUID-VkBufferViewCreateInfo-buffer-00935" => |v, l, o| {
+            o.buffer.bind = false;
         },
     },
     image_create_info: vk::ImageCreateInfo<'_> {
@@ -693,6 +714,17 @@ oracle_cases! {
     query_pool_create_info: vk::QueryPoolCreateInfo<'_> {
         "VUID-VkQueryPoolCreateInfo-queryType-00791" => |v, l, o| {
             v.query_type = vk::QueryType::from_raw(1);
+        },
+    },
+    cmd_copy_query_pool_results: args::CmdCopyQueryPoolResults {
+        "VUID-vkCmdCopyQueryPoolResults-dstOffset-00819" => |v, l, o| {
+            v.dst_offset = o.dst_buffer.size as _;
+        },
+        "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825" => |v, l, o| {
+            o.dst_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826" => |v, l, o| {
+            o.dst_buffer.bind = false;
         },
     },
     cmd_write_timestamp: args::CmdWriteTimestamp {
@@ -849,6 +881,46 @@ oracle_cases! {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
         "VUID-VkBlitImageInfo2-dstImageLayout-00227" => |v, l, o| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    cmd_resolve_image: args::CmdResolveImage {
+        "VUID-vkCmdResolveImage-srcImage-00256" => |v, l, o| {
+            o.src_image.bind = false;
+        },
+        "VUID-vkCmdResolveImage-dstImage-00258" => |v, l, o| {
+            o.dst_image.bind = false;
+        },
+        "VUID-vkCmdResolveImage-srcImage-06762" => |v, l, o| {
+            o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
+        },
+        "VUID-vkCmdResolveImage-dstImage-06764" => |v, l, o| {
+            o.dst_image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdResolveImage-srcImageLayout-00261" => |v, l, o| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-vkCmdResolveImage-dstImageLayout-00263" => |v, l, o| {
+            v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    resolve_image_info2: vk::ResolveImageInfo2<'_> {
+        "VUID-VkResolveImageInfo2-srcImage-00256" => |v, l, o| {
+            o.src_image.bind = false;
+        },
+        "VUID-VkResolveImageInfo2-dstImage-00258" => |v, l, o| {
+            o.dst_image.bind = false;
+        },
+        "VUID-VkResolveImageInfo2-srcImage-06762" => |v, l, o| {
+            o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
+        },
+        "VUID-VkResolveImageInfo2-dstImage-06764" => |v, l, o| {
+            o.dst_image.usage &= !vk::ImageUsageFlags::from_raw(0x2);
+        },
+        "VUID-VkResolveImageInfo2-srcImageLayout-00261" => |v, l, o| {
+            v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-VkResolveImageInfo2-dstImageLayout-00263" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },

@@ -41,6 +41,7 @@ struct BufferSpec {
 #[derive(Clone, Copy)]
 struct ImageSpec {
     usage: vk::ImageUsageFlags,
+    samples: vk::SampleCountFlags,
     mip_levels: u32,
     array_layers: u32,
     bind: bool,
@@ -62,7 +63,8 @@ impl Default for Objects {
         let buffer = BufferSpec {
             usage: vk::BufferUsageFlags::TRANSFER_SRC
                 | vk::BufferUsageFlags::TRANSFER_DST
-                | vk::BufferUsageFlags::INDIRECT_BUFFER,
+                | vk::BufferUsageFlags::INDIRECT_BUFFER
+                | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
             size: 64,
             bind: true,
         };
@@ -70,6 +72,7 @@ impl Default for Objects {
             usage: vk::ImageUsageFlags::TRANSFER_SRC
                 | vk::ImageUsageFlags::TRANSFER_DST
                 | vk::ImageUsageFlags::SAMPLED,
+            samples: vk::SampleCountFlags::TYPE_1,
             mip_levels: 1,
             array_layers: 1,
             bind: true,
@@ -109,7 +112,7 @@ fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceM
                 .extent(EXTENT)
                 .mip_levels(spec.mip_levels)
                 .array_layers(spec.array_layers)
-                .samples(vk::SampleCountFlags::TYPE_1)
+                .samples(spec.samples)
                 .usage(spec.usage),
         )
         .expect("image");
@@ -818,6 +821,10 @@ mod args {
     }
     pub type CmdDrawIndexedIndirect = CmdDrawIndirect;
     pub struct CmdDispatchIndirect;
+    pub struct CmdCopyQueryPoolResults {
+        pub dst_offset: vk::DeviceSize,
+    }
+    pub type CmdResolveImage = CmdCopyImage;
 }
 
 /// Records the safe call into one command buffer (whose `end` returns its refusal)
@@ -1471,6 +1478,195 @@ fn cmd_dispatch_indirect(
         out.safe = result;
     }
     out
+}
+
+/// The objects of a resolve: a 4-sample source, unless the change asks otherwise.
+fn resolve_objects(change: impl FnOnce(&mut Objects)) -> Objects {
+    let mut o = Objects::default();
+    o.src_image.samples = vk::SampleCountFlags::TYPE_4;
+    change(&mut o);
+    o
+}
+
+const RESOLVE: vk::ImageResolve = vk::ImageResolve {
+    src_subresource: LAYER,
+    src_offset: vk::Offset3D { x: 0, y: 0, z: 0 },
+    dst_subresource: LAYER,
+    dst_offset: vk::Offset3D { x: 0, y: 0, z: 0 },
+    extent: EXTENT,
+};
+
+fn cmd_resolve_image(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdResolveImage, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdResolveImage {
+        src_image_layout: SRC,
+        dst_image_layout: DST,
+    };
+    let o = resolve_objects(|o| change(&mut a, limits, o));
+    let (src, _m1) = make_image(s, &o.src_image);
+    let (dst, _m2) = make_image(s, &o.dst_image);
+    record(
+        s,
+        |r| {
+            r.cmd_resolve_image(
+                &src,
+                a.src_image_layout,
+                &dst,
+                a.dst_image_layout,
+                &[RESOLVE],
+            )
+        },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe {
+            r.cmd_resolve_image_unchecked(
+                &src,
+                a.src_image_layout,
+                &dst,
+                a.dst_image_layout,
+                &[RESOLVE],
+            )
+        },
+    )
+}
+
+transfer2_fixture!(
+    resolve_image_info2,
+    ResolveImageInfo2,
+    cmd_resolve_image2,
+    cmd_resolve_image2_unchecked,
+    |s, o| {
+        |run: &mut dyn FnMut(&mut tuff::ResolveImageInfo2<'_>) -> Outcome| {
+            let o = resolve_objects(|x| {
+                *x = Objects {
+                    src_image: ImageSpec {
+                        samples: x.src_image.samples,
+                        ..o.src_image
+                    },
+                    ..o
+                }
+            });
+            let (src, _m1) = make_image(s, &o.src_image);
+            let (dst, _m2) = make_image(s, &o.dst_image);
+            let regions = [tuff::ImageResolve2::new()
+                .src_subresource(LAYER)
+                .dst_subresource(LAYER)
+                .extent(EXTENT)];
+            run(&mut tuff::ResolveImageInfo2::new(&src, &dst)
+                .src_image_layout(SRC)
+                .dst_image_layout(DST)
+                .regions(&regions))
+        }
+    }
+);
+
+fn cmd_copy_query_pool_results(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdCopyQueryPoolResults, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdCopyQueryPoolResults { dst_offset: 0 };
+    let mut o = Objects::default();
+    change(&mut a, limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.dst_buffer);
+    let pool = timestamps(s);
+    let flags = vk::QueryResultFlags::TYPE_64;
+    record(
+        s,
+        |r| {
+            r.cmd_reset_query_pool(&pool, 0, 1);
+            r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, 8, flags)
+        },
+        |r| {
+            r.cmd_reset_query_pool(&pool, 0, 1);
+            // SAFETY: as in `buffer_create_info`; the command buffer is never
+            // submitted.
+            unsafe {
+                r.cmd_copy_query_pool_results_unchecked(
+                    &pool,
+                    0,
+                    1,
+                    &buffer,
+                    a.dst_offset,
+                    8,
+                    flags,
+                )
+            }
+        },
+    )
+}
+
+fn buffer_view_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::BufferViewCreateInfo<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    // As in `buffer_memory_barrier2`.
+    let mut o = Objects::default();
+    change(&mut Default::default(), limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let mut info = tuff::BufferViewCreateInfo::new(&buffer)
+        .format(vk::Format::R8G8B8A8_UNORM)
+        .range(vk::WHOLE_SIZE);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { info.raw_values_mut() }, limits, &mut o.clone());
+    create!(s, create_buffer_view, create_buffer_view_unchecked, &info)
+}
+
+/// Records a Vulkan 1.0 pipeline barrier holding `buffers` and `images`.
+fn barrier1(
+    s: &Setup,
+    buffers: &[tuff::BufferMemoryBarrier<'_>],
+    images: &[tuff::ImageMemoryBarrier<'_>],
+) -> Outcome {
+    let stage = vk::PipelineStageFlags::ALL_COMMANDS;
+    let flags = vk::DependencyFlags::empty();
+    record(
+        s,
+        |r| r.cmd_pipeline_barrier(stage, stage, flags, &[], buffers, images),
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_pipeline_barrier_unchecked(stage, stage, flags, &[], buffers, images) },
+    )
+}
+
+fn buffer_memory_barrier(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::BufferMemoryBarrier<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    // As in `buffer_memory_barrier2`.
+    let mut o = Objects::default();
+    change(&mut Default::default(), limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let mut b = tuff::BufferMemoryBarrier::new(&buffer)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .size(vk::WHOLE_SIZE);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { b.raw_values_mut() }, limits, &mut o.clone());
+    barrier1(s, &[b], &[])
+}
+
+fn image_memory_barrier(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::ImageMemoryBarrier<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    // As in `buffer_memory_barrier2`.
+    let mut o = Objects::default();
+    change(&mut Default::default(), limits, &mut o);
+    let (image, _memory) = make_image(s, &o.image);
+    let mut b = tuff::ImageMemoryBarrier::new(&image)
+        .old_layout(vk::ImageLayout::UNDEFINED)
+        .new_layout(vk::ImageLayout::GENERAL)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .subresource_range(WHOLE);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { b.raw_values_mut() }, limits, &mut o.clone());
+    barrier1(s, &[], &[b])
 }
 
 /// Each fixture's value, unchanged, is valid: tuff accepts the call and the layer

@@ -60,6 +60,12 @@ pub const FIXTURES: &[&str] = &[
     "vkCmdDrawIndirect",
     "vkCmdDrawIndexedIndirect",
     "vkCmdDispatchIndirect",
+    "vkCmdResolveImage",
+    "VkResolveImageInfo2",
+    "vkCmdCopyQueryPoolResults",
+    "VkBufferViewCreateInfo",
+    "VkBufferMemoryBarrier",
+    "VkImageMemoryBarrier",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -89,6 +95,8 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkImageViewCreateInfo-viewType-01004", "a cube-array view of the fixture's one layer also breaks `viewType-02961` (a multiple of six layers)"),
     ("VUID-VkImageViewCreateInfo-subresourceRange-01478", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01718` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01486", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01724` as well"),
+    ("VUID-VkImageMemoryBarrier-subresourceRange-01486", "as for `VkImageMemoryBarrier2`: `subresourceRange-01724` breaks as well"),
+    ("VUID-VkImageMemoryBarrier-subresourceRange-01488", "as for `VkImageMemoryBarrier2`: the 1.3.239 layer throws a C++ exception on it"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01488", "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layer is past the image's"),
     ("VUID-vkCmdDrawIndirect-drawCount-02719", MULTI_DRAW),
     ("VUID-vkCmdDrawIndexedIndirect-drawCount-02719", MULTI_DRAW),

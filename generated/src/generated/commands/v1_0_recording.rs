@@ -1879,6 +1879,9 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
 
 The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyQueryPoolResults.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1889,10 +1892,7 @@ The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry
 - `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 16.
-
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 13: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_query_pool_results(
         &mut self,
@@ -2245,6 +2245,10 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
 
 The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage.html). Settled by the wrappers:
 
+- `VUID-vkCmdResolveImage-srcImage-00256`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdResolveImage-dstImage-00258`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdResolveImage-srcImage-06762`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdResolveImage-dstImage-06764`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResolveImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResolveImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -2257,11 +2261,10 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 - `VUID-vkCmdResolveImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdResolveImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdResolveImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdResolveImage-srcImageLayout-00261`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-vkCmdResolveImage-dstImageLayout-00263`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 32: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_resolve_image(
         &mut self,

@@ -292,14 +292,13 @@ impl<'a> BufferCreateInfo<'a> {
 
 The rules are on [`VkBufferMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryBarrier.html). Settled by the wrappers:
 
+- `VUID-VkBufferMemoryBarrier-offset-01187`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBufferMemoryBarrier-buffer-01931`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBufferMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 8: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -369,6 +368,8 @@ impl<'a> BufferMemoryBarrier<'a> {
 
 The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferViewCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkBufferViewCreateInfo-offset-00925`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBufferViewCreateInfo-buffer-00935`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBufferViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -376,10 +377,7 @@ The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkBufferViewCreateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBufferViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 15.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 13: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferViewCreateInfo<'a> {
@@ -1604,6 +1602,7 @@ impl<'a> ImageCreateInfo<'a> {
 
 The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryBarrier.html). Settled by the wrappers:
 
+- `VUID-VkImageMemoryBarrier-image-01932`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageMemoryBarrier-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1612,9 +1611,9 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 45.
+Left to the caller (listed one by one in the crate's `validation.json`): 44.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 42: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

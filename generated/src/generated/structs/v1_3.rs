@@ -2117,6 +2117,10 @@ impl<'a> RenderingInfo<'a> {
 
 The rules are on [`VkResolveImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkResolveImageInfo2.html). Settled by the wrappers:
 
+- `VUID-VkResolveImageInfo2-srcImage-00256`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkResolveImageInfo2-dstImage-00258`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkResolveImageInfo2-srcImage-06762`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-VkResolveImageInfo2-dstImage-06764`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkResolveImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkResolveImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkResolveImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -2126,11 +2130,10 @@ The rules are on [`VkResolveImageInfo2`'s reference page](https://registry.khron
 - `VUID-VkResolveImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkResolveImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkResolveImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkResolveImageInfo2-srcImageLayout-00261`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkResolveImageInfo2-dstImageLayout-00263`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 35.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 29: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ResolveImageInfo2<'a> {
