@@ -1745,3 +1745,26 @@ fn every_recognised_rule_is_refused_and_the_layer_agrees() {
         failures.join("\n")
     );
 }
+
+/// A stage that stands for several (`PRE_RASTERIZATION_SHADERS`) satisfies a rule
+/// that asks for one of them: a barrier the specification allows is not refused.
+#[test]
+fn a_meta_stage_satisfies_a_rule_that_asks_for_one_of_its_stages() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let b = [tuff::MemoryBarrier2::new()
+        .src_stage_mask(vk::PipelineStageFlags2::PRE_RASTERIZATION_SHADERS)
+        .src_access_mask(vk::AccessFlags2::UNIFORM_READ)
+        .dst_stage_mask(ALL)];
+    let out = barrier(&s, &tuff::DependencyInfo::new().memory_barriers(&b));
+    assert!(
+        out.safe.is_ok(),
+        "tuff refused a valid barrier: {:?}",
+        out.safe
+    );
+    assert!(
+        out.layer.is_empty(),
+        "the layer reported the valid barrier:\n{}",
+        out.layer.join("\n")
+    );
+}

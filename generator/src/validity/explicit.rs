@@ -577,9 +577,15 @@ fn flag_list(input: &Input, path: &str, list: &str) -> Option<Vec<Value>> {
     resolve(input, group, &names(list))
 }
 
-/// The bits of `group` whose names match a `*` pattern, vendor suffixes allowed.
+/// The bits of `group` whose names match a `*` pattern, vendor suffixes and the
+/// plural of the last word allowed.
 fn glob(input: &Input, group: &str, pattern: &str) -> Option<Vec<Value>> {
-    let body = regex::escape(pattern).replace(r"\*", "[A-Z0-9_]*");
+    // A plural name is the stage that stands for a set of them:
+    // `VK_PIPELINE_STAGE_2_PRE_RASTERIZATION_SHADERS_BIT` is every pre-rasterization
+    // `*_SHADER_BIT` stage, so a mask that includes it includes one of those.
+    let body = regex::escape(pattern)
+        .replace(r"\*", "[A-Z0-9_]*")
+        .replace("_BIT", "S?_BIT");
     let re = Regex::new(&format!("^{body}(?:_[A-Z]+)?$")).ok()?;
     let known = input.model.enum_values.get(group)?;
     let found: Vec<&str> = known

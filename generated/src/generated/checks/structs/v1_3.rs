@@ -215,7 +215,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 8) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -228,7 +228,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 4294967296) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -241,7 +241,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 8589934592) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -254,7 +254,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 17179869184) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -267,7 +267,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 64) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -458,7 +458,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 8) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -471,7 +471,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 4294967296) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -484,7 +484,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 8589934592) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -497,7 +497,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 17179869184) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -510,7 +510,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 64) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -647,7 +647,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 32) != 0
-        && (v.src_stage_mask.as_raw() & 2199060580600) == 0
+        && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
             fail(
@@ -660,7 +660,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 32) != 0
-        && (v.dst_stage_mask.as_raw() & 2199060580600) == 0
+        && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
             fail(
@@ -1206,7 +1206,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 8) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1219,7 +1219,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 4294967296) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1232,7 +1232,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 8589934592) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1245,7 +1245,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 17179869184) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1258,7 +1258,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 64) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1449,7 +1449,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 8) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1462,7 +1462,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 4294967296) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1475,7 +1475,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 8589934592) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1488,7 +1488,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 17179869184) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1501,7 +1501,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 64) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1659,7 +1659,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.src_access_mask.as_raw() & 32) != 0
-        && (v.src_stage_mask.as_raw() & 2199060580600) == 0
+        && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
             fail(
@@ -1672,7 +1672,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (v.dst_access_mask.as_raw() & 32) != 0
-        && (v.dst_stage_mask.as_raw() & 2199060580600) == 0
+        && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
             fail(
@@ -1793,7 +1793,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.src_access_mask.as_raw() & 8) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1806,7 +1806,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.src_access_mask.as_raw() & 4294967296) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1819,7 +1819,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.src_access_mask.as_raw() & 8589934592) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1832,7 +1832,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.src_access_mask.as_raw() & 17179869184) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -1845,7 +1845,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.src_access_mask.as_raw() & 64) != 0
-        && (v.src_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -2036,7 +2036,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.dst_access_mask.as_raw() & 8) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -2049,7 +2049,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.dst_access_mask.as_raw() & 4294967296) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -2062,7 +2062,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.dst_access_mask.as_raw() & 8589934592) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -2075,7 +2075,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.dst_access_mask.as_raw() & 17179869184) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -2088,7 +2088,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.dst_access_mask.as_raw() & 64) != 0
-        && (v.dst_stage_mask.as_raw() & 2199027026168) == 0
+        && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
             fail(
@@ -2205,7 +2205,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.src_access_mask.as_raw() & 32) != 0
-        && (v.src_stage_mask.as_raw() & 2199060580600) == 0
+        && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
             fail(
@@ -2218,7 +2218,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (v.dst_access_mask.as_raw() & 32) != 0
-        && (v.dst_stage_mask.as_raw() & 2199060580600) == 0
+        && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
             fail(
