@@ -1768,3 +1768,95 @@ fn a_meta_stage_satisfies_a_rule_that_asks_for_one_of_its_stages() {
         out.layer.join("\n")
     );
 }
+
+/// The VUID of a refused call, or a panic naming what came back instead.
+fn refusal<T>(r: tuff::Result<T>) -> &'static str {
+    match r {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid,
+        Err(e) => panic!("expected tuff to refuse the call, got {e}"),
+        Ok(_) => panic!("expected tuff to refuse the call, got success"),
+    }
+}
+
+/// A refused call leaves its objects and the device usable: after three refusals on
+/// the objects of a frame (a barrier recorded into the frame's own command buffer, a
+/// view of its image, a buffer of size 0), the same command buffer records the frame,
+/// which draws the expected pixel and dispatches the expected output, and the layer
+/// says nothing at any point.
+#[test]
+fn after_a_refusal_the_same_objects_render_a_correct_frame() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let target = s.color_target(8, vk::ImageUsageFlags::TRANSFER_SRC);
+    let work = pipelines::pipelines(&s, &target);
+    let readback = pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::TRANSFER_DST);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+
+    // A geometry-shader stage on a device without the feature: the recorder skips
+    // the barrier and `end` returns the refusal.
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::GEOMETRY_SHADER,
+        vk::PipelineStageFlags::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[],
+    );
+    assert_eq!(
+        refusal(rec.end()),
+        "VUID-vkCmdPipelineBarrier-srcStageMask-04090"
+    );
+    // A cube-array view of the frame's image without the imageCubeArray feature.
+    assert_eq!(
+        refusal(
+            d.create_image_view(
+                &tuff::ImageViewCreateInfo::new(&target.image)
+                    .view_type(vk::ImageViewType::CUBE_ARRAY)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .subresource_range(WHOLE),
+            )
+        ),
+        "VUID-VkImageViewCreateInfo-viewType-01004"
+    );
+    assert_eq!(
+        refusal(d.create_buffer(
+            &tuff::BufferCreateInfo::new().usage(vk::BufferUsageFlags::TRANSFER_DST),
+        )),
+        "VUID-VkBufferCreateInfo-size-00912"
+    );
+    vulkan::assert_silent(&s.messages);
+
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin again");
+    work.record(rec, &target, 8, Some(&readback.0))
+        .end()
+        .expect("end");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let handles = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
+    let status = d
+        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(status, vk::Result::SUCCESS);
+    let pixel = pipelines::access_memory(&s, &readback.1, 4, None);
+    let expected: Vec<u8> = pipelines::COLOR
+        .iter()
+        .map(|c| (c * 255.0).round() as u8)
+        .collect();
+    for (got, want) in pixel.iter().zip(&expected) {
+        assert!(
+            got.abs_diff(*want) <= 1,
+            "drawn pixel {pixel:?}, expected {expected:?}"
+        );
+    }
+    vulkan::assert_silent(&s.messages);
+}
