@@ -747,6 +747,12 @@ oracle_cases! {
         },
     },
     copy_buffer_info2: vk::CopyBufferInfo2<'_> {
+        "VUID-VkCopyBufferInfo2-srcOffset-00113" => |v, l, o| {
+            o.buffer_copy2.src_offset = o.src_buffer.size as _;
+        },
+        "VUID-VkCopyBufferInfo2-dstOffset-00114" => |v, l, o| {
+            o.buffer_copy2.dst_offset = o.dst_buffer.size as _;
+        },
         "VUID-VkCopyBufferInfo2-srcBuffer-00118" => |v, l, o| {
             o.src_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x1);
         },
@@ -761,6 +767,30 @@ oracle_cases! {
         },
     },
     cmd_copy_image: args::CmdCopyImage {
+        "VUID-vkCmdCopyImage-srcSubresource-01696" => |v, l, o| {
+            o.image_copy.src_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-vkCmdCopyImage-dstSubresource-01697" => |v, l, o| {
+            o.image_copy.dst_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-vkCmdCopyImage-srcSubresource-01698" => |v, l, o| {
+            o.image_copy.src_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.image_copy.src_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-dstSubresource-01699" => |v, l, o| {
+            o.image_copy.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_copy.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-srcOffset-00144" => |v, l, o| {
+            o.image_copy.src_offset.x = ((o.src_image.extent.width >> o.image_copy.src_subresource.mip_level).max(1) as i64 - o.image_copy.extent.width as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-srcOffset-00145" => |v, l, o| {
+            o.image_copy.src_offset.y = ((o.src_image.extent.height >> o.image_copy.src_subresource.mip_level).max(1) as i64 - o.image_copy.extent.height as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-dstOffset-00150" => |v, l, o| {
+            o.image_copy.dst_offset.x = ((o.dst_image.extent.width >> o.image_copy.dst_subresource.mip_level).max(1) as i64 - o.image_copy.extent.width as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-dstOffset-00151" => |v, l, o| {
+            o.image_copy.dst_offset.y = ((o.dst_image.extent.height >> o.image_copy.dst_subresource.mip_level).max(1) as i64 - o.image_copy.extent.height as i64 + 1) as _;
+        },
         "VUID-vkCmdCopyImage-srcImageLayout-00129" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -769,6 +799,30 @@ oracle_cases! {
         },
     },
     copy_image_info2: vk::CopyImageInfo2<'_> {
+        "VUID-VkCopyImageInfo2-srcSubresource-01696" => |v, l, o| {
+            o.image_copy2.src_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-VkCopyImageInfo2-dstSubresource-01697" => |v, l, o| {
+            o.image_copy2.dst_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-VkCopyImageInfo2-srcSubresource-01698" => |v, l, o| {
+            o.image_copy2.src_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.image_copy2.src_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-dstSubresource-01699" => |v, l, o| {
+            o.image_copy2.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_copy2.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-srcOffset-00144" => |v, l, o| {
+            o.image_copy2.src_offset.x = ((o.src_image.extent.width >> o.image_copy2.src_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.width as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-srcOffset-00145" => |v, l, o| {
+            o.image_copy2.src_offset.y = ((o.src_image.extent.height >> o.image_copy2.src_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.height as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-dstOffset-00150" => |v, l, o| {
+            o.image_copy2.dst_offset.x = ((o.dst_image.extent.width >> o.image_copy2.dst_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.width as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-dstOffset-00151" => |v, l, o| {
+            o.image_copy2.dst_offset.y = ((o.dst_image.extent.height >> o.image_copy2.dst_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.height as i64 + 1) as _;
+        },
         "VUID-VkCopyImageInfo2-srcImageLayout-00129" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -789,6 +843,18 @@ oracle_cases! {
         "VUID-vkCmdCopyBufferToImage-dstImage-00178" => |v, l, o| {
             o.dst_image.bind = false;
         },
+        "VUID-vkCmdCopyBufferToImage-imageSubresource-01701" => |v, l, o| {
+            o.buffer_image_copy.image_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-vkCmdCopyBufferToImage-imageSubresource-01702" => |v, l, o| {
+            o.buffer_image_copy.image_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.buffer_image_copy.image_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyBufferToImage-pRegions-06218" => |v, l, o| {
+            o.buffer_image_copy.image_offset.x = ((o.dst_image.extent.width >> o.buffer_image_copy.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy.image_extent.width as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyBufferToImage-pRegions-06219" => |v, l, o| {
+            o.buffer_image_copy.image_offset.y = ((o.dst_image.extent.height >> o.buffer_image_copy.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy.image_extent.height as i64 + 1) as _;
+        },
         "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -805,6 +871,18 @@ oracle_cases! {
         },
         "VUID-vkCmdCopyImageToBuffer-dstBuffer-00192" => |v, l, o| {
             o.dst_buffer.bind = false;
+        },
+        "VUID-vkCmdCopyImageToBuffer-imageSubresource-01703" => |v, l, o| {
+            o.buffer_image_copy.image_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-vkCmdCopyImageToBuffer-imageSubresource-01704" => |v, l, o| {
+            o.buffer_image_copy.image_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.buffer_image_copy.image_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImageToBuffer-pRegions-06221" => |v, l, o| {
+            o.buffer_image_copy.image_offset.x = ((o.src_image.extent.width >> o.buffer_image_copy.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy.image_extent.width as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImageToBuffer-pRegions-06222" => |v, l, o| {
+            o.buffer_image_copy.image_offset.y = ((o.src_image.extent.height >> o.buffer_image_copy.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy.image_extent.height as i64 + 1) as _;
         },
         "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
@@ -823,6 +901,21 @@ oracle_cases! {
         "VUID-VkCopyBufferToImageInfo2-dstImage-00178" => |v, l, o| {
             o.dst_image.bind = false;
         },
+        "VUID-VkCopyBufferToImageInfo2-imageSubresource-01701" => |v, l, o| {
+            o.buffer_image_copy2.image_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-VkCopyBufferToImageInfo2-imageSubresource-01702" => |v, l, o| {
+            o.buffer_image_copy2.image_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.buffer_image_copy2.image_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkCopyBufferToImageInfo2-pRegions-06223" => |v, l, o| {
+            o.buffer_image_copy2.image_offset.x = ((o.dst_image.extent.width >> o.buffer_image_copy2.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy2.image_extent.width as i64 + 1) as _;
+        },
+        "VUID-VkCopyBufferToImageInfo2-pRegions-06224" => |v, l, o| {
+            o.buffer_image_copy2.image_offset.y = ((o.dst_image.extent.height >> o.buffer_image_copy2.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy2.image_extent.height as i64 + 1) as _;
+        },
+        "VUID-VkCopyBufferToImageInfo2-imageOffset-00200" => |v, l, o| {
+            o.buffer_image_copy2.image_offset.z = ((o.dst_image.extent.depth >> o.buffer_image_copy2.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy2.image_extent.depth as i64 + 1) as _;
+        },
         "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -840,6 +933,9 @@ oracle_cases! {
         "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192" => |v, l, o| {
             o.dst_buffer.bind = false;
         },
+        "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704" => |v, l, o| {
+            o.buffer_image_copy2.image_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.buffer_image_copy2.image_subresource.layer_count as i64 + 1) as _;
+        },
         "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -856,6 +952,36 @@ oracle_cases! {
         },
         "VUID-vkCmdBlitImage-dstImage-00225" => |v, l, o| {
             o.dst_image.bind = false;
+        },
+        "VUID-vkCmdBlitImage-srcSubresource-01705" => |v, l, o| {
+            o.image_blit.src_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-vkCmdBlitImage-dstSubresource-01706" => |v, l, o| {
+            o.image_blit.dst_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-vkCmdBlitImage-srcSubresource-01707" => |v, l, o| {
+            o.image_blit.src_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.image_blit.src_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-dstSubresource-01708" => |v, l, o| {
+            o.image_blit.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_blit.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-srcOffset-00243" => |v, l, o| {
+            o.image_blit.src_offsets[1].x = ((o.src_image.extent.width >> o.image_blit.src_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-srcOffset-00244" => |v, l, o| {
+            o.image_blit.src_offsets[1].y = ((o.src_image.extent.height >> o.image_blit.src_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-srcOffset-00246" => |v, l, o| {
+            o.image_blit.src_offsets[1].z = ((o.src_image.extent.depth >> o.image_blit.src_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-dstOffset-00248" => |v, l, o| {
+            o.image_blit.dst_offsets[1].x = ((o.dst_image.extent.width >> o.image_blit.dst_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-dstOffset-00249" => |v, l, o| {
+            o.image_blit.dst_offsets[1].y = ((o.dst_image.extent.height >> o.image_blit.dst_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-dstOffset-00251" => |v, l, o| {
+            o.image_blit.dst_offsets[1].z = ((o.dst_image.extent.depth >> o.image_blit.dst_subresource.mip_level).max(1) as i64 + 1) as _;
         },
         "VUID-vkCmdBlitImage-srcImageLayout-00222" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
@@ -877,6 +1003,36 @@ oracle_cases! {
         "VUID-VkBlitImageInfo2-dstImage-00225" => |v, l, o| {
             o.dst_image.bind = false;
         },
+        "VUID-VkBlitImageInfo2-srcSubresource-01705" => |v, l, o| {
+            o.image_blit2.src_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-VkBlitImageInfo2-dstSubresource-01706" => |v, l, o| {
+            o.image_blit2.dst_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-VkBlitImageInfo2-srcSubresource-01707" => |v, l, o| {
+            o.image_blit2.src_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.image_blit2.src_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-dstSubresource-01708" => |v, l, o| {
+            o.image_blit2.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_blit2.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-srcOffset-00243" => |v, l, o| {
+            o.image_blit2.src_offsets[1].x = ((o.src_image.extent.width >> o.image_blit2.src_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-srcOffset-00244" => |v, l, o| {
+            o.image_blit2.src_offsets[1].y = ((o.src_image.extent.height >> o.image_blit2.src_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-srcOffset-00246" => |v, l, o| {
+            o.image_blit2.src_offsets[1].z = ((o.src_image.extent.depth >> o.image_blit2.src_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-dstOffset-00248" => |v, l, o| {
+            o.image_blit2.dst_offsets[1].x = ((o.dst_image.extent.width >> o.image_blit2.dst_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-dstOffset-00249" => |v, l, o| {
+            o.image_blit2.dst_offsets[1].y = ((o.dst_image.extent.height >> o.image_blit2.dst_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-dstOffset-00251" => |v, l, o| {
+            o.image_blit2.dst_offsets[1].z = ((o.dst_image.extent.depth >> o.image_blit2.dst_subresource.mip_level).max(1) as i64 + 1) as _;
+        },
         "VUID-VkBlitImageInfo2-srcImageLayout-00222" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -890,6 +1046,36 @@ oracle_cases! {
         },
         "VUID-vkCmdResolveImage-dstImage-00258" => |v, l, o| {
             o.dst_image.bind = false;
+        },
+        "VUID-vkCmdResolveImage-srcSubresource-01709" => |v, l, o| {
+            o.image_resolve.src_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-vkCmdResolveImage-dstSubresource-01710" => |v, l, o| {
+            o.image_resolve.dst_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-vkCmdResolveImage-srcSubresource-01711" => |v, l, o| {
+            o.image_resolve.src_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.image_resolve.src_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-dstSubresource-01712" => |v, l, o| {
+            o.image_resolve.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_resolve.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-srcOffset-00269" => |v, l, o| {
+            o.image_resolve.src_offset.x = ((o.src_image.extent.width >> o.image_resolve.src_subresource.mip_level).max(1) as i64 - o.image_resolve.extent.width as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-srcOffset-00270" => |v, l, o| {
+            o.image_resolve.src_offset.y = ((o.src_image.extent.height >> o.image_resolve.src_subresource.mip_level).max(1) as i64 - o.image_resolve.extent.height as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-srcOffset-00272" => |v, l, o| {
+            o.image_resolve.src_offset.z = ((o.src_image.extent.depth >> o.image_resolve.src_subresource.mip_level).max(1) as i64 - o.image_resolve.extent.depth as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-dstOffset-00274" => |v, l, o| {
+            o.image_resolve.dst_offset.x = ((o.dst_image.extent.width >> o.image_resolve.dst_subresource.mip_level).max(1) as i64 - o.image_resolve.extent.width as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-dstOffset-00275" => |v, l, o| {
+            o.image_resolve.dst_offset.y = ((o.dst_image.extent.height >> o.image_resolve.dst_subresource.mip_level).max(1) as i64 - o.image_resolve.extent.height as i64 + 1) as _;
+        },
+        "VUID-vkCmdResolveImage-dstOffset-00277" => |v, l, o| {
+            o.image_resolve.dst_offset.z = ((o.dst_image.extent.depth >> o.image_resolve.dst_subresource.mip_level).max(1) as i64 - o.image_resolve.extent.depth as i64 + 1) as _;
         },
         "VUID-vkCmdResolveImage-srcImage-06762" => |v, l, o| {
             o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);
@@ -910,6 +1096,36 @@ oracle_cases! {
         },
         "VUID-VkResolveImageInfo2-dstImage-00258" => |v, l, o| {
             o.dst_image.bind = false;
+        },
+        "VUID-VkResolveImageInfo2-srcSubresource-01709" => |v, l, o| {
+            o.image_resolve2.src_subresource.mip_level = o.src_image.mip_levels as _;
+        },
+        "VUID-VkResolveImageInfo2-dstSubresource-01710" => |v, l, o| {
+            o.image_resolve2.dst_subresource.mip_level = o.dst_image.mip_levels as _;
+        },
+        "VUID-VkResolveImageInfo2-srcSubresource-01711" => |v, l, o| {
+            o.image_resolve2.src_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.image_resolve2.src_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-dstSubresource-01712" => |v, l, o| {
+            o.image_resolve2.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_resolve2.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-srcOffset-00269" => |v, l, o| {
+            o.image_resolve2.src_offset.x = ((o.src_image.extent.width >> o.image_resolve2.src_subresource.mip_level).max(1) as i64 - o.image_resolve2.extent.width as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-srcOffset-00270" => |v, l, o| {
+            o.image_resolve2.src_offset.y = ((o.src_image.extent.height >> o.image_resolve2.src_subresource.mip_level).max(1) as i64 - o.image_resolve2.extent.height as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-srcOffset-00272" => |v, l, o| {
+            o.image_resolve2.src_offset.z = ((o.src_image.extent.depth >> o.image_resolve2.src_subresource.mip_level).max(1) as i64 - o.image_resolve2.extent.depth as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-dstOffset-00274" => |v, l, o| {
+            o.image_resolve2.dst_offset.x = ((o.dst_image.extent.width >> o.image_resolve2.dst_subresource.mip_level).max(1) as i64 - o.image_resolve2.extent.width as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-dstOffset-00275" => |v, l, o| {
+            o.image_resolve2.dst_offset.y = ((o.dst_image.extent.height >> o.image_resolve2.dst_subresource.mip_level).max(1) as i64 - o.image_resolve2.extent.height as i64 + 1) as _;
+        },
+        "VUID-VkResolveImageInfo2-dstOffset-00277" => |v, l, o| {
+            o.image_resolve2.dst_offset.z = ((o.dst_image.extent.depth >> o.image_resolve2.dst_subresource.mip_level).max(1) as i64 - o.image_resolve2.extent.depth as i64 + 1) as _;
         },
         "VUID-VkResolveImageInfo2-srcImage-06762" => |v, l, o| {
             o.src_image.usage &= !vk::ImageUsageFlags::from_raw(0x1);

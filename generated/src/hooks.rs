@@ -674,6 +674,8 @@ pub(crate) fn image_created(
         image.raw(),
         ImageRecord {
             flags: create_info.flags,
+            image_type: create_info.image_type,
+            extent: create_info.extent,
             mip_levels: create_info.mip_levels,
             array_layers: create_info.array_layers,
             usage: create_info.usage,
@@ -681,6 +683,47 @@ pub(crate) fn image_created(
         },
     );
     image
+}
+
+/// The device remembers what the swapchain's images are, as the images a
+/// `VkImageCreateInfo` of its parameters would make (2D, one level, its extent,
+/// layers and usage, bound), for [`swapchain_images`].
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn swapchain_created(
+    device: &Device,
+    swapchain: SwapchainKHR,
+    create_info: &SwapchainCreateInfoKHR<'_>,
+) -> SwapchainKHR {
+    device.live().swapchain_created(
+        swapchain.raw(),
+        ImageRecord {
+            flags: vk::ImageCreateFlags::empty(),
+            image_type: vk::ImageType::TYPE_2D,
+            extent: vk::Extent3D {
+                width: create_info.image_extent.width,
+                height: create_info.image_extent.height,
+                depth: 1,
+            },
+            mip_levels: 1,
+            array_layers: create_info.image_array_layers,
+            usage: create_info.image_usage,
+            bound: true,
+        },
+    );
+    swapchain
+}
+
+/// The swapchain's images get its record, so the checks of the commands that name
+/// one read its size and usage as for any image.
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn swapchain_images(
+    device: &Device,
+    images: Vec<Image>,
+    swapchain: &SwapchainKHR,
+) -> Vec<Image> {
+    let raw: SmallVec<[vk::Image; 8]> = images.iter().map(|i| i.raw()).collect();
+    device.live().swapchain_images(swapchain.raw(), &raw);
+    images
 }
 
 /// The device remembers the buffer's size, usage and flags for the checks of the

@@ -68,6 +68,9 @@ pub(crate) struct Live {
     shader_modules: Vutex<HashMap<u64, Vrc<crate::spirv::Interface>>>,
     /// What the checks of commands and structs that name an image need to know of it.
     images: Vutex<HashMap<u64, ImageRecord>>,
+    /// Each swapchain's images, as one record: what `get_swapchain_images_khr`
+    /// records for every image it returns.
+    swapchains: Vutex<HashMap<u64, ImageRecord>>,
     /// Each query pool's type, query count and statistics.
     query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
     /// Each pipeline layout's push-constant ranges and sets.
@@ -179,6 +182,10 @@ pub(crate) struct BufferRecord {
 pub(crate) struct ImageRecord {
     /// `VkImageCreateInfo::flags`.
     pub flags: vk::ImageCreateFlags,
+    /// `VkImageCreateInfo::imageType`.
+    pub image_type: vk::ImageType,
+    /// `VkImageCreateInfo::extent`: the size of mip level 0.
+    pub extent: vk::Extent3D,
     /// `VkImageCreateInfo::mipLevels`.
     pub mip_levels: u32,
     /// `VkImageCreateInfo::arrayLayers`.
@@ -200,6 +207,7 @@ impl Default for Live {
             timelines: Vutex::new(std::collections::HashSet::new()),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
+            swapchains: Vutex::new(HashMap::default()),
             shader_modules: Vutex::new(HashMap::default()),
             query_pools: Vutex::new(HashMap::default()),
             pipeline_layouts: Vutex::new(HashMap::default()),
@@ -316,6 +324,9 @@ impl Live {
             }
             vk::ObjectType::QUERY_POOL => {
                 self.query_pools.lock().remove(&key.1);
+            }
+            vk::ObjectType::SWAPCHAIN_KHR => {
+                self.swapchains.lock().remove(&key.1);
             }
             vk::ObjectType::PIPELINE => {
                 let record = self.pipelines.lock().remove(&key.1);
@@ -466,7 +477,24 @@ impl Live {
         }
     }
 
-    /// The record of a live image made through the wrappers (not a swapchain's).
+    /// Records what a swapchain's images are.
+    pub(crate) fn swapchain_created(&self, raw: vk::SwapchainKHR, images: ImageRecord) {
+        self.swapchains.lock().insert(raw.as_raw(), images);
+    }
+
+    /// Records a swapchain's images, as it was created, once they are wrapped.
+    pub(crate) fn swapchain_images(&self, raw: vk::SwapchainKHR, images: &[vk::Image]) {
+        let Some(record) = self.swapchains.lock().get(&raw.as_raw()).copied() else {
+            return;
+        };
+        let mut recorded = self.images.lock();
+        for image in images {
+            recorded.insert(image.as_raw(), record);
+        }
+    }
+
+    /// The record of a live image made through the wrappers, or of a swapchain's
+    /// image that `get_swapchain_images_khr` returned.
     pub(crate) fn image(&self, raw: vk::Image) -> Option<ImageRecord> {
         self.images.lock().get(&raw.as_raw()).copied()
     }

@@ -7,16 +7,33 @@ use crate::validity::explicit::{Check, Object, Op, Pred, Recognised, Rhs};
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-/// A member path (`extent.width`) of `v`, or of a command's parameter.
+/// A member path (`extent.width`) of `v`, of a command's parameter, or (`array[].x`)
+/// of the element `e` a rule is checked on; `offsets[1].x` indexes a fixed-size
+/// array.
 pub fn member(path: &str, on_command: bool) -> TokenStream {
-    let mut parts = path.split('.');
-    let head = if on_command {
-        let p = crate::names::ident(&crate::names::param(parts.next().unwrap_or_default()));
-        quote!(#p)
-    } else {
-        quote!(v)
+    let (head, rest) = match path.split_once("[].") {
+        Some((_, rest)) => (quote!(e), rest),
+        None if on_command => {
+            let (first, rest) = path.split_once('.').unwrap_or((path, ""));
+            let p = crate::names::ident(&crate::names::param(first));
+            (quote!(#p), rest)
+        }
+        None => (quote!(v), path),
     };
-    let rest = parts.map(field_ident);
+    let rest = rest
+        .split('.')
+        .filter(|p| !p.is_empty())
+        .map(|p| match p.split_once('[') {
+            Some((name, index)) => {
+                let f = field_ident(name);
+                let i = Literal::usize_unsuffixed(index.trim_end_matches(']').parse().unwrap_or(0));
+                quote!(#f[#i])
+            }
+            None => {
+                let f = field_ident(p);
+                quote!(#f)
+            }
+        });
     quote!(#head #(.#rest)*)
 }
 
@@ -110,10 +127,75 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
         }
         Pred::Compare {
             member: m,
+            plus: Some(p),
+            op: o,
+            rhs,
+            ..
+        } => {
+            // A sum of two whole numbers, compared as `i128` so it cannot overflow.
+            let sum = {
+                let (m, p) = (member(m), member(p));
+                quote!((#m as i128 + #p as i128))
+            };
+            let ot = op(if negated { inverse(*o) } else { *o });
+            // An object the wrappers did not make has no record: not known.
+            let known = if negated {
+                quote!(is_some_and)
+            } else {
+                quote!(is_none_or)
+            };
+            match rhs {
+                Rhs::Const(c) => {
+                    let c = number(c, false);
+                    quote!(#sum #ot #c)
+                }
+                Rhs::Member(other) => {
+                    let other = member(other);
+                    quote!(#sum #ot (#other as i128))
+                }
+                Rhs::Limit(l) => {
+                    let l = field_ident(l);
+                    quote!(s.limits().#known(|l| #sum #ot (l.#l as i128)))
+                }
+                Rhs::Created {
+                    handle: h,
+                    object,
+                    field,
+                } => {
+                    let record = record(h, *object, on_command);
+                    let f = field_ident(field);
+                    quote!(#record.#known(|r| #sum #ot (r.#f as i128)))
+                }
+                Rhs::Extent { handle, dim, level } => {
+                    let record = record(handle, Object::Image, on_command);
+                    let e = level_extent(dim, &member(level));
+                    quote!(#record.#known(|r| #sum #ot #e))
+                }
+            }
+        }
+        Pred::Compare {
+            member: m,
+            op: o,
+            rhs: Rhs::Extent { handle, dim, level },
+            ..
+        } => {
+            let m = member(m);
+            let ot = op(if negated { inverse(*o) } else { *o });
+            let record = record(handle, Object::Image, on_command);
+            let e = level_extent(dim, &member(level));
+            if negated {
+                quote!(#record.is_some_and(|r| (#m as i128) #ot #e))
+            } else {
+                quote!(#record.is_none_or(|r| (#m as i128) #ot #e))
+            }
+        }
+        Pred::Compare {
+            member: m,
             op: o,
             rhs,
             float,
             unsigned,
+            ..
         } => {
             let m = member(m);
             let mut o = if negated { inverse(*o) } else { *o };
@@ -151,6 +233,8 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                         quote!(s.limits().is_none_or(|l| #cmp))
                     }
                 }
+                // Read above, with a level.
+                Rhs::Extent { .. } => quote!(false),
                 Rhs::Created {
                     handle: h,
                     object,
@@ -199,36 +283,102 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                 quote!(!s.feature(|f| f.#f))
             }
         }
+        Pred::ImageType { handle, values } => {
+            let record = record(handle, Object::Image, on_command);
+            let pats = values.iter().map(|v| Literal::i64_unsuffixed(v.number));
+            let is = quote!(matches!(r.image_type.as_raw(), #(#pats)|*));
+            // An image the wrappers did not make has no record: the condition is not
+            // known to hold.
+            if negated {
+                quote!(#record.is_none_or(|r| !#is))
+            } else {
+                quote!(#record.is_some_and(|r| #is))
+            }
+        }
+        Pred::All(ps) => {
+            let each = ps.iter().map(|p| pred(p, negated, on_command));
+            if negated {
+                quote!((#(#each)||*))
+            } else {
+                quote!((#(#each)&&*))
+            }
+        }
     }
+}
+
+/// The width, height or depth of mip level `level` of the recorded image `r`, as an
+/// `i128`: the extent shifted right by the level, at least 1 (a level past the
+/// bits leaves 1, never a panic).
+fn level_extent(dim: &str, level: &TokenStream) -> TokenStream {
+    let d = field_ident(dim);
+    quote!((r.extent.#d.checked_shr(#level).unwrap_or(0).max(1) as i128))
 }
 
 /// The check of one recognised rule.
 pub fn render(r: &Recognised) -> TokenStream {
-    let Check { when, must } = &r.check;
+    let Check { when, must, each } = &r.check;
     let vuid = &r.vuid;
+    let broken = match must {
+        // Alone in the condition, a conjunction's negation needs no parentheses.
+        Pred::All(ps) if when.is_empty() => {
+            let each = ps.iter().map(|p| pred(p, true, r.on_command));
+            quote!(#(#each)||*)
+        }
+        _ => pred(must, true, r.on_command),
+    };
     let when = when.iter().map(|p| pred(p, false, r.on_command));
-    let broken = pred(must, true, r.on_command);
     let members = r.check.members();
+    // An element's member is shown with its index: `pRegions[2].srcOffset.x`.
     let shown = members
         .iter()
-        .map(|m| format!("`{m}` = {{:?}}"))
+        .map(|m| format!("`{}` = {{:?}}", m.replacen("[]", "[{}]", 1)))
         .collect::<Vec<_>>()
         .join(", ");
-    if members.is_empty() {
+    let test = if members.is_empty() {
         // The rule reads only the records of the objects it names.
         let text = &r.text;
-        return quote! {
+        quote! {
             if #(#when &&)* #broken {
                 return Err(fail(#vuid, #text.into()));
             }
-        };
-    }
-    let text = format!("{} ({shown})", r.text.replace('{', "{{").replace('}', "}}"));
-    let args = members.iter().map(|m| member(m, r.on_command));
-    quote! {
-        if #(#when &&)* #broken {
-            return Err(fail(#vuid, format!(#text, #(#args),*)));
         }
+    } else {
+        let text = format!("{} ({shown})", r.text.replace('{', "{{").replace('}', "}}"));
+        let args = members.iter().map(|m| {
+            let value = member(m, r.on_command);
+            if m.contains("[]") {
+                quote!(i, #value)
+            } else {
+                value
+            }
+        });
+        quote! {
+            if #(#when &&)* #broken {
+                return Err(fail(#vuid, format!(#text, #(#args),*)));
+            }
+        }
+    };
+    let Some(each) = each else {
+        return test;
+    };
+    let array = if r.on_command {
+        let a = crate::names::ident(&crate::names::param(&each.array));
+        quote!(#a.iter())
+    } else {
+        let a = field_ident(&each.array);
+        let count = field_ident(each.count.as_deref().unwrap_or_default());
+        quote! {
+            {
+                __safety!("the safe setter stored this array and its count.");
+                unsafe { members(v.#a, v.#count) }
+            }
+            .iter()
+        }
+    };
+    if members.iter().any(|m| m.contains("[]")) {
+        quote!(for (i, e) in #array.enumerate() { #test })
+    } else {
+        quote!(for e in #array { #test })
     }
 }
 
@@ -237,7 +387,7 @@ pub fn render(r: &Recognised) -> TokenStream {
 /// value `v` (a struct, or a command's `args::` struct), given the device's
 /// limits `l`, and how the fixture makes the objects it names (`o`).
 pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
-    use crate::plan::oracle::{path, Assign};
+    use crate::plan::oracle::Assign;
     use std::fmt::Write;
     let mut s = String::from(
         "// Generated by tuff-gen from vk.xml and validusage.json; do not edit. Regenerate: cargo run -p tuff-gen\n\
@@ -270,31 +420,31 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
         let _ = writeln!(s, "    {fixture}: {ty} {{");
         for c in cases.iter().filter(|c| c.item == item) {
             let _ = writeln!(s, "        {:?} => |v, l, o| {{", c.vuid);
-            let path = |m: &str| path(m, c.on_command);
+            let path = |m: &str| c.place(m);
             for a in &c.assigns {
                 let line = match a {
                     Assign::SetBits { member, ty, bits } => format!(
-                        "v.{} |= vk::{}::from_raw({bits:#x});",
+                        "{} |= vk::{}::from_raw({bits:#x});",
                         path(member),
                         crate::names::type_name(ty)
                     ),
                     Assign::Bits { member, ty, bits } => format!(
-                        "v.{} = vk::{}::from_raw({bits:#x});",
+                        "{} = vk::{}::from_raw({bits:#x});",
                         path(member),
                         crate::names::type_name(ty)
                     ),
                     Assign::ClearBits { member, ty, bits } => format!(
-                        "v.{} &= !vk::{}::from_raw({bits:#x});",
+                        "{} &= !vk::{}::from_raw({bits:#x});",
                         path(member),
                         crate::names::type_name(ty)
                     ),
                     // ash names a `FlagBits` type as its flags type.
                     Assign::Enum { member, ty, value } => format!(
-                        "v.{} = vk::{}::from_raw({value});",
+                        "{} = vk::{}::from_raw({value});",
                         path(member),
                         crate::names::type_name(ty).replace("FlagBits", "Flags")
                     ),
-                    Assign::Number { member, expr } => format!("v.{} = {expr};", path(member)),
+                    Assign::Number { member, expr } => format!("{} = {expr};", path(member)),
                     // The fixture makes its objects from `o` after the change, so
                     // the handle's name is the spec's (a parameter as the method
                     // names it).

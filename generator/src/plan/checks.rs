@@ -241,7 +241,7 @@ impl Check {
             }
             let mut out: Vec<String> = Vec::new();
             for m in r.check.members().into_iter().chain(r.check.handles()) {
-                let a = param(m.split('.').next().unwrap_or_default());
+                let a = param(crate::validity::explicit::root(m));
                 if !out.contains(&a) {
                     out.push(a);
                 }
@@ -736,9 +736,15 @@ impl<'c, 'm> Checker<'c, 'm> {
         // Explicit rules the recognisers read, over parameters the method takes as
         // they are (a count the method derives from a slice is not one).
         for r in self.explicit.get(plan.name.as_str()).into_iter().flatten() {
+            // An element's member (`pRegions[].x`) is read from the slice the method
+            // takes.
             let by_value = r.check.members().iter().all(|m| {
-                let first = m.split('.').next().unwrap_or_default();
-                matches!(arg(first), Some((_, Param::Value)))
+                let first = crate::validity::explicit::root(m);
+                if m.contains("[]") {
+                    matches!(arg(first), Some((_, Param::Slice)))
+                } else {
+                    matches!(arg(first), Some((_, Param::Value)))
+                }
             }) && r
                 .check
                 .handles()

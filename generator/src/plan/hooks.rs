@@ -920,12 +920,24 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateSwapchainKHR",
+        created: call(
+            "hooks::swapchain_created",
+            &["self", "created", "create_info"],
+        ),
         // VUID-vkDestroySurfaceKHR-surface-01266: swapchains go before their surface.
         keeps: Keeps::Member("surface", "VkSurfaceKHR"),
         settles: &[(
             "VUID-vkDestroySurfaceKHR-surface-01266",
             How::Static("a swapchain wrapper keeps its surface alive"),
         )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetSwapchainImagesKHR",
+        created: call(
+            "hooks::swapchain_images",
+            &["self", "created", "swapchain"],
+        ),
         ..NONE
     },
     // Rules settled by the hand-written parts of the crate that these commands

@@ -100,9 +100,14 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01488", "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layer is past the image's"),
     ("VUID-vkCmdDrawIndirect-drawCount-02719", MULTI_DRAW),
     ("VUID-vkCmdDrawIndexedIndirect-drawCount-02719", MULTI_DRAW),
+    ("VUID-VkCopyImageToBufferInfo2-imageSubresource-01703", LAYER_RENAMES),
+    ("VUID-VkCopyImageToBufferInfo2-imageOffset-00197", LAYER_RENAMES),
+    ("VUID-VkCopyImageToBufferInfo2-imageOffset-00198", LAYER_RENAMES),
+    ("VUID-VkCopyImageToBufferInfo2-imageOffset-00200", LAYER_RENAMES),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
+const LAYER_RENAMES: &str = "the 1.3.239 layer reports this region of `vkCmdCopyImageToBuffer2` under `vkCmdCopyImageToBuffer` VUIDs of other rules (`pRegions-06221`, `06222`, `imageOffset-00200`), so its verdict cannot be told apart";
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
 const PAST_ATTACHMENT: &str = "a framebuffer larger than the limit is larger than its attachment too, which breaks `flags-04533` (or `04534`, `04535`) as well";
 const MULTI_DRAW: &str = "a draw count past the limit is more than one draw, which breaks `drawCount-02718` as well on a device without `multiDrawIndirect`";
@@ -200,6 +205,18 @@ pub struct Case {
     pub on_command: bool,
     /// The changes, in order.
     pub assigns: Vec<Assign>,
+    /// For a rule about each element of an array, the field of the test's
+    /// `Objects` that holds the fixture's one element (`image_copy` for
+    /// `VkImageCopy`), which element paths are written to.
+    pub element: Option<String>,
+}
+
+impl Case {
+    /// A member path as a Rust place: of the fixture's value `v`, or of its
+    /// element in `o`.
+    pub fn place(&self, p: &str) -> String {
+        path(p, self.on_command, self.element.as_deref())
+    }
 }
 
 /// The cases of every recognised rule of a fixture struct that some emitted command
@@ -218,12 +235,50 @@ pub fn cases(cx: &Context, checker: &Checker) -> Vec<Case> {
         .collect()
 }
 
+/// Where a case's paths lead: the item, and the `Objects` field of its element.
+struct At<'a> {
+    model: &'a Model,
+    item: &'a str,
+    on_command: bool,
+    element: Option<String>,
+}
+
+impl At<'_> {
+    /// The C type of a member path.
+    fn ty(&self, p: &str) -> Option<String> {
+        Some(
+            crate::validity::explicit::path_field(self.model, self.item, p)?
+                .type_name
+                .clone(),
+        )
+    }
+
+    /// A member path as a Rust place.
+    fn path(&self, p: &str) -> String {
+        path(p, self.on_command, self.element.as_deref())
+    }
+}
+
 fn case(model: &Model, r: &Recognised) -> Option<Case> {
+    let element = match &r.check.each {
+        Some(each) => {
+            let array = format!("{}[]", each.array);
+            let f = crate::validity::explicit::path_field(model, &r.item, &array)?;
+            Some(super::checks::snake(&f.type_name))
+        }
+        None => None,
+    };
+    let at = At {
+        model,
+        item: &r.item,
+        on_command: r.on_command,
+        element,
+    };
     let mut assigns = Vec::new();
     for p in &r.check.when {
-        make_true(model, &r.item, p, &mut assigns)?;
+        make_true(&at, p, &mut assigns)?;
     }
-    make_false(model, &r.item, &r.check.must, &mut assigns)?;
+    make_false(&at, &r.check.must, &mut assigns)?;
     // A count that goes with a pointer member is not the fixture's to change: the
     // safe struct's setters keep the two together.
     let fields = match model.commands.get(&r.item) {
@@ -243,33 +298,8 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
         lifetime: false,
         on_command: r.on_command,
         assigns,
+        element: at.element,
     })
-}
-
-/// The C type of a member path (of a command's parameters, for a command).
-fn member_type(model: &Model, item: &str, path: &str) -> Option<String> {
-    let mut parts = path.split('.');
-    let mut ty = item.to_owned();
-    if let Some(cmd) = model.commands.get(item) {
-        let first = parts.next()?;
-        ty = cmd
-            .params
-            .iter()
-            .find(|p| p.name == first)?
-            .type_name
-            .clone();
-    }
-    for part in parts {
-        ty = model
-            .types
-            .get(&ty)?
-            .members
-            .iter()
-            .find(|m| m.name == part)?
-            .type_name
-            .clone();
-    }
-    Some(ty)
 }
 
 fn mask(bits: &[Value]) -> u64 {
@@ -278,20 +308,20 @@ fn mask(bits: &[Value]) -> u64 {
 
 /// Changes that make a condition hold. The fixtures' device enables no Vulkan 1.0
 /// feature, so "feature not enabled" holds already.
-fn make_true(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
+fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
         Pred::Feature { enabled: false, .. } => {}
         Pred::AnyBit { member, bits } => out.push(Assign::SetBits {
-            ty: member_type(model, item, member)?,
+            ty: at.ty(member)?,
             member: member.clone(),
             bits: bits.first()?.number as u64,
         }),
         Pred::NoBit { member, bits } => out.push(Assign::ClearBits {
-            ty: member_type(model, item, member)?,
+            ty: at.ty(member)?,
             member: member.clone(),
             bits: mask(bits),
         }),
-        Pred::OneOf { member, values } => out.push(value_of(model, item, member, values.first()?)?),
+        Pred::OneOf { member, values } => out.push(value_of(at, member, values.first()?)?),
         Pred::Compare {
             member,
             op: Op::Eq,
@@ -308,12 +338,12 @@ fn make_true(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opti
 }
 
 /// Changes that make a requirement fail.
-fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
+fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
         Pred::AnyBit { member, bits } => {
-            let ty = member_type(model, item, member)?;
-            let group = model.types.get(&ty)?.bit_values.clone()?;
-            let other = first_other(model, &group, bits, true)?;
+            let ty = at.ty(member)?;
+            let group = at.model.types.get(&ty)?.bit_values.clone()?;
+            let other = first_other(at.model, &group, bits, true)?;
             out.push(Assign::Bits {
                 member: member.clone(),
                 ty,
@@ -321,13 +351,11 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
             });
         }
         Pred::NoBit { member, bits } => out.push(Assign::SetBits {
-            ty: member_type(model, item, member)?,
+            ty: at.ty(member)?,
             member: member.clone(),
             bits: bits.first()?.number as u64,
         }),
-        Pred::NoneOf { member, values } => {
-            out.push(value_of(model, item, member, values.first()?)?)
-        }
+        Pred::NoneOf { member, values } => out.push(value_of(at, member, values.first()?)?),
         Pred::OneOf { member, values } if crate::validity::explicit::is_bool(values) => {
             // A number outside the list (`drawCount` of 2 for `0 or 1`), or the other
             // `VkBool32`.
@@ -347,8 +375,8 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
             });
         }
         Pred::OneOf { member, values } => {
-            let ty = member_type(model, item, member)?;
-            let other = first_other(model, &ty, values, false)?;
+            let ty = at.ty(member)?;
+            let other = first_other(at.model, &ty, values, false)?;
             out.push(Assign::Enum {
                 member: member.clone(),
                 ty,
@@ -367,8 +395,43 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
         Pred::Bound { handle, .. } => out.push(Assign::Unbound {
             handle: handle.clone(),
         }),
+        // Of `x and (y + x) must both be in [0, extent]`, break the last: the sum
+        // past the level's extent.
+        Pred::All(ps) => make_false(at, ps.last()?, out)?,
+        // `a + b <= n` breaks at `a = n - b + 1`; `a <= n` at `a = n + 1`.
         Pred::Compare {
             member,
+            plus,
+            op: Op::Le,
+            rhs: rhs @ (Rhs::Created { .. } | Rhs::Extent { .. }),
+            ..
+        } => {
+            let bound = match rhs {
+                Rhs::Created { handle, field, .. } => format!(
+                    "o.{}.{} as i64",
+                    crate::names::param(handle),
+                    crate::names::field(field)
+                ),
+                Rhs::Extent { handle, dim, level } => format!(
+                    "(o.{}.extent.{} >> {}).max(1) as i64",
+                    crate::names::param(handle),
+                    crate::names::field(dim),
+                    at.path(level)
+                ),
+                _ => return None,
+            };
+            let minus = match plus {
+                Some(p) => format!(" - {} as i64", at.path(p)),
+                None => String::new(),
+            };
+            out.push(Assign::Number {
+                member: member.clone(),
+                expr: format!("({bound}{minus} + 1) as _"),
+            });
+        }
+        Pred::Compare {
+            member,
+            plus: None,
             op: Op::Lt,
             rhs: Rhs::Created { handle, field, .. },
             ..
@@ -382,6 +445,7 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
         }),
         Pred::Compare {
             member,
+            plus: None,
             op,
             rhs,
             float,
@@ -398,9 +462,9 @@ fn make_false(model: &Model, item: &str, p: &Pred, out: &mut Vec<Assign>) -> Opt
                 (Rhs::Limit(l), Op::Le) => {
                     format!("(l.{} as u64 + 1) as _", crate::names::field(l))
                 }
-                (Rhs::Member(m), Op::Gt | Op::Lt) => format!("v.{}", path(m, false)),
-                (Rhs::Member(m), Op::Ge) => format!("v.{} - {one}", path(m, false)),
-                (Rhs::Member(m), Op::Le) => format!("v.{} + {one}", path(m, false)),
+                (Rhs::Member(m), Op::Gt | Op::Lt) => at.path(m),
+                (Rhs::Member(m), Op::Ge) => format!("{} - {one}", at.path(m)),
+                (Rhs::Member(m), Op::Le) => format!("{} + {one}", at.path(m)),
                 _ => return None,
             };
             out.push(Assign::Number {
@@ -427,24 +491,35 @@ fn shifted(c: &str, float: bool, by: i64) -> Option<String> {
     }
 }
 
-/// A member path in Rust (`extent.width`); a command's parameter is named as the
-/// safe method names it.
-pub fn path(p: &str, on_command: bool) -> String {
-    p.split('.')
+/// A member path as a Rust place: `v.extent.width` of the fixture's value (a
+/// command's parameter named as the safe method names it), or, for an element's
+/// member (`pRegions[].srcOffset.x`), `o.image_copy.src_offset.x` of the element
+/// the fixture keeps in its objects.
+pub fn path(p: &str, on_command: bool, element: Option<&str>) -> String {
+    let field = |s: &str| match s.split_once('[') {
+        Some((name, index)) => format!("{}[{index}", crate::names::field(name)),
+        None => crate::names::field(s),
+    };
+    if let (Some((_, rest)), Some(element)) = (p.split_once("[]."), element) {
+        let rest: Vec<String> = rest.split('.').map(field).collect();
+        return format!("o.{element}.{}", rest.join("."));
+    }
+    let parts: Vec<String> = p
+        .split('.')
         .enumerate()
         .map(|(i, s)| {
             if i == 0 && on_command {
                 crate::names::param(s)
             } else {
-                crate::names::field(s)
+                field(s)
             }
         })
-        .collect::<Vec<_>>()
-        .join(".")
+        .collect();
+    format!("v.{}", parts.join("."))
 }
 
-fn value_of(model: &Model, item: &str, member: &str, v: &Value) -> Option<Assign> {
-    let ty = member_type(model, item, member)?;
+fn value_of(at: &At, member: &str, v: &Value) -> Option<Assign> {
+    let ty = at.ty(member)?;
     Some(if ty == "VkBool32" {
         Assign::Number {
             member: member.to_owned(),

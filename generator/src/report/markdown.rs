@@ -311,6 +311,14 @@ fn explicit_section(s: &mut String, r: &Report) {
          one.",
         totals[0], totals[1], totals[2]
     );
+    let _ = writeln!(
+        s,
+        "\nRules whose text, read as written, would refuse what the specification allows \
+         elsewhere are not read (`NOT_AS_WRITTEN` in the same file):\n"
+    );
+    for (vuid, why) in crate::validity::explicit::NOT_AS_WRITTEN {
+        let _ = writeln!(s, "- `{vuid}`: {why}");
+    }
 }
 
 /// The rules that apply to each method and who settles them.

@@ -30,13 +30,27 @@ pub struct Recognised {
     pub check: Check,
 }
 
-/// A rule as a check: when every `when` holds, `must` must hold.
+/// A rule as a check: when every `when` holds, `must` must hold (for each element
+/// of an array, when the rule is about its elements).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Check {
     /// The conditions under which the rule applies.
     pub when: Vec<Pred>,
     /// What must hold.
     pub must: Pred,
+    /// The array whose every element the rule is about; the element's members are
+    /// written `array[].member` in the predicates' paths.
+    pub each: Option<Each>,
+}
+
+/// An array of structs a rule reads element by element.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Each {
+    /// The array: a command's slice parameter or a struct's pointer member.
+    pub array: String,
+    /// The member holding its length, for a struct's array (a command's slice
+    /// carries its own).
+    pub count: Option<String>,
 }
 
 /// One value of an enum or bit of a flags type, by its registry name.
@@ -112,6 +126,16 @@ pub enum Rhs {
         /// The creation parameter, as the registry names it.
         field: String,
     },
+    /// The width, height or depth of one mip level of the image a handle names:
+    /// the recorded extent shifted right by the level, at least 1.
+    Extent {
+        /// The image handle's path.
+        handle: String,
+        /// `width`, `height` or `depth`.
+        dim: String,
+        /// The path of the mip level.
+        level: String,
+    },
 }
 
 /// A predicate over the struct's members and the device.
@@ -145,10 +169,13 @@ pub enum Pred {
         /// The values.
         values: Vec<Value>,
     },
-    /// A numeric member compared with a constant, another member or a limit.
+    /// A numeric member (or the sum of two) compared with a constant, another
+    /// member, a limit or what the device recorded of an object.
     Compare {
         /// The member.
         member: String,
+        /// A second member added to the first (`baseArrayLayer + layerCount`).
+        plus: Option<String>,
         /// How.
         op: Op,
         /// With what.
@@ -182,6 +209,15 @@ pub enum Pred {
         /// Enabled rather than not.
         enabled: bool,
     },
+    /// The image a handle names was created with one of these `VkImageType`s.
+    ImageType {
+        /// The handle's path.
+        handle: String,
+        /// The types.
+        values: Vec<Value>,
+    },
+    /// Every one of these holds (`x and (y + x) must both be ...`).
+    All(Vec<Pred>),
 }
 
 impl Pred {
@@ -192,11 +228,23 @@ impl Pred {
             | Pred::NoBit { member, .. }
             | Pred::OneOf { member, .. }
             | Pred::NoneOf { member, .. } => vec![member],
-            Pred::Compare { member, rhs, .. } => match rhs {
-                Rhs::Member(other) => vec![member, other],
-                _ => vec![member],
-            },
-            Pred::Feature { .. } | Pred::Usage { .. } | Pred::Bound { .. } => Vec::new(),
+            Pred::Compare {
+                member, plus, rhs, ..
+            } => {
+                let mut out = vec![member.as_str()];
+                out.extend(plus.as_deref());
+                match rhs {
+                    Rhs::Member(other) => out.push(other),
+                    Rhs::Extent { level, .. } => out.push(level),
+                    _ => {}
+                }
+                out
+            }
+            Pred::All(ps) => ps.iter().flat_map(Pred::members).collect(),
+            Pred::Feature { .. }
+            | Pred::Usage { .. }
+            | Pred::Bound { .. }
+            | Pred::ImageType { .. } => Vec::new(),
         }
     }
 
@@ -205,11 +253,60 @@ impl Pred {
         match self {
             Pred::Usage { handle, .. }
             | Pred::Bound { handle, .. }
+            | Pred::ImageType { handle, .. }
             | Pred::Compare {
-                rhs: Rhs::Created { handle, .. },
+                rhs: Rhs::Created { handle, .. } | Rhs::Extent { handle, .. },
                 ..
             } => vec![handle],
+            Pred::All(ps) => ps.iter().flat_map(Pred::handles).collect(),
             _ => Vec::new(),
+        }
+    }
+
+    /// Whether the predicate reads the device: its features, limits or records.
+    fn reads_device(&self) -> bool {
+        match self {
+            Pred::Feature { .. }
+            | Pred::Usage { .. }
+            | Pred::Bound { .. }
+            | Pred::ImageType { .. }
+            | Pred::Compare {
+                rhs: Rhs::Limit(_) | Rhs::Created { .. } | Rhs::Extent { .. },
+                ..
+            } => true,
+            Pred::All(ps) => ps.iter().any(Pred::reads_device),
+            _ => false,
+        }
+    }
+
+    /// Every path the predicate names, members and handles, for rewriting.
+    fn paths_mut(&mut self) -> Vec<&mut String> {
+        match self {
+            Pred::AnyBit { member, .. }
+            | Pred::NoBit { member, .. }
+            | Pred::OneOf { member, .. }
+            | Pred::NoneOf { member, .. } => vec![member],
+            Pred::Compare {
+                member, plus, rhs, ..
+            } => {
+                let mut out = vec![member];
+                out.extend(plus.as_mut());
+                match rhs {
+                    Rhs::Member(m) => out.push(m),
+                    Rhs::Created { handle, .. } => out.push(handle),
+                    Rhs::Extent { handle, level, .. } => {
+                        out.push(handle);
+                        out.push(level);
+                    }
+                    Rhs::Const(_) | Rhs::Limit(_) => {}
+                }
+                out
+            }
+            Pred::Usage { handle, .. }
+            | Pred::Bound { handle, .. }
+            | Pred::ImageType { handle, .. } => vec![handle],
+            Pred::All(ps) => ps.iter_mut().flat_map(Pred::paths_mut).collect(),
+            Pred::Feature { .. } => Vec::new(),
         }
     }
 }
@@ -220,18 +317,7 @@ impl Check {
         self.when
             .iter()
             .chain(std::iter::once(&self.must))
-            .any(|p| {
-                matches!(
-                    p,
-                    Pred::Feature { .. }
-                        | Pred::Usage { .. }
-                        | Pred::Bound { .. }
-                        | Pred::Compare {
-                            rhs: Rhs::Limit(_) | Rhs::Created { .. },
-                            ..
-                        }
-                )
-            })
+            .any(Pred::reads_device)
     }
 
     /// The handles whose objects' records the check reads, each once, in order.
@@ -266,6 +352,8 @@ pub struct Input<'a> {
     text: &'a str,
     item: &'a str,
     model: &'a Model,
+    /// The array the rule is about element by element, and its element type.
+    each: Option<(String, String)>,
 }
 
 type Recogniser = fn(&Input, &str) -> Option<Pred>;
@@ -286,6 +374,21 @@ pub const RECOGNISERS: &[(&str, Recogniser)] = &[
         "number less than a creation parameter of an object",
         created_req,
     ),
+    ("offsets inside an image subresource", inside_req),
+];
+
+/// Rules whose text, read as written, refuses values that the specification
+/// allows elsewhere; a check of them would refuse valid programs, so they are not
+/// read. Each with the reason.
+pub const NOT_AS_WRITTEN: &[(&str, &str)] = &[
+    (
+        "VUID-VkRenderPassCreateInfo2-srcSubpass-02526",
+        "`VK_SUBPASS_EXTERNAL` is a valid `srcSubpass` (the dependency section says so; later registries add the exception to this rule)",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo2-dstSubpass-02527",
+        "`VK_SUBPASS_EXTERNAL` is a valid `dstSubpass` (the dependency section says so; later registries add the exception to this rule)",
+    ),
 ];
 
 /// Recognise every explicit rule of `rules` whose item is an emitted struct or
@@ -296,16 +399,21 @@ pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
         if rule.category == super::Category::Implicit
             || !rule.emitted
             || rule.key_holds == Some(false)
+            || NOT_AS_WRITTEN.iter().any(|(v, _)| *v == rule.vuid)
             || (model.category(&rule.item) != Some(Kind::Struct)
                 && !model.commands.contains_key(&rule.item))
         {
             continue;
         }
         let text = plain(&rule.text);
+        let Some((each, body)) = elements(model, &rule.item, &text) else {
+            continue;
+        };
         let input = Input {
-            text: &text,
+            text: &body,
             item: &rule.item,
             model,
+            each,
         };
         if let Some((by, check)) = read_rule(&input) {
             out.push(Recognised {
@@ -334,8 +442,10 @@ pub fn plain(html: &str) -> String {
     let s = code.replace_all(html, "`$1`");
     let s = pname.replace_all(&s, "`$1`");
     let s = tag.replace_all(&s, "");
-    // `VkPhysicalDeviceLimits`::`maxX` is one name.
+    // `VkPhysicalDeviceLimits`::`maxX` is one name, and so is `srcOffsets`[0].x.
     let s = s.replace("`::`", "::");
+    static INDEX: OnceLock<Regex> = OnceLock::new();
+    let s = re(&INDEX, r"`(\w+)`\[(\d+)\]\.(\w+)").replace_all(&s, "`$1[$2].$3`");
     let s = s
         .replace("&#43;", "+")
         .replace("&lt;", "<")
@@ -362,21 +472,56 @@ fn names(list: &str) -> Vec<&str> {
         .collect()
 }
 
-/// Split `If C, C, and C, R` into conditions and requirement, and read both.
+/// Split `If C, C, and C, R` into conditions and requirement, and read both; then
+/// name the members of the array's element as `array[].member`.
 fn read_rule(input: &Input) -> Option<(&'static str, Check)> {
+    let (by, when, must) = read_parts(input)?;
+    let mut check = Check {
+        when,
+        must,
+        each: None,
+    };
+    if let Some((array, element)) = &input.each {
+        let mut in_element = false;
+        for p in check
+            .when
+            .iter_mut()
+            .chain(std::iter::once(&mut check.must))
+        {
+            for path in p.paths_mut() {
+                if field_in(input.model, element, path).is_some() {
+                    *path = format!("{array}[].{path}");
+                    in_element = true;
+                }
+            }
+        }
+        // A rule "for each element" that reads nothing of the element is read as
+        // written of the whole; one that does is checked per element.
+        in_element.then_some(())?;
+        let count = match input.model.commands.get(input.item) {
+            Some(_) => None,
+            None => {
+                let t = input.model.types.get(input.item)?;
+                let m = t.members.iter().find(|m| &m.name == array)?;
+                Some(m.len.as_deref()?.split(',').next()?.to_owned())
+            }
+        };
+        check.each = Some(Each {
+            array: array.clone(),
+            count,
+        });
+    }
+    Some((by, check))
+}
+
+fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
     // A requirement that is itself phrased with `If` (`If buffer is non-sparse then
     // it must be bound ...`) is one requirement, with no conditions.
     if let Some((by, must)) = RECOGNISERS
         .iter()
         .find_map(|(name, f)| f(input, input.text).map(|p| (*name, p)))
     {
-        return Some((
-            by,
-            Check {
-                when: Vec::new(),
-                must,
-            },
-        ));
+        return Some((by, Vec::new(), must));
     }
     let (conds, req) = match input.text.strip_prefix("If ") {
         None => (Vec::new(), input.text),
@@ -389,7 +534,59 @@ fn read_rule(input: &Input) -> Option<(&'static str, Check)> {
     let (by, must) = RECOGNISERS
         .iter()
         .find_map(|(name, f)| f(input, req).map(|p| (*name, p)))?;
-    Some((by, Check { when, must }))
+    Some((by, when, must))
+}
+
+/// A rule about each element of an array, rewritten as a rule about one element:
+/// `For each element of A, R`, `If C, then for each element of A, R`, `The x
+/// member of each element of A must ...`, `The x + y of each element of A must
+/// ...`. Returns the array and its element type (if any) and the rule's text;
+/// `None` when the array is not an array of structs of the item, or the rule
+/// excludes elements by a chained struct the emitted API has.
+fn elements(model: &Model, item: &str, text: &str) -> Option<(Option<(String, String)>, String)> {
+    static R: OnceLock<[Regex; 4]> = OnceLock::new();
+    let [each, each_not, then_each, member_of] = R.get_or_init(|| {
+        [
+            Regex::new(r"^For each element of `(\w+)`, (.*)$"),
+            Regex::new(
+                r"^For each element of `(\w+)` not containing `(\w+)` in its `pNext` chain, (.*)$",
+            ),
+            Regex::new(r"^If (.*), then for each element of `(\w+)`, (.*)$"),
+            Regex::new(
+                r"^The (`[\w.\[\]]+`(?: \+ `[\w.\[\]]+`)?)(?: member)? of each element of `(\w+)` (must .*)$",
+            ),
+        ]
+        .map(|r| r.expect("element pattern"))
+    });
+    let (array, body) = if let Some(c) = each_not.captures(text) {
+        // Elements that chain a struct tuff does not emit are none of them.
+        (!model.is_emitted(&c[2]) && model.types.contains_key(&c[2])).then_some(())?;
+        (c[1].to_owned(), capitalised(&c[3]))
+    } else if let Some(c) = each.captures(text) {
+        (c[1].to_owned(), capitalised(&c[2]))
+    } else if let Some(c) = then_each.captures(text) {
+        (c[2].to_owned(), format!("If {}, {}", &c[1], &c[3]))
+    } else if let Some(c) = member_of.captures(text) {
+        (c[2].to_owned(), format!("{} {}", &c[1], &c[3]))
+    } else {
+        return Some((None, text.to_owned()));
+    };
+    let fields = match model.commands.get(item) {
+        Some(cmd) => &cmd.params,
+        None => &model.types.get(item)?.members,
+    };
+    let f = fields.iter().find(|f| f.name == array)?;
+    (f.pointers == 1 && f.len.is_some() && model.category(&f.type_name) == Some(Kind::Struct))
+        .then_some(())?;
+    Some((Some((array, f.type_name.clone())), body))
+}
+
+/// `if x` as `If x`.
+fn capitalised(text: &str) -> String {
+    match text.strip_prefix("if ") {
+        Some(rest) => format!("If {rest}"),
+        None => text.to_owned(),
+    }
 }
 
 /// The conditions of `C, C, and C, R` and the requirement `R`: the requirement is
@@ -409,35 +606,94 @@ fn split_conditions(rest: &str) -> Option<(Vec<&str>, &str)> {
 }
 
 /// A member path: a member of the struct, or of a struct member by value
-/// (`extent.width`), without pointers or arrays.
+/// (`extent.width`), without pointers; an element of a fixed-size array is
+/// `offsets[1].x`. For a rule about each element of an array, a path is first
+/// looked up in the element.
 fn member<'a>(input: &Input<'a>, path: &str) -> Option<&'a crate::model::Field> {
-    let plain = |m: &&crate::model::Field, part: &str| {
-        m.name == part && m.pointers == 0 && m.static_array.is_none() && m.bitfield.is_none()
-    };
-    let mut parts = path.split('.');
-    let mut found = None;
-    let mut ty = input.item;
-    if let Some(cmd) = input.model.commands.get(input.item) {
-        // A command's parameter by value, then members of it.
-        let first = parts.next()?;
-        let p = cmd.params.iter().find(|p| plain(p, first))?;
-        ty = &p.type_name;
-        found = Some(p);
+    if let Some((_, element)) = &input.each {
+        if let Some(f) = field_in(input.model, element, path) {
+            return Some(f);
+        }
     }
-    for part in parts {
-        let t = input.model.types.get(ty)?;
-        let m = t.members.iter().find(|m| plain(m, part))?;
+    path_field(input.model, input.item, path)
+}
+
+/// One part of a path: a name, with `[N]` for an element of a fixed-size array or
+/// `[]` for the element a rule is about.
+fn part(s: &str) -> (&str, Option<&str>) {
+    match s.split_once('[') {
+        Some((name, rest)) => (name, Some(rest.trim_end_matches(']'))),
+        None => (s, None),
+    }
+}
+
+/// Whether a field fits a path part: plain, an indexed fixed-size array, or (`[]`)
+/// a counted array of structs.
+fn fits(m: &crate::model::Field, index: Option<&str>) -> bool {
+    if m.bitfield.is_some() {
+        return false;
+    }
+    match index {
+        None => m.pointers == 0 && m.static_array.is_none(),
+        Some("") => m.pointers == 1 && m.len.is_some(),
+        Some(i) => {
+            m.pointers == 0 && m.static_array.is_some() && i.chars().all(|c| c.is_ascii_digit())
+        }
+    }
+}
+
+/// The field a path names in a struct type.
+fn field_in<'a>(model: &'a Model, ty: &str, path: &str) -> Option<&'a crate::model::Field> {
+    let mut ty = ty;
+    let mut found = None;
+    for p in path.split('.') {
+        let (name, index) = part(p);
+        let t = model.types.get(ty)?;
+        let m = t
+            .members
+            .iter()
+            .find(|m| m.name == name && fits(m, index))?;
         ty = &m.type_name;
         found = Some(m);
     }
     found
 }
 
+/// The field (parameter or member) a path names from an item: a command's
+/// parameters, or a struct's members, then members of those.
+pub fn path_field<'a>(model: &'a Model, item: &str, path: &str) -> Option<&'a crate::model::Field> {
+    match model.commands.get(item) {
+        Some(cmd) => {
+            let (first, rest) = match path.split_once('.') {
+                Some((f, r)) => (f, Some(r)),
+                None => (path, None),
+            };
+            let (name, index) = part(first);
+            let p = cmd
+                .params
+                .iter()
+                .find(|p| p.name == name && fits(p, index))?;
+            match rest {
+                None => Some(p),
+                Some(rest) => field_in(model, &p.type_name, rest),
+            }
+        }
+        None => field_in(model, item, path),
+    }
+}
+
+/// The first part of a path, without an index: the parameter or member it starts
+/// from.
+pub fn root(path: &str) -> &str {
+    let first = path.split('.').next().unwrap_or_default();
+    part(first).0
+}
+
 /// A condition: `` the `f` feature is (not) enabled ``, `` `flags` includes `A` ``,
 /// `` `flags` does not include `A` ``, `` `value` is (not) (equal to) `A` ``.
 fn condition(input: &Input, text: &str) -> Option<Pred> {
-    static R: OnceLock<[Regex; 4]> = OnceLock::new();
-    let [feat, incl, excl, is] = R.get_or_init(|| {
+    static R: OnceLock<[Regex; 5]> = OnceLock::new();
+    let [feat, incl, excl, is, of_type] = R.get_or_init(|| {
         [
             Regex::new(r"^the `(\w+)` feature is (not )?enabled$"),
             Regex::new(&format!(r"^`([\w.]+)` (?:includes|contains) ({LIST})$")),
@@ -445,9 +701,17 @@ fn condition(input: &Input, text: &str) -> Option<Pred> {
                 r"^`([\w.]+)` does not (?:include|contain) ({LIST})$"
             )),
             Regex::new(&format!(r"^`([\w.]+)` is (not )?(?:equal to )?({LIST})$")),
+            Regex::new(&format!(r"^`([\w.]+)` is of type ({LIST})$")),
         ]
         .map(|r| r.expect("condition pattern"))
     });
+    if let Some(c) = whole(of_type, text) {
+        (object(input, &c[0])? == Object::Image).then_some(())?;
+        return Some(Pred::ImageType {
+            handle: c[0].clone(),
+            values: resolve(input, "VkImageType", &names(&c[1]))?,
+        });
+    }
     if let Some(c) = whole(feat, text) {
         return Some(Pred::Feature {
             name: feature(input, &c[0])?,
@@ -483,6 +747,7 @@ fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<P
         if let [n] = listed.as_slice() {
             return Some(Pred::Compare {
                 member: member_name,
+                plus: None,
                 op: if positive { Op::Eq } else { Op::Ne },
                 rhs: Rhs::Const((*n).to_owned()),
                 float: m.type_name == "float",
@@ -658,9 +923,10 @@ fn compare_req(input: &Input, text: &str) -> Option<Pred> {
     static R: OnceLock<Regex> = OnceLock::new();
     let r = re(
         &R,
-        r"^`([\w.]+)` must be (greater|less) than (or equal to )?`([\w:.]+)`$",
+        r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be (greater|less) than (or equal to )?`([\w:.]+)`$",
     );
-    let c = whole(r, text)?;
+    let mut c = whole(r, text)?;
+    let plus = summand(input, &c.remove(1))?;
     let m = member(input, &c[0])?;
     numeric(&m.type_name).then_some(())?;
     let op = match (c[1].as_str(), c[2].is_empty()) {
@@ -695,11 +961,22 @@ fn compare_req(input: &Input, text: &str) -> Option<Pred> {
     };
     Some(Pred::Compare {
         member: c[0].clone(),
+        plus,
         op,
         rhs,
         float,
         unsigned: unsigned(&m.type_name),
     })
+}
+
+/// The second member of a sum, if the text has one: `Some(None)` when it has
+/// none, `None` when it names no whole-number member.
+fn summand(input: &Input, path: &str) -> Option<Option<String>> {
+    if path.is_empty() {
+        return Some(None);
+    }
+    let m = member(input, path)?;
+    (numeric(&m.type_name) && m.type_name != "float").then(|| Some(path.to_owned()))
 }
 
 /// A number as the text writes it, written as a Rust literal of the compared type
@@ -763,35 +1040,49 @@ fn bound_req(input: &Input, text: &str) -> Option<Pred> {
 }
 
 /// `` `offset` must be less than the size of `buffer` ``, `` `mipLevel` must be less
-/// than the `mipLevels` specified in VkImageCreateInfo when `image` was created ``.
+/// than the `mipLevels` specified in VkImageCreateInfo when `image` was created ``,
+/// `` `baseArrayLayer` + `layerCount` must be less than or equal to the
+/// `arrayLayers` ... ``.
 fn created_req(input: &Input, text: &str) -> Option<Pred> {
     static R: OnceLock<[Regex; 2]> = OnceLock::new();
     let [size, image] = R.get_or_init(|| {
         [
-            Regex::new(r"^`([\w.]+)` must be less than the size of `([\w.]+)`$"),
+            Regex::new(r"^`([\w.\[\]]+)` must be less than the size of `([\w.]+)`$"),
             Regex::new(
-                r"^`([\w.]+)` must be less than the `(mipLevels|arrayLayers)` specified in VkImageCreateInfo when `([\w.]+)` was created$",
+                r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be less than (or equal to )?the `(mipLevels|arrayLayers)` specified in VkImageCreateInfo when `([\w.]+)` was created$",
             ),
         ]
         .map(|r| r.expect("recogniser pattern"))
     });
-    let (m, handle, object, field) = if let Some(c) = whole(size, text) {
+    let (m, plus, op, handle, object, field) = if let Some(c) = whole(size, text) {
         (
             c[0].clone(),
+            String::new(),
+            Op::Lt,
             c[1].clone(),
             Object::Buffer,
             "size".to_owned(),
         )
     } else {
         let c = whole(image, text)?;
-        (c[0].clone(), c[2].clone(), Object::Image, c[1].clone())
+        let op = if c[2].is_empty() { Op::Lt } else { Op::Le };
+        (
+            c[0].clone(),
+            c[1].clone(),
+            op,
+            c[4].clone(),
+            Object::Image,
+            c[3].clone(),
+        )
     };
     (self::object(input, &handle)? == object).then_some(())?;
+    let plus = summand(input, &plus)?;
     let t = &member(input, &m)?.type_name;
     numeric(t).then_some(())?;
     Some(Pred::Compare {
         member: m,
-        op: Op::Lt,
+        plus,
+        op,
         rhs: Rhs::Created {
             handle,
             object,
@@ -800,6 +1091,69 @@ fn created_req(input: &Input, text: &str) -> Option<Pred> {
         float: false,
         unsigned: unsigned(t),
     })
+}
+
+/// `` `x` and (`w` + `x`) must both be greater than or equal to `0` and less than
+/// or equal to the width of the specified `sub` of `image` `` (an offset and an
+/// extent of a copy), and `` `offsets[0].x` and `offsets[1].x` must both be ... ``
+/// (the corners of a blit): a region inside one mip level of an image.
+fn inside_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<[Regex; 2]> = OnceLock::new();
+    let [sum, pair] = R.get_or_init(|| {
+        const TAIL: &str = r" must both be greater than or equal to `0` and less than or equal to the (width|height|depth) of the specified `([\w.\[\]]+)` of `(\w+)`$";
+        [
+            Regex::new(&format!(
+                r"^`([\w.\[\]]+)` and \(`?([\w.\[\]]+)`? \+ `([\w.\[\]]+)`\){TAIL}"
+            )),
+            Regex::new(&format!(r"^`([\w.\[\]]+)` and `([\w.\[\]]+)`{TAIL}")),
+        ]
+        .map(|r| r.expect("recogniser pattern"))
+    });
+    // (first, second, whether the second is `first + second`, dim, sub, image)
+    let (a, b, summed, rest) = if let Some(c) = whole(sum, text) {
+        (c[0] == c[2]).then_some(())?;
+        (c[0].clone(), c[1].clone(), true, c[3..].to_vec())
+    } else {
+        let c = whole(pair, text)?;
+        (c[0].clone(), c[1].clone(), false, c[2..].to_vec())
+    };
+    let [dim, sub, image] = rest.as_slice() else {
+        return None;
+    };
+    (object(input, image)? == Object::Image).then_some(())?;
+    let level = format!("{sub}.mipLevel");
+    (member(input, &level)?.type_name == "uint32_t").then_some(())?;
+    let whole_number = |p: &str| {
+        let t = &member(input, p)?.type_name;
+        (numeric(t) && t != "float").then(|| unsigned(t))
+    };
+    let (ua, ub) = (whole_number(&a)?, whole_number(&b)?);
+    let extent = Rhs::Extent {
+        handle: image.clone(),
+        dim: dim.clone(),
+        level,
+    };
+    let cmp = |m: &str, plus: Option<&str>, op: Op, rhs: Rhs, unsigned: bool| Pred::Compare {
+        member: m.to_owned(),
+        plus: plus.map(str::to_owned),
+        op,
+        rhs,
+        float: false,
+        unsigned,
+    };
+    let zero = || Rhs::Const("0".to_owned());
+    // The second value is `b + a` for a copy, `b` for a blit.
+    let (second, plus, u2) = if summed {
+        (a.as_str(), Some(b.as_str()), false)
+    } else {
+        (b.as_str(), None, ub)
+    };
+    Some(Pred::All(vec![
+        cmp(&a, None, Op::Ge, zero(), ua),
+        cmp(second, plus, Op::Ge, zero(), u2),
+        cmp(&a, None, Op::Le, extent.clone(), ua),
+        cmp(second, plus, Op::Le, extent, u2),
+    ]))
 }
 
 /// Whether a C type is an unsigned integer.

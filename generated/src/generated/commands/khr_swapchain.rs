@@ -184,7 +184,13 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(SwapchainKHR::from_raw(out, self, Some(surface.retained()), true))
+        Ok(
+            crate::hooks::swapchain_created(
+                self,
+                SwapchainKHR::from_raw(out, self, Some(surface.retained()), true),
+                create_info,
+            ),
+        )
     }
     /**`vkGetSwapchainImagesKHR`
 
@@ -237,10 +243,19 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
             ))
         }?;
         Ok(
-            items
-                .into_iter()
-                .map(|raw| Image::from_raw(raw, self, Some(swapchain.retained()), false))
-                .collect(),
+            crate::hooks::swapchain_images(
+                self,
+                items
+                    .into_iter()
+                    .map(|raw| Image::from_raw(
+                        raw,
+                        self,
+                        Some(swapchain.retained()),
+                        false,
+                    ))
+                    .collect(),
+                swapchain,
+            ),
         )
     }
 }

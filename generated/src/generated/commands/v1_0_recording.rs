@@ -1320,6 +1320,16 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-srcImage-00220`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdBlitImage-dstImage-00224`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdBlitImage-dstImage-00225`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdBlitImage-srcSubresource-01705`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdBlitImage-dstSubresource-01706`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdBlitImage-srcSubresource-01707`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdBlitImage-dstSubresource-01708`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdBlitImage-srcOffset-00243`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdBlitImage-srcOffset-00244`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdBlitImage-srcOffset-00246`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdBlitImage-dstOffset-00248`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdBlitImage-dstOffset-00249`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdBlitImage-dstOffset-00251`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdBlitImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBlitImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBlitImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1336,7 +1346,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-srcImageLayout-00222`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdBlitImage-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 41 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 31 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image(
         &mut self,
@@ -1378,7 +1388,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 41 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_blit_image_unchecked(
         &mut self,
@@ -1631,6 +1641,10 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00178`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyBufferToImage-pRegions-06218`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyBufferToImage-pRegions-06219`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyBufferToImage-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1644,7 +1658,7 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 40 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 36 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image(
         &mut self,
@@ -1680,7 +1694,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 40 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image_unchecked(
         &mut self,
@@ -1710,6 +1724,14 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
 
 The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyImage-srcSubresource-01696`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImage-dstSubresource-01697`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImage-srcSubresource-01698`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImage-dstSubresource-01699`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImage-srcOffset-00144`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImage-srcOffset-00145`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImage-dstOffset-00150`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImage-dstOffset-00151`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1725,7 +1747,10 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdCopyImage-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 74 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 66.
+
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 62: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_copy_image(
         &mut self,
@@ -1764,7 +1789,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 74 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_unchecked(
         &mut self,
@@ -1800,6 +1825,10 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImageToBuffer-pRegions-06221`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImageToBuffer-pRegions-06222`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImageToBuffer-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1813,7 +1842,7 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer(
         &mut self,
@@ -1849,7 +1878,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 38 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer_unchecked(
         &mut self,
@@ -2247,6 +2276,16 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 
 - `VUID-vkCmdResolveImage-srcImage-00256`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdResolveImage-dstImage-00258`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdResolveImage-srcSubresource-01709`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdResolveImage-dstSubresource-01710`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdResolveImage-srcSubresource-01711`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdResolveImage-dstSubresource-01712`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdResolveImage-srcOffset-00269`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdResolveImage-srcOffset-00270`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdResolveImage-srcOffset-00272`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdResolveImage-dstOffset-00274`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdResolveImage-dstOffset-00275`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdResolveImage-dstOffset-00277`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdResolveImage-srcImage-06762`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdResolveImage-dstImage-06764`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdResolveImage-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -2264,7 +2303,7 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 - `VUID-vkCmdResolveImage-srcImageLayout-00261`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdResolveImage-dstImageLayout-00263`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 22 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_resolve_image(
         &mut self,
@@ -2303,7 +2342,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_resolve_image_unchecked(
         &mut self,
@@ -2461,7 +2500,10 @@ The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khr
 - `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 9: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_clear_attachments(
         &mut self,
@@ -2482,7 +2524,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, `VUID-vkCmdClearAttachments-layerCount-01934`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_clear_attachments_unchecked(
         &mut self,

@@ -3097,7 +3097,10 @@ The rules are on [`VkSparseImageMemoryBindInfo`'s reference page](https://regist
 - `VUID-VkSparseImageMemoryBindInfo-pBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBindInfo<'a> {

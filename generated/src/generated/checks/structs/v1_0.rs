@@ -2428,6 +2428,52 @@ pub fn check_sparse_image_memory_bind_info(
             ),
         );
     }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_binds, v.bind_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.image)
+            .is_some_and(|r| (e.subresource.mip_level as i128) >= (r.mip_levels as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-VkSparseImageMemoryBindInfo-subresource-01722",
+                    format!(
+                        "The `subresource.mipLevel` member of each element of `pBinds` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pBinds[{}].subresource.mipLevel` = {:?})",
+                        i, e.subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_binds, v.bind_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.image)
+            .is_some_and(|r| {
+                (e.subresource.array_layer as i128) >= (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkSparseImageMemoryBindInfo-subresource-01723",
+                    format!(
+                        "The `subresource.arrayLayer` member of each element of `pBinds` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pBinds[{}].subresource.arrayLayer` = {:?})",
+                        i, e.subresource.array_layer
+                    ),
+                ),
+            );
+        }
+    }
     // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_binds, v.bind_count) } {
         crate::checks::check_sparse_image_memory_bind(e, s)?;

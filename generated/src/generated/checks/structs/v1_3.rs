@@ -77,6 +77,364 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-srcSubresource-01705",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-dstSubresource-01706",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.src_subresource.base_array_layer as i128
+                    + e.src_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-srcSubresource-01707",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.dst_subresource.base_array_layer as i128
+                    + e.dst_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-dstSubresource-01708",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offsets[0].x < 0 || e.src_offsets[1].x < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offsets[0].x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offsets[1].x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-srcOffset-00243",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
+                        .src_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offsets[0].y < 0 || e.src_offsets[1].y < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offsets[0].y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offsets[1].y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-srcOffset-00244",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
+                        .src_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offsets[0].z < 0 || e.src_offsets[1].z < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offsets[0].z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offsets[1].z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-srcOffset-00246",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
+                        .src_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offsets[0].x < 0 || e.dst_offsets[1].x < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offsets[0].x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offsets[1].x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-dstOffset-00248",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
+                        .dst_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offsets[0].y < 0 || e.dst_offsets[1].y < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offsets[0].y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offsets[1].y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-dstOffset-00249",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
+                        .dst_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offsets[0].z < 0 || e.dst_offsets[1].z < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offsets[0].z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offsets[1].z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-dstOffset-00251",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
+                        .dst_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
     if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
             fail(
@@ -740,6 +1098,50 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .buffer(v.src_buffer)
+            .is_some_and(|r| (e.src_offset as i128) >= (r.size as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferInfo2-srcOffset-00113",
+                    format!(
+                        "The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer` (`pRegions[{}].srcOffset` = {:?})",
+                        i, e.src_offset
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .buffer(v.dst_buffer)
+            .is_some_and(|r| (e.dst_offset as i128) >= (r.size as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferInfo2-dstOffset-00114",
+                    format!(
+                        "The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer` (`pRegions[{}].dstOffset` = {:?})",
+                        i, e.dst_offset
+                    ),
+                ),
+            );
+        }
+    }
     if s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
         return Err(
             fail(
@@ -853,6 +1255,188 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferToImageInfo2-imageSubresource-01701",
+                    format!(
+                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.image_subresource.base_array_layer as i128
+                    + e.image_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferToImageInfo2-imageSubresource-01702",
+                    format!(
+                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                        i, e.image_subresource.base_array_layer, i, e.image_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.image_offset.x < 0
+            || (e.image_offset.x as i128 + e.image_extent.width as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_offset.x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_offset.x as i128 + e.image_extent.width as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferToImageInfo2-pRegions-06223",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.x, i, e.image_extent.width, i, e
+                        .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.image_offset.y < 0
+            || (e.image_offset.y as i128 + e.image_extent.height as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_offset.y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_offset.y as i128 + e.image_extent.height as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferToImageInfo2-pRegions-06224",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.y, i, e.image_extent.height, i, e
+                        .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.image_offset.z < 0
+            || (e.image_offset.z as i128 + e.image_extent.depth as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_offset.z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_offset.z as i128 + e.image_extent.depth as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferToImageInfo2-imageOffset-00200",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.z, i, e.image_extent.depth, i, e
+                        .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
     if !matches!(v.dst_image_layout.as_raw(), 1 | 7) {
         return Err(
             fail(
@@ -907,6 +1491,410 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     .into(),
             ),
         );
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcSubresource-01696",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstSubresource-01697",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.src_subresource.base_array_layer as i128
+                    + e.src_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcSubresource-01698",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.dst_subresource.base_array_layer as i128
+                    + e.dst_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstSubresource-01699",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offset.x < 0 || (e.src_offset.x as i128 + e.extent.width as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.x as i128 + e.extent.width as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcOffset-00144",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offset.y < 0 || (e.src_offset.y as i128 + e.extent.height as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.y as i128 + e.extent.height as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcOffset-00145",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+            && (e.src_offset.z < 0
+                || (e.src_offset.z as i128 + e.extent.depth as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.z as i128 + e.extent.depth as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    }))
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcOffset-00147",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+            && e.src_offset.z != 0
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcImage-01787",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
+                        i, e.src_offset.z
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+            && e.dst_offset.z != 0
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstImage-01788",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
+                        i, e.dst_offset.z
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offset.x < 0 || (e.dst_offset.x as i128 + e.extent.width as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.x as i128 + e.extent.width as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstOffset-00150",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offset.y < 0 || (e.dst_offset.y as i128 + e.extent.height as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.y as i128 + e.extent.height as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstOffset-00151",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+            && (e.dst_offset.z < 0
+                || (e.dst_offset.z as i128 + e.extent.depth as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.z as i128 + e.extent.depth as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    }))
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstOffset-00153",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
     }
     if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
@@ -1008,6 +1996,188 @@ pub fn check_copy_image_to_buffer_info2(
                     .into(),
             ),
         );
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageToBufferInfo2-imageSubresource-01703",
+                    format!(
+                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.image_subresource.base_array_layer as i128
+                    + e.image_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704",
+                    format!(
+                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                        i, e.image_subresource.base_array_layer, i, e.image_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.image_offset.x < 0
+            || (e.image_offset.x as i128 + e.image_extent.width as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_offset.x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_offset.x as i128 + e.image_extent.width as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00197",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.x, i, e.image_extent.width, i, e
+                        .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.image_offset.y < 0
+            || (e.image_offset.y as i128 + e.image_extent.height as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_offset.y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_offset.y as i128 + e.image_extent.height as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00198",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.y, i, e.image_extent.height, i, e
+                        .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.image_offset.z < 0
+            || (e.image_offset.z as i128 + e.image_extent.depth as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_offset.z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_offset.z as i128 + e.image_extent.depth as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.image_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00200",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.z, i, e.image_extent.depth, i, e
+                        .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
     }
     if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
@@ -2396,6 +3566,364 @@ pub fn check_resolve_image_info2(
                     .into(),
             ),
         );
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-srcSubresource-01709",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-dstSubresource-01710",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .is_some_and(|r| {
+                (e.src_subresource.base_array_layer as i128
+                    + e.src_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-srcSubresource-01711",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .is_some_and(|r| {
+                (e.dst_subresource.base_array_layer as i128
+                    + e.dst_subresource.layer_count as i128) > (r.array_layers as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-dstSubresource-01712",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offset.x < 0 || (e.src_offset.x as i128 + e.extent.width as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.x as i128 + e.extent.width as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-srcOffset-00269",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offset.y < 0 || (e.src_offset.y as i128 + e.extent.height as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.y as i128 + e.extent.height as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-srcOffset-00270",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.src_offset.z < 0 || (e.src_offset.z as i128 + e.extent.depth as i128) < 0
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_offset.z as i128 + e.extent.depth as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.src_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-srcOffset-00272",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offset.x < 0 || (e.dst_offset.x as i128 + e.extent.width as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.x as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.x as i128 + e.extent.width as i128)
+                        > (r
+                            .extent
+                            .width
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-dstOffset-00274",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offset.y < 0 || (e.dst_offset.y as i128 + e.extent.height as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.y as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.y as i128 + e.extent.height as i128)
+                        > (r
+                            .extent
+                            .height
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-dstOffset-00275",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.dst_offset.z < 0 || (e.dst_offset.z as i128 + e.extent.depth as i128) < 0
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.z as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+            || s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_offset.z as i128 + e.extent.depth as i128)
+                        > (r
+                            .extent
+                            .depth
+                            .checked_shr(e.dst_subresource.mip_level)
+                            .unwrap_or(0)
+                            .max(1) as i128)
+                })
+        {
+            return Err(
+                fail(
+                    "VUID-VkResolveImageInfo2-dstOffset-00277",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                        .mip_level
+                    ),
+                ),
+            );
+        }
     }
     if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
         return Err(
