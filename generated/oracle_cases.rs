@@ -375,6 +375,12 @@ oracle_cases! {
         "VUID-VkBufferMemoryBarrier2-offset-01187" => |v, l, o| {
             v.offset = o.buffer.size as _;
         },
+        "VUID-VkBufferMemoryBarrier2-size-01188" => |v, l, o| {
+            v.size = 0;
+        },
+        "VUID-VkBufferMemoryBarrier2-size-01189" => |v, l, o| {
+            v.size = (o.buffer.size as i64 - v.offset as i64 + 1) as _;
+        },
         "VUID-VkBufferMemoryBarrier2-buffer-01931" => |v, l, o| {
             o.buffer.bind = false;
         },
@@ -390,6 +396,12 @@ oracle_cases! {
     buffer_memory_barrier: vk::BufferMemoryBarrier<'_> {
         "VUID-VkBufferMemoryBarrier-offset-01187" => |v, l, o| {
             v.offset = o.buffer.size as _;
+        },
+        "VUID-VkBufferMemoryBarrier-size-01188" => |v, l, o| {
+            v.size = 0;
+        },
+        "VUID-VkBufferMemoryBarrier-size-01189" => |v, l, o| {
+            v.size = (o.buffer.size as i64 - v.offset as i64 + 1) as _;
         },
         "VUID-VkBufferMemoryBarrier-buffer-01931" => |v, l, o| {
             o.buffer.bind = false;
@@ -544,6 +556,9 @@ oracle_cases! {
             v.dst_access_mask |= vk::AccessFlags2::from_raw(0x4000);
             v.dst_stage_mask = vk::PipelineStageFlags2::from_raw(0x1);
         },
+        "VUID-VkImageMemoryBarrier2-subresourceRange-01724" => |v, l, o| {
+            v.subresource_range.level_count = (o.image.mip_levels as i64 - v.subresource_range.base_mip_level as i64 + 1) as _;
+        },
         "VUID-VkImageMemoryBarrier2-image-01932" => |v, l, o| {
             o.image.bind = false;
         },
@@ -557,6 +572,9 @@ oracle_cases! {
         },
     },
     image_memory_barrier: vk::ImageMemoryBarrier<'_> {
+        "VUID-VkImageMemoryBarrier-subresourceRange-01724" => |v, l, o| {
+            v.subresource_range.level_count = (o.image.mip_levels as i64 - v.subresource_range.base_mip_level as i64 + 1) as _;
+        },
         "VUID-VkImageMemoryBarrier-image-01932" => |v, l, o| {
             o.image.bind = false;
         },
@@ -567,6 +585,12 @@ oracle_cases! {
         },
     },
     subpass_description: vk::SubpassDescription<'_> {
+        "VUID-VkSubpassDescription-attachment-06913" => |v, l, o| {
+            o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(3);
+        },
+        "VUID-VkSubpassDescription-attachment-06916" => |v, l, o| {
+            o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(1000117001);
+        },
         "VUID-VkSubpassDescription-pipelineBindPoint-00844" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
@@ -584,6 +608,10 @@ oracle_cases! {
         "VUID-VkSubpassDependency-dstStageMask-04091" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
         },
+        "VUID-VkSubpassDependency-dependencyFlags-02520" => |v, l, o| {
+            v.dependency_flags |= vk::DependencyFlags::from_raw(0x2);
+            v.src_subpass = u32::MAX;
+        },
     },
     attachment_description2: vk::AttachmentDescription2<'_> {
         "VUID-VkAttachmentDescription2-finalLayout-00843" => |v, l, o| {
@@ -591,6 +619,12 @@ oracle_cases! {
         },
     },
     subpass_description2: vk::SubpassDescription2<'_> {
+        "VUID-VkSubpassDescription2-attachment-06913" => |v, l, o| {
+            o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(3);
+        },
+        "VUID-VkSubpassDescription2-attachment-06916" => |v, l, o| {
+            o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(1000117001);
+        },
         "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
@@ -636,6 +670,9 @@ oracle_cases! {
         "VUID-VkBufferViewCreateInfo-offset-00925" => |v, l, o| {
             v.offset = o.buffer.size as _;
         },
+        "VUID-VkBufferViewCreateInfo-range-00928" => |v, l, o| {
+            v.range = 0;
+        },
         "VUID-VkBufferViewCreateInfo-buffer-00935" => |v, l, o| {
             o.buffer.bind = false;
         },
@@ -676,8 +713,15 @@ oracle_cases! {
         },
     },
     image_view_create_info: vk::ImageViewCreateInfo<'_> {
+        "VUID-VkImageViewCreateInfo-subresourceRange-01718" => |v, l, o| {
+            v.subresource_range.level_count = (o.image.mip_levels as i64 - v.subresource_range.base_mip_level as i64 + 1) as _;
+        },
         "VUID-VkImageViewCreateInfo-image-01020" => |v, l, o| {
             o.image.bind = false;
+        },
+        "VUID-VkImageViewCreateInfo-viewType-02960" => |v, l, o| {
+            v.view_type = vk::ImageViewType::from_raw(3);
+            v.subresource_range.layer_count = 7;
         },
     },
     sampler_create_info: vk::SamplerCreateInfo<'_> {
@@ -752,6 +796,12 @@ oracle_cases! {
         },
         "VUID-VkCopyBufferInfo2-dstOffset-00114" => |v, l, o| {
             o.buffer_copy2.dst_offset = o.dst_buffer.size as _;
+        },
+        "VUID-VkCopyBufferInfo2-size-00115" => |v, l, o| {
+            o.buffer_copy2.src_offset = (o.src_buffer.size as i64 - o.buffer_copy2.size as i64 + 1) as _;
+        },
+        "VUID-VkCopyBufferInfo2-size-00116" => |v, l, o| {
+            o.buffer_copy2.dst_offset = (o.dst_buffer.size as i64 - o.buffer_copy2.size as i64 + 1) as _;
         },
         "VUID-VkCopyBufferInfo2-srcBuffer-00118" => |v, l, o| {
             o.src_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x1);

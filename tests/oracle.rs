@@ -68,6 +68,9 @@ struct Objects {
     image_blit2: vk::ImageBlit2<'static>,
     image_resolve: vk::ImageResolve,
     image_resolve2: vk::ImageResolve2<'static>,
+    image_subresource_range: vk::ImageSubresourceRange,
+    attachment_reference_color_attachments: vk::AttachmentReference,
+    attachment_reference2_color_attachments: vk::AttachmentReference2<'static>,
 }
 
 impl Default for Objects {
@@ -138,6 +141,14 @@ impl Default for Objects {
                 .src_subresource(LAYER)
                 .dst_subresource(LAYER)
                 .extent(EXTENT),
+            image_subresource_range: WHOLE,
+            attachment_reference_color_attachments: vk::AttachmentReference {
+                attachment: 0,
+                layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+            },
+            attachment_reference2_color_attachments: vk::AttachmentReference2::default()
+                .attachment(0)
+                .layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL),
         }
     }
 }
@@ -536,11 +547,8 @@ struct RenderPass1<'a> {
 
 const COLOR_OUT: vk::PipelineStageFlags = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
 
-fn render_pass(s: &Setup, edit: impl FnOnce(&mut RenderPass1<'_>)) -> Outcome {
-    let color = [vk::AttachmentReference {
-        attachment: 0,
-        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-    }];
+fn render_pass(s: &Setup, o: &Objects, edit: impl FnOnce(&mut RenderPass1<'_>)) -> Outcome {
+    let color = [o.attachment_reference_color_attachments];
     let mut parts = RenderPass1 {
         attachment: vk::AttachmentDescription {
             format: vk::Format::R8G8B8A8_UNORM,
@@ -579,6 +587,8 @@ fn render_pass(s: &Setup, edit: impl FnOnce(&mut RenderPass1<'_>)) -> Outcome {
 
 /// A fixture for one part of a render pass: `$build` makes the render pass from
 /// the parts after `$part` (a plain struct, or a safe one with `raw`) is changed.
+/// The change runs once on a spare part for the elements it sets in the objects
+/// (the subpass's color reference), then on the part.
 macro_rules! render_pass_fixture {
     ($name:ident, $ty:ty, $build:ident, |$p:ident| $part:expr) => {
         fn $name(
@@ -586,7 +596,9 @@ macro_rules! render_pass_fixture {
             limits: &Limits,
             change: &dyn Fn(&mut $ty, &Limits, &mut Objects),
         ) -> Outcome {
-            $build(s, |$p| change($part, limits, &mut Objects::default()))
+            let mut o = Objects::default();
+            change(&mut Default::default(), limits, &mut o);
+            $build(s, &o, |$p| change($part, limits, &mut o.clone()))
         }
     };
     ($name:ident, $ty:ty, $build:ident, raw |$p:ident| $part:expr) => {
@@ -595,13 +607,11 @@ macro_rules! render_pass_fixture {
             limits: &Limits,
             change: &dyn Fn(&mut $ty, &Limits, &mut Objects),
         ) -> Outcome {
+            let mut o = Objects::default();
+            change(&mut Default::default(), limits, &mut o);
             // SAFETY: as in `buffer_create_info`.
-            $build(s, |$p| {
-                change(
-                    unsafe { $part.raw_values_mut() },
-                    limits,
-                    &mut Objects::default(),
-                )
+            $build(s, &o, |$p| {
+                change(unsafe { $part.raw_values_mut() }, limits, &mut o.clone())
             })
         }
     };
@@ -651,10 +661,12 @@ struct RenderPass2<'a> {
     dependency: tuff::SubpassDependency2<'a>,
 }
 
-fn render_pass2(s: &Setup, edit: impl FnOnce(&mut RenderPass2<'_>)) -> Outcome {
+fn render_pass2(s: &Setup, o: &Objects, edit: impl FnOnce(&mut RenderPass2<'_>)) -> Outcome {
+    let r = o.attachment_reference2_color_attachments;
     let color = [tuff::AttachmentReference2::new()
-        .attachment(0)
-        .layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)];
+        .attachment(r.attachment)
+        .layout(r.layout)
+        .aspect_mask(r.aspect_mask)];
     let mut parts = RenderPass2 {
         attachment: tuff::AttachmentDescription2::new()
             .format(vk::Format::R8G8B8A8_UNORM)
@@ -1089,9 +1101,16 @@ fn cmd_clear_color_image(
     let color = vk::ClearColorValue::default();
     record(
         s,
-        |r| r.cmd_clear_color_image(&image, a.image_layout, &color, &[WHOLE]),
+        |r| r.cmd_clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range]),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_clear_color_image_unchecked(&image, a.image_layout, &color, &[WHOLE]) },
+        |r| unsafe {
+            r.cmd_clear_color_image_unchecked(
+                &image,
+                a.image_layout,
+                &color,
+                &[o.image_subresource_range],
+            )
+        },
     )
 }
 

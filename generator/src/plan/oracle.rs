@@ -104,10 +104,36 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkCopyImageToBufferInfo2-imageOffset-00197", LAYER_RENAMES),
     ("VUID-VkCopyImageToBufferInfo2-imageOffset-00198", LAYER_RENAMES),
     ("VUID-VkCopyImageToBufferInfo2-imageOffset-00200", LAYER_RENAMES),
+    ("VUID-VkSubpassDescription-attachment-06912", NO_INPUT),
+    ("VUID-VkSubpassDescription-attachment-06918", NO_INPUT),
+    ("VUID-VkSubpassDescription-attachment-06914", NO_RESOLVE),
+    ("VUID-VkSubpassDescription-attachment-06917", NO_RESOLVE),
+    ("VUID-VkSubpassDescription-attachment-06920", NO_RESOLVE),
+    ("VUID-VkSubpassDescription2-attachment-06912", NO_INPUT),
+    ("VUID-VkSubpassDescription2-attachment-06918", NO_INPUT),
+    ("VUID-VkSubpassDescription2-attachment-06914", NO_RESOLVE),
+    ("VUID-VkSubpassDescription2-attachment-06917", NO_RESOLVE),
+    ("VUID-VkSubpassDescription2-attachment-06920", NO_RESOLVE),
+    ("VUID-VkImageMemoryBarrier2-subresourceRange-01725", LAYER_THROWS),
+    ("VUID-VkImageMemoryBarrier-subresourceRange-01725", LAYER_THROWS),
+    ("VUID-VkSubpassDescription-attachment-06919", SEPARATE_LAYOUTS),
+    ("VUID-VkSubpassDescription2-attachment-06919", SEPARATE_LAYOUTS),
+    ("VUID-VkSubpassDependency-dependencyFlags-02521", FROM_EXTERNAL),
+    ("VUID-VkSubpassDependency2-dependencyFlags-03091", FROM_EXTERNAL),
+    ("VUID-VkSubpassDependency2-dependencyFlags-03090", "a view-local dependency in a render pass without multiview also breaks `VkRenderPassCreateInfo2-viewMask-03059`, which the layer reports instead"),
+    ("VUID-VkBufferViewCreateInfo-offset-00931", "a range past the buffer's end by less than a texel also breaks `range-00929` (a whole number of texels), and an offset past it breaks the offset's alignment"),
+    ("VUID-vkCmdClearColorImage-pRanges-01692", RANGE_BASE),
+    ("VUID-vkCmdClearColorImage-pRanges-01693", RANGE_BASE),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
 const LAYER_RENAMES: &str = "the 1.3.239 layer reports this region of `vkCmdCopyImageToBuffer2` under `vkCmdCopyImageToBuffer` VUIDs of other rules (`pRegions-06221`, `06222`, `imageOffset-00200`), so its verdict cannot be told apart";
+const LAYER_THROWS: &str = "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layers run past the image's";
+const SEPARATE_LAYOUTS: &str = "the first layout the rule forbids is a depth-only layout, which without `separateDepthStencilLayouts` breaks `VkAttachmentReference2-separateDepthStencilLayouts-03313`, and the layer reports that instead";
+const FROM_EXTERNAL: &str = "the fixture's dependency comes from `VK_SUBPASS_EXTERNAL`, so the view-local flag breaks the rule on `srcSubpass` first";
+const RANGE_BASE: &str = "a range is an element, so its case moves the base past the end, which breaks the rule that the base lies inside (`baseMipLevel-01470`, `baseArrayLayer-01472`) too";
+const NO_INPUT: &str = "the fixture's subpass has no input attachment, and one needs a descriptor-free input the test pipelines lack";
+const NO_RESOLVE: &str = "the fixture's subpass has no resolve attachment, which needs a multisampled color attachment to resolve";
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
 const PAST_ATTACHMENT: &str = "a framebuffer larger than the limit is larger than its attachment too, which breaks `flags-04533` (or `04534`, `04535`) as well";
 const MULTI_DRAW: &str = "a draw count past the limit is more than one draw, which breaks `drawCount-02718` as well on a device without `multiDrawIndirect`";
@@ -260,11 +286,27 @@ impl At<'_> {
 }
 
 fn case(model: &Model, r: &Recognised) -> Option<Case> {
+    let fields = match model.commands.get(&r.item) {
+        Some(cmd) => &cmd.params,
+        None => &model.types.get(&r.item)?.members,
+    };
+    // The element is named by its type (`image_copy`), and by its array too where
+    // the item has more than one array of that type
+    // (`attachment_reference_color_attachments`).
     let element = match &r.check.each {
         Some(each) => {
             let array = format!("{}[]", each.array);
             let f = crate::validity::explicit::path_field(model, &r.item, &array)?;
-            Some(super::checks::snake(&f.type_name))
+            let ty = super::checks::snake(&f.type_name);
+            let alike = fields
+                .iter()
+                .filter(|g| g.pointers == 1 && g.len.is_some() && g.type_name == f.type_name)
+                .count();
+            Some(if alike > 1 {
+                format!("{ty}_{}", crate::names::param(&each.array))
+            } else {
+                ty
+            })
         }
         None => None,
     };
@@ -281,10 +323,6 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
     make_false(&at, &r.check.must, &mut assigns)?;
     // A count that goes with a pointer member is not the fixture's to change: the
     // safe struct's setters keep the two together.
-    let fields = match model.commands.get(&r.item) {
-        Some(cmd) => &cmd.params,
-        None => &model.types.get(&r.item)?.members,
-    };
     let counts: Vec<&str> = fields
         .iter()
         .filter_map(|m| m.len.as_deref()?.split(',').next())
@@ -311,6 +349,14 @@ fn mask(bits: &[Value]) -> u64 {
 fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
         Pred::Feature { enabled: false, .. } => {}
+        // The fixtures use no API constant (`VK_ATTACHMENT_UNUSED`, `VK_WHOLE_SIZE`,
+        // `VK_REMAINING_MIP_LEVELS`); a fixture that did would fail its case, not
+        // pass it.
+        Pred::Compare {
+            op: Op::Ne,
+            rhs: Rhs::Const(c),
+            ..
+        } if c.ends_with("::MAX") => {}
         Pred::AnyBit { member, bits } => out.push(Assign::SetBits {
             ty: at.ty(member)?,
             member: member.clone(),
@@ -420,12 +466,21 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
                 ),
                 _ => return None,
             };
-            let minus = match plus {
+            // Of `offset + count <= n`, the count goes past: the offset alone past `n`
+            // would break the rule that it lies inside too. In a region (an element)
+            // the offset goes past instead: its counts are tied to the other image's
+            // and to the buffer's size, and its extent is shared by both images.
+            let element = member.contains("[]");
+            let (set, other) = match (plus, rhs) {
+                (Some(p), Rhs::Created { .. }) if !element => (p, Some(member)),
+                (p, _) => (member, p.as_ref()),
+            };
+            let minus = match other {
                 Some(p) => format!(" - {} as i64", at.path(p)),
                 None => String::new(),
             };
             out.push(Assign::Number {
-                member: member.clone(),
+                member: set.clone(),
                 expr: format!("({bound}{minus} + 1) as _"),
             });
         }

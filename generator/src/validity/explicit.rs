@@ -452,6 +452,8 @@ pub fn plain(html: &str) -> String {
         .replace("&gt;", ">")
         .replace("&amp;", "&");
     let s = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    static SUM: OnceLock<Regex> = OnceLock::new();
+    let s = re(&SUM, r"the sum of (`[\w.]+`) and (`[\w.]+`) must").replace_all(&s, "$1 + $2 must");
     s.trim_end_matches('.').to_owned()
 }
 
@@ -531,9 +533,17 @@ fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
         .iter()
         .map(|c| condition(input, c))
         .collect::<Option<Vec<_>>>()?;
+    // `If x is not C, it must ...`: `it` is the subject of the last condition.
+    let req = match (req.strip_prefix("it must "), conds.last()) {
+        (Some(rest), Some(last)) if last.starts_with('`') => {
+            let subject = last.split('`').nth(1)?;
+            format!("`{subject}` must {rest}")
+        }
+        _ => req.to_owned(),
+    };
     let (by, must) = RECOGNISERS
         .iter()
-        .find_map(|(name, f)| f(input, req).map(|p| (*name, p)))?;
+        .find_map(|(name, f)| f(input, &req).map(|p| (*name, p)))?;
     Some((by, when, must))
 }
 
@@ -544,16 +554,19 @@ fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
 /// `None` when the array is not an array of structs of the item, or the rule
 /// excludes elements by a chained struct the emitted API has.
 fn elements(model: &Model, item: &str, text: &str) -> Option<(Option<(String, String)>, String)> {
-    static R: OnceLock<[Regex; 4]> = OnceLock::new();
-    let [each, each_not, then_each, member_of] = R.get_or_init(|| {
+    static R: OnceLock<[Regex; 5]> = OnceLock::new();
+    let [each, each_not, then_each, member_of, its] = R.get_or_init(|| {
         [
-            Regex::new(r"^For each element of `(\w+)`, (.*)$"),
+            Regex::new(r"^For each (?:\w+ )?element of `(\w+)`, (.*)$"),
             Regex::new(
                 r"^For each element of `(\w+)` not containing `(\w+)` in its `pNext` chain, (.*)$",
             ),
             Regex::new(r"^If (.*), then for each element of `(\w+)`, (.*)$"),
             Regex::new(
                 r"^The (`[\w.\[\]]+`(?: \+ `[\w.\[\]]+`)?)(?: member)? of each element of `(\w+)` (must .*)$",
+            ),
+            Regex::new(
+                r"^If the `(\w+)` member of an element of `(\w+)` (is [^,]*), its `(\w+)` member (must .*)$",
             ),
         ]
         .map(|r| r.expect("element pattern"))
@@ -568,6 +581,11 @@ fn elements(model: &Model, item: &str, text: &str) -> Option<(Option<(String, St
         (c[2].to_owned(), format!("If {}, {}", &c[1], &c[3]))
     } else if let Some(c) = member_of.captures(text) {
         (c[2].to_owned(), format!("{} {}", &c[1], &c[3]))
+    } else if let Some(c) = its.captures(text) {
+        (
+            c[2].to_owned(),
+            format!("If `{}` {}, `{}` {}", &c[1], &c[3], &c[4], &c[5]),
+        )
     } else {
         return Some((None, text.to_owned()));
     };
@@ -692,6 +710,11 @@ pub fn root(path: &str) -> &str {
 /// A condition: `` the `f` feature is (not) enabled ``, `` `flags` includes `A` ``,
 /// `` `flags` does not include `A` ``, `` `value` is (not) (equal to) `A` ``.
 fn condition(input: &Input, text: &str) -> Option<Pred> {
+    // `the x member is ...` is `x is ...`; `does not have the value C` is `is not C`.
+    static MEMBER: OnceLock<Regex> = OnceLock::new();
+    let text = re(&MEMBER, r"^the (`[\w.]+`) member ").replace(text, "$1 ");
+    let text = text.replace(" does not have the value ", " is not ");
+    let text = text.as_str();
     static R: OnceLock<[Regex; 5]> = OnceLock::new();
     let [feat, incl, excl, is, of_type] = R.get_or_init(|| {
         [
@@ -743,6 +766,21 @@ fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<P
     let m = member(input, path)?;
     let member_name = path.to_owned();
     let is_number = |n: &&str| n.chars().all(|c| c.is_ascii_digit() || c == '.');
+    if let [Some(value)] = listed
+        .iter()
+        .map(|n| constant(n, &m.type_name))
+        .collect::<Vec<_>>()
+        .as_slice()
+    {
+        return Some(Pred::Compare {
+            member: member_name,
+            plus: None,
+            op: if positive { Op::Eq } else { Op::Ne },
+            rhs: Rhs::Const((*value).to_owned()),
+            float: false,
+            unsigned: true,
+        });
+    }
     if numeric(&m.type_name) && listed.iter().all(is_number) {
         if let [n] = listed.as_slice() {
             return Some(Pred::Compare {
@@ -807,6 +845,24 @@ fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<P
             values,
         }
     })
+}
+
+/// An API constant a number member is compared with, as a Rust expression of the
+/// member's type: the specification defines each as all bits set (`(~0U)`,
+/// `(~0ULL)`).
+fn constant(name: &str, c_type: &str) -> Option<&'static str> {
+    match (name, c_type) {
+        (
+            "VK_ATTACHMENT_UNUSED"
+            | "VK_SUBPASS_EXTERNAL"
+            | "VK_REMAINING_MIP_LEVELS"
+            | "VK_REMAINING_ARRAY_LAYERS"
+            | "VK_QUEUE_FAMILY_IGNORED",
+            "uint32_t",
+        ) => Some("u32::MAX"),
+        ("VK_WHOLE_SIZE", "VkDeviceSize" | "uint64_t") => Some("u64::MAX"),
+        _ => None,
+    }
 }
 
 /// The values group (enum type, or the bits type of a flags type) of a member.
@@ -1047,7 +1103,9 @@ fn created_req(input: &Input, text: &str) -> Option<Pred> {
     static R: OnceLock<[Regex; 2]> = OnceLock::new();
     let [size, image] = R.get_or_init(|| {
         [
-            Regex::new(r"^`([\w.\[\]]+)` must be less than the size of `([\w.]+)`$"),
+            Regex::new(
+                r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be less than (or equal to (?:than )?)?the size of `([\w.]+)`(?: minus `([\w.\[\]]+)`)?$",
+            ),
             Regex::new(
                 r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be less than (or equal to )?the `(mipLevels|arrayLayers)` specified in VkImageCreateInfo when `([\w.]+)` was created$",
             ),
@@ -1055,14 +1113,15 @@ fn created_req(input: &Input, text: &str) -> Option<Pred> {
         .map(|r| r.expect("recogniser pattern"))
     });
     let (m, plus, op, handle, object, field) = if let Some(c) = whole(size, text) {
-        (
-            c[0].clone(),
-            String::new(),
-            Op::Lt,
-            c[1].clone(),
-            Object::Buffer,
-            "size".to_owned(),
-        )
+        // `size must be <= the size of b minus offset` is `offset + size <= size of
+        // b`: an offset and a size or count are written in that order.
+        let (m, plus) = match (c[1].is_empty(), c[4].is_empty()) {
+            (_, true) => (c[0].clone(), c[1].clone()),
+            (true, false) => (c[4].clone(), c[0].clone()),
+            (false, false) => return None,
+        };
+        let op = if c[2].is_empty() { Op::Lt } else { Op::Le };
+        (m, plus, op, c[3].clone(), Object::Buffer, "size".to_owned())
     } else {
         let c = whole(image, text)?;
         let op = if c[2].is_empty() { Op::Lt } else { Op::Le };

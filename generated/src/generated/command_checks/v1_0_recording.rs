@@ -1387,6 +1387,46 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        for (i, e) in ranges.iter().enumerate() {
+            if e.level_count != u32::MAX
+                && s
+                    .image(image.raw())
+                    .is_some_and(|r| {
+                        (e.base_mip_level as i128 + e.level_count as i128)
+                            > (r.mip_levels as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdClearColorImage-pRanges-01692",
+                        format!(
+                            "For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].levelCount` = {:?}, `pRanges[{}].baseMipLevel` = {:?})",
+                            i, e.level_count, i, e.base_mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in ranges.iter().enumerate() {
+            if e.layer_count != u32::MAX
+                && s
+                    .image(image.raw())
+                    .is_some_and(|r| {
+                        (e.base_array_layer as i128 + e.layer_count as i128)
+                            > (r.array_layers as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdClearColorImage-pRanges-01693",
+                        format!(
+                            "For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].layerCount` = {:?}, `pRanges[{}].baseArrayLayer` = {:?})",
+                            i, e.layer_count, i, e.base_array_layer
+                        ),
+                    ),
+                );
+            }
+        }
         if !matches!(image_layout.as_raw(), 1 | 7) {
             return Err(
                 fail(
@@ -1456,6 +1496,46 @@ impl<'c> Recorder<'c, Outside> {
                         .into(),
                 ),
             );
+        }
+        for (i, e) in ranges.iter().enumerate() {
+            if e.level_count != u32::MAX
+                && s
+                    .image(image.raw())
+                    .is_some_and(|r| {
+                        (e.base_mip_level as i128 + e.level_count as i128)
+                            > (r.mip_levels as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdClearDepthStencilImage-pRanges-01694",
+                        format!(
+                            "For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].levelCount` = {:?}, `pRanges[{}].baseMipLevel` = {:?})",
+                            i, e.level_count, i, e.base_mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in ranges.iter().enumerate() {
+            if e.layer_count != u32::MAX
+                && s
+                    .image(image.raw())
+                    .is_some_and(|r| {
+                        (e.base_array_layer as i128 + e.layer_count as i128)
+                            > (r.array_layers as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdClearDepthStencilImage-pRanges-01695",
+                        format!(
+                            "For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].layerCount` = {:?}, `pRanges[{}].baseArrayLayer` = {:?})",
+                            i, e.layer_count, i, e.base_array_layer
+                        ),
+                    ),
+                );
+            }
         }
         for x in ranges.iter() {
             crate::checks::check_image_subresource_range(x, s)?;

@@ -1436,7 +1436,10 @@ The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khro
 - `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdClearColorImage-imageLayout-00005`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 11: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_clear_color_image(
         &mut self,
@@ -1461,7 +1464,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-imageLayout-00005`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_clear_color_image_unchecked(
         &mut self,
@@ -1504,8 +1507,8 @@ The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://regist
 
 Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 17: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 15: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_clear_depth_stencil_image(
         &mut self,
@@ -1536,7 +1539,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_clear_depth_stencil_image_unchecked(
         &mut self,

@@ -293,12 +293,14 @@ impl<'a> BufferCreateInfo<'a> {
 The rules are on [`VkBufferMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryBarrier.html). Settled by the wrappers:
 
 - `VUID-VkBufferMemoryBarrier-offset-01187`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBufferMemoryBarrier-size-01188`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkBufferMemoryBarrier-size-01189`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkBufferMemoryBarrier-buffer-01931`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBufferMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -369,6 +371,7 @@ impl<'a> BufferMemoryBarrier<'a> {
 The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferViewCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkBufferViewCreateInfo-offset-00925`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBufferViewCreateInfo-range-00928`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkBufferViewCreateInfo-buffer-00935`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBufferViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -377,7 +380,10 @@ The rules are on [`VkBufferViewCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkBufferViewCreateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBufferViewCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 11: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferViewCreateInfo<'a> {
@@ -776,8 +782,8 @@ The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {
@@ -1602,6 +1608,7 @@ impl<'a> ImageCreateInfo<'a> {
 
 The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryBarrier.html). Settled by the wrappers:
 
+- `VUID-VkImageMemoryBarrier-subresourceRange-01724`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkImageMemoryBarrier-image-01932`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -1611,10 +1618,10 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 44.
+Left to the caller (listed one by one in the crate's `validation.json`): 43.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 42: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 40: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {
@@ -1690,7 +1697,9 @@ impl<'a> ImageMemoryBarrier<'a> {
 
 The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkImageViewCreateInfo-subresourceRange-01718`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkImageViewCreateInfo-image-01020`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkImageViewCreateInfo-viewType-02960`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1701,10 +1710,10 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 89.
+Left to the caller (listed one by one in the crate's `validation.json`): 87.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 87: explicit rule; the wrappers do not check it*/
+- 85: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {
@@ -3344,6 +3353,7 @@ impl<'a> SubmitInfo<'a> {
 
 The rules are on [`VkSubpassDescription`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription.html). Settled by the wrappers:
 
+- `VUID-VkSubpassDescription-attachment-06913`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDescription-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDescription-pInputAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -3351,12 +3361,13 @@ The rules are on [`VkSubpassDescription`'s reference page](https://registry.khro
 - `VUID-VkSubpassDescription-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkSubpassDescription-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription-pipelineBindPoint-00844`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 37.
+Left to the caller (listed one by one in the crate's `validation.json`): 35.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 36: explicit rule; the wrappers do not check it*/
+- 7: checked by the safe methods in every build, but no oracle case breaks it yet
+- 28: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription<'a> {

@@ -131,7 +131,10 @@ The rules are on [`VkAttachmentReference2`'s reference page](https://registry.kh
 - `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReference2<'a> {
@@ -1949,7 +1952,10 @@ The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khro
 - `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 27: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {
@@ -2013,6 +2019,7 @@ impl<'a> SubpassDependency2<'a> {
 
 The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription2.html). Settled by the wrappers:
 
+- `VUID-VkSubpassDescription2-attachment-06913`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2023,12 +2030,13 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkSubpassDescription2-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 43.
+Left to the caller (listed one by one in the crate's `validation.json`): 41.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 42: explicit rule; the wrappers do not check it*/
+- 7: checked by the safe methods in every build, but no oracle case breaks it yet
+- 34: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {

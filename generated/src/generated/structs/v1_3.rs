@@ -234,6 +234,8 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-offset-01187`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBufferMemoryBarrier2-size-01188`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkBufferMemoryBarrier2-size-01189`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkBufferMemoryBarrier2-buffer-01931`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkBufferMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -245,7 +247,7 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 81 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 79 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -436,6 +438,8 @@ The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos
 
 - `VUID-VkCopyBufferInfo2-srcOffset-00113`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkCopyBufferInfo2-dstOffset-00114`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkCopyBufferInfo2-size-00115`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkCopyBufferInfo2-size-00116`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkCopyBufferInfo2-srcBuffer-00118`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyBufferInfo2-srcBuffer-00119`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyBufferInfo2-dstBuffer-00120`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -448,7 +452,7 @@ The rules are on [`VkCopyBufferInfo2`'s reference page](https://registry.khronos
 - `VUID-VkCopyBufferInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferInfo2<'a> {
@@ -1062,6 +1066,7 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03916`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03917`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageMemoryBarrier2-subresourceRange-01724`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkImageMemoryBarrier2-image-01932`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -1077,10 +1082,10 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 118.
+Left to the caller (listed one by one in the crate's `validation.json`): 117.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 116: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 114: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {

@@ -75,6 +75,17 @@ pub fn check_attachment_reference(
         s,
         "VUID-VkAttachmentReference-layout-parameter",
     )?;
+    if v.attachment != u32::MAX && matches!(v.layout.as_raw(), 0 | 8 | 1000001002) {
+        return Err(
+            fail(
+                "VUID-VkAttachmentReference-layout-03077",
+                format!(
+                    "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
+                    v.attachment, v.layout
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkBindSparseInfo` that are checked at run time.
@@ -223,6 +234,32 @@ pub fn check_buffer_memory_barrier(
             ),
         );
     }
+    if v.size != u64::MAX && v.size == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier-size-01188",
+                format!(
+                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0` (`size` = {:?})",
+                    v.size
+                ),
+            ),
+        );
+    }
+    if v.size != u64::MAX
+        && s
+            .buffer(v.buffer)
+            .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier-size-01189",
+                format!(
+                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset` (`size` = {:?}, `offset` = {:?})",
+                    v.size, v.offset
+                ),
+            ),
+        );
+    }
     if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
         return Err(
             fail(
@@ -263,6 +300,32 @@ pub fn check_buffer_view_create_info(
             ),
         );
     }
+    if v.range != u64::MAX && v.range == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferViewCreateInfo-range-00928",
+                format!(
+                    "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0` (`range` = {:?})",
+                    v.range
+                ),
+            ),
+        );
+    }
+    if v.range != u64::MAX
+        && s
+            .buffer(v.buffer)
+            .is_some_and(|r| (v.offset as i128 + v.range as i128) > (r.size as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkBufferViewCreateInfo-offset-00931",
+                format!(
+                    "If `range` is not equal to `VK_WHOLE_SIZE`, `offset` + `range` must be less than or equal to the size of `buffer` (`range` = {:?}, `offset` = {:?})",
+                    v.range, v.offset
+                ),
+            ),
+        );
+    }
     if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
         return Err(
             fail(
@@ -287,6 +350,17 @@ pub fn check_clear_attachment(v: &vk::ClearAttachment, s: &Scope<'_>) -> Result<
             fail(
                 "VUID-VkClearAttachment-aspectMask-requiredbitmask",
                 "`aspectMask` is empty".into(),
+            ),
+        );
+    }
+    if (v.aspect_mask.as_raw() & 1) != 0 && (v.aspect_mask.as_raw() & 6) != 0 {
+        return Err(
+            fail(
+                "VUID-VkClearAttachment-aspectMask-00019",
+                format!(
+                    "If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, it must not include `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT` (`aspectMask` = {:?})",
+                    v.aspect_mask
+                ),
             ),
         );
     }
@@ -491,6 +565,32 @@ pub fn check_descriptor_buffer_info(
                 format!(
                     "`offset` must be less than the size of `buffer` (`offset` = {:?})",
                     v.offset
+                ),
+            ),
+        );
+    }
+    if v.range != u64::MAX && v.range == 0 {
+        return Err(
+            fail(
+                "VUID-VkDescriptorBufferInfo-range-00341",
+                format!(
+                    "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0` (`range` = {:?})",
+                    v.range
+                ),
+            ),
+        );
+    }
+    if v.range != u64::MAX
+        && s
+            .buffer(v.buffer)
+            .is_some_and(|r| (v.offset as i128 + v.range as i128) > (r.size as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkDescriptorBufferInfo-range-00342",
+                format!(
+                    "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be less than or equal to the size of `buffer` minus `offset` (`range` = {:?}, `offset` = {:?})",
+                    v.range, v.offset
                 ),
             ),
         );
@@ -1355,6 +1455,24 @@ pub fn check_image_memory_barrier(
             ),
         );
     }
+    if v.subresource_range.level_count != u32::MAX
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_mip_level as i128
+                    + v.subresource_range.level_count as i128) > (r.mip_levels as i128)
+            })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-subresourceRange-01724",
+                format!(
+                    "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
+                    v.subresource_range.level_count, v.subresource_range.base_mip_level
+                ),
+            ),
+        );
+    }
     if s
         .image(v.image)
         .is_some_and(|r| {
@@ -1367,6 +1485,24 @@ pub fn check_image_memory_barrier(
                 format!(
                     "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
                     v.subresource_range.base_array_layer
+                ),
+            ),
+        );
+    }
+    if v.subresource_range.layer_count != u32::MAX
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_array_layer as i128
+                    + v.subresource_range.layer_count as i128) > (r.array_layers as i128)
+            })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-subresourceRange-01725",
+                format!(
+                    "If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.layerCount` = {:?}, `subresourceRange.baseArrayLayer` = {:?})",
+                    v.subresource_range.layer_count, v.subresource_range.base_array_layer
                 ),
             ),
         );
@@ -1458,6 +1594,28 @@ pub fn check_image_subresource_range(
             ),
         );
     }
+    if v.level_count != u32::MAX && v.level_count == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageSubresourceRange-levelCount-01720",
+                format!(
+                    "If `levelCount` is not `VK_REMAINING_MIP_LEVELS`, it must be greater than `0` (`levelCount` = {:?})",
+                    v.level_count
+                ),
+            ),
+        );
+    }
+    if v.layer_count != u32::MAX && v.layer_count == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageSubresourceRange-layerCount-01721",
+                format!(
+                    "If `layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, it must be greater than `0` (`layerCount` = {:?})",
+                    v.layer_count
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkImageViewCreateInfo` that are checked at run time.
@@ -1509,12 +1667,43 @@ pub fn check_image_view_create_info(
             ),
         );
     }
+    if v.subresource_range.level_count != u32::MAX
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_mip_level as i128
+                    + v.subresource_range.level_count as i128) > (r.mip_levels as i128)
+            })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageViewCreateInfo-subresourceRange-01718",
+                format!(
+                    "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
+                    v.subresource_range.level_count, v.subresource_range.base_mip_level
+                ),
+            ),
+        );
+    }
     if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
         return Err(
             fail(
                 "VUID-VkImageViewCreateInfo-image-01020",
                 "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                     .into(),
+            ),
+        );
+    }
+    if matches!(v.view_type.as_raw(), 3) && v.subresource_range.layer_count != u32::MAX
+        && v.subresource_range.layer_count != 6
+    {
+        return Err(
+            fail(
+                "VUID-VkImageViewCreateInfo-viewType-02960",
+                format!(
+                    "If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be `6` (`viewType` = {:?}, `subresourceRange.layerCount` = {:?})",
+                    v.view_type, v.subresource_range.layer_count
+                ),
             ),
         );
     }
@@ -2660,6 +2849,28 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
+    if (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX {
+        return Err(
+            fail(
+                "VUID-VkSubpassDependency-dependencyFlags-02520",
+                format!(
+                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `srcSubpass` = {:?})",
+                    v.dependency_flags, v.src_subpass
+                ),
+            ),
+        );
+    }
+    if (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX {
+        return Err(
+            fail(
+                "VUID-VkSubpassDependency-dependencyFlags-02521",
+                format!(
+                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `dstSubpass` = {:?})",
+                    v.dependency_flags, v.dst_subpass
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkSubpassDescription` that are checked at run time.
@@ -2677,6 +2888,63 @@ pub fn check_subpass_description(
         s,
         "VUID-VkSubpassDescription-pipelineBindPoint-parameter",
     )?;
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 2 | 3) {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06912",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06913",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06914",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
     if s
         .limits()
         .is_some_and(|l| {
@@ -2692,6 +2960,111 @@ pub fn check_subpass_description(
                 ),
             ),
         );
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06916",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06917",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06918",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06919",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription-attachment-06920",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
     }
     if !matches!(v.pipeline_bind_point.as_raw(), 0) {
         return Err(

@@ -136,6 +136,17 @@ pub fn check_attachment_reference2(
         s,
         "VUID-VkAttachmentReference2-layout-parameter",
     )?;
+    if v.attachment != u32::MAX && matches!(v.layout.as_raw(), 0 | 8 | 1000001002) {
+        return Err(
+            fail(
+                "VUID-VkAttachmentReference2-layout-03077",
+                format!(
+                    "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
+                    v.attachment, v.layout
+                ),
+            ),
+        );
+    }
     crate::checks::chain(v.p_next, s, Some("VUID-VkAttachmentReference2-sType-unique"))?;
     Ok(())
 }
@@ -428,6 +439,28 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
+    if (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX {
+        return Err(
+            fail(
+                "VUID-VkSubpassDependency2-dependencyFlags-03090",
+                format!(
+                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `srcSubpass` = {:?})",
+                    v.dependency_flags, v.src_subpass
+                ),
+            ),
+        );
+    }
+    if (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX {
+        return Err(
+            fail(
+                "VUID-VkSubpassDependency2-dependencyFlags-03091",
+                format!(
+                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `dstSubpass` = {:?})",
+                    v.dependency_flags, v.dst_subpass
+                ),
+            ),
+        );
+    }
     if (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0 {
         return Err(
             fail(
@@ -457,6 +490,63 @@ pub fn check_subpass_description2(
         s,
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 2 | 3) {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06912",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06913",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06914",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
     if s
         .limits()
         .is_some_and(|l| {
@@ -472,6 +562,111 @@ pub fn check_subpass_description2(
                 ),
             ),
         );
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06916",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06917",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06918",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06919",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if e.attachment != u32::MAX
+            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        {
+            return Err(
+                fail(
+                    "VUID-VkSubpassDescription2-attachment-06920",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
+                    ),
+                ),
+            );
+        }
     }
     if !matches!(v.pipeline_bind_point.as_raw(), 0) {
         return Err(

@@ -995,6 +995,32 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
+    if v.size != u64::MAX && v.size == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier2-size-01188",
+                format!(
+                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0` (`size` = {:?})",
+                    v.size
+                ),
+            ),
+        );
+    }
+    if v.size != u64::MAX
+        && s
+            .buffer(v.buffer)
+            .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkBufferMemoryBarrier2-size-01189",
+                format!(
+                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset` (`size` = {:?}, `offset` = {:?})",
+                    v.size, v.offset
+                ),
+            ),
+        );
+    }
     if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
         return Err(
             fail(
@@ -1137,6 +1163,50 @@ pub fn check_copy_buffer_info2(
                     format!(
                         "The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer` (`pRegions[{}].dstOffset` = {:?})",
                         i, e.dst_offset
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .buffer(v.src_buffer)
+            .is_some_and(|r| (e.src_offset as i128 + e.size as i128) > (r.size as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferInfo2-size-00115",
+                    format!(
+                        "The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset` (`pRegions[{}].srcOffset` = {:?}, `pRegions[{}].size` = {:?})",
+                        i, e.src_offset, i, e.size
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .buffer(v.dst_buffer)
+            .is_some_and(|r| (e.dst_offset as i128 + e.size as i128) > (r.size as i128))
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferInfo2-size-00116",
+                    format!(
+                        "The `size` member of each element of `pRegions` must be less than or equal to the size of `dstBuffer` minus `dstOffset` (`pRegions[{}].dstOffset` = {:?}, `pRegions[{}].size` = {:?})",
+                        i, e.dst_offset, i, e.size
                     ),
                 ),
             );
@@ -2803,6 +2873,24 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
+    if v.subresource_range.level_count != u32::MAX
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_mip_level as i128
+                    + v.subresource_range.level_count as i128) > (r.mip_levels as i128)
+            })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-subresourceRange-01724",
+                format!(
+                    "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
+                    v.subresource_range.level_count, v.subresource_range.base_mip_level
+                ),
+            ),
+        );
+    }
     if s
         .image(v.image)
         .is_some_and(|r| {
@@ -2815,6 +2903,24 @@ pub fn check_image_memory_barrier2(
                 format!(
                     "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
                     v.subresource_range.base_array_layer
+                ),
+            ),
+        );
+    }
+    if v.subresource_range.layer_count != u32::MAX
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_array_layer as i128
+                    + v.subresource_range.layer_count as i128) > (r.array_layers as i128)
+            })
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-subresourceRange-01725",
+                format!(
+                    "If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.layerCount` = {:?}, `subresourceRange.baseArrayLayer` = {:?})",
+                    v.subresource_range.layer_count, v.subresource_range.base_array_layer
                 ),
             ),
         );
