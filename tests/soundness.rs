@@ -3410,3 +3410,182 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     }
     s.messages.abort_on_error(false);
 }
+
+/// Memory for `reqs` of `size` bytes, of the first type the object allows.
+fn memory_for(s: &Setup, reqs: &vk::MemoryRequirements, size: u64) -> tuff::DeviceMemory {
+    s.device
+        .allocate_memory(
+            &tuff::MemoryAllocateInfo::new()
+                .allocation_size(size)
+                .memory_type_index(
+                    s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                ),
+        )
+        .expect("memory")
+}
+
+/// Runs `unchecked` with the layer told to skip the erroring call, so the driver
+/// never sees it, and fails unless the layer named `vuid`.
+fn layer_names(s: &Setup, vuid: &str, unchecked: impl FnOnce()) {
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    assert_layer_reports(s, vuid);
+}
+
+/// The ways a safe bind could give a buffer or image memory it does not fit in (an
+/// offset past the end, a misaligned offset, too few bytes past the offset) or bind
+/// it twice: each is refused with its rule, through `bind_*_memory` and through
+/// `bind_*_memory2`, and the layer names the same rule for the unchecked call.
+#[test]
+fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let buffer = || {
+        d.create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(4096)
+                .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
+        )
+        .expect("buffer")
+    };
+    let image = || {
+        d.create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 64,
+                    height: 64,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::SAMPLED),
+        )
+        .expect("image")
+    };
+    let b = buffer();
+    let b_reqs = d.get_buffer_memory_requirements(&b).expect("requirements");
+    let i = image();
+    let i_reqs = d.get_image_memory_requirements(&i).expect("requirements");
+    // (offset, memory size, the rule it breaks), for buffers then images.
+    let buffer_cases = [
+        (b_reqs.size * 2, b_reqs.size * 2, "memoryOffset-01031"),
+        (1, b_reqs.size * 4, "memoryOffset-01036"),
+        (0, b_reqs.size / 2, "size-01037"),
+    ];
+    assert!(
+        b_reqs.alignment > 1,
+        "the buffer's alignment lets any offset through"
+    );
+    for (offset, size, rule) in buffer_cases {
+        let memory = memory_for(&s, &b_reqs, size);
+        let one = format!("VUID-vkBindBufferMemory-{rule}");
+        assert_eq!(vuid(d.bind_buffer_memory(&b, &memory, offset)), one);
+        let two = format!("VUID-VkBindBufferMemoryInfo-{rule}");
+        let infos = [tuff::BindBufferMemoryInfo::new(&b, &memory).memory_offset(offset)];
+        assert_eq!(vuid(d.bind_buffer_memory2(&infos)), two);
+        assert_silent(&s.messages);
+        // SAFETY: the layer skips the call it reports (its messenger says so), so the
+        // driver never binds the memory.
+        layer_names(&s, &one, || {
+            let _ = unsafe { d.bind_buffer_memory_unchecked(&b, &memory, offset) };
+        });
+        // SAFETY: as above.
+        layer_names(&s, &two, || {
+            let _ = unsafe { d.bind_buffer_memory2_unchecked(&infos) };
+        });
+    }
+    assert!(
+        i_reqs.alignment > 1,
+        "the image's alignment lets any offset through"
+    );
+    let image_cases = [
+        (
+            i_reqs.size * 2,
+            i_reqs.size * 2,
+            "memoryOffset-01046",
+            "memoryOffset-01046",
+        ),
+        (1, i_reqs.size * 4, "memoryOffset-01048", "pNext-01616"),
+        (0, i_reqs.size / 2, "size-01049", "pNext-01617"),
+    ];
+    for (offset, size, rule, rule2) in image_cases {
+        let memory = memory_for(&s, &i_reqs, size);
+        let one = format!("VUID-vkBindImageMemory-{rule}");
+        assert_eq!(vuid(d.bind_image_memory(&i, &memory, offset)), one);
+        let two = format!("VUID-VkBindImageMemoryInfo-{rule2}");
+        let infos = [tuff::BindImageMemoryInfo::new(&i, &memory).memory_offset(offset)];
+        assert_eq!(vuid(d.bind_image_memory2(&infos)), two);
+        assert_silent(&s.messages);
+        // SAFETY: as for the buffer.
+        layer_names(&s, &one, || {
+            let _ = unsafe { d.bind_image_memory_unchecked(&i, &memory, offset) };
+        });
+        // SAFETY: as above.
+        layer_names(&s, &two, || {
+            let _ = unsafe { d.bind_image_memory2_unchecked(&infos) };
+        });
+    }
+    // Bound once, correctly; a second bind of either is refused.
+    let b_memory = memory_for(&s, &b_reqs, b_reqs.size);
+    d.bind_buffer_memory(&b, &b_memory, 0).expect("bind");
+    let i_memory = memory_for(&s, &i_reqs, i_reqs.size);
+    d.bind_image_memory(&i, &i_memory, 0).expect("bind");
+    assert_silent(&s.messages);
+    let again = memory_for(&s, &b_reqs, b_reqs.size);
+    assert_eq!(
+        vuid(d.bind_buffer_memory(&b, &again, 0)),
+        "VUID-vkBindBufferMemory-buffer-07459"
+    );
+    let infos = [tuff::BindBufferMemoryInfo::new(&b, &again)];
+    assert_eq!(
+        vuid(d.bind_buffer_memory2(&infos)),
+        "VUID-VkBindBufferMemoryInfo-buffer-07459"
+    );
+    let again_i = memory_for(&s, &i_reqs, i_reqs.size);
+    assert_eq!(
+        vuid(d.bind_image_memory(&i, &again_i, 0)),
+        "VUID-vkBindImageMemory-image-07460"
+    );
+    let infos_i = [tuff::BindImageMemoryInfo::new(&i, &again_i)];
+    assert_eq!(
+        vuid(d.bind_image_memory2(&infos_i)),
+        "VUID-VkBindImageMemoryInfo-image-07460"
+    );
+    assert_silent(&s.messages);
+    // SAFETY: as above.
+    layer_names(&s, "VUID-vkBindBufferMemory-buffer-07459", || {
+        let _ = unsafe { d.bind_buffer_memory_unchecked(&b, &again, 0) };
+    });
+    // SAFETY: as above.
+    layer_names(&s, "VUID-VkBindBufferMemoryInfo-buffer-07459", || {
+        let _ = unsafe { d.bind_buffer_memory2_unchecked(&infos) };
+    });
+    // SAFETY: as above.
+    layer_names(&s, "VUID-vkBindImageMemory-image-07460", || {
+        let _ = unsafe { d.bind_image_memory_unchecked(&i, &again_i, 0) };
+    });
+    // SAFETY: as above.
+    layer_names(&s, "VUID-VkBindImageMemoryInfo-image-07460", || {
+        let _ = unsafe { d.bind_image_memory2_unchecked(&infos_i) };
+    });
+    // One call that binds a fresh buffer twice is refused too (the layer sees the
+    // buffer unbound at the first info, so only tuff names it).
+    let fresh = buffer();
+    let m1 = memory_for(&s, &b_reqs, b_reqs.size);
+    let m2 = memory_for(&s, &b_reqs, b_reqs.size);
+    let twice = [
+        tuff::BindBufferMemoryInfo::new(&fresh, &m1),
+        tuff::BindBufferMemoryInfo::new(&fresh, &m2),
+    ];
+    assert_eq!(
+        vuid(d.bind_buffer_memory2(&twice)),
+        "VUID-VkBindBufferMemoryInfo-buffer-07459"
+    );
+    assert_silent(&s.messages);
+}

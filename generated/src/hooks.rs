@@ -2409,3 +2409,284 @@ pub(crate) fn indexed_draw_checks<S: State>(
     }
     Ok(())
 }
+
+/// The VUIDs of one bind command's rules, which `vkBindBufferMemory`,
+/// `vkBindImageMemory` and their `*2` infos state alike.
+struct BindRules {
+    /// Not bound before.
+    bound: &'static str,
+    /// Not created sparse.
+    sparse: &'static str,
+    /// `memoryOffset` inside the memory.
+    offset: &'static str,
+    /// The memory's type among the resource's `memoryTypeBits`.
+    type_bits: &'static str,
+    /// `memoryOffset` a multiple of the resource's `alignment`.
+    alignment: &'static str,
+    /// The resource's `size` fits in the memory past `memoryOffset`.
+    size: &'static str,
+}
+
+const BIND_BUFFER: BindRules = BindRules {
+    bound: "VUID-vkBindBufferMemory-buffer-07459",
+    sparse: "VUID-vkBindBufferMemory-buffer-01030",
+    offset: "VUID-vkBindBufferMemory-memoryOffset-01031",
+    type_bits: "VUID-vkBindBufferMemory-memory-01035",
+    alignment: "VUID-vkBindBufferMemory-memoryOffset-01036",
+    size: "VUID-vkBindBufferMemory-size-01037",
+};
+
+const BIND_BUFFER2: BindRules = BindRules {
+    bound: "VUID-VkBindBufferMemoryInfo-buffer-07459",
+    sparse: "VUID-VkBindBufferMemoryInfo-buffer-01030",
+    offset: "VUID-VkBindBufferMemoryInfo-memoryOffset-01031",
+    type_bits: "VUID-VkBindBufferMemoryInfo-memory-01035",
+    alignment: "VUID-VkBindBufferMemoryInfo-memoryOffset-01036",
+    size: "VUID-VkBindBufferMemoryInfo-size-01037",
+};
+
+const BIND_IMAGE: BindRules = BindRules {
+    bound: "VUID-vkBindImageMemory-image-07460",
+    sparse: "VUID-vkBindImageMemory-image-01045",
+    offset: "VUID-vkBindImageMemory-memoryOffset-01046",
+    type_bits: "VUID-vkBindImageMemory-memory-01047",
+    alignment: "VUID-vkBindImageMemory-memoryOffset-01048",
+    size: "VUID-vkBindImageMemory-size-01049",
+};
+
+const BIND_IMAGE2: BindRules = BindRules {
+    bound: "VUID-VkBindImageMemoryInfo-image-07460",
+    sparse: "VUID-VkBindImageMemoryInfo-image-01045",
+    offset: "VUID-VkBindImageMemoryInfo-memoryOffset-01046",
+    type_bits: "VUID-VkBindImageMemoryInfo-pNext-01615",
+    alignment: "VUID-VkBindImageMemoryInfo-pNext-01616",
+    size: "VUID-VkBindImageMemoryInfo-pNext-01617",
+};
+
+/// The sparse binding, residency and aliased bits, the same in buffer and image
+/// create flags.
+const SPARSE_FLAGS: u32 = 0x1 | 0x2 | 0x4;
+
+/// Checks one binding of `memory` at `offset` to a resource: `record` is what the
+/// device recorded of it (whether bound, its create flags), `reqs` its memory
+/// requirements. A memory the wrappers did not allocate has no record and is not
+/// checked against.
+fn check_bind(
+    device: &Device,
+    rules: &BindRules,
+    record: Option<(bool, u32)>,
+    reqs: vk::MemoryRequirements,
+    memory: vk::DeviceMemory,
+    offset: vk::DeviceSize,
+) -> Result<()> {
+    if let Some((bound, flags)) = record {
+        if bound {
+            refuse(rules.bound, "the object is already bound to memory".into())?;
+        }
+        if flags & SPARSE_FLAGS != 0 {
+            refuse(
+                rules.sparse,
+                format!("the object was created with sparse flags ({flags:#x})"),
+            )?;
+        }
+    }
+    let Some((size, type_index)) = device
+        .live()
+        .memory(memory, |m| (m.size, m.memory_type_index))
+    else {
+        return Ok(());
+    };
+    if offset >= size {
+        refuse(
+            rules.offset,
+            format!("memoryOffset must be less than the size of memory (memoryOffset = {offset}, size = {size})"),
+        )?;
+    }
+    if reqs.memory_type_bits & (1u32.checked_shl(type_index).unwrap_or(0)) == 0 {
+        refuse(
+            rules.type_bits,
+            format!(
+                "memory's type {type_index} is not among the object's memoryTypeBits ({:#x})",
+                reqs.memory_type_bits
+            ),
+        )?;
+    }
+    if reqs.alignment != 0 && offset % reqs.alignment != 0 {
+        refuse(
+            rules.alignment,
+            format!(
+                "memoryOffset must be a multiple of the object's alignment (memoryOffset = {offset}, alignment = {})",
+                reqs.alignment
+            ),
+        )?;
+    }
+    if reqs.size > size.saturating_sub(offset) {
+        refuse(
+            rules.size,
+            format!(
+                "the object needs {} bytes, and memory has {} past memoryOffset (size = {size}, memoryOffset = {offset})",
+                reqs.size,
+                size.saturating_sub(offset)
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// The buffer's memory requirements, from the driver.
+fn buffer_requirements(device: &Device, buffer: vk::Buffer) -> vk::MemoryRequirements {
+    let mut reqs = vk::MemoryRequirements::default();
+    // SAFETY: `buffer` is a live buffer of `device` (a wrapper, or a safe info's
+    // member that a wrapper filled), and `reqs` is written storage.
+    unsafe {
+        (device.fns().fp_v1_0().get_buffer_memory_requirements)(device.raw(), buffer, &mut reqs)
+    };
+    reqs
+}
+
+/// The image's memory requirements, from the driver.
+fn image_requirements(device: &Device, image: vk::Image) -> vk::MemoryRequirements {
+    let mut reqs = vk::MemoryRequirements::default();
+    // SAFETY: as in `buffer_requirements`.
+    unsafe {
+        (device.fns().fp_v1_0().get_image_memory_requirements)(device.raw(), image, &mut reqs)
+    };
+    reqs
+}
+
+/// Refuses a binding that would give the buffer memory it cannot live in: bound
+/// before, sparse, or memory of the wrong type, too small past the offset, or at a
+/// misaligned offset.
+pub(crate) fn bind_buffer_memory_checks(
+    device: &Device,
+    buffer: &Buffer,
+    memory: &DeviceMemory,
+    memory_offset: vk::DeviceSize,
+) -> Result<()> {
+    let record = device
+        .live()
+        .buffer(buffer.raw())
+        .map(|r| (r.bound, r.flags.as_raw()));
+    let reqs = buffer_requirements(device, buffer.raw());
+    check_bind(
+        device,
+        &BIND_BUFFER,
+        record,
+        reqs,
+        memory.raw(),
+        memory_offset,
+    )
+}
+
+/// As [`bind_buffer_memory_checks`], for each info; a buffer named twice is bound
+/// twice.
+pub(crate) fn bind_buffer_memory2_checks(
+    device: &Device,
+    bind_infos: &[BindBufferMemoryInfo<'_>],
+) -> Result<()> {
+    for (i, info) in bind_infos.iter().enumerate() {
+        if bind_infos[..i].iter().any(|b| b.buffer == info.buffer) {
+            refuse(
+                BIND_BUFFER2.bound,
+                format!("pBindInfos[{i}] binds a buffer an earlier info binds"),
+            )?;
+        }
+        let record = device
+            .live()
+            .buffer(info.buffer)
+            .map(|r| (r.bound, r.flags.as_raw()));
+        let reqs = buffer_requirements(device, info.buffer);
+        check_bind(
+            device,
+            &BIND_BUFFER2,
+            record,
+            reqs,
+            info.memory,
+            info.memory_offset,
+        )?;
+    }
+    Ok(())
+}
+
+/// As [`bind_buffer_memory_checks`], for an image; a disjoint image binds its
+/// planes through `bind_image_memory2` (`VUID-vkBindImageMemory-image-01608`).
+pub(crate) fn bind_image_memory_checks(
+    device: &Device,
+    image: &Image,
+    memory: &DeviceMemory,
+    memory_offset: vk::DeviceSize,
+) -> Result<()> {
+    let record = device.live().image(image.raw());
+    if record.is_some_and(|r| r.flags.contains(vk::ImageCreateFlags::DISJOINT)) {
+        refuse(
+            "VUID-vkBindImageMemory-image-01608",
+            "the image was created with VK_IMAGE_CREATE_DISJOINT_BIT; bind its planes with bind_image_memory2".into(),
+        )?;
+    }
+    let reqs = image_requirements(device, image.raw());
+    check_bind(
+        device,
+        &BIND_IMAGE,
+        record.map(|r| (r.bound, r.flags.as_raw())),
+        reqs,
+        memory.raw(),
+        memory_offset,
+    )
+}
+
+/// As [`bind_image_memory_checks`], for each info that binds a whole image; an info
+/// that binds one plane (a chained `VkBindImagePlaneMemoryInfo`) is checked only
+/// for the image being disjoint, and its plane's requirements stay the caller's.
+pub(crate) fn bind_image_memory2_checks(
+    device: &Device,
+    bind_infos: &[BindImageMemoryInfo<'_>],
+) -> Result<()> {
+    for (i, info) in bind_infos.iter().enumerate() {
+        let record = device.live().image(info.image);
+        // SAFETY: the safe struct chains only structs pushed through `push_next`,
+        // each a valid Vulkan struct that starts with sType and pNext.
+        let plane = unsafe { chains(info.p_next, vk::StructureType::BIND_IMAGE_PLANE_MEMORY_INFO) };
+        if plane {
+            if record.is_some_and(|r| !r.flags.contains(vk::ImageCreateFlags::DISJOINT)) {
+                refuse(
+                    "VUID-VkBindImageMemoryInfo-pNext-01618",
+                    format!("pBindInfos[{i}] binds a plane of an image created without VK_IMAGE_CREATE_DISJOINT_BIT"),
+                )?;
+            }
+            continue;
+        }
+        if bind_infos[..i].iter().any(|b| b.image == info.image) {
+            refuse(
+                BIND_IMAGE2.bound,
+                format!("pBindInfos[{i}] binds an image an earlier info binds"),
+            )?;
+        }
+        let reqs = image_requirements(device, info.image);
+        check_bind(
+            device,
+            &BIND_IMAGE2,
+            record.map(|r| (r.bound, r.flags.as_raw())),
+            reqs,
+            info.memory,
+            info.memory_offset,
+        )?;
+    }
+    Ok(())
+}
+
+/// Whether a `pNext` chain holds a struct of type `s_type`.
+///
+/// # Safety
+///
+/// Every node of the chain is a live Vulkan struct that starts with sType and
+/// pNext.
+unsafe fn chains(mut next: *const std::ffi::c_void, s_type: vk::StructureType) -> bool {
+    // SAFETY: the caller promises a chain of valid structs.
+    while let Some(node) = unsafe { next.cast::<vk::BaseInStructure<'_>>().as_ref() } {
+        if node.s_type == s_type {
+            return true;
+        }
+        next = node.p_next.cast();
+    }
+    false
+}

@@ -478,11 +478,13 @@ impl Live {
     }
 
     /// Records what a swapchain's images are.
+    #[cfg(feature = "khr_swapchain")]
     pub(crate) fn swapchain_created(&self, raw: vk::SwapchainKHR, images: ImageRecord) {
         self.swapchains.lock().insert(raw.as_raw(), images);
     }
 
     /// Records a swapchain's images, as it was created, once they are wrapped.
+    #[cfg(feature = "khr_swapchain")]
     pub(crate) fn swapchain_images(&self, raw: vk::SwapchainKHR, images: &[vk::Image]) {
         let Some(record) = self.swapchains.lock().get(&raw.as_raw()).copied() else {
             return;

@@ -168,6 +168,8 @@ const PIPELINE_BOUND: &str =
 const SETS_BOUND: &str = "checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known)";
 const BIND_POINT: &str =
     "checks the pipeline was created for the bind point, which the device remembers";
+const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
+const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
 const SETS_UNPROVEN: &str = "checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
 const INDEX_BOUND: &str = "checks an index buffer is bound, which the recorder tracks";
 const INDEX_RANGE: &str = "checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked)";
@@ -429,17 +431,48 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkBindBufferMemory",
+        check: call(
+            "hooks::bind_buffer_memory_checks",
+            &["self", "buffer", "memory", "memory_offset"],
+        ),
         after: call("hooks::bind_buffer_memory_done", &["self", "buffer", "memory"]),
+        settles: &[
+            ("VUID-vkBindBufferMemory-buffer-07459", How::Dynamic(BIND_BOUND)),
+            ("VUID-vkBindBufferMemory-buffer-01030", How::User(UNPROVEN)),
+            ("VUID-vkBindBufferMemory-memoryOffset-01031", How::Dynamic(BIND_MEMORY)),
+            ("VUID-vkBindBufferMemory-memory-01035", How::User(UNPROVEN)),
+            ("VUID-vkBindBufferMemory-memoryOffset-01036", How::Dynamic(BIND_MEMORY)),
+            ("VUID-vkBindBufferMemory-size-01037", How::Dynamic(BIND_MEMORY)),
+        ],
         ..NONE
     },
     Special {
         command: "vkBindBufferMemory2",
+        check: call("hooks::bind_buffer_memory2_checks", &["self", "bind_infos"]),
         after: call("hooks::bind_buffer_memory2_done", &["self", "bind_infos"]),
+        settles: &[
+            ("VUID-VkBindBufferMemoryInfo-buffer-07459", How::Dynamic(BIND_BOUND)),
+            ("VUID-VkBindBufferMemoryInfo-buffer-01030", How::User(UNPROVEN)),
+            ("VUID-VkBindBufferMemoryInfo-memoryOffset-01031", How::Dynamic(BIND_MEMORY)),
+            ("VUID-VkBindBufferMemoryInfo-memory-01035", How::User(UNPROVEN)),
+            ("VUID-VkBindBufferMemoryInfo-memoryOffset-01036", How::Dynamic(BIND_MEMORY)),
+            ("VUID-VkBindBufferMemoryInfo-size-01037", How::Dynamic(BIND_MEMORY)),
+        ],
         ..NONE
     },
     Special {
         command: "vkBindImageMemory2",
+        check: call("hooks::bind_image_memory2_checks", &["self", "bind_infos"]),
         after: call("hooks::bind_image_memory2_done", &["self", "bind_infos"]),
+        settles: &[
+            ("VUID-VkBindImageMemoryInfo-image-07460", How::Dynamic(BIND_BOUND)),
+            ("VUID-VkBindImageMemoryInfo-image-01045", How::User(UNPROVEN)),
+            ("VUID-VkBindImageMemoryInfo-memoryOffset-01046", How::Dynamic(BIND_MEMORY)),
+            ("VUID-VkBindImageMemoryInfo-pNext-01615", How::User(UNPROVEN)),
+            ("VUID-VkBindImageMemoryInfo-pNext-01616", How::Dynamic(BIND_MEMORY)),
+            ("VUID-VkBindImageMemoryInfo-pNext-01617", How::Dynamic(BIND_MEMORY)),
+            ("VUID-VkBindImageMemoryInfo-pNext-01618", How::User(UNPROVEN)),
+        ],
         ..NONE
     },
     Special {
@@ -824,7 +857,20 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkBindImageMemory",
+        check: call(
+            "hooks::bind_image_memory_checks",
+            &["self", "image", "memory", "memory_offset"],
+        ),
         after: call("hooks::bind_image_memory_done", &["self", "image", "memory"]),
+        settles: &[
+            ("VUID-vkBindImageMemory-image-07460", How::Dynamic(BIND_BOUND)),
+            ("VUID-vkBindImageMemory-image-01045", How::User(UNPROVEN)),
+            ("VUID-vkBindImageMemory-memoryOffset-01046", How::Dynamic(BIND_MEMORY)),
+            ("VUID-vkBindImageMemory-memory-01047", How::User(UNPROVEN)),
+            ("VUID-vkBindImageMemory-memoryOffset-01048", How::Dynamic(BIND_MEMORY)),
+            ("VUID-vkBindImageMemory-size-01049", How::Dynamic(BIND_MEMORY)),
+            ("VUID-vkBindImageMemory-image-01608", How::User(UNPROVEN)),
+        ],
         ..NONE
     },
     Special {

@@ -17,6 +17,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
+        crate::hooks::bind_buffer_memory2_checks(self, bind_infos)?;
         {
             let r = self.validate_bind_buffer_memory2(bind_infos);
             r?;
@@ -29,7 +30,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, `VUID-VkBindBufferMemoryInfo-buffer-07459`, `VUID-VkBindBufferMemoryInfo-buffer-01030`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`, `VUID-VkBindBufferMemoryInfo-memory-01035`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`, `VUID-VkBindBufferMemoryInfo-size-01037`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn bind_buffer_memory2_unchecked<'a>(
         &self,
@@ -62,6 +63,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
+        crate::hooks::bind_image_memory2_checks(self, bind_infos)?;
         {
             let r = self.validate_bind_image_memory2(bind_infos);
             r?;
@@ -74,7 +76,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, `VUID-VkBindImageMemoryInfo-image-07460`, `VUID-VkBindImageMemoryInfo-image-01045`, `VUID-VkBindImageMemoryInfo-memoryOffset-01046`, `VUID-VkBindImageMemoryInfo-pNext-01615`, `VUID-VkBindImageMemoryInfo-pNext-01616`, `VUID-VkBindImageMemoryInfo-pNext-01617`, `VUID-VkBindImageMemoryInfo-pNext-01618`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn bind_image_memory2_unchecked<'a>(
         &self,
