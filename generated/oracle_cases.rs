@@ -583,6 +583,12 @@ oracle_cases! {
         "VUID-VkAttachmentDescription-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
         },
+        "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03284" => |v, l, o| {
+            v.initial_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03285" => |v, l, o| {
+            v.final_layout = vk::ImageLayout::from_raw(1000241000);
+        },
     },
     subpass_description: vk::SubpassDescription<'_> {
         "VUID-VkSubpassDescription-attachment-06913" => |v, l, o| {
@@ -617,6 +623,12 @@ oracle_cases! {
         "VUID-VkAttachmentDescription2-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
         },
+        "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284" => |v, l, o| {
+            v.initial_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285" => |v, l, o| {
+            v.final_layout = vk::ImageLayout::from_raw(1000241000);
+        },
     },
     subpass_description2: vk::SubpassDescription2<'_> {
         "VUID-VkSubpassDescription2-attachment-06913" => |v, l, o| {
@@ -627,6 +639,9 @@ oracle_cases! {
         },
         "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
+        },
+        "VUID-VkSubpassDescription2-multiview-06558" => |v, l, o| {
+            v.view_mask = 1;
         },
     },
     subpass_dependency2: vk::SubpassDependency2<'_> {
@@ -664,6 +679,9 @@ oracle_cases! {
         },
         "VUID-VkBufferCreateInfo-flags-00915" => |v, l, o| {
             v.flags |= vk::BufferCreateFlags::from_raw(0x1);
+        },
+        "VUID-VkBufferCreateInfo-flags-01887" => |v, l, o| {
+            v.flags |= vk::BufferCreateFlags::from_raw(0x8);
         },
     },
     buffer_view_create_info: vk::BufferViewCreateInfo<'_> {
@@ -710,6 +728,9 @@ oracle_cases! {
         },
         "VUID-VkImageCreateInfo-format-00943" => |v, l, o| {
             v.format = vk::Format::from_raw(0);
+        },
+        "VUID-VkImageCreateInfo-flags-01890" => |v, l, o| {
+            v.flags |= vk::ImageCreateFlags::from_raw(0x800);
         },
     },
     image_view_create_info: vk::ImageViewCreateInfo<'_> {

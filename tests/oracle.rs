@@ -17,7 +17,7 @@ mod tuff_setup;
 mod vulkan;
 
 use tuff::vk;
-use tuff_setup::{setup, Setup};
+use tuff_setup::{setup, setup_with_extension_feature_structs, Setup};
 
 type Limits = vk::PhysicalDeviceLimits;
 
@@ -1318,6 +1318,16 @@ const IMPLIED: &[(&str, &[&str], &str)] = &[
     ("srcOffset-00272", &["srcImage-00273"], FLAT),
     ("dstOffset-00277", &["dstImage-00278"], FLAT),
     (
+        "separateDepthStencilLayouts-03284",
+        &["format-03286"],
+        COLOR_ATTACHMENT,
+    ),
+    (
+        "separateDepthStencilLayouts-03285",
+        &["format-03287"],
+        COLOR_ATTACHMENT,
+    ),
+    (
         "srcOffset-00113",
         &["size-00115"],
         "an offset at the buffer's size leaves no room for the region's size",
@@ -1329,6 +1339,8 @@ const IMPLIED: &[(&str, &[&str], &str)] = &[
     ),
 ];
 
+const COLOR_ATTACHMENT: &str = "the fixture's attachment has a color format, and the depth and \
+     stencil layouts the rule forbids without the feature a color format forbids as well";
 const LEVEL_PAST: &str =
     "a mip level past the image's has no extent, so the region lies outside it as well";
 const TWICE: &str =
@@ -2044,4 +2056,29 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         );
     }
     vulkan::assert_silent(&s.messages);
+}
+
+/// A feature enabled through the struct of the extension it came from
+/// (`VkPhysicalDeviceSynchronization2Features`) rather than a core version's
+/// features struct is known too: a barrier that needs `synchronization2` (an
+/// `ATTACHMENT_OPTIMAL` layout, `VUID-VkImageMemoryBarrier-synchronization2-07793`)
+/// is accepted, and the layer agrees.
+#[test]
+fn a_feature_enabled_through_its_extension_struct_is_known() {
+    let _serial = vulkan::serial();
+    let s = setup_with_extension_feature_structs(true);
+    let limits = s.physical.get_physical_device_properties().limits;
+    let out = image_memory_barrier(&s, &limits, &|v, _, _| {
+        v.old_layout = vk::ImageLayout::ATTACHMENT_OPTIMAL;
+    });
+    assert!(
+        out.safe.is_ok(),
+        "tuff refused a barrier that synchronization2 allows: {:?}",
+        out.safe
+    );
+    assert!(
+        out.layer.is_empty(),
+        "the layer reported the barrier:\n{}",
+        out.layer.join("\n")
+    );
 }

@@ -1129,8 +1129,9 @@ pub(crate) fn instance_created(
     )
 }
 
-/// The device remembers its enabled extensions and Vulkan 1.0 features (given
-/// directly or in a chained `VkPhysicalDeviceFeatures2`).
+/// The device remembers its enabled extensions and core features (given directly,
+/// in a chained `VkPhysicalDeviceFeatures2`, a core version's features struct, or
+/// the struct of the extension a core feature came from).
 pub(crate) fn device_created(
     physical: &PhysicalDevice,
     raw: vk::Device,
@@ -1138,20 +1139,20 @@ pub(crate) fn device_created(
 ) -> Device {
     let device = Device::from_created(physical, raw, &create_info.enabled_extensions());
     let info = create_info.as_raw();
+    let mut features = crate::validation::Features::default();
     // SAFETY: the safe setter stores a reference that outlives the create info.
-    let mut features = unsafe { info.p_enabled_features.as_ref() }.copied();
+    if let Some(v10) = unsafe { info.p_enabled_features.as_ref() } {
+        features.v10 = *v10;
+    }
     let mut next = info.p_next.cast::<vk::BaseInStructure<'_>>();
     // SAFETY: the safe struct chains only structs pushed through `push_next`, each a
     // valid Vulkan struct that starts with sType and pNext.
     while let Some(node) = unsafe { next.as_ref() } {
-        if node.s_type == vk::StructureType::PHYSICAL_DEVICE_FEATURES_2 {
-            // SAFETY: the sType says which struct this is.
-            let f2 = unsafe { &*next.cast::<vk::PhysicalDeviceFeatures2<'_>>() };
-            features = Some(f2.features);
-        }
+        // SAFETY: as above.
+        unsafe { crate::features::add_chained(next, &mut features) };
         next = node.p_next;
     }
-    device.live().set_features(features.unwrap_or_default());
+    device.live().set_features(features);
     device
 }
 

@@ -30,6 +30,9 @@ mod command_checks;
 #[path = "generated/commands/mod.rs"]
 #[rustfmt::skip]
 mod commands;
+#[path = "generated/features.rs"]
+#[rustfmt::skip]
+mod features;
 #[path = "generated/handles.rs"]
 #[rustfmt::skip]
 pub mod handles;

@@ -83,8 +83,8 @@ pub(crate) struct Live {
     sets_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// The physical device's limits, read once.
     limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
-    /// The Vulkan 1.0 features the device was created with.
-    features: std::sync::OnceLock<vk::PhysicalDeviceFeatures>,
+    /// The core features the device was created with.
+    features: std::sync::OnceLock<crate::validation::Features>,
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
     /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
     bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
@@ -416,14 +416,26 @@ impl Live {
         self.pipeline_layouts.lock().get(&raw.as_raw()).cloned()
     }
 
-    /// Records the Vulkan 1.0 features the device was created with.
-    pub(crate) fn set_features(&self, features: vk::PhysicalDeviceFeatures) {
+    /// Records the core features the device was created with.
+    pub(crate) fn set_features(&self, features: crate::validation::Features) {
         let _ = self.features.set(features);
     }
 
     /// The Vulkan 1.0 features the device was created with.
     pub(crate) fn features(&self) -> vk::PhysicalDeviceFeatures {
-        self.features.get().copied().unwrap_or_default()
+        self.with_features(|f| f.v10)
+    }
+
+    /// Runs `read` on the core features the device was created with (none, before
+    /// they are recorded).
+    pub(crate) fn with_features<R>(
+        &self,
+        read: impl FnOnce(&crate::validation::Features) -> R,
+    ) -> R {
+        match self.features.get() {
+            Some(f) => read(f),
+            None => read(&crate::validation::Features::default()),
+        }
     }
 
     /// The physical device's limits, read from `read` the first time.

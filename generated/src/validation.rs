@@ -59,16 +59,13 @@ impl<'a> Scope<'a> {
         origins.iter().any(|&i| self.exts.has(i))
     }
 
-    /// Whether a Vulkan 1.0 feature is enabled on the scope's device. Without a
-    /// device in scope the answer is yes, so a rule that applies only when a
-    /// feature is off is not enforced where the feature cannot be known.
+    /// Whether a core feature is enabled on the scope's device. Without a device in
+    /// scope the answer is yes, so a rule that applies only when a feature is off
+    /// is not enforced where the feature cannot be known.
     #[inline]
-    pub(crate) fn feature(
-        &self,
-        get: impl FnOnce(&vk::PhysicalDeviceFeatures) -> vk::Bool32,
-    ) -> bool {
+    pub(crate) fn feature(&self, get: impl FnOnce(&Features) -> vk::Bool32) -> bool {
         self.device
-            .is_none_or(|d| get(&d.live().features()) != vk::FALSE)
+            .is_none_or(|d| d.live().with_features(|f| get(f) != vk::FALSE))
     }
 
     /// The record of a buffer made through the wrappers on the scope's device.
@@ -122,6 +119,27 @@ impl Device {
         }
     }
 }
+
+/// The core features a device was created with, from its create info's
+/// `pEnabledFeatures` and every features struct of its chain (each copied without
+/// its `pNext`).
+#[derive(Clone, Copy, Default)]
+pub(crate) struct Features {
+    /// Vulkan 1.0's.
+    pub v10: vk::PhysicalDeviceFeatures,
+    /// Vulkan 1.1's.
+    pub v11: vk::PhysicalDeviceVulkan11Features<'static>,
+    /// Vulkan 1.2's.
+    pub v12: vk::PhysicalDeviceVulkan12Features<'static>,
+    /// Vulkan 1.3's.
+    pub v13: vk::PhysicalDeviceVulkan13Features<'static>,
+}
+
+// SAFETY: the `pNext` of each struct stays null: the features are copied member
+// by member, and nothing dereferences the pointer.
+unsafe impl Send for Features {}
+// SAFETY: as above; the struct is plain data.
+unsafe impl Sync for Features {}
 
 /// The error of a failed check.
 #[cold]

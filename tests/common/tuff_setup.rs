@@ -34,15 +34,36 @@ pub fn setup(validation: bool) -> Setup {
 
 /// [`setup`], with window-system extensions.
 pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
-    setup_full(validation, wsi, vk::PhysicalDeviceFeatures::default())
+    setup_full(
+        validation,
+        wsi,
+        vk::PhysicalDeviceFeatures::default(),
+        false,
+    )
 }
 
 /// [`setup`], with these Vulkan 1.0 features enabled.
 pub fn setup_with_features(validation: bool, features: vk::PhysicalDeviceFeatures) -> Setup {
-    setup_full(validation, Wsi::None, features)
+    setup_full(validation, Wsi::None, features, false)
 }
 
-fn setup_full(validation: bool, wsi: Wsi, features: vk::PhysicalDeviceFeatures) -> Setup {
+/// [`setup`], with the same Vulkan 1.2 and 1.3 features enabled through the
+/// structs of the extensions they came from rather than the core versions' structs.
+pub fn setup_with_extension_feature_structs(validation: bool) -> Setup {
+    setup_full(
+        validation,
+        Wsi::None,
+        vk::PhysicalDeviceFeatures::default(),
+        true,
+    )
+}
+
+fn setup_full(
+    validation: bool,
+    wsi: Wsi,
+    features: vk::PhysicalDeviceFeatures,
+    extension_structs: bool,
+) -> Setup {
     if validation {
         // SAFETY: set before any thread of this test reads the environment.
         unsafe {
@@ -112,16 +133,25 @@ fn setup_full(validation: bool, wsi: Wsi, features: vk::PhysicalDeviceFeatures) 
         Wsi::None => vec![],
         Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],
     };
-    let device = physical
-        .create_device(
-            &tuff::DeviceCreateInfo::new()
-                .queue_create_infos(&queues)
-                .enabled_extension_names(&device_exts)
-                .enabled_features(Some(&features))
-                .push_next(&mut features13)
-                .push_next(&mut features12),
-        )
-        .expect("create device");
+    let mut sync2 = tuff::PhysicalDeviceSynchronization2Features::new().synchronization2(vk::TRUE);
+    let mut private_data = tuff::PhysicalDevicePrivateDataFeatures::new().private_data(vk::TRUE);
+    let mut imageless =
+        tuff::PhysicalDeviceImagelessFramebufferFeatures::new().imageless_framebuffer(vk::TRUE);
+    let mut timeline =
+        tuff::PhysicalDeviceTimelineSemaphoreFeatures::new().timeline_semaphore(vk::TRUE);
+    let info = tuff::DeviceCreateInfo::new()
+        .queue_create_infos(&queues)
+        .enabled_extension_names(&device_exts)
+        .enabled_features(Some(&features));
+    let info = if extension_structs {
+        info.push_next(&mut sync2)
+            .push_next(&mut private_data)
+            .push_next(&mut imageless)
+            .push_next(&mut timeline)
+    } else {
+        info.push_next(&mut features13).push_next(&mut features12)
+    };
+    let device = physical.create_device(&info).expect("create device");
     let queue = device.get_device_queue(family, 0);
     let memory_types = physical.get_physical_device_memory_properties();
     Setup {

@@ -275,12 +275,17 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                 quote!(#record.is_none_or(|r| #bound))
             }
         }
-        Pred::Feature { name, enabled } => {
+        Pred::Feature {
+            name,
+            core,
+            enabled,
+        } => {
             let f = field_ident(name);
+            let core = proc_macro2::Ident::new(core, proc_macro2::Span::call_site());
             if *enabled != negated {
-                quote!(s.feature(|f| f.#f))
+                quote!(s.feature(|f| f.#core.#f))
             } else {
-                quote!(!s.feature(|f| f.#f))
+                quote!(!s.feature(|f| f.#core.#f))
             }
         }
         Pred::ImageType { handle, values } => {

@@ -6,6 +6,7 @@ mod api_info;
 pub mod checks;
 pub mod commands;
 pub mod explicit;
+pub mod features;
 pub mod handles;
 pub mod reach;
 pub mod structs;
@@ -273,6 +274,7 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
     let mut files = vec![
         ("handles.rs".to_owned(), handles::emit(cx)),
         ("reach.rs".to_owned(), reach::emit(cx)),
+        ("features.rs".to_owned(), features::emit(cx.model)),
     ];
     files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));

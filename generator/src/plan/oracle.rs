@@ -344,11 +344,23 @@ fn mask(bits: &[Value]) -> u64 {
     bits.iter().fold(0, |acc, b| acc | b.number as u64)
 }
 
-/// Changes that make a condition hold. The fixtures' device enables no Vulkan 1.0
-/// feature, so "feature not enabled" holds already.
+/// The core features the fixtures' device enables (`tests/common/tuff_setup.rs`):
+/// the tests record `*2` barriers, imageless framebuffers, timeline semaphores and
+/// private data. It enables no Vulkan 1.0 feature.
+pub const FIXTURE_FEATURES: &[&str] = &[
+    "privateData",
+    "synchronization2",
+    "imagelessFramebuffer",
+    "timelineSemaphore",
+];
+
+/// Changes that make a condition hold: a feature is on or off as the fixtures'
+/// device has it, or the case is not made.
 fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
-        Pred::Feature { enabled: false, .. } => {}
+        Pred::Feature { name, enabled, .. } => {
+            (FIXTURE_FEATURES.contains(&name.as_str()) == *enabled).then_some(())?
+        }
         // The fixtures use no API constant (`VK_ATTACHMENT_UNUSED`, `VK_WHOLE_SIZE`,
         // `VK_REMAINING_MIP_LEVELS`); a fixture that did would fail its case, not
         // pass it.

@@ -201,11 +201,13 @@ pub enum Pred {
         /// What it names.
         object: Object,
     },
-    /// A Vulkan 1.0 feature (a member of `VkPhysicalDeviceFeatures`) is enabled on
-    /// the device.
+    /// A core feature (a member of `VkPhysicalDeviceFeatures` or of a core
+    /// version's features struct) is enabled on the device.
     Feature {
         /// The feature.
         name: String,
+        /// Which core version's features hold it (`v10` to `v13`).
+        core: &'static str,
         /// Enabled rather than not.
         enabled: bool,
     },
@@ -736,8 +738,10 @@ fn condition(input: &Input, text: &str) -> Option<Pred> {
         });
     }
     if let Some(c) = whole(feat, text) {
+        let (name, core) = feature(input, &c[0])?;
         return Some(Pred::Feature {
-            name: feature(input, &c[0])?,
+            name,
+            core,
             enabled: c[1].is_empty(),
         });
     }
@@ -918,13 +922,31 @@ fn glob(input: &Input, group: &str, pattern: &str) -> Option<Vec<Value>> {
     resolve(input, group, &found)
 }
 
-/// A Vulkan 1.0 feature by name.
-fn feature(input: &Input, name: &str) -> Option<String> {
-    let f = input.model.types.get("VkPhysicalDeviceFeatures")?;
-    f.members
-        .iter()
-        .any(|m| m.name == name)
-        .then(|| name.to_owned())
+/// The core features structs, and the field of the generated crate's `Features`
+/// (what a device was created with) that holds each.
+pub const CORE_FEATURES: &[(&str, &str)] = &[
+    ("VkPhysicalDeviceFeatures", "v10"),
+    ("VkPhysicalDeviceVulkan11Features", "v11"),
+    ("VkPhysicalDeviceVulkan12Features", "v12"),
+    ("VkPhysicalDeviceVulkan13Features", "v13"),
+];
+
+/// The field of `Features` that holds a core feature, if `name` is one.
+pub fn core_feature(model: &Model, name: &str) -> Option<&'static str> {
+    CORE_FEATURES.iter().find_map(|(ty, field)| {
+        model
+            .types
+            .get(*ty)?
+            .members
+            .iter()
+            .any(|m| m.name == name && m.type_name == "VkBool32")
+            .then_some(*field)
+    })
+}
+
+/// A core feature by name, with where the device keeps it.
+fn feature(input: &Input, name: &str) -> Option<(String, &'static str)> {
+    Some((name.to_owned(), core_feature(input.model, name)?))
 }
 
 fn whole(re: &Regex, text: &str) -> Option<Vec<String>> {

@@ -330,7 +330,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdPipelineBarrier-srcStageMask-04090",
@@ -341,7 +341,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (src_stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader)
+            && (src_stage_mask.as_raw() & 48) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdPipelineBarrier-srcStageMask-04091",
@@ -352,7 +354,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdPipelineBarrier-dstStageMask-04090",
@@ -363,7 +365,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (dst_stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader)
+            && (dst_stage_mask.as_raw() & 48) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdPipelineBarrier-dstStageMask-04091",
@@ -468,7 +472,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.depth_bias_clamp) && (depth_bias_clamp as f64).is_nan()
+        if !s.feature(|f| f.v10.depth_bias_clamp) && (depth_bias_clamp as f64).is_nan()
             || depth_bias_clamp != 0.0
         {
             return Err(
@@ -514,7 +518,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.wide_lines) && (line_width as f64).is_nan()
+        if !s.feature(|f| f.v10.wide_lines) && (line_width as f64).is_nan()
             || line_width != 1.0
         {
             return Err(
@@ -738,7 +742,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
-        if !s.feature(|f| f.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdWaitEvents-srcStageMask-04090",
@@ -749,7 +753,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (src_stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader)
+            && (src_stage_mask.as_raw() & 48) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWaitEvents-srcStageMask-04091",
@@ -760,7 +766,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdWaitEvents-dstStageMask-04090",
@@ -771,7 +777,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (dst_stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader)
+            && (dst_stage_mask.as_raw() & 48) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWaitEvents-dstStageMask-04091",
@@ -826,7 +834,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && matches!(pipeline_stage.as_raw(), 64) {
+        if !s.feature(|f| f.v10.geometry_shader) && matches!(pipeline_stage.as_raw(), 64)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp-pipelineStage-04075",
@@ -837,7 +846,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader)
+        if !s.feature(|f| f.v10.tessellation_shader)
             && matches!(pipeline_stage.as_raw(), 16 | 32)
         {
             return Err(
@@ -845,6 +854,18 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdWriteTimestamp-pipelineStage-04076",
                     format!(
                         "If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`pipelineStage` = {:?})",
+                        pipeline_stage
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v13.synchronization2) && matches!(pipeline_stage.as_raw(), 0)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp-synchronization2-06489",
+                    format!(
+                        "If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE` (`pipelineStage` = {:?})",
                         pipeline_stage
                     ),
                 ),
@@ -2692,7 +2713,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent-stageMask-04090",
@@ -2703,7 +2724,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent-stageMask-04091",
@@ -3228,7 +3249,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdSetEvent-stageMask-04090",
@@ -3239,7 +3260,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdSetEvent-stageMask-04091",
@@ -3440,7 +3461,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
+        if !s.feature(|f| f.v10.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndexedIndirect-drawCount-02718",
@@ -3519,7 +3540,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
+        if !s.feature(|f| f.v10.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndirect-drawCount-02718",

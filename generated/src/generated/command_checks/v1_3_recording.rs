@@ -162,7 +162,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-stageMask-03929",
@@ -173,7 +173,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-stageMask-03930",
@@ -731,7 +731,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.geometry_shader) && (stage.as_raw() & 64) != 0 {
+        if !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp2-stage-03929",
@@ -742,7 +742,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.tessellation_shader) && (stage.as_raw() & 48) != 0 {
+        if !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0 {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp2-stage-03930",

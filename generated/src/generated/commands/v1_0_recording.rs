@@ -1203,7 +1203,10 @@ The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khron
 - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 17.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 16: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_write_timestamp(
         &mut self,
@@ -1225,7 +1228,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_write_timestamp_unchecked(
         &mut self,

@@ -241,11 +241,12 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkBufferCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferCreateInfo-flags-01887`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 25.
+Left to the caller (listed one by one in the crate's `validation.json`): 24.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 22: explicit rule; the wrappers do not check it*/
+- 21: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -634,7 +635,10 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 19: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -962,7 +966,10 @@ The rules are on [`VkDescriptorSetLayoutBinding`'s reference page](https://regis
 
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 11: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBinding<'a> {
@@ -1215,8 +1222,8 @@ The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 55.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 52: explicit rule; the wrappers do not check it*/
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 51: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferCreateInfo<'a> {
@@ -1294,8 +1301,8 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 289.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 288: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 287: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
@@ -1515,11 +1522,12 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-format-00943`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCreateInfo-flags-01890`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 107.
+Left to the caller (listed one by one in the crate's `validation.json`): 106.
 
 - 13: checked by the safe methods in every build, but no oracle case breaks it yet
-- 94: explicit rule; the wrappers do not check it*/
+- 93: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {
@@ -1620,8 +1628,8 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 
 Left to the caller (listed one by one in the crate's `validation.json`): 43.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 40: explicit rule; the wrappers do not check it*/
+- 5: checked by the safe methods in every build, but no oracle case breaks it yet
+- 38: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {
@@ -1952,7 +1960,10 @@ The rules are on [`VkPipelineCacheCreateInfo`'s reference page](https://registry
 - `VUID-VkPipelineCacheCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineCacheCreateInfo-pInitialData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCacheCreateInfo<'a> {

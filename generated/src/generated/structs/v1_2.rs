@@ -21,8 +21,10 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-stencilStoreOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 25 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -133,8 +135,8 @@ The rules are on [`VkAttachmentReference2`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReference2<'a> {
@@ -2032,11 +2034,12 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription2-multiview-06558`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 41.
+Left to the caller (listed one by one in the crate's `validation.json`): 40.
 
 - 7: checked by the safe methods in every build, but no oracle case breaks it yet
-- 34: explicit rule; the wrappers do not check it*/
+- 33: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {

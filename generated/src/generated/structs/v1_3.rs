@@ -336,7 +336,10 @@ The rules are on [`VkCommandBufferInheritanceRenderingInfo`'s reference page](ht
 - `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 10: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceRenderingInfo<'a> {
@@ -1084,8 +1087,8 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 117.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 114: explicit rule; the wrappers do not check it*/
+- 5: checked by the safe methods in every build, but no oracle case breaks it yet
+- 112: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -2077,8 +2080,8 @@ The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 69.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 68: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 67: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingInfo<'a> {

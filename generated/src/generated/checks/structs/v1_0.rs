@@ -63,6 +63,32 @@ pub fn check_attachment_description(
             ),
         );
     }
+    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+        && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03284",
+                format!(
+                    "If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`initialLayout` = {:?})",
+                    v.initial_layout
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+        && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03285",
+                format!(
+                    "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
+                    v.final_layout
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkAttachmentReference` that are checked at run time.
@@ -81,6 +107,19 @@ pub fn check_attachment_reference(
                 "VUID-VkAttachmentReference-layout-03077",
                 format!(
                     "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
+                    v.attachment, v.layout
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v12.separate_depth_stencil_layouts) && v.attachment != u32::MAX
+        && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentReference-separateDepthStencilLayouts-03313",
+                format!(
+                    "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
                     v.attachment, v.layout
                 ),
             ),
@@ -176,7 +215,7 @@ pub fn check_buffer_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_binding) && (v.flags.as_raw() & 1) != 0 {
+    if !s.feature(|f| f.v10.sparse_binding) && (v.flags.as_raw() & 1) != 0 {
         return Err(
             fail(
                 "VUID-VkBufferCreateInfo-flags-00915",
@@ -187,7 +226,7 @@ pub fn check_buffer_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency_buffer) && (v.flags.as_raw() & 2) != 0 {
+    if !s.feature(|f| f.v10.sparse_residency_buffer) && (v.flags.as_raw() & 2) != 0 {
         return Err(
             fail(
                 "VUID-VkBufferCreateInfo-flags-00916",
@@ -198,12 +237,23 @@ pub fn check_buffer_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency_aliased) && (v.flags.as_raw() & 4) != 0 {
+    if !s.feature(|f| f.v10.sparse_residency_aliased) && (v.flags.as_raw() & 4) != 0 {
         return Err(
             fail(
                 "VUID-VkBufferCreateInfo-flags-00917",
                 format!(
                     "If the `sparseResidencyAliased` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v11.protected_memory) && (v.flags.as_raw() & 8) != 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferCreateInfo-flags-01887",
+                format!(
+                    "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_PROTECTED_BIT` (`flags` = {:?})",
                     v.flags
                 ),
             ),
@@ -436,7 +486,8 @@ pub fn check_command_buffer_inheritance_info(
             ),
         );
     }
-    if !s.feature(|f| f.inherited_queries) && !matches!(v.occlusion_query_enable, 0) {
+    if !s.feature(|f| f.v10.inherited_queries) && !matches!(v.occlusion_query_enable, 0)
+    {
         return Err(
             fail(
                 "VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056",
@@ -517,6 +568,19 @@ pub fn check_compute_pipeline_create_info(
                 "VUID-VkComputePipelineCreateInfo-commonparent",
                 "`basePipelineHandle` does not come from the VkDevice the command is called on"
                     .into(),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v13.pipeline_creation_cache_control)
+        && (v.flags.as_raw() & 768) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875",
+                format!(
+                    "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
             ),
         );
     }
@@ -727,6 +791,19 @@ pub fn check_descriptor_set_layout_binding(
         s,
         "VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter",
     )?;
+    if !s.feature(|f| f.v13.inline_uniform_block)
+        && matches!(v.descriptor_type.as_raw(), 1000138000)
+    {
+        return Err(
+            fail(
+                "VUID-VkDescriptorSetLayoutBinding-descriptorType-04604",
+                format!(
+                    "If the `inlineUniformBlock` feature is not enabled, `descriptorType` must not be `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` (`descriptorType` = {:?})",
+                    v.descriptor_type
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkDescriptorSetLayoutCreateInfo` that are checked at run time.
@@ -805,7 +882,7 @@ pub fn check_draw_indexed_indirect_command(
     v: &vk::DrawIndexedIndirectCommand,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if !s.feature(|f| f.draw_indirect_first_instance) && v.first_instance != 0 {
+    if !s.feature(|f| f.v10.draw_indirect_first_instance) && v.first_instance != 0 {
         return Err(
             fail(
                 "VUID-VkDrawIndexedIndirectCommand-firstInstance-00554",
@@ -823,7 +900,7 @@ pub fn check_draw_indirect_command(
     v: &vk::DrawIndirectCommand,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if !s.feature(|f| f.draw_indirect_first_instance) && v.first_instance != 0 {
+    if !s.feature(|f| f.v10.draw_indirect_first_instance) && v.first_instance != 0 {
         return Err(
             fail(
                 "VUID-VkDrawIndirectCommand-firstInstance-00501",
@@ -957,6 +1034,17 @@ pub fn check_framebuffer_create_info(
             ),
         );
     }
+    if !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0 {
+        return Err(
+            fail(
+                "VUID-VkFramebufferCreateInfo-flags-03189",
+                format!(
+                    "If the `imagelessFramebuffer` feature is not enabled, `flags` must not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
     crate::checks::chain(
         v.p_next,
         s,
@@ -1000,6 +1088,19 @@ pub fn check_graphics_pipeline_create_info(
                 "VUID-VkGraphicsPipelineCreateInfo-commonparent",
                 "`basePipelineHandle` does not come from the VkDevice the command is called on"
                     .into(),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v13.pipeline_creation_cache_control)
+        && (v.flags.as_raw() & 768) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkGraphicsPipelineCreateInfo-pipelineCreationCacheControl-02878",
+                format!(
+                    "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
             ),
         );
     }
@@ -1252,8 +1353,8 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.shader_storage_image_multisample) && (v.usage.as_raw() & 8) != 0
-        && !matches!(v.samples.as_raw(), 1)
+    if !s.feature(|f| f.v10.shader_storage_image_multisample)
+        && (v.usage.as_raw() & 8) != 0 && !matches!(v.samples.as_raw(), 1)
     {
         return Err(
             fail(
@@ -1265,7 +1366,7 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_binding) && (v.flags.as_raw() & 1) != 0 {
+    if !s.feature(|f| f.v10.sparse_binding) && (v.flags.as_raw() & 1) != 0 {
         return Err(
             fail(
                 "VUID-VkImageCreateInfo-flags-00969",
@@ -1276,7 +1377,7 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency_aliased) && (v.flags.as_raw() & 4) != 0 {
+    if !s.feature(|f| f.v10.sparse_residency_aliased) && (v.flags.as_raw() & 4) != 0 {
         return Err(
             fail(
                 "VUID-VkImageCreateInfo-flags-01924",
@@ -1309,8 +1410,8 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency_image2_d) && matches!(v.image_type.as_raw(), 1)
-        && (v.flags.as_raw() & 2) != 0
+    if !s.feature(|f| f.v10.sparse_residency_image2_d)
+        && matches!(v.image_type.as_raw(), 1) && (v.flags.as_raw() & 2) != 0
     {
         return Err(
             fail(
@@ -1322,8 +1423,8 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency_image3_d) && matches!(v.image_type.as_raw(), 2)
-        && (v.flags.as_raw() & 2) != 0
+    if !s.feature(|f| f.v10.sparse_residency_image3_d)
+        && matches!(v.image_type.as_raw(), 2) && (v.flags.as_raw() & 2) != 0
     {
         return Err(
             fail(
@@ -1335,8 +1436,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency2_samples) && matches!(v.image_type.as_raw(), 1)
-        && matches!(v.samples.as_raw(), 2) && (v.flags.as_raw() & 2) != 0
+    if !s.feature(|f| f.v10.sparse_residency2_samples)
+        && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 2)
+        && (v.flags.as_raw() & 2) != 0
     {
         return Err(
             fail(
@@ -1348,8 +1450,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency4_samples) && matches!(v.image_type.as_raw(), 1)
-        && matches!(v.samples.as_raw(), 4) && (v.flags.as_raw() & 2) != 0
+    if !s.feature(|f| f.v10.sparse_residency4_samples)
+        && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 4)
+        && (v.flags.as_raw() & 2) != 0
     {
         return Err(
             fail(
@@ -1361,8 +1464,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency8_samples) && matches!(v.image_type.as_raw(), 1)
-        && matches!(v.samples.as_raw(), 8) && (v.flags.as_raw() & 2) != 0
+    if !s.feature(|f| f.v10.sparse_residency8_samples)
+        && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 8)
+        && (v.flags.as_raw() & 2) != 0
     {
         return Err(
             fail(
@@ -1374,8 +1478,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sparse_residency16_samples) && matches!(v.image_type.as_raw(), 1)
-        && matches!(v.samples.as_raw(), 16) && (v.flags.as_raw() & 2) != 0
+    if !s.feature(|f| f.v10.sparse_residency16_samples)
+        && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 16)
+        && (v.flags.as_raw() & 2) != 0
     {
         return Err(
             fail(
@@ -1416,6 +1521,17 @@ pub fn check_image_create_info(
                 format!(
                     "If `flags` contains `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT`, `imageType` must be `VK_IMAGE_TYPE_3D` (`flags` = {:?}, `imageType` = {:?})",
                     v.flags, v.image_type
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v11.protected_memory) && (v.flags.as_raw() & 2048) != 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCreateInfo-flags-01890",
+                format!(
+                    "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_PROTECTED_BIT` (`flags` = {:?})",
+                    v.flags
                 ),
             ),
         );
@@ -1513,6 +1629,32 @@ pub fn check_image_memory_barrier(
                 "VUID-VkImageMemoryBarrier-image-01932",
                 "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
                     .into(),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-synchronization2-07793",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `oldLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`oldLayout` = {:?})",
+                    v.old_layout
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier-synchronization2-07794",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `newLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`newLayout` = {:?})",
+                    v.new_layout
+                ),
             ),
         );
     }
@@ -1640,7 +1782,7 @@ pub fn check_image_view_create_info(
     )?;
     crate::checks::check_component_mapping(&v.components, s)?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
-    if !s.feature(|f| f.image_cube_array) && matches!(v.view_type.as_raw(), 6) {
+    if !s.feature(|f| f.v10.image_cube_array) && matches!(v.view_type.as_raw(), 6) {
         return Err(
             fail(
                 "VUID-VkImageViewCreateInfo-viewType-01004",
@@ -1768,6 +1910,19 @@ pub fn check_pipeline_cache_create_info(
         s,
         "VUID-VkPipelineCacheCreateInfo-flags-parameter",
     )?;
+    if !s.feature(|f| f.v13.pipeline_creation_cache_control)
+        && (v.flags.as_raw() & 1) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892",
+                format!(
+                    "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkPipelineCacheHeaderVersionOne` that are checked at run time.
@@ -1833,7 +1988,7 @@ pub fn check_pipeline_color_blend_attachment_state(
         s,
         "VUID-VkPipelineColorBlendAttachmentState-colorWriteMask-parameter",
     )?;
-    if !s.feature(|f| f.dual_src_blend)
+    if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.src_color_blend_factor.as_raw(), 15..= 18)
     {
         return Err(
@@ -1846,7 +2001,7 @@ pub fn check_pipeline_color_blend_attachment_state(
             ),
         );
     }
-    if !s.feature(|f| f.dual_src_blend)
+    if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.dst_color_blend_factor.as_raw(), 15..= 18)
     {
         return Err(
@@ -1859,7 +2014,7 @@ pub fn check_pipeline_color_blend_attachment_state(
             ),
         );
     }
-    if !s.feature(|f| f.dual_src_blend)
+    if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.src_alpha_blend_factor.as_raw(), 15..= 18)
     {
         return Err(
@@ -1872,7 +2027,7 @@ pub fn check_pipeline_color_blend_attachment_state(
             ),
         );
     }
-    if !s.feature(|f| f.dual_src_blend)
+    if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.dst_alpha_blend_factor.as_raw(), 15..= 18)
     {
         return Err(
@@ -1897,7 +2052,7 @@ pub fn check_pipeline_color_blend_state_create_info(
         s,
         "VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter",
     )?;
-    if !s.feature(|f| f.logic_op) && !matches!(v.logic_op_enable, 0) {
+    if !s.feature(|f| f.v10.logic_op) && !matches!(v.logic_op_enable, 0) {
         return Err(
             fail(
                 "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606",
@@ -1936,7 +2091,7 @@ pub fn check_pipeline_depth_stencil_state_create_info(
     )?;
     crate::checks::check_stencil_op_state(&v.front, s)?;
     crate::checks::check_stencil_op_state(&v.back, s)?;
-    if !s.feature(|f| f.depth_bounds) && !matches!(v.depth_bounds_test_enable, 0) {
+    if !s.feature(|f| f.v10.depth_bounds) && !matches!(v.depth_bounds_test_enable, 0) {
         return Err(
             fail(
                 "VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598",
@@ -1992,7 +2147,7 @@ pub fn check_pipeline_input_assembly_state_create_info(
         s,
         "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter",
     )?;
-    if !s.feature(|f| f.tessellation_shader) && matches!(v.topology.as_raw(), 10) {
+    if !s.feature(|f| f.v10.tessellation_shader) && matches!(v.topology.as_raw(), 10) {
         return Err(
             fail(
                 "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430",
@@ -2055,7 +2210,8 @@ pub fn check_pipeline_multisample_state_create_info(
         s,
         "VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter",
     )?;
-    if !s.feature(|f| f.sample_rate_shading) && !matches!(v.sample_shading_enable, 0) {
+    if !s.feature(|f| f.v10.sample_rate_shading) && !matches!(v.sample_shading_enable, 0)
+    {
         return Err(
             fail(
                 "VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784",
@@ -2066,7 +2222,7 @@ pub fn check_pipeline_multisample_state_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.alpha_to_one) && !matches!(v.alpha_to_one_enable, 0) {
+    if !s.feature(|f| f.v10.alpha_to_one) && !matches!(v.alpha_to_one_enable, 0) {
         return Err(
             fail(
                 "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785",
@@ -2112,7 +2268,7 @@ pub fn check_pipeline_rasterization_state_create_info(
         s,
         "VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter",
     )?;
-    if !s.feature(|f| f.depth_clamp) && !matches!(v.depth_clamp_enable, 0) {
+    if !s.feature(|f| f.v10.depth_clamp) && !matches!(v.depth_clamp_enable, 0) {
         return Err(
             fail(
                 "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782",
@@ -2123,7 +2279,8 @@ pub fn check_pipeline_rasterization_state_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.fill_mode_non_solid) && !matches!(v.polygon_mode.as_raw(), 0) {
+    if !s.feature(|f| f.v10.fill_mode_non_solid) && !matches!(v.polygon_mode.as_raw(), 0)
+    {
         return Err(
             fail(
                 "VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413",
@@ -2156,7 +2313,7 @@ pub fn check_pipeline_shader_stage_create_info(
         s,
         "VUID-VkPipelineShaderStageCreateInfo-stage-parameter",
     )?;
-    if !s.feature(|f| f.geometry_shader) && matches!(v.stage.as_raw(), 8) {
+    if !s.feature(|f| f.v10.geometry_shader) && matches!(v.stage.as_raw(), 8) {
         return Err(
             fail(
                 "VUID-VkPipelineShaderStageCreateInfo-stage-00704",
@@ -2167,7 +2324,7 @@ pub fn check_pipeline_shader_stage_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && matches!(v.stage.as_raw(), 2 | 4) {
+    if !s.feature(|f| f.v10.tessellation_shader) && matches!(v.stage.as_raw(), 2 | 4) {
         return Err(
             fail(
                 "VUID-VkPipelineShaderStageCreateInfo-stage-00705",
@@ -2366,7 +2523,8 @@ pub fn check_query_pool_create_info(
         s,
         "VUID-VkQueryPoolCreateInfo-queryType-parameter",
     )?;
-    if !s.feature(|f| f.pipeline_statistics_query) && matches!(v.query_type.as_raw(), 1)
+    if !s.feature(|f| f.v10.pipeline_statistics_query)
+        && matches!(v.query_type.as_raw(), 1)
     {
         return Err(
             fail(
@@ -2493,7 +2651,7 @@ pub fn check_sampler_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.sampler_anisotropy) && !matches!(v.anisotropy_enable, 0) {
+    if !s.feature(|f| f.v10.sampler_anisotropy) && !matches!(v.anisotropy_enable, 0) {
         return Err(
             fail(
                 "VUID-VkSamplerCreateInfo-anisotropyEnable-01070",
@@ -2805,7 +2963,7 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
         s,
         "VUID-VkSubpassDependency-dependencyFlags-parameter",
     )?;
-    if !s.feature(|f| f.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkSubpassDependency-srcStageMask-04090",
@@ -2816,7 +2974,8 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency-srcStageMask-04091",
@@ -2827,7 +2986,7 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if !s.feature(|f| f.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkSubpassDependency-dstStageMask-04090",
@@ -2838,7 +2997,8 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency-dstStageMask-04091",

@@ -63,6 +63,32 @@ pub fn check_attachment_description2(
             ),
         );
     }
+    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+        && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284",
+                format!(
+                    "If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`initialLayout` = {:?})",
+                    v.initial_layout
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+        && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285",
+                format!(
+                    "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
+                    v.final_layout
+                ),
+            ),
+        );
+    }
     crate::checks::chain(
         v.p_next,
         s,
@@ -142,6 +168,19 @@ pub fn check_attachment_reference2(
                 "VUID-VkAttachmentReference2-layout-03077",
                 format!(
                     "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
+                    v.attachment, v.layout
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v12.separate_depth_stencil_layouts) && v.attachment != u32::MAX
+        && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313",
+                format!(
+                    "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
                     v.attachment, v.layout
                 ),
             ),
@@ -395,7 +434,7 @@ pub fn check_subpass_dependency2(
         s,
         "VUID-VkSubpassDependency2-dependencyFlags-parameter",
     )?;
-    if !s.feature(|f| f.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-srcStageMask-04090",
@@ -406,7 +445,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-srcStageMask-04091",
@@ -417,7 +457,7 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if !s.feature(|f| f.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-dstStageMask-04090",
@@ -428,7 +468,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-dstStageMask-04091",
@@ -675,6 +716,17 @@ pub fn check_subpass_description2(
                 format!(
                     "`pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS` (`pipelineBindPoint` = {:?})",
                     v.pipeline_bind_point
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v11.multiview) && v.view_mask != 0 {
+        return Err(
+            fail(
+                "VUID-VkSubpassDescription2-multiview-06558",
+                format!(
+                    "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
+                    v.view_mask
                 ),
             ),
         );

@@ -498,7 +498,7 @@ pub fn check_buffer_memory_barrier2(
         s,
         "VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter",
     )?;
-    if !s.feature(|f| f.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-srcStageMask-03929",
@@ -509,7 +509,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-srcStageMask-03930",
@@ -741,7 +742,7 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-dstStageMask-03929",
@@ -752,7 +753,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-dstStageMask-03930",
@@ -1091,6 +1093,17 @@ pub fn check_command_buffer_inheritance_rendering_info(
         s,
         "VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter",
     )?;
+    if !s.feature(|f| f.v11.multiview) && v.view_mask != 0 {
+        return Err(
+            fail(
+                "VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008",
+                format!(
+                    "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
+                    v.view_mask
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkCopyBufferInfo2` that are checked at run time.
@@ -2371,7 +2384,7 @@ pub fn check_image_memory_barrier2(
         "VUID-VkImageMemoryBarrier2-newLayout-parameter",
     )?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
-    if !s.feature(|f| f.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-srcStageMask-03929",
@@ -2382,7 +2395,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-srcStageMask-03930",
@@ -2614,7 +2628,7 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-dstStageMask-03929",
@@ -2625,7 +2639,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-dstStageMask-03930",
@@ -2960,6 +2975,32 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
+    if !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-synchronization2-07793",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `oldLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`oldLayout` = {:?})",
+                    v.old_layout
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkImageMemoryBarrier2-synchronization2-07794",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `newLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`newLayout` = {:?})",
+                    v.new_layout
+                ),
+            ),
+        );
+    }
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
     crate::checks::chain(v.p_next, s, Some("VUID-VkImageMemoryBarrier2-sType-unique"))?;
     Ok(())
@@ -2994,7 +3035,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         s,
         "VUID-VkMemoryBarrier2-dstAccessMask-parameter",
     )?;
-    if !s.feature(|f| f.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkMemoryBarrier2-srcStageMask-03929",
@@ -3005,7 +3046,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkMemoryBarrier2-srcStageMask-03930",
@@ -3237,7 +3279,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if !s.feature(|f| f.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkMemoryBarrier2-dstStageMask-03929",
@@ -3248,7 +3290,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkMemoryBarrier2-dstStageMask-03930",
@@ -3589,6 +3632,17 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
                 format!(
                     "If `viewMask` is `0`, `layerCount` must not be `0` (`viewMask` = {:?}, `layerCount` = {:?})",
                     v.view_mask, v.layer_count
+                ),
+            ),
+        );
+    }
+    if !s.feature(|f| f.v11.multiview) && v.view_mask != 0 {
+        return Err(
+            fail(
+                "VUID-VkRenderingInfo-multiview-06127",
+                format!(
+                    "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
+                    v.view_mask
                 ),
             ),
         );
@@ -4087,7 +4141,7 @@ pub fn check_semaphore_submit_info(
         s,
         "VUID-VkSemaphoreSubmitInfo-stageMask-parameter",
     )?;
-    if !s.feature(|f| f.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0 {
+    if !s.feature(|f| f.v10.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0 {
         return Err(
             fail(
                 "VUID-VkSemaphoreSubmitInfo-stageMask-03929",
@@ -4098,7 +4152,7 @@ pub fn check_semaphore_submit_info(
             ),
         );
     }
-    if !s.feature(|f| f.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0 {
+    if !s.feature(|f| f.v10.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0 {
         return Err(
             fail(
                 "VUID-VkSemaphoreSubmitInfo-stageMask-03930",
