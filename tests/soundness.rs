@@ -3589,3 +3589,119 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     );
     assert_silent(&s.messages);
 }
+
+/// An image past what its format allows (its Image Creation Limits, queried from
+/// the device, or more levels than its extent has) is refused before the driver
+/// sees it, and the layer names the same rule for the unchecked call.
+#[test]
+fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let sampled = vk::ImageUsageFlags::SAMPLED;
+    let limits = |ty, tiling| {
+        s.physical
+            .get_physical_device_image_format_properties(
+                rgba,
+                ty,
+                tiling,
+                sampled,
+                vk::ImageCreateFlags::empty(),
+            )
+            .expect("image format properties")
+    };
+    let optimal2d = limits(vk::ImageType::TYPE_2D, vk::ImageTiling::OPTIMAL);
+    let optimal3d = limits(vk::ImageType::TYPE_3D, vk::ImageTiling::OPTIMAL);
+    let base = || {
+        tuff::ImageCreateInfo::new()
+            .image_type(vk::ImageType::TYPE_2D)
+            .format(rgba)
+            .extent(vk::Extent3D {
+                width: 4,
+                height: 4,
+                depth: 1,
+            })
+            .mip_levels(1)
+            .array_layers(1)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .usage(sampled)
+    };
+    let past = |n: u32| n.checked_add(1).expect("a limit below u32::MAX");
+    let mut cases = vec![
+        // A 4x4 image has 3 levels.
+        (
+            base().mip_levels(4),
+            "VUID-VkImageCreateInfo-mipLevels-00958",
+        ),
+        (
+            base().extent(vk::Extent3D {
+                width: past(optimal2d.max_extent.width),
+                height: 1,
+                depth: 1,
+            }),
+            "VUID-VkImageCreateInfo-extent-02252",
+        ),
+        (
+            base().extent(vk::Extent3D {
+                width: 1,
+                height: past(optimal2d.max_extent.height),
+                depth: 1,
+            }),
+            "VUID-VkImageCreateInfo-extent-02253",
+        ),
+        (
+            base()
+                .image_type(vk::ImageType::TYPE_3D)
+                .extent(vk::Extent3D {
+                    width: 1,
+                    height: 1,
+                    depth: past(optimal3d.max_extent.depth),
+                }),
+            "VUID-VkImageCreateInfo-extent-02254",
+        ),
+        (
+            base().array_layers(past(optimal2d.max_array_layers)),
+            "VUID-VkImageCreateInfo-arrayLayers-02256",
+        ),
+        (
+            // A color format cannot be a depth attachment.
+            base().usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT),
+            "VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251",
+        ),
+    ];
+    let unsupported = [
+        vk::SampleCountFlags::TYPE_64,
+        vk::SampleCountFlags::TYPE_32,
+        vk::SampleCountFlags::TYPE_16,
+        vk::SampleCountFlags::TYPE_8,
+    ]
+    .into_iter()
+    .find(|c| !optimal2d.sample_counts.contains(*c))
+    .expect("a sample count the format does not support");
+    cases.push((
+        base().samples(unsupported),
+        "VUID-VkImageCreateInfo-samples-02258",
+    ));
+    for (info, rule) in &cases {
+        assert_eq!(vuid(d.create_image(info)), *rule, "{rule}");
+        assert_silent(&s.messages);
+        // SAFETY: the layer skips the call it reports (its messenger says so), so the
+        // driver never creates the image.
+        layer_names(&s, rule, || {
+            let _ = unsafe { d.create_image_unchecked(info) };
+        });
+    }
+    // The same limits allow what they allow: the largest 2D image the format has
+    // is accepted (and not bound, so it costs no memory).
+    let largest = base()
+        .extent(vk::Extent3D {
+            width: optimal2d.max_extent.width,
+            height: 1,
+            depth: 1,
+        })
+        .mip_levels(32 - optimal2d.max_extent.width.leading_zeros());
+    d.create_image(&largest)
+        .expect("the largest image the limits allow");
+    assert_silent(&s.messages);
+}

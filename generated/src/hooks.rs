@@ -2691,3 +2691,210 @@ unsafe fn chains(mut next: *const std::ffi::c_void, s_type: vk::StructureType) -
     }
     false
 }
+
+/// The Image Creation Limits of a create info: what
+/// `vkGetPhysicalDeviceImageFormatProperties(2)` says of its format, type, tiling,
+/// usage and flags, with the chained structs that narrow them (a format list, a
+/// stencil usage, each external handle type), intersected; `None` where a query
+/// says the combination is not supported.
+fn image_creation_limits(
+    device: &Device,
+    info: &vk::ImageCreateInfo<'_>,
+) -> Option<vk::ImageFormatProperties> {
+    let physical = device.parent();
+    let instance = physical.parent();
+    let mut list = None;
+    let mut stencil = None;
+    let mut handles = vk::ExternalMemoryHandleTypeFlags::empty();
+    let mut next = info.p_next.cast::<vk::BaseInStructure<'_>>();
+    // SAFETY: the safe struct chains only structs pushed through `push_next`, each a
+    // valid Vulkan struct that starts with sType and pNext.
+    while let Some(node) = unsafe { next.as_ref() } {
+        match node.s_type {
+            vk::StructureType::IMAGE_FORMAT_LIST_CREATE_INFO => {
+                // SAFETY: the sType says which struct this is.
+                list = Some(unsafe { *next.cast::<vk::ImageFormatListCreateInfo<'_>>() });
+            }
+            vk::StructureType::IMAGE_STENCIL_USAGE_CREATE_INFO => {
+                // SAFETY: as above.
+                stencil = Some(unsafe { *next.cast::<vk::ImageStencilUsageCreateInfo<'_>>() });
+            }
+            vk::StructureType::EXTERNAL_MEMORY_IMAGE_CREATE_INFO => {
+                // SAFETY: as above.
+                handles =
+                    unsafe { (*next.cast::<vk::ExternalMemoryImageCreateInfo<'_>>()).handle_types };
+            }
+            _ => {}
+        }
+        next = node.p_next;
+    }
+    let narrowed = list.is_some() || stencil.is_some() || !handles.is_empty();
+    if !narrowed || !instance.exts().version(1) {
+        // SAFETY: a live physical device of its instance; the values come from a safe
+        // create info (the implicit checks passed).
+        return unsafe {
+            instance.fns().get_physical_device_image_format_properties(
+                physical.raw(),
+                info.format,
+                info.image_type,
+                info.tiling,
+                info.usage,
+                info.flags,
+            )
+        }
+        .ok();
+    }
+    // Each handle type is its own query; no handle type is one query without one.
+    let mut each: Vec<Option<vk::ExternalMemoryHandleTypeFlags>> = (0..32)
+        .map(|b| vk::ExternalMemoryHandleTypeFlags::from_raw(1 << b))
+        .filter(|h| handles.contains(*h))
+        .map(Some)
+        .collect();
+    if each.is_empty() {
+        each.push(None);
+    }
+    let mut limits: Option<vk::ImageFormatProperties> = None;
+    for handle in each {
+        let mut format_info = vk::PhysicalDeviceImageFormatInfo2::default()
+            .format(info.format)
+            .ty(info.image_type)
+            .tiling(info.tiling)
+            .usage(info.usage)
+            .flags(info.flags);
+        // The copies join this query's chain instead of the create info's.
+        let mut list = list.map(|mut l| {
+            l.p_next = std::ptr::null();
+            l
+        });
+        let mut stencil = stencil.map(|mut s| {
+            s.p_next = std::ptr::null();
+            s
+        });
+        let mut external =
+            handle.map(|h| vk::PhysicalDeviceExternalImageFormatInfo::default().handle_type(h));
+        if let Some(l) = list.as_mut() {
+            format_info = format_info.push_next(l);
+        }
+        if let Some(s) = stencil.as_mut() {
+            format_info = format_info.push_next(s);
+        }
+        if let Some(e) = external.as_mut() {
+            format_info = format_info.push_next(e);
+        }
+        let mut out = vk::ImageFormatProperties2::default();
+        // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain holds
+        // copies of the create info's own structs, each with its pNext reset.
+        unsafe {
+            instance.fns().get_physical_device_image_format_properties2(
+                physical.raw(),
+                &format_info,
+                &mut out,
+            )
+        }
+        .ok()?;
+        let p = out.image_format_properties;
+        limits = Some(match limits {
+            None => p,
+            Some(l) => vk::ImageFormatProperties {
+                max_extent: vk::Extent3D {
+                    width: l.max_extent.width.min(p.max_extent.width),
+                    height: l.max_extent.height.min(p.max_extent.height),
+                    depth: l.max_extent.depth.min(p.max_extent.depth),
+                },
+                max_mip_levels: l.max_mip_levels.min(p.max_mip_levels),
+                max_array_layers: l.max_array_layers.min(p.max_array_layers),
+                sample_counts: l.sample_counts & p.sample_counts,
+                max_resource_size: l.max_resource_size.min(p.max_resource_size),
+            },
+        });
+    }
+    limits
+}
+
+/// Refuses an image that its format cannot have: a combination of format, type,
+/// tiling, usage and flags the device does not support, an extent, level count,
+/// layer count or sample count past the Image Creation Limits, or more levels than
+/// the extent has.
+pub(crate) fn create_image_checks(
+    device: &Device,
+    create_info: &ImageCreateInfo<'_>,
+) -> Result<()> {
+    let info = create_info.as_raw();
+    let e = info.extent;
+    let longest = e.width.max(e.height).max(e.depth).max(1);
+    let chain = 32 - longest.leading_zeros();
+    if info.mip_levels > chain {
+        refuse(
+            "VUID-VkImageCreateInfo-mipLevels-00958",
+            format!(
+                "mipLevels must be at most the {chain} levels of a full chain for extent {}x{}x{} (mipLevels = {})",
+                e.width, e.height, e.depth, info.mip_levels
+            ),
+        )?;
+    }
+    let Some(limits) = image_creation_limits(device, info) else {
+        return refuse(
+            "VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251",
+            format!(
+                "the device supports no image of format {:?}, type {:?}, tiling {:?}, usage {:?} and flags {:?}",
+                info.format, info.image_type, info.tiling, info.usage, info.flags
+            ),
+        );
+    };
+    let m = limits.max_extent;
+    for (vuid, dim, value, max) in [
+        (
+            "VUID-VkImageCreateInfo-extent-02252",
+            "width",
+            e.width,
+            m.width,
+        ),
+        (
+            "VUID-VkImageCreateInfo-extent-02253",
+            "height",
+            e.height,
+            m.height,
+        ),
+        (
+            "VUID-VkImageCreateInfo-extent-02254",
+            "depth",
+            e.depth,
+            m.depth,
+        ),
+    ] {
+        if value > max {
+            refuse(
+                vuid,
+                format!("extent.{dim} must be at most the format's {max} (extent.{dim} = {value})"),
+            )?;
+        }
+    }
+    if info.mip_levels > limits.max_mip_levels {
+        refuse(
+            "VUID-VkImageCreateInfo-mipLevels-02255",
+            format!(
+                "mipLevels must be at most the format's {} (mipLevels = {})",
+                limits.max_mip_levels, info.mip_levels
+            ),
+        )?;
+    }
+    if info.array_layers > limits.max_array_layers {
+        refuse(
+            "VUID-VkImageCreateInfo-arrayLayers-02256",
+            format!(
+                "arrayLayers must be at most the format's {} (arrayLayers = {})",
+                limits.max_array_layers, info.array_layers
+            ),
+        )?;
+    }
+    if !limits.sample_counts.contains(info.samples) {
+        refuse(
+            "VUID-VkImageCreateInfo-samples-02258",
+            format!(
+                "samples must be one of the format's {:?} (samples = {:?})",
+                limits.sample_counts, info.samples
+            ),
+        )?;
+    }
+    Ok(())
+}

@@ -242,7 +242,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // A recorded command that an always-on check may refuse returns its error.
     let mut fallible = cmd.return_type == "VkResult"
         || fallible_ext
-        || (is_cmd && (special.is_some_and(|s| s.check.is_some()) || !same_len.is_empty()));
+        || (is_cmd
+            && (special.is_some_and(|s| s.check.is_some() || s.check_last.is_some())
+                || !same_len.is_empty()));
     let mut lifetimes = false;
     let created_ty = cmd
         .params
@@ -803,8 +805,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     );
     let checks = checker.command_checks(plan);
     let always = special.and_then(|s| s.check);
+    let last = special.and_then(|s| s.check_last);
     let mut validator = None;
-    let method = if checks.is_empty() && always.is_none() && same_len.is_empty() {
+    let method = if checks.is_empty() && always.is_none() && last.is_none() && same_len.is_empty() {
         quote! {
             #[doc = #doc]
             #[inline]
@@ -826,8 +829,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             quote!(#c?;)
         });
         let always_code = quote!(#(#same_len)* #always_code);
+        let last_code = last.map(|c| {
+            let c = hook(&c, &ret_expr);
+            quote!(#c?;)
+        });
         let always_vuids = special
-            .filter(|s| s.check.is_some())
+            .filter(|s| s.check.is_some() || s.check_last.is_some())
             .map_or(&[][..], |s| s.settles);
         let same_len_vuids: Vec<String> = plan
             .same_len
@@ -962,6 +969,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 // break memory safety, whatever else is wrong with it.
                 #always_code
                 #implicit_block
+                // Checks that query the driver with the values, once they are valid.
+                #last_code
                 __safety!("the rules the checks above settle hold; the others are the caller's (see the docs).");
                 #call
             }

@@ -55,10 +55,15 @@ pub enum Keeps {
 pub struct Special {
     /// The command, `vkQueueSubmit`.
     pub command: &'static str,
-    /// Run by the safe method in every build, before the call, after the
-    /// implicit-rule checks; returns `Result<()>`. A recorded command
-    /// with one returns its error.
+    /// Run by the safe method in every build, before the call and before the
+    /// implicit-rule checks (it refuses what would break memory safety, whatever
+    /// else is wrong); returns `Result<()>`. A recorded command with one returns its
+    /// error.
     pub check: Option<Call>,
+    /// Run by the safe method in every build after the implicit-rule and
+    /// recognised checks have passed: a check that hands the call's values to the
+    /// driver (a query), which needs them valid first.
+    pub check_last: Option<Call>,
     /// Run by the call's body before the call.
     pub before: Option<Call>,
     /// Run by the call's body after a successful call.
@@ -87,6 +92,7 @@ pub struct Special {
 const NONE: Special = Special {
     command: "",
     check: None,
+    check_last: None,
     before: None,
     after: None,
     created: None,
@@ -168,6 +174,8 @@ const PIPELINE_BOUND: &str =
 const SETS_BOUND: &str = "checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known)";
 const BIND_POINT: &str =
     "checks the pipeline was created for the bind point, which the device remembers";
+const FULL_CHAIN: &str = "checks the level count against the levels of a full chain for the extent";
+const IMAGE_LIMITS: &str = "checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected)";
 const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
 const SETS_UNPROVEN: &str = "checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
@@ -488,7 +496,20 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateImage",
+        check_last: call("hooks::create_image_checks", &["self", "create_info"]),
         created: call("hooks::image_created", &["self", "created", "create_info"]),
+        settles: &[
+            ("VUID-VkImageCreateInfo-mipLevels-00958", How::Dynamic(FULL_CHAIN)),
+            ("VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251", How::Dynamic(IMAGE_LIMITS)),
+            ("VUID-VkImageCreateInfo-extent-02252", How::Dynamic(IMAGE_LIMITS)),
+            ("VUID-VkImageCreateInfo-extent-02253", How::Dynamic(IMAGE_LIMITS)),
+            ("VUID-VkImageCreateInfo-extent-02254", How::Dynamic(IMAGE_LIMITS)),
+            // Lavapipe allows every format the levels of its largest extent, so a
+            // level count past the format's limit is past the chain too (00958).
+            ("VUID-VkImageCreateInfo-mipLevels-02255", How::User(UNPROVEN)),
+            ("VUID-VkImageCreateInfo-arrayLayers-02256", How::Dynamic(IMAGE_LIMITS)),
+            ("VUID-VkImageCreateInfo-samples-02258", How::Dynamic(IMAGE_LIMITS)),
+        ],
         ..NONE
     },
     Special {

@@ -173,6 +173,13 @@ impl Exts {
         let i = i as usize;
         self.0[i / 64] & (1 << (i % 64)) != 0
     }
+    /// Whether core version 1.`minor` is enabled.
+    pub(crate) fn version(&self, minor: u32) -> bool {
+        VERSION_MINORS
+            .iter()
+            .position(|m| *m == minor)
+            .is_some_and(|i| self.has(i as u16))
+    }
     /// Both sets.
     pub(crate) fn with(mut self, other: Exts) -> Exts {
         for (a, b) in self.0.iter_mut().zip(other.0) {

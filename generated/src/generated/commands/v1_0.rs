@@ -1027,6 +1027,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_create_image(create_info);
             r?;
         }
+        crate::hooks::create_image_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_image_unchecked(create_info) }
@@ -1035,7 +1036,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_image`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_image`] checks at run time: `VUID-VkImageCreateInfo-mipLevels-00958`, `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`, `VUID-VkImageCreateInfo-extent-02252`, `VUID-VkImageCreateInfo-extent-02253`, `VUID-VkImageCreateInfo-extent-02254`, `VUID-VkImageCreateInfo-mipLevels-02255`, `VUID-VkImageCreateInfo-arrayLayers-02256`, `VUID-VkImageCreateInfo-samples-02258`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn create_image_unchecked<'a>(
         &self,
