@@ -580,8 +580,37 @@ oracle_cases! {
         },
     },
     attachment_description: vk::AttachmentDescription {
+        "VUID-VkAttachmentDescription-format-06699" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.load_op = vk::AttachmentLoadOp::from_raw(0);
+            v.initial_layout = vk::ImageLayout::from_raw(0);
+        },
         "VUID-VkAttachmentDescription-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-VkAttachmentDescription-format-03280" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.initial_layout = vk::ImageLayout::from_raw(3);
+        },
+        "VUID-VkAttachmentDescription-format-03281" => |v, l, o| {
+            v.format = vk::Format::from_raw(130);
+            v.initial_layout = vk::ImageLayout::from_raw(2);
+        },
+        "VUID-VkAttachmentDescription-format-03282" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.final_layout = vk::ImageLayout::from_raw(3);
+        },
+        "VUID-VkAttachmentDescription-format-03283" => |v, l, o| {
+            v.format = vk::Format::from_raw(130);
+            v.final_layout = vk::ImageLayout::from_raw(2);
+        },
+        "VUID-VkAttachmentDescription-format-06487" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.initial_layout = vk::ImageLayout::from_raw(1000117001);
+        },
+        "VUID-VkAttachmentDescription-format-06488" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.final_layout = vk::ImageLayout::from_raw(1000117001);
         },
         "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03284" => |v, l, o| {
             v.initial_layout = vk::ImageLayout::from_raw(1000241000);
@@ -620,8 +649,37 @@ oracle_cases! {
         },
     },
     attachment_description2: vk::AttachmentDescription2<'_> {
+        "VUID-VkAttachmentDescription2-format-06699" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.load_op = vk::AttachmentLoadOp::from_raw(0);
+            v.initial_layout = vk::ImageLayout::from_raw(0);
+        },
         "VUID-VkAttachmentDescription2-finalLayout-00843" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(0);
+        },
+        "VUID-VkAttachmentDescription2-format-03280" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.initial_layout = vk::ImageLayout::from_raw(3);
+        },
+        "VUID-VkAttachmentDescription2-format-03281" => |v, l, o| {
+            v.format = vk::Format::from_raw(130);
+            v.initial_layout = vk::ImageLayout::from_raw(2);
+        },
+        "VUID-VkAttachmentDescription2-format-03282" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.final_layout = vk::ImageLayout::from_raw(3);
+        },
+        "VUID-VkAttachmentDescription2-format-03283" => |v, l, o| {
+            v.format = vk::Format::from_raw(130);
+            v.final_layout = vk::ImageLayout::from_raw(2);
+        },
+        "VUID-VkAttachmentDescription2-format-06487" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.initial_layout = vk::ImageLayout::from_raw(1000117001);
+        },
+        "VUID-VkAttachmentDescription2-format-06488" => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.final_layout = vk::ImageLayout::from_raw(1000117001);
         },
         "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284" => |v, l, o| {
             v.initial_layout = vk::ImageLayout::from_raw(1000241000);
@@ -850,6 +908,12 @@ oracle_cases! {
         "VUID-vkCmdCopyImage-dstSubresource-01699" => |v, l, o| {
             o.image_copy.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_copy.dst_subresource.layer_count as i64 + 1) as _;
         },
+        "VUID-vkCmdCopyImage-aspectMask-00142" => |v, l, o| {
+            o.image_copy.src_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdCopyImage-aspectMask-00143" => |v, l, o| {
+            o.image_copy.dst_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
+        },
         "VUID-vkCmdCopyImage-srcOffset-00144" => |v, l, o| {
             o.image_copy.src_offset.x = ((o.src_image.extent.width >> o.image_copy.src_subresource.mip_level).max(1) as i64 - o.image_copy.extent.width as i64 + 1) as _;
         },
@@ -881,6 +945,12 @@ oracle_cases! {
         },
         "VUID-VkCopyImageInfo2-dstSubresource-01699" => |v, l, o| {
             o.image_copy2.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_copy2.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-aspectMask-00142" => |v, l, o| {
+            o.image_copy2.src_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
+        },
+        "VUID-VkCopyImageInfo2-aspectMask-00143" => |v, l, o| {
+            o.image_copy2.dst_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
         },
         "VUID-VkCopyImageInfo2-srcOffset-00144" => |v, l, o| {
             o.image_copy2.src_offset.x = ((o.src_image.extent.width >> o.image_copy2.src_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.width as i64 + 1) as _;
@@ -987,6 +1057,9 @@ oracle_cases! {
         "VUID-VkCopyBufferToImageInfo2-imageOffset-00200" => |v, l, o| {
             o.buffer_image_copy2.image_offset.z = ((o.dst_image.extent.depth >> o.buffer_image_copy2.image_subresource.mip_level).max(1) as i64 - o.buffer_image_copy2.image_extent.depth as i64 + 1) as _;
         },
+        "VUID-VkCopyBufferToImageInfo2-aspectMask-00211" => |v, l, o| {
+            o.buffer_image_copy2.image_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
+        },
         "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
@@ -1006,6 +1079,9 @@ oracle_cases! {
         },
         "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704" => |v, l, o| {
             o.buffer_image_copy2.image_subresource.base_array_layer = (o.src_image.array_layers as i64 - o.buffer_image_copy2.image_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageToBufferInfo2-aspectMask-00211" => |v, l, o| {
+            o.buffer_image_copy2.image_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
         },
         "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
@@ -1035,6 +1111,12 @@ oracle_cases! {
         },
         "VUID-vkCmdBlitImage-dstSubresource-01708" => |v, l, o| {
             o.image_blit.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_blit.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-vkCmdBlitImage-aspectMask-00241" => |v, l, o| {
+            o.image_blit.src_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
+        },
+        "VUID-vkCmdBlitImage-aspectMask-00242" => |v, l, o| {
+            o.image_blit.dst_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
         },
         "VUID-vkCmdBlitImage-srcOffset-00243" => |v, l, o| {
             o.image_blit.src_offsets[1].x = ((o.src_image.extent.width >> o.image_blit.src_subresource.mip_level).max(1) as i64 + 1) as _;
@@ -1085,6 +1167,12 @@ oracle_cases! {
         },
         "VUID-VkBlitImageInfo2-dstSubresource-01708" => |v, l, o| {
             o.image_blit2.dst_subresource.base_array_layer = (o.dst_image.array_layers as i64 - o.image_blit2.dst_subresource.layer_count as i64 + 1) as _;
+        },
+        "VUID-VkBlitImageInfo2-aspectMask-00241" => |v, l, o| {
+            o.image_blit2.src_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
+        },
+        "VUID-VkBlitImageInfo2-aspectMask-00242" => |v, l, o| {
+            o.image_blit2.dst_subresource.aspect_mask = vk::ImageAspectFlags::from_raw(0x2);
         },
         "VUID-VkBlitImageInfo2-srcOffset-00243" => |v, l, o| {
             o.image_blit2.src_offsets[1].x = ((o.src_image.extent.width >> o.image_blit2.src_subresource.mip_level).max(1) as i64 + 1) as _;

@@ -1227,10 +1227,16 @@ fn cmd_copy_image_to_buffer(
 
 /// Rules the 1.3.239 layer reports under another name than their VUID, each seen in
 /// its message for the case that breaks the rule.
-const LAYER_NAMES: &[(&str, &str)] = &[(
-    "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
-    "[ vkCmdCopyImageToBuffer-dstBuffer2-00192 ]",
-)];
+const LAYER_NAMES: &[(&str, &str)] = &[
+    (
+        "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
+        "[ VUID-vkCmdCopyImageToBuffer-aspectMask-00211 ]",
+    ),
+    (
+        "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
+        "[ vkCmdCopyImageToBuffer-dstBuffer2-00192 ]",
+    ),
+];
 
 /// Rules that the change breaking a rule (by its VUID's last two parts, the same
 /// for a command and its `*2` info struct) necessarily breaks too, so the layer
@@ -1327,6 +1333,24 @@ const IMPLIED: &[(&str, &[&str], &str)] = &[
         &["format-03287"],
         COLOR_ATTACHMENT,
     ),
+    ("aspectMask-00142", &["srcImage-01551"], BOTH_COLOR),
+    ("aspectMask-00143", &["srcImage-01551"], BOTH_COLOR),
+    (
+        "aspectMask-00241",
+        &[
+            "VUID-VkImageBlit-aspectMask-00238",
+            "VUID-VkImageBlit2-aspectMask-00238",
+        ],
+        BOTH_COLOR,
+    ),
+    (
+        "aspectMask-00242",
+        &[
+            "VUID-VkImageBlit-aspectMask-00238",
+            "VUID-VkImageBlit2-aspectMask-00238",
+        ],
+        BOTH_COLOR,
+    ),
     (
         "srcOffset-00113",
         &["size-00115"],
@@ -1339,6 +1363,8 @@ const IMPLIED: &[(&str, &[&str], &str)] = &[
     ),
 ];
 
+const BOTH_COLOR: &str = "the fixture's two images are color images, so an aspect one of them \
+     lacks makes the source's and destination's masks differ";
 const COLOR_ATTACHMENT: &str = "the fixture's attachment has a color format, and the depth and \
      stencil layouts the rule forbids without the feature a color format forbids as well";
 const LEVEL_PAST: &str =
@@ -1360,7 +1386,11 @@ fn implied(message: &str, vuid: &str) -> bool {
         .iter()
         .filter(|(k, _, _)| *k == key)
         .flat_map(|(_, also, _)| also.iter())
-        .any(|other| names(message, &format!("{prefix}-{other}")))
+        // A rule of another item (a region struct's) is named whole.
+        .any(|other| match other.strip_prefix("VUID-") {
+            Some(_) => names(message, other),
+            None => names(message, &format!("{prefix}-{other}")),
+        })
 }
 
 /// Whether a layer message names `vuid`. The 1.3.239 layer names a few rules

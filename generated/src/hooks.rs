@@ -675,6 +675,7 @@ pub(crate) fn image_created(
         ImageRecord {
             flags: create_info.flags,
             image_type: create_info.image_type,
+            format: create_info.format,
             extent: create_info.extent,
             mip_levels: create_info.mip_levels,
             array_layers: create_info.array_layers,
@@ -699,6 +700,7 @@ pub(crate) fn swapchain_created(
         ImageRecord {
             flags: vk::ImageCreateFlags::empty(),
             image_type: vk::ImageType::TYPE_2D,
+            format: create_info.image_format,
             extent: vk::Extent3D {
                 width: create_info.image_extent.width,
                 height: create_info.image_extent.height,

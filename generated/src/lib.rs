@@ -33,6 +33,9 @@ mod commands;
 #[path = "generated/features.rs"]
 #[rustfmt::skip]
 mod features;
+#[path = "generated/formats.rs"]
+#[rustfmt::skip]
+mod formats;
 #[path = "generated/handles.rs"]
 #[rustfmt::skip]
 pub mod handles;

@@ -184,6 +184,8 @@ pub(crate) struct ImageRecord {
     pub flags: vk::ImageCreateFlags,
     /// `VkImageCreateInfo::imageType`.
     pub image_type: vk::ImageType,
+    /// `VkImageCreateInfo::format`.
+    pub format: vk::Format,
     /// `VkImageCreateInfo::extent`: the size of mip level 0.
     pub extent: vk::Extent3D,
     /// `VkImageCreateInfo::mipLevels`.

@@ -3,7 +3,7 @@
 //! struct `v`, the scope `s` (features, limits) and nothing else.
 
 use crate::names::field_ident;
-use crate::validity::explicit::{Check, Object, Op, Pred, Recognised, Rhs};
+use crate::validity::explicit::{Check, FormatClass, Object, Op, Pred, Recognised, Rhs};
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
@@ -298,6 +298,41 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                 quote!(#record.is_none_or(|r| !#is))
             } else {
                 quote!(#record.is_some_and(|r| #is))
+            }
+        }
+        Pred::FormatIs { member: m, class } => {
+            let m = member(m);
+            let (color, depth, stencil) = (
+                quote!(a.contains(vk::ImageAspectFlags::COLOR)),
+                quote!(a.contains(vk::ImageAspectFlags::DEPTH)),
+                quote!(a.contains(vk::ImageAspectFlags::STENCIL)),
+            );
+            let holds = match class {
+                FormatClass::Color => quote!(!#depth && !#stencil),
+                FormatClass::DepthStencil => quote!(#depth || #stencil),
+                FormatClass::DepthOnly => quote!(#depth && !#stencil),
+                FormatClass::StencilOnly => quote!(#stencil && !#depth),
+                FormatClass::DepthAndStencil => quote!(#depth && #stencil),
+                FormatClass::ColorOrDepth => quote!(#color || #depth),
+                FormatClass::Stencil => quote!(#stencil),
+            };
+            // A format the registry does not describe (`UNDEFINED`) is of no kind.
+            if negated {
+                quote!(crate::formats::aspects(#m).is_none_or(|a| !(#holds)))
+            } else {
+                quote!(crate::formats::aspects(#m).is_some_and(|a| #holds))
+            }
+        }
+        Pred::AspectsIn { member: m, handle } => {
+            let m = member(m);
+            let record = record(handle, Object::Image, on_command);
+            let extra = quote!((#m.as_raw() & !a.as_raw()));
+            // An image the wrappers did not make, or of a format the registry does not
+            // describe, is not known.
+            if negated {
+                quote!(#record.and_then(|r| crate::formats::aspects(r.format)).is_some_and(|a| #extra != 0))
+            } else {
+                quote!(#record.and_then(|r| crate::formats::aspects(r.format)).is_none_or(|a| #extra == 0))
             }
         }
         Pred::All(ps) => {

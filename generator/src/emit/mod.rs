@@ -7,6 +7,7 @@ pub mod checks;
 pub mod commands;
 pub mod explicit;
 pub mod features;
+pub mod formats;
 pub mod handles;
 pub mod reach;
 pub mod structs;
@@ -275,6 +276,7 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
         ("handles.rs".to_owned(), handles::emit(cx)),
         ("reach.rs".to_owned(), reach::emit(cx)),
         ("features.rs".to_owned(), features::emit(cx.model)),
+        ("formats.rs".to_owned(), formats::emit(cx.model)),
     ];
     files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));

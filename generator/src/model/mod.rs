@@ -70,6 +70,8 @@ pub struct Model {
     pub enum_values: BTreeMap<String, Vec<String>>,
     /// The numeric value of each enum value name.
     pub enum_numbers: BTreeMap<String, i64>,
+    /// What each `VkFormat` is made of, from the registry's `<formats>`.
+    pub formats: Vec<Format>,
     /// For each enum value, the features and extensions that add it
     /// (`VK_VERSION_1_0` for the values written in the group itself).
     pub enum_origins: BTreeMap<String, Vec<String>>,
@@ -331,6 +333,17 @@ impl Model {
             extended_by,
             enum_values,
             enum_numbers: registry.enum_numbers.clone(),
+            formats: registry
+                .formats
+                .iter()
+                .map(|f| Format {
+                    name: f.name.clone(),
+                    block_size: f.block_size,
+                    block_extent: f.block_extent,
+                    components: f.components.clone(),
+                    planes: f.planes,
+                })
+                .collect(),
             enum_origins,
             conditions,
             required,
@@ -473,4 +486,36 @@ fn resolve_handles(
         handles.insert(t.name.clone(), handle);
     }
     handles
+}
+
+/// What a `VkFormat` is made of.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Format {
+    /// `VK_FORMAT_...`.
+    pub name: String,
+    /// Bytes per texel block.
+    pub block_size: u8,
+    /// Texel block width, height and depth.
+    pub block_extent: [u32; 3],
+    /// The components' names in order (`R`, `G`, `B`, `A`, `D`, `S`).
+    pub components: Vec<String>,
+    /// How many planes (0 for a format that is not multi-planar).
+    pub planes: u8,
+}
+
+impl Format {
+    /// Has a depth component.
+    pub fn depth(&self) -> bool {
+        self.components.iter().any(|c| c == "D")
+    }
+
+    /// Has a stencil component.
+    pub fn stencil(&self) -> bool {
+        self.components.iter().any(|c| c == "S")
+    }
+
+    /// A color format: neither depth nor stencil.
+    pub fn color(&self) -> bool {
+        !self.depth() && !self.stencil()
+    }
 }

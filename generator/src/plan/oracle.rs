@@ -11,7 +11,7 @@
 use super::checks::Checker;
 use super::Context;
 use crate::model::Model;
-use crate::validity::explicit::{Object, Op, Pred, Recognised, Rhs, Value};
+use crate::validity::explicit::{FormatClass, Object, Op, Pred, Recognised, Rhs, Value};
 
 /// The structs and commands `tests/oracle.rs` has a fixture for: a smallest valid
 /// value and the safe call (and its `_unchecked` twin) that takes it. A struct's
@@ -124,6 +124,20 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkBufferViewCreateInfo-offset-00931", "a range past the buffer's end by less than a texel also breaks `range-00929` (a whole number of texels), and an offset past it breaks the offset's alignment"),
     ("VUID-vkCmdClearColorImage-pRanges-01692", RANGE_BASE),
     ("VUID-vkCmdClearColorImage-pRanges-01693", RANGE_BASE),
+    ("VUID-VkAttachmentDescription-format-03286", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription-format-03287", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription-format-03290", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription-format-03291", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription-format-03292", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription-format-03293", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription-format-06700", COLOR_REFERENCE),
+    ("VUID-VkAttachmentDescription2-format-03286", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription2-format-03287", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription2-format-03290", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription2-format-03291", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription2-format-03292", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription2-format-03293", DEPTH_LAYOUTS),
+    ("VUID-VkAttachmentDescription2-format-06700", COLOR_REFERENCE),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
@@ -132,6 +146,8 @@ const LAYER_THROWS: &str = "the 1.3.239 validation layer throws a C++ exception 
 const SEPARATE_LAYOUTS: &str = "the first layout the rule forbids is a depth-only layout, which without `separateDepthStencilLayouts` breaks `VkAttachmentReference2-separateDepthStencilLayouts-03313`, and the layer reports that instead";
 const FROM_EXTERNAL: &str = "the fixture's dependency comes from `VK_SUBPASS_EXTERNAL`, so the view-local flag breaks the rule on `srcSubpass` first";
 const RANGE_BASE: &str = "a range is an element, so its case moves the base past the end, which breaks the rule that the base lies inside (`baseMipLevel-01470`, `baseArrayLayer-01472`) too";
+const DEPTH_LAYOUTS: &str = "the layouts the rule forbids are depth-only or stencil-only ones, which without `separateDepthStencilLayouts` (off on the fixtures' device) break `separateDepthStencilLayouts-03284` or `03285` too";
+const COLOR_REFERENCE: &str = "the fixture's attachment is its subpass's color attachment, which a depth/stencil format cannot be (`VkSubpassDescription-pColorAttachments-02648`)";
 const NO_INPUT: &str = "the fixture's subpass has no input attachment, and one needs a descriptor-free input the test pipelines lack";
 const NO_RESOLVE: &str = "the fixture's subpass has no resolve attachment, which needs a multisampled color attachment to resolve";
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";
@@ -361,6 +377,12 @@ fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
         Pred::Feature { name, enabled, .. } => {
             (FIXTURE_FEATURES.contains(&name.as_str()) == *enabled).then_some(())?
         }
+        // A format of the kind: one each kind's fixtures can use.
+        Pred::FormatIs { member, class } => out.push(Assign::Enum {
+            member: member.clone(),
+            ty: at.ty(member)?,
+            value: representative(*class),
+        }),
         // The fixtures use no API constant (`VK_ATTACHMENT_UNUSED`, `VK_WHOLE_SIZE`,
         // `VK_REMAINING_MIP_LEVELS`); a fixture that did would fail its case, not
         // pass it.
@@ -441,6 +463,12 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
                 value: other.number,
             });
         }
+        // The fixtures' images are RGBA8, which has no depth aspect.
+        Pred::AspectsIn { member, .. } => out.push(Assign::Bits {
+            ty: at.ty(member)?,
+            member: member.clone(),
+            bits: 0x2,
+        }),
         Pred::Usage {
             handle,
             object,
@@ -542,6 +570,17 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
         _ => return None,
     }
     Some(())
+}
+
+/// A format of each kind that lavapipe (and most devices) support:
+/// `R8G8B8A8_UNORM`, `D32_SFLOAT_S8_UINT`, `D32_SFLOAT`, `S8_UINT`.
+fn representative(class: FormatClass) -> i64 {
+    match class {
+        FormatClass::Color | FormatClass::ColorOrDepth => 37,
+        FormatClass::DepthStencil | FormatClass::DepthAndStencil | FormatClass::Stencil => 130,
+        FormatClass::DepthOnly => 126,
+        FormatClass::StencilOnly => 127,
+    }
 }
 
 /// A constant of the text moved by `by`, as a literal of the compared type.

@@ -58,6 +58,11 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                     requires: convert_requires(f.children, None, &mut numbers, &mut aliases),
                 });
             }
+            vk::RegistryChild::Formats(formats) => {
+                for f in formats.children {
+                    reg.formats.push(convert_format(f));
+                }
+            }
             vk::RegistryChild::Extensions(exts) => {
                 for e in exts.children {
                     let depends = e.depends.or_else(|| {
@@ -328,6 +333,32 @@ fn note_number(
     };
     if let Some(v) = value {
         numbers.insert(e.name.clone(), v);
+    }
+}
+
+/// A `<format>`: its block, components and planes.
+fn convert_format(f: vk::Format) -> crate::registry::FormatDef {
+    let mut block_extent = [1, 1, 1];
+    if let Some(e) = f.blockExtent.as_deref() {
+        for (slot, n) in block_extent.iter_mut().zip(e.split(',')) {
+            *slot = n.trim().parse().unwrap_or(1);
+        }
+    }
+    let mut components = Vec::new();
+    let mut planes = 0;
+    for child in f.children {
+        match child {
+            vk::FormatChild::Component { name, .. } => components.push(name),
+            vk::FormatChild::Plane { .. } => planes += 1,
+            _ => {}
+        }
+    }
+    crate::registry::FormatDef {
+        name: f.name,
+        block_size: f.blockSize,
+        block_extent,
+        components,
+        planes,
     }
 }
 

@@ -32,6 +32,23 @@ pub struct Registry {
     /// The numeric value of every enum value name the file defines, aliases resolved
     /// (`VK_FORMAT_R8_UNORM` is 9; extension values from their offset and number).
     pub enum_numbers: std::collections::BTreeMap<String, i64>,
+    /// Every `<format>` of the `<formats>` block: what a `VkFormat` is made of.
+    pub formats: Vec<FormatDef>,
+}
+
+/// One `<format>` element.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct FormatDef {
+    /// `VK_FORMAT_...`.
+    pub name: String,
+    /// Bytes per texel block.
+    pub block_size: u8,
+    /// Texel block width, height and depth (`1, 1, 1` unless `blockExtent` says).
+    pub block_extent: [u32; 3],
+    /// The components' names in order (`R`, `G`, `B`, `A`, `D`, `S`).
+    pub components: Vec<String>,
+    /// How many planes (0 for a format that is not multi-planar).
+    pub planes: u8,
 }
 
 /// One `<type>` element.

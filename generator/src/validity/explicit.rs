@@ -218,8 +218,59 @@ pub enum Pred {
         /// The types.
         values: Vec<Value>,
     },
+    /// A `VkFormat` member names a format of this kind (by its components, from the
+    /// registry's `<formats>`).
+    FormatIs {
+        /// The member.
+        member: String,
+        /// The kind.
+        class: FormatClass,
+    },
+    /// An aspect mask names only aspects that the format of the image a handle
+    /// names has.
+    AspectsIn {
+        /// The aspect mask's path.
+        member: String,
+        /// The image handle's path.
+        handle: String,
+    },
     /// Every one of these holds (`x and (y + x) must both be ...`).
     All(Vec<Pred>),
+}
+
+/// A kind of format, by the aspects its components give it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FormatClass {
+    /// Neither depth nor stencil.
+    Color,
+    /// Depth, stencil or both.
+    DepthStencil,
+    /// Depth and no stencil.
+    DepthOnly,
+    /// Stencil and no depth.
+    StencilOnly,
+    /// Depth and stencil.
+    DepthAndStencil,
+    /// A color or a depth aspect.
+    ColorOrDepth,
+    /// A stencil aspect.
+    Stencil,
+}
+
+impl FormatClass {
+    /// Whether a format with these aspect bits (COLOR 1, DEPTH 2, STENCIL 4) is of
+    /// the kind.
+    pub fn holds(self, color: bool, depth: bool, stencil: bool) -> bool {
+        match self {
+            FormatClass::Color => !depth && !stencil,
+            FormatClass::DepthStencil => depth || stencil,
+            FormatClass::DepthOnly => depth && !stencil,
+            FormatClass::StencilOnly => stencil && !depth,
+            FormatClass::DepthAndStencil => depth && stencil,
+            FormatClass::ColorOrDepth => color || depth,
+            FormatClass::Stencil => stencil,
+        }
+    }
 }
 
 impl Pred {
@@ -243,6 +294,7 @@ impl Pred {
                 out
             }
             Pred::All(ps) => ps.iter().flat_map(Pred::members).collect(),
+            Pred::FormatIs { member, .. } | Pred::AspectsIn { member, .. } => vec![member],
             Pred::Feature { .. }
             | Pred::Usage { .. }
             | Pred::Bound { .. }
@@ -256,6 +308,7 @@ impl Pred {
             Pred::Usage { handle, .. }
             | Pred::Bound { handle, .. }
             | Pred::ImageType { handle, .. }
+            | Pred::AspectsIn { handle, .. }
             | Pred::Compare {
                 rhs: Rhs::Created { handle, .. } | Rhs::Extent { handle, .. },
                 ..
@@ -272,6 +325,7 @@ impl Pred {
             | Pred::Usage { .. }
             | Pred::Bound { .. }
             | Pred::ImageType { .. }
+            | Pred::AspectsIn { .. }
             | Pred::Compare {
                 rhs: Rhs::Limit(_) | Rhs::Created { .. } | Rhs::Extent { .. },
                 ..
@@ -307,6 +361,8 @@ impl Pred {
             Pred::Usage { handle, .. }
             | Pred::Bound { handle, .. }
             | Pred::ImageType { handle, .. } => vec![handle],
+            Pred::FormatIs { member, .. } => vec![member],
+            Pred::AspectsIn { member, handle } => vec![member, handle],
             Pred::All(ps) => ps.iter_mut().flat_map(Pred::paths_mut).collect(),
             Pred::Feature { .. } => Vec::new(),
         }
@@ -377,6 +433,7 @@ pub const RECOGNISERS: &[(&str, Recogniser)] = &[
         created_req,
     ),
     ("offsets inside an image subresource", inside_req),
+    ("aspects present in an image's format", aspects_req),
 ];
 
 /// Rules whose text, read as written, refuses values that the specification
@@ -730,6 +787,9 @@ fn condition(input: &Input, text: &str) -> Option<Pred> {
         ]
         .map(|r| r.expect("condition pattern"))
     });
+    if let Some(p) = format_condition(input, text) {
+        return Some(p);
+    }
     if let Some(c) = whole(of_type, text) {
         (object(input, &c[0])? == Object::Image).then_some(())?;
         return Some(Pred::ImageType {
@@ -761,6 +821,49 @@ fn condition(input: &Input, text: &str) -> Option<Pred> {
     }
     let c = whole(is, text)?;
     value_pred(input, &c[0], c[1].is_empty(), &c[2])
+}
+
+/// `` `format` is a color format ``, `` ... is a depth/stencil format (which
+/// includes only the depth aspect, ... both depth and stencil aspects) ``,
+/// `` `format` includes a color or depth aspect ``, `` ... includes a stencil
+/// aspect ``: a `VkFormat` member of a kind.
+fn format_condition(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^`([\w.\[\]]+)` (is a color format|is a depth/stencil format|is a depth/stencil format which includes only the depth aspect|is a depth/stencil format which includes only the stencil aspect|is a depth/stencil format which includes both depth and stencil aspects|includes a color or depth aspect|includes a stencil aspect)$",
+    );
+    let c = whole(r, text)?;
+    (member(input, &c[0])?.type_name == "VkFormat").then_some(())?;
+    let class = match c[1].as_str() {
+        "is a color format" => FormatClass::Color,
+        "is a depth/stencil format" => FormatClass::DepthStencil,
+        "includes a color or depth aspect" => FormatClass::ColorOrDepth,
+        "includes a stencil aspect" => FormatClass::Stencil,
+        t if t.ends_with("only the depth aspect") => FormatClass::DepthOnly,
+        t if t.ends_with("only the stencil aspect") => FormatClass::StencilOnly,
+        _ => FormatClass::DepthAndStencil,
+    };
+    Some(Pred::FormatIs {
+        member: c[0].clone(),
+        class,
+    })
+}
+
+/// `` `aspectMask` must specify aspects present in `image` ``.
+fn aspects_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^`([\w.\[\]]+)` must specify aspects present in `(\w+)`$",
+    );
+    let c = whole(r, text)?;
+    (member(input, &c[0])?.type_name == "VkImageAspectFlags").then_some(())?;
+    (object(input, &c[1])? == Object::Image).then_some(())?;
+    Some(Pred::AspectsIn {
+        member: c[0].clone(),
+        handle: c[1].clone(),
+    })
 }
 
 /// An enum or `VkBool32` member is (not) one of a list, or a number member is (not)

@@ -1097,6 +1097,44 @@ impl<'c> Recorder<'c, Outside> {
             }
         }
         for (i, e) in regions.iter().enumerate() {
+            if s
+                .image(src_image.raw())
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdBlitImage-aspectMask-00241",
+                        format!(
+                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                            i, e.src_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in regions.iter().enumerate() {
+            if s
+                .image(dst_image.raw())
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdBlitImage-aspectMask-00242",
+                        format!(
+                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                            i, e.dst_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in regions.iter().enumerate() {
             if e.src_offsets[0].x < 0 || e.src_offsets[1].x < 0
                 || s
                     .image(src_image.raw())
@@ -1973,6 +2011,44 @@ impl<'c> Recorder<'c, Outside> {
                             "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
                             i, e.dst_subresource.base_array_layer, i, e.dst_subresource
                             .layer_count
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in regions.iter().enumerate() {
+            if s
+                .image(src_image.raw())
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdCopyImage-aspectMask-00142",
+                        format!(
+                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                            i, e.src_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in regions.iter().enumerate() {
+            if s
+                .image(dst_image.raw())
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdCopyImage-aspectMask-00143",
+                        format!(
+                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                            i, e.dst_subresource.aspect_mask
                         ),
                     ),
                 );

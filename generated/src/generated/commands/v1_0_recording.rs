@@ -1327,6 +1327,8 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-dstSubresource-01706`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdBlitImage-srcSubresource-01707`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdBlitImage-dstSubresource-01708`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdBlitImage-aspectMask-00241`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
+- `VUID-vkCmdBlitImage-aspectMask-00242`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-vkCmdBlitImage-srcOffset-00243`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdBlitImage-srcOffset-00244`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdBlitImage-srcOffset-00246`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
@@ -1349,7 +1351,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-srcImageLayout-00222`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdBlitImage-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 31 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_blit_image(
         &mut self,
@@ -1391,7 +1393,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 31 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_blit_image_unchecked(
         &mut self,
@@ -1734,6 +1736,8 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-dstSubresource-01697`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImage-srcSubresource-01698`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImage-dstSubresource-01699`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyImage-aspectMask-00142`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
+- `VUID-vkCmdCopyImage-aspectMask-00143`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-vkCmdCopyImage-srcOffset-00144`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImage-srcOffset-00145`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImage-dstOffset-00150`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
@@ -1753,10 +1757,10 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdCopyImage-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 66.
+Left to the caller (listed one by one in the crate's `validation.json`): 64.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 62: explicit rule; the wrappers do not check it*/
+- 60: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_copy_image(
         &mut self,
@@ -1795,7 +1799,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 66.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_unchecked(
         &mut self,

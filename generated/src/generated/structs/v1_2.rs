@@ -8,7 +8,12 @@ use super::*;
 
 The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescription2.html). Settled by the wrappers:
 
+- `VUID-VkAttachmentDescription2-format-06699`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-finalLayout-00843`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03280`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03281`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03282`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03283`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAttachmentDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -21,10 +26,15 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-stencilStoreOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentDescription2-format-06487`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-06488`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 25 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
+
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 14: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {

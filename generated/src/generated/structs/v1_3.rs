@@ -16,6 +16,8 @@ The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkBlitImageInfo2-dstSubresource-01706`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkBlitImageInfo2-srcSubresource-01707`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkBlitImageInfo2-dstSubresource-01708`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkBlitImageInfo2-aspectMask-00241`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
+- `VUID-VkBlitImageInfo2-aspectMask-00242`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-VkBlitImageInfo2-srcOffset-00243`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkBlitImageInfo2-srcOffset-00244`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkBlitImageInfo2-srcOffset-00246`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
@@ -35,7 +37,7 @@ The rules are on [`VkBlitImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkBlitImageInfo2-srcImageLayout-00222`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBlitImageInfo2-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 31 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BlitImageInfo2<'a> {
@@ -512,6 +514,7 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-pRegions-06223`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyBufferToImageInfo2-pRegions-06224`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyBufferToImageInfo2-imageOffset-00200`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-VkCopyBufferToImageInfo2-aspectMask-00211`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-VkCopyBufferToImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -522,7 +525,7 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -580,6 +583,8 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-dstSubresource-01697`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkCopyImageInfo2-srcSubresource-01698`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkCopyImageInfo2-dstSubresource-01699`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkCopyImageInfo2-aspectMask-00142`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
+- `VUID-VkCopyImageInfo2-aspectMask-00143`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-VkCopyImageInfo2-srcOffset-00144`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyImageInfo2-srcOffset-00145`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyImageInfo2-dstOffset-00150`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
@@ -596,10 +601,10 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkCopyImageInfo2-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 63.
+Left to the caller (listed one by one in the crate's `validation.json`): 61.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 59: explicit rule; the wrappers do not check it*/
+- 57: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {
@@ -664,6 +669,7 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyImageToBufferInfo2-dstBuffer-00192`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyImageToBufferInfo2-imageSubresource-01704`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkCopyImageToBufferInfo2-aspectMask-00211`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-VkCopyImageToBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageToBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -674,10 +680,10 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 37.
+Left to the caller (listed one by one in the crate's `validation.json`): 36.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 33: explicit rule; the wrappers do not check it*/
+- 32: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {

@@ -52,6 +52,22 @@ pub fn check_attachment_description(
         s,
         "VUID-VkAttachmentDescription-finalLayout-parameter",
     )?;
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::COLOR)
+                || a.contains(vk::ImageAspectFlags::DEPTH)
+        }) && matches!(v.load_op.as_raw(), 0) && matches!(v.initial_layout.as_raw(), 0)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-06699",
+                format!(
+                    "If `format` includes a color or depth aspect and `loadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `loadOp` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.load_op, v.initial_layout
+                ),
+            ),
+        );
+    }
     if matches!(v.final_layout.as_raw(), 0 | 8) {
         return Err(
             fail(
@@ -59,6 +75,149 @@ pub fn check_attachment_description(
                 format!(
                     "`finalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`finalLayout` = {:?})",
                     v.final_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            !a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.initial_layout.as_raw(), 3 | 4)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03280",
+                format!(
+                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::DEPTH)
+                || a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.initial_layout.as_raw(), 2)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03281",
+                format!(
+                    "If `format` is a depth/stencil format, `initialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            !a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.final_layout.as_raw(), 3 | 4)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03282",
+                format!(
+                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                    v.format, v.final_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::DEPTH)
+                || a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.final_layout.as_raw(), 2)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03283",
+                format!(
+                    "If `format` is a depth/stencil format, `finalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                    v.format, v.final_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| a.contains(vk::ImageAspectFlags::STENCIL))
+        && matches!(v.stencil_load_op.as_raw(), 0)
+        && matches!(v.initial_layout.as_raw(), 0)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-06700",
+                format!(
+                    "If `format` includes a stencil aspect and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `stencilLoadOp` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.stencil_load_op, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::STENCIL)
+                && !a.contains(vk::ImageAspectFlags::DEPTH)
+        }) && matches!(v.initial_layout.as_raw(), 1000241000 | 1000241001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03292",
+                format!(
+                    "If `format` is a depth/stencil format which includes only the stencil aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::STENCIL)
+                && !a.contains(vk::ImageAspectFlags::DEPTH)
+        }) && matches!(v.final_layout.as_raw(), 1000241000 | 1000241001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03293",
+                format!(
+                    "If `format` is a depth/stencil format which includes only the stencil aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                    v.format, v.final_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            !a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-06487",
+                format!(
+                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            !a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-06488",
+                format!(
+                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                    v.format, v.final_layout
                 ),
             ),
         );
@@ -85,6 +244,70 @@ pub fn check_attachment_description(
                 format!(
                     "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
                     v.final_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            !a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03286",
+                format!(
+                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            !a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03287",
+                format!(
+                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                    v.format, v.final_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03290",
+                format!(
+                    "If `format` is a depth/stencil format which includes only the depth aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                    v.format, v.initial_layout
+                ),
+            ),
+        );
+    }
+    if crate::formats::aspects(v.format)
+        .is_some_and(|a| {
+            a.contains(vk::ImageAspectFlags::DEPTH)
+                && !a.contains(vk::ImageAspectFlags::STENCIL)
+        }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-format-03291",
+                format!(
+                    "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                    v.format, v.final_layout
                 ),
             ),
         );

@@ -184,6 +184,52 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
         .iter()
         .enumerate()
     {
+        if s
+            .image(v.src_image)
+            .and_then(|r| crate::formats::aspects(r.format))
+            .is_some_and(|a| (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-aspectMask-00241",
+                    format!(
+                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                        i, e.src_subresource.aspect_mask
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .and_then(|r| crate::formats::aspects(r.format))
+            .is_some_and(|a| (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
+        {
+            return Err(
+                fail(
+                    "VUID-VkBlitImageInfo2-aspectMask-00242",
+                    format!(
+                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                        i, e.dst_subresource.aspect_mask
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
         if e.src_offsets[0].x < 0 || e.src_offsets[1].x < 0
             || s
                 .image(v.src_image)
@@ -1520,6 +1566,31 @@ pub fn check_copy_buffer_to_image_info2(
             );
         }
     }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .and_then(|r| crate::formats::aspects(r.format))
+            .is_some_and(|a| {
+                (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyBufferToImageInfo2-aspectMask-00211",
+                    format!(
+                        "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
+                        i, e.image_subresource.aspect_mask
+                    ),
+                ),
+            );
+        }
+    }
     if !matches!(v.dst_image_layout.as_raw(), 1 | 7) {
         return Err(
             fail(
@@ -1670,6 +1741,52 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                         "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
                         i, e.dst_subresource.base_array_layer, i, e.dst_subresource
                         .layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .and_then(|r| crate::formats::aspects(r.format))
+            .is_some_and(|a| (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-aspectMask-00142",
+                    format!(
+                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                        i, e.src_subresource.aspect_mask
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.dst_image)
+            .and_then(|r| crate::formats::aspects(r.format))
+            .is_some_and(|a| (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-aspectMask-00143",
+                    format!(
+                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                        i, e.dst_subresource.aspect_mask
                     ),
                 ),
             );
@@ -2257,6 +2374,31 @@ pub fn check_copy_image_to_buffer_info2(
                         "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
                         i, e.image_offset.z, i, e.image_extent.depth, i, e
                         .image_subresource.mip_level
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s
+            .image(v.src_image)
+            .and_then(|r| crate::formats::aspects(r.format))
+            .is_some_and(|a| {
+                (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
+                    format!(
+                        "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
+                        i, e.image_subresource.aspect_mask
                     ),
                 ),
             );
