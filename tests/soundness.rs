@@ -3207,6 +3207,44 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             height: 16,
         },
     };
+    // A pipeline whose vertex shader reads two attributes from binding 0.
+    let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.vert.spv"));
+    let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.frag.spv"));
+    let stages = pipelines::test_stages(&vert, &frag);
+    let empty = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    let binding = [vk::VertexInputBindingDescription {
+        binding: 0,
+        stride: 20,
+        input_rate: vk::VertexInputRate::VERTEX,
+    }];
+    let attributes = [
+        vk::VertexInputAttributeDescription {
+            location: 0,
+            binding: 0,
+            format: vk::Format::R32G32_SFLOAT,
+            offset: 0,
+        },
+        vk::VertexInputAttributeDescription {
+            location: 1,
+            binding: 0,
+            format: vk::Format::R32G32B32_SFLOAT,
+            offset: 8,
+        },
+    ];
+    let input = tuff::PipelineVertexInputStateCreateInfo::new()
+        .vertex_binding_descriptions(&binding)
+        .vertex_attribute_descriptions(&attributes);
+    let (mut vertex_pipeline, _) =
+        pipelines::with_graphics_info(&stages, &empty, &target.render_pass, |info| {
+            s.device
+                .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
+        })
+        .expect("vertex pipeline");
+    let vertex_pipeline = vertex_pipeline.pop().expect("one pipeline");
+    let (vertices, _vertex_memory) = host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
     for unchecked in [false, true] {
         s.messages.abort_on_error(unchecked);
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -3272,7 +3310,28 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         } else {
             assert_eq!(vuid(rec.cmd_draw_indexed(65, 1, 0, 0, 0)), past);
         }
+        // A pipeline whose vertex shader reads binding 0, with no vertex buffer
+        // bound: every draw is refused, and accepted once one is.
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline)
+            .expect("bind");
+        for (no_pipeline, draw) in &draws {
+            let expected = no_pipeline.replace("02700", "04007");
+            if unchecked {
+                draw(&mut rec, true).expect("recorded");
+                assert_layer_reports(&s, &expected);
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), expected);
+            }
+        }
         s.messages.abort_on_error(false);
+        if !unchecked {
+            rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
+                .expect("vertex buffer");
+            rec.cmd_draw(3, 1, 0, 0)
+                .expect("a draw with its vertex buffer bound");
+        }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+            .expect("bind");
         if !unchecked {
             let color = [0u8; 16];
             rec.cmd_push_constants(

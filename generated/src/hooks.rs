@@ -2225,20 +2225,61 @@ pub(crate) fn allocate_descriptor_sets_checks(
     }
 }
 
-/// The device remembers each pipeline's bind point and layout.
+/// The device remembers each pipeline's bind point, layout and the vertex bindings
+/// its vertex shader reads.
 fn pipelines_created(
     device: &Device,
     pipelines: &[Pipeline],
     bind_point: vk::PipelineBindPoint,
-    layouts: impl Iterator<Item = vk::PipelineLayout>,
+    layouts: impl Iterator<Item = (vk::PipelineLayout, u64)>,
 ) {
-    for (p, layout) in pipelines.iter().zip(layouts) {
+    for (p, (layout, vertex_bindings)) in pipelines.iter().zip(layouts) {
         if let Some(layout) = device.live().pipeline_layout(layout) {
-            device
-                .live()
-                .pipeline_created(p.raw(), PipelineRecord { bind_point, layout });
+            device.live().pipeline_created(
+                p.raw(),
+                PipelineRecord {
+                    bind_point,
+                    layout,
+                    vertex_bindings,
+                },
+            );
         }
     }
+}
+
+/// The vertex-buffer bindings (the first 64) that a graphics pipeline's vertex
+/// shader reads: those of the attributes at locations its entry point declares as
+/// inputs.
+fn vertex_bindings(device: &Device, info: &vk::GraphicsPipelineCreateInfo<'_>) -> u64 {
+    // SAFETY: the safe struct stores every array with its length, and a stage's
+    // module and name from wrappers and C strings that outlive the create info.
+    let stages = unsafe { crate::retention::raw_slice(info.p_stages, info.stage_count) };
+    let Some(vertex) = stages
+        .iter()
+        .find(|s| s.stage == vk::ShaderStageFlags::VERTEX)
+    else {
+        return 0;
+    };
+    let Some(interface) = device.live().shader_module(vertex.module) else {
+        return 0;
+    };
+    // SAFETY: as above.
+    let name = unsafe { std::ffi::CStr::from_ptr(vertex.p_name) }.to_bytes();
+    // SAFETY: as above.
+    let Some(input) = (unsafe { info.p_vertex_input_state.as_ref() }) else {
+        return 0;
+    };
+    // SAFETY: as above.
+    let attributes = unsafe {
+        crate::retention::raw_slice(
+            input.p_vertex_attribute_descriptions,
+            input.vertex_attribute_description_count,
+        )
+    };
+    attributes
+        .iter()
+        .filter(|a| a.binding < 64 && interface.reads_vertex_location(name, a.location))
+        .fold(0, |mask, a| mask | 1 << a.binding)
 }
 
 /// [`pipelines_created`] for `vkCreateComputePipelines`.
@@ -2247,7 +2288,7 @@ pub(crate) fn compute_pipelines_created(
     created: Vec<Pipeline>,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Vec<Pipeline> {
-    let layouts = create_infos.iter().map(|i| i.as_raw().layout);
+    let layouts = create_infos.iter().map(|i| (i.as_raw().layout, 0));
     pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, layouts);
     created
 }
@@ -2258,7 +2299,9 @@ pub(crate) fn graphics_pipelines_created(
     created: Vec<Pipeline>,
     create_infos: &[GraphicsPipelineCreateInfo<'_>],
 ) -> Vec<Pipeline> {
-    let layouts = create_infos.iter().map(|i| i.as_raw().layout);
+    let layouts = create_infos
+        .iter()
+        .map(|i| (i.as_raw().layout, vertex_bindings(device, i.as_raw())));
     pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, layouts);
     created
 }
@@ -2307,6 +2350,7 @@ pub(crate) fn bound_pipeline_checks<S: State>(
     bind_point: vk::PipelineBindPoint,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
+    vertex_vuid: Option<&'static str>,
 ) -> Result<()> {
     let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
         return Ok(());
@@ -2330,7 +2374,33 @@ pub(crate) fn bound_pipeline_checks<S: State>(
             )?;
         }
     }
+    // A binding the vertex shader reads through an attribute, with no buffer bound:
+    // the device would fetch from no memory.
+    let unbound = pipeline.vertex_bindings & !bound.vertex;
+    if let (Some(vuid), true) = (vertex_vuid, unbound != 0) {
+        refuse(
+            vuid,
+            format!(
+                "the bound pipeline's vertex shader reads binding {}, which has no vertex buffer bound",
+                unbound.trailing_zeros()
+            ),
+        )?;
+    }
     Ok(())
+}
+
+/// The recorder remembers the vertex-buffer bindings bound (the first 64, the ones
+/// a pipeline's record names).
+pub(crate) fn cmd_bind_vertex_buffers_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    first_binding: u32,
+    count: usize,
+) {
+    for binding in (first_binding as usize)..(first_binding as usize).saturating_add(count) {
+        if binding < 64 {
+            recorder.bound[0].vertex |= 1 << binding;
+        }
+    }
 }
 
 /// Refuses a pipeline bound at a bind point of another kind.
@@ -2383,6 +2453,7 @@ pub(crate) fn indexed_draw_checks<S: State>(
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     bound_vuid: &'static str,
+    vertex_vuid: &'static str,
     range: Option<(u32, u32, &'static str)>,
 ) -> Result<()> {
     bound_pipeline_checks(
@@ -2390,6 +2461,7 @@ pub(crate) fn indexed_draw_checks<S: State>(
         vk::PipelineBindPoint::GRAPHICS,
         pipeline_vuid,
         sets_vuid,
+        Some(vertex_vuid),
     )?;
     let Some((size, offset, ty)) = recorder.bound[0].index else {
         return refuse(bound_vuid, "no index buffer is bound".into());

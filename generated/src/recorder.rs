@@ -57,6 +57,8 @@ pub(crate) struct Bound {
     pub sets: Vec<Option<Vrc<crate::retention::SetLayoutRecord>>>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
+    /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.
+    pub vertex: u64,
 }
 
 impl Bound {

@@ -122,6 +122,9 @@ pub(crate) struct PipelineRecord {
     pub bind_point: vk::PipelineBindPoint,
     /// The layout it was created with.
     pub layout: Vrc<LayoutRecord>,
+    /// The vertex-buffer bindings (the first 64) its vertex shader reads, one bit
+    /// each.
+    pub vertex_bindings: u64,
 }
 
 /// One binding of a descriptor set layout.

@@ -172,6 +172,20 @@ pub(crate) struct Interface {
     pub resources: Vec<Resource>,
     /// The byte range `start..end` of the push-constant block, if one is declared.
     pub push_constants: Option<(u32, u32)>,
+    /// Each vertex entry point's name and the input locations it declares (a
+    /// location and how many consecutive ones the variable takes).
+    pub vertex_inputs: Vec<(String, Vec<(u32, u32)>)>,
+}
+
+impl Interface {
+    /// Whether the vertex entry point `name` declares an input at `location`.
+    pub(crate) fn reads_vertex_location(&self, name: &[u8], location: u32) -> bool {
+        self.vertex_inputs
+            .iter()
+            .filter(|(n, _)| n.as_bytes() == name)
+            .flat_map(|(_, inputs)| inputs)
+            .any(|&(start, count)| location >= start && location - start < count)
+    }
 }
 
 /// The instructions of a module that the interface reads, by result id.
@@ -302,6 +316,38 @@ impl Module {
         }
     }
 
+    /// How many locations an input variable of type `id` takes: one per scalar or
+    /// vector (two for a 64-bit vector of three or four), one per matrix column,
+    /// times an array's length.
+    fn locations(&self, id: u32, depth: u32) -> u32 {
+        if depth > 16 {
+            return 1;
+        }
+        match self.ty(id) {
+            Some((OP_TYPE_VECTOR, [component, count, ..])) => {
+                let wide = matches!(
+                    self.ty(*component),
+                    Some((OP_TYPE_FLOAT | OP_TYPE_INT, [64, ..]))
+                );
+                if wide && *count > 2 {
+                    2
+                } else {
+                    1
+                }
+            }
+            Some((OP_TYPE_MATRIX, [column, columns, ..])) => {
+                columns.saturating_mul(self.locations(*column, depth + 1))
+            }
+            Some((OP_TYPE_ARRAY, [elem, len, ..])) => self
+                .constants
+                .get(len)
+                .copied()
+                .unwrap_or(1)
+                .saturating_mul(self.locations(*elem, depth + 1)),
+            _ => 1,
+        }
+    }
+
     /// The bytes a push-constant block of struct type `id` spans.
     fn block_range(&self, id: u32) -> (u32, u32) {
         let Some((OP_TYPE_STRUCT, members)) = self.ty(id) else {
@@ -328,11 +374,17 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     const OP_DECORATE: u32 = 71;
     const OP_MEMBER_DECORATE: u32 = 72;
     const OP_VARIABLE: u32 = 59;
+    const OP_ENTRY_POINT: u32 = 15;
+    const EXECUTION_MODEL_VERTEX: u32 = 0;
+    const INPUT: u32 = 1;
+    const LOCATION: u32 = 30;
     const BINDING: u32 = 33;
     const DESCRIPTOR_SET: u32 = 34;
     const PUSH_CONSTANT: u32 = 9;
     let mut m = Module::default();
     let mut variables: Vec<(u32, u32, u32)> = Vec::new();
+    // Each vertex entry point's name and interface ids.
+    let mut vertex_entries: Vec<(String, Vec<u32>)> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
     while at < words.len() {
@@ -358,11 +410,43 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                 m.constants.insert(w[2], w[3]);
             }
             (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
+            (OP_ENTRY_POINT, 4..) if w[1] == EXECUTION_MODEL_VERTEX => {
+                // The name is a nul-terminated string packed four bytes a word; the
+                // interface ids follow it.
+                let mut name = Vec::new();
+                let mut rest = &w[3..];
+                while let Some((word, tail)) = rest.split_first() {
+                    rest = tail;
+                    let bytes = word.to_le_bytes();
+                    let end = bytes.iter().position(|b| *b == 0);
+                    name.extend_from_slice(&bytes[..end.unwrap_or(4)]);
+                    if end.is_some() {
+                        break;
+                    }
+                }
+                let name = String::from_utf8_lossy(&name).into_owned();
+                vertex_entries.push((name, rest.to_vec()));
+            }
             _ => {}
         }
         at += count;
     }
     let mut out = Interface::default();
+    for (name, ids) in vertex_entries {
+        let inputs = variables
+            .iter()
+            .filter(|(_, id, storage)| *storage == INPUT && ids.contains(id))
+            .filter_map(|(ty, id, _)| {
+                let location = m.decorations.get(&(*id, LOCATION))?;
+                let pointee = match m.ty(*ty) {
+                    Some((OP_TYPE_POINTER, [_, pointee, ..])) => *pointee,
+                    _ => return None,
+                };
+                Some((*location, m.locations(pointee, 0)))
+            })
+            .collect();
+        out.vertex_inputs.push((name, inputs));
+    }
     for (ty, id, storage) in variables {
         let pointee = match m.ty(ty) {
             Some((OP_TYPE_POINTER, [_, pointee, ..])) => *pointee,
@@ -399,6 +483,22 @@ mod tests {
 
     fn words(bytes: &[u8]) -> Vec<u32> {
         spirv_words(bytes).expect("SPIR-V")
+    }
+
+    #[test]
+    fn a_vertex_shader_reads_its_input_locations() {
+        let triangle = interface(&words(include_bytes!(
+            "../../shaders/spv/triangle.vert.spv"
+        )));
+        assert_eq!(
+            triangle.vertex_inputs,
+            [("main".to_owned(), vec![(0, 1), (1, 1)])]
+        );
+        assert!(triangle.reads_vertex_location(b"main", 1));
+        assert!(!triangle.reads_vertex_location(b"main", 2));
+        assert!(!triangle.reads_vertex_location(b"other", 0));
+        let test = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
+        assert_eq!(test.vertex_inputs, [("main".to_owned(), vec![])]);
     }
 
     #[test]

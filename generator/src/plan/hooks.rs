@@ -179,6 +179,7 @@ const IMAGE_LIMITS: &str = "checks the create info against its Image Creation Li
 const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
 const SETS_UNPROVEN: &str = "checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
+const VERTEX_BOUND: &str = "checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound)";
 const INDEX_BOUND: &str = "checks an index buffer is bound, which the recorder tracks";
 const INDEX_RANGE: &str = "checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked)";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
@@ -186,18 +187,20 @@ const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
 /// A draw or dispatch: a pipeline bound at its bind point, and a set bound at every
-/// set number of its layout.
+/// set number of its layout; for a draw, a vertex buffer bound at every binding its
+/// vertex shader reads.
 macro_rules! bound {
-    ($command:literal, $bind_point:ident, $sets:expr) => {
+    ($command:literal, COMPUTE, $sets:expr) => {
         Special {
             command: $command,
             check: call(
                 "hooks::bound_pipeline_checks",
                 &[
                     "self",
-                    concat!("vk::PipelineBindPoint::", stringify!($bind_point)),
+                    "vk::PipelineBindPoint::COMPUTE",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
+                    "None",
                 ],
             ),
             settles: &[
@@ -206,6 +209,33 @@ macro_rules! bound {
                     How::Dynamic(PIPELINE_BOUND),
                 ),
                 (concat!("VUID-", $command, "-None-02697"), $sets),
+            ],
+            ..NONE
+        }
+    };
+    ($command:literal, GRAPHICS, $sets:expr) => {
+        Special {
+            command: $command,
+            check: call(
+                "hooks::bound_pipeline_checks",
+                &[
+                    "self",
+                    "vk::PipelineBindPoint::GRAPHICS",
+                    concat!("\"VUID-", $command, "-None-02700\""),
+                    concat!("\"VUID-", $command, "-None-02697\""),
+                    concat!("Some(\"VUID-", $command, "-None-04007\")"),
+                ],
+            ),
+            settles: &[
+                (
+                    concat!("VUID-", $command, "-None-02700"),
+                    How::Dynamic(PIPELINE_BOUND),
+                ),
+                (concat!("VUID-", $command, "-None-02697"), $sets),
+                (
+                    concat!("VUID-", $command, "-None-04007"),
+                    How::Dynamic(VERTEX_BOUND),
+                ),
             ],
             ..NONE
         }
@@ -225,6 +255,7 @@ macro_rules! indexed {
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
                     concat!("\"VUID-", $command, "-None-07312\""),
+                    concat!("\"VUID-", $command, "-None-04007\""),
                     $range,
                 ],
             ),
@@ -552,6 +583,10 @@ pub const SPECIALS: &[Special] = &[
             "hooks::cmd_bind_vertex_buffers_checks",
             &["self", "buffers", "offsets"],
         ),
+        after: call(
+            "hooks::cmd_bind_vertex_buffers_done",
+            &["self", "first_binding", "buffers.len()"],
+        ),
         settles: &[
             ("VUID-vkCmdBindVertexBuffers-pOffsets-00626", How::Dynamic(RANGE)),
             ("VUID-vkCmdBindVertexBuffers-pBuffers-00627", How::Dynamic(BUFFER_USE)),
@@ -564,6 +599,10 @@ pub const SPECIALS: &[Special] = &[
         check: call(
             "hooks::cmd_bind_vertex_buffers2_checks",
             &["self", "buffers", "offsets", "sizes"],
+        ),
+        after: call(
+            "hooks::cmd_bind_vertex_buffers_done",
+            &["self", "first_binding", "buffers.len()"],
         ),
         settles: &[
             ("VUID-vkCmdBindVertexBuffers2-pOffsets-03357", How::Dynamic(RANGE)),
@@ -827,6 +866,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-02697", How::User(SETS_UNPROVEN)),
             ("VUID-vkCmdDrawIndexed-None-07312", How::Dynamic(INDEX_BOUND)),
+            ("VUID-vkCmdDrawIndexed-None-04007", How::Dynamic(VERTEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
         ]
     ),
@@ -838,6 +878,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexedIndirect-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-02697", How::User(SETS_UNPROVEN)),
             ("VUID-vkCmdDrawIndexedIndirect-None-07312", How::Dynamic(INDEX_BOUND)),
+            ("VUID-vkCmdDrawIndexedIndirect-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]
     ),
     bound!("vkCmdDrawIndirectCount", GRAPHICS, How::User(SETS_UNPROVEN)),
@@ -848,6 +889,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02697", How::User(SETS_UNPROVEN)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-07312", How::Dynamic(INDEX_BOUND)),
+            ("VUID-vkCmdDrawIndexedIndirectCount-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]
     ),
     bound!("vkCmdDispatch", COMPUTE, How::Dynamic(SETS_BOUND)),

@@ -341,6 +341,11 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
                     offsets.as_ptr().cast(),
                 )
             };
+            crate::hooks::cmd_bind_vertex_buffers_done(
+                self,
+                first_binding,
+                buffers.len(),
+            );
         }
         Ok(())
     }
@@ -2029,6 +2034,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 59 (exp
             vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
+            None,
         )?;
         {
             let r = self.validate_cmd_dispatch();
@@ -2089,6 +2095,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
             vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
+            None,
         )?;
         {
             let r = self.validate_cmd_dispatch_indirect(buffer);
@@ -2560,16 +2567,17 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDraw.html). Settled by the wrappers:
 
 - `VUID-vkCmdDraw-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDraw-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 191.
+Left to the caller (listed one by one in the crate's `validation.json`): 190.
 
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 190: explicit rule; the wrappers do not check it*/
+- 189: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw(
         &mut self,
@@ -2583,6 +2591,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191.
             vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDraw-None-02700",
             "VUID-vkCmdDraw-None-02697",
+            Some("VUID-vkCmdDraw-None-04007"),
         )?;
         {
             let r = self.validate_cmd_draw();
@@ -2603,7 +2612,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -2634,6 +2643,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndexed-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexed-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexed-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: dynamic (checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked))
 - `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -2642,10 +2652,10 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 191.
+Left to the caller (listed one by one in the crate's `validation.json`): 190.
 
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 190: explicit rule; the wrappers do not check it*/
+- 189: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed(
         &mut self,
@@ -2660,6 +2670,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191.
             "VUID-vkCmdDrawIndexed-None-02700",
             "VUID-vkCmdDrawIndexed-None-02697",
             "VUID-vkCmdDrawIndexed-None-07312",
+            "VUID-vkCmdDrawIndexed-None-04007",
             Some((
                 index_count,
                 first_index,
@@ -2686,7 +2697,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -2719,6 +2730,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexedIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
@@ -2731,11 +2743,11 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 195.
+Left to the caller (listed one by one in the crate's `validation.json`): 194.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 193: explicit rule; the wrappers do not check it*/
+- 192: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed_indirect(
         &mut self,
@@ -2749,6 +2761,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 195.
             "VUID-vkCmdDrawIndexedIndirect-None-02700",
             "VUID-vkCmdDrawIndexedIndirect-None-02697",
             "VUID-vkCmdDrawIndexedIndirect-None-07312",
+            "VUID-vkCmdDrawIndexedIndirect-None-04007",
             None,
         )?;
         {
@@ -2765,7 +2778,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 195.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -2789,6 +2802,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDrawIndirect-drawCount-02718`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
@@ -2800,11 +2814,11 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 194.
+Left to the caller (listed one by one in the crate's `validation.json`): 193.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 192: explicit rule; the wrappers do not check it*/
+- 191: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indirect(
         &mut self,
@@ -2818,6 +2832,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194.
             vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDrawIndirect-None-02700",
             "VUID-vkCmdDrawIndirect-None-02697",
+            Some("VUID-vkCmdDrawIndirect-None-04007"),
         )?;
         {
             let r = self.validate_cmd_draw_indirect(buffer, draw_count);
@@ -2831,7 +2846,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

@@ -33,6 +33,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 63 (exp
             vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatchBase-None-02700",
             "VUID-vkCmdDispatchBase-None-02697",
+            None,
         )?;
         {
             let r = self.validate_cmd_dispatch_base();

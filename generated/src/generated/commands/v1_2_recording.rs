@@ -85,6 +85,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
 The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirectCount.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -95,11 +96,11 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 203.
+Left to the caller (listed one by one in the crate's `validation.json`): 202.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 198: explicit rule; the wrappers do not check it*/
+- 197: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -115,6 +116,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203.
             "VUID-vkCmdDrawIndexedIndirectCount-None-02700",
             "VUID-vkCmdDrawIndexedIndirectCount-None-02697",
             "VUID-vkCmdDrawIndexedIndirectCount-None-07312",
+            "VUID-vkCmdDrawIndexedIndirectCount-None-04007",
             None,
         )?;
         {
@@ -138,7 +140,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 203.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
         &mut self,
@@ -175,6 +177,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
 The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirectCount.html). Settled by the wrappers:
 
 - `VUID-vkCmdDrawIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -184,11 +187,11 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 202.
+Left to the caller (listed one by one in the crate's `validation.json`): 201.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 197: explicit rule; the wrappers do not check it*/
+- 196: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_draw_indirect_count(
         &mut self,
@@ -204,6 +207,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 202.
             vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDrawIndirectCount-None-02700",
             "VUID-vkCmdDrawIndirectCount-None-02697",
+            Some("VUID-vkCmdDrawIndirectCount-None-04007"),
         )?;
         {
             let r = self.validate_cmd_draw_indirect_count(buffer, count_buffer);
@@ -226,7 +230,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 202.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count_unchecked(
         &mut self,

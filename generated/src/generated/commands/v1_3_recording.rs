@@ -651,6 +651,11 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
                     },
                 )
             };
+            crate::hooks::cmd_bind_vertex_buffers_done(
+                self,
+                first_binding,
+                buffers.len(),
+            );
         }
         Ok(())
     }
