@@ -895,24 +895,44 @@ mod args {
 
 /// Records the safe call into one command buffer (whose `end` returns its refusal)
 /// and the unchecked call into another, under the layer.
-fn record(
+fn record<R: Recorded, U>(
     s: &Setup,
-    safe: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>),
-    unchecked: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>),
+    safe: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>) -> R,
+    unchecked: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>) -> U,
 ) -> Outcome {
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    safe(&mut rec);
-    let safe = rec.end();
+    let called = safe(&mut rec).refusal();
+    let safe = called.and(rec.end());
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let layer = under_layer(s, || unchecked(&mut rec));
+    let layer = under_layer(s, || {
+        let _ = unchecked(&mut rec);
+    });
     rec.end().expect("end");
     Outcome { safe, layer }
+}
+
+/// What a recorded command returns: nothing, for one whose refusal the recorder
+/// keeps for `end`, or its refusal.
+trait Recorded {
+    fn refusal(self) -> tuff::Result<()>;
+}
+
+impl Recorded for () {
+    fn refusal(self) -> tuff::Result<()> {
+        Ok(())
+    }
+}
+
+impl Recorded for tuff::Result<()> {
+    fn refusal(self) -> tuff::Result<()> {
+        self
+    }
 }
 
 fn event(s: &Setup) -> tuff::Event {

@@ -3764,3 +3764,150 @@ fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
         .expect("the largest image the limits allow");
     assert_silent(&s.messages);
 }
+
+/// A recorded call over a recorder outside a render pass.
+type RecordCall<'a> = Box<dyn Fn(&mut tuff::Recorder<'_, tuff::Outside>) -> tuff::Result<()> + 'a>;
+
+/// A buffer-image copy whose regions reach past the buffer (an offset, a row length
+/// or an image height that moves the last texel past its end) would have the
+/// device read or write outside it: each is refused through all four commands, and
+/// the layer names the same rule for the unchecked call.
+#[test]
+fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    // 4x4 RGBA8 texels are 64 bytes: exactly the buffer.
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
+    let (buffer, _memory) = host_buffer(&s, 64, usage);
+    let image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST),
+        )
+        .expect("image");
+    let _image_memory = s.bind_image(&image);
+    let layer = vk::ImageSubresourceLayers {
+        aspect_mask: vk::ImageAspectFlags::COLOR,
+        mip_level: 0,
+        base_array_layer: 0,
+        layer_count: 1,
+    };
+    let extent = vk::Extent3D {
+        width: 4,
+        height: 4,
+        depth: 1,
+    };
+    let region = |offset, row_length, image_height| vk::BufferImageCopy {
+        buffer_offset: offset,
+        buffer_row_length: row_length,
+        buffer_image_height: image_height,
+        image_subresource: layer,
+        image_offset: vk::Offset3D::default(),
+        image_extent: extent,
+    };
+    // An offset of one texel, rows of 8 texels; and, as a control, the exact fit
+    // with an image height of 8 (it only spaces slices, and there is one).
+    let past = [region(4, 0, 0), region(0, 8, 0)];
+    let fits = region(0, 0, 8);
+    let to_image = "VUID-vkCmdCopyBufferToImage-pRegions-00171";
+    let to_buffer = "VUID-vkCmdCopyImageToBuffer-pRegions-00183";
+    let to_image2 = "VUID-VkCopyBufferToImageInfo2-pRegions-00171";
+    let to_buffer2 = "VUID-VkCopyImageToBufferInfo2-pRegions-00183";
+    let dst = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
+    let src = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+    let region2 = |r: &vk::BufferImageCopy| {
+        tuff::BufferImageCopy2::new()
+            .buffer_offset(r.buffer_offset)
+            .buffer_row_length(r.buffer_row_length)
+            .buffer_image_height(r.buffer_image_height)
+            .image_subresource(r.image_subresource)
+            .image_extent(r.image_extent)
+    };
+    for r in &past {
+        let regions2 = [region2(r)];
+        let into = tuff::CopyBufferToImageInfo2::new(&buffer, &image)
+            .dst_image_layout(dst)
+            .regions(&regions2);
+        let out = tuff::CopyImageToBufferInfo2::new(&image, &buffer)
+            .src_image_layout(src)
+            .regions(&regions2);
+        for unchecked in [false, true] {
+            let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+            let mut rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            if unchecked {
+                // SAFETY: the layer skips each call it reports (its messenger says
+                // so); the command buffer is never submitted.
+                layer_names(&s, to_image, || {
+                    let _ = unsafe {
+                        rec.cmd_copy_buffer_to_image_unchecked(&buffer, &image, dst, &[*r])
+                    };
+                });
+                // SAFETY: as above.
+                layer_names(&s, to_buffer, || {
+                    let _ = unsafe {
+                        rec.cmd_copy_image_to_buffer_unchecked(&image, src, &buffer, &[*r])
+                    };
+                });
+                // SAFETY: as above.
+                layer_names(&s, to_image2, || {
+                    let _ = unsafe { rec.cmd_copy_buffer_to_image2_unchecked(&into) };
+                });
+                // SAFETY: as above.
+                layer_names(&s, to_buffer2, || {
+                    let _ = unsafe { rec.cmd_copy_image_to_buffer2_unchecked(&out) };
+                });
+                rec.end().expect("end");
+            } else {
+                // A refused copy is not recorded, and the recording goes on.
+                assert_eq!(
+                    vuid(rec.cmd_copy_buffer_to_image(&buffer, &image, dst, &[*r])),
+                    to_image
+                );
+                rec.end().expect("end");
+                let calls: [(&str, RecordCall<'_>); 3] = [
+                    (
+                        to_buffer,
+                        Box::new(|rec| rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[*r])),
+                    ),
+                    (
+                        to_image2,
+                        Box::new(|rec| rec.cmd_copy_buffer_to_image2(&into)),
+                    ),
+                    (
+                        to_buffer2,
+                        Box::new(|rec| rec.cmd_copy_image_to_buffer2(&out)),
+                    ),
+                ];
+                for (expected, call) in calls {
+                    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+                    let mut rec = cb
+                        .begin(&tuff::CommandBufferBeginInfo::new())
+                        .expect("begin");
+                    assert_eq!(vuid(call(&mut rec)), expected);
+                    rec.end().expect("end");
+                }
+            }
+        }
+    }
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[fits])
+        .expect("a region that fills the buffer exactly");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}

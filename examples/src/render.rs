@@ -249,7 +249,7 @@ pub fn record_frame<S: Scene>(
                 image_extent: view.extent.into(),
                 ..Default::default()
             }],
-        );
+        )?;
         // A fence wait does not make device writes visible to the host; this does.
         let to_host = [tuff::BufferMemoryBarrier::new(buffer)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)

@@ -2972,3 +2972,182 @@ pub(crate) fn create_image_checks(
     }
     Ok(())
 }
+
+/// The byte just past the last one that a buffer-image copy region reaches in its
+/// buffer, by Buffer and Image Addressing: rows of `bufferRowLength` (or the
+/// extent's width) texels, `bufferImageHeight` (or its height) rows a slice, one
+/// slice per depth and per layer, in texel blocks of the aspect's size. `None` when
+/// the format or aspect is not one the registry describes (an aspect mask of more
+/// than one aspect), which another rule refuses.
+#[allow(clippy::too_many_arguments)]
+fn buffer_image_end(
+    format: vk::Format,
+    aspect: vk::ImageAspectFlags,
+    offset: vk::DeviceSize,
+    row_length: u32,
+    image_height: u32,
+    extent: vk::Extent3D,
+    layers: u32,
+) -> Option<u64> {
+    let (bytes, [bw, bh, bd]) = crate::formats::block(format, aspect)?;
+    let blocks = |texels: u32, per: u32| u64::from(texels).div_ceil(u64::from(per.max(1)));
+    let row = blocks(
+        if row_length == 0 {
+            extent.width
+        } else {
+            row_length
+        },
+        bw,
+    );
+    let height = blocks(
+        if image_height == 0 {
+            extent.height
+        } else {
+            image_height
+        },
+        bh,
+    );
+    let (w, h) = (blocks(extent.width, bw), blocks(extent.height, bh));
+    let slices = blocks(extent.depth, bd).saturating_mul(u64::from(layers));
+    if w == 0 || h == 0 || slices == 0 {
+        return Some(offset);
+    }
+    // A sum past u64 is past any buffer.
+    let last_row = (slices - 1)
+        .checked_mul(height)
+        .and_then(|r| r.checked_add(h - 1))?;
+    let texels = last_row.checked_mul(row).and_then(|t| t.checked_add(w));
+    Some(
+        texels
+            .and_then(|t| t.checked_mul(u64::from(bytes)))
+            .and_then(|b| b.checked_add(offset))
+            .unwrap_or(u64::MAX),
+    )
+}
+
+/// Refuses a buffer-image copy whose regions reach past the buffer's end (the
+/// buffer's size and the image's format as the device recorded them).
+#[allow(clippy::too_many_arguments)]
+fn check_buffer_image_regions(
+    device: &Device,
+    buffer: vk::Buffer,
+    image: vk::Image,
+    regions: impl Iterator<Item = (u64, u32, u32, vk::ImageSubresourceLayers, vk::Extent3D)>,
+    vuid: &'static str,
+) -> Result<()> {
+    let (Some(b), Some(i)) = (device.live().buffer(buffer), device.live().image(image)) else {
+        return Ok(());
+    };
+    for (n, (offset, row_length, image_height, subresource, extent)) in regions.enumerate() {
+        let end = buffer_image_end(
+            i.format,
+            subresource.aspect_mask,
+            offset,
+            row_length,
+            image_height,
+            extent,
+            subresource.layer_count,
+        );
+        if let Some(end) = end.filter(|e| *e > b.size) {
+            refuse(
+                vuid,
+                format!(
+                    "pRegions[{n}] reaches byte {end} of a buffer of {} bytes (bufferOffset = {offset}, bufferRowLength = {row_length}, bufferImageHeight = {image_height}, imageExtent = {}x{}x{}, layerCount = {})",
+                    b.size, extent.width, extent.height, extent.depth, subresource.layer_count
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// A region of `vkCmdCopyBufferToImage` and `vkCmdCopyImageToBuffer` as
+/// [`check_buffer_image_regions`] reads it.
+fn region1(r: &vk::BufferImageCopy) -> (u64, u32, u32, vk::ImageSubresourceLayers, vk::Extent3D) {
+    (
+        r.buffer_offset,
+        r.buffer_row_length,
+        r.buffer_image_height,
+        r.image_subresource,
+        r.image_extent,
+    )
+}
+
+/// As [`region1`], for the `*2` commands' regions.
+fn region2(
+    r: &vk::BufferImageCopy2<'_>,
+) -> (u64, u32, u32, vk::ImageSubresourceLayers, vk::Extent3D) {
+    (
+        r.buffer_offset,
+        r.buffer_row_length,
+        r.buffer_image_height,
+        r.image_subresource,
+        r.image_extent,
+    )
+}
+
+/// Refuses a copy from a buffer into an image that would read past the buffer's end.
+pub(crate) fn cmd_copy_buffer_to_image_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    src_buffer: &Buffer,
+    dst_image: &Image,
+    regions: &[vk::BufferImageCopy],
+) -> Result<()> {
+    check_buffer_image_regions(
+        recorder.device(),
+        src_buffer.raw(),
+        dst_image.raw(),
+        regions.iter().map(region1),
+        "VUID-vkCmdCopyBufferToImage-pRegions-00171",
+    )
+}
+
+/// Refuses a copy from an image into a buffer that would write past the buffer's end.
+pub(crate) fn cmd_copy_image_to_buffer_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    src_image: &Image,
+    dst_buffer: &Buffer,
+    regions: &[vk::BufferImageCopy],
+) -> Result<()> {
+    check_buffer_image_regions(
+        recorder.device(),
+        dst_buffer.raw(),
+        src_image.raw(),
+        regions.iter().map(region1),
+        "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
+    )
+}
+
+/// As [`cmd_copy_buffer_to_image_checks`], for `vkCmdCopyBufferToImage2`.
+pub(crate) fn cmd_copy_buffer_to_image2_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    info: &CopyBufferToImageInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
+    check_buffer_image_regions(
+        recorder.device(),
+        raw.src_buffer,
+        raw.dst_image,
+        regions.iter().map(region2),
+        "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
+    )
+}
+
+/// As [`cmd_copy_image_to_buffer_checks`], for `vkCmdCopyImageToBuffer2`.
+pub(crate) fn cmd_copy_image_to_buffer2_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    info: &CopyImageToBufferInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
+    check_buffer_image_regions(
+        recorder.device(),
+        raw.dst_buffer,
+        raw.src_image,
+        regions.iter().map(region2),
+        "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
+    )
+}

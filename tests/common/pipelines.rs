@@ -384,7 +384,8 @@ impl Pipelines {
                     },
                     ..Default::default()
                 }],
-            );
+            )
+            .expect("recorded");
         }
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
             .expect("recorded");

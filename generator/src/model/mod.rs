@@ -342,6 +342,8 @@ impl Model {
                     block_extent: f.block_extent,
                     components: f.components.clone(),
                     planes: f.planes,
+                    plane_formats: f.plane_formats.clone(),
+                    bits: f.bits.clone(),
                 })
                 .collect(),
             enum_origins,
@@ -501,9 +503,26 @@ pub struct Format {
     pub components: Vec<String>,
     /// How many planes (0 for a format that is not multi-planar).
     pub planes: u8,
+    /// Each plane's compatible single-plane format, in plane order.
+    pub plane_formats: Vec<String>,
+    /// Each component's bit width as written (`8`, `24`, `compressed`), in order.
+    pub bits: Vec<String>,
 }
 
 impl Format {
+    /// The bytes a texel of one aspect takes in a buffer, as copies between buffers
+    /// and images lay it out: the block size for color, 4 for a depth of 24 or 32
+    /// bits and 2 for 16, 1 for stencil.
+    pub fn aspect_bytes(&self, component: &str) -> Option<u32> {
+        let i = self.components.iter().position(|c| c == component)?;
+        match (component, self.bits.get(i)?.as_str()) {
+            ("S", _) => Some(1),
+            ("D", "16") => Some(2),
+            ("D", "24" | "32") => Some(4),
+            _ => None,
+        }
+    }
+
     /// Has a depth component.
     pub fn depth(&self) -> bool {
         self.components.iter().any(|c| c == "D")

@@ -180,6 +180,7 @@ const BIND_BOUND: &str = "refuses an object the device recorded as bound (and on
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
 const SETS_UNPROVEN: &str = "checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
 const VERTEX_BOUND: &str = "checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound)";
+const BUFFER_IMAGE_RANGE: &str = "checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size";
 const INDEX_BOUND: &str = "checks an index buffer is bound, which the recorder tracks";
 const INDEX_RANGE: &str = "checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked)";
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
@@ -895,6 +896,54 @@ pub const SPECIALS: &[Special] = &[
     bound!("vkCmdDispatch", COMPUTE, How::Dynamic(SETS_BOUND)),
     bound!("vkCmdDispatchIndirect", COMPUTE, How::Dynamic(SETS_BOUND)),
     bound!("vkCmdDispatchBase", COMPUTE, How::Dynamic(SETS_BOUND)),
+    Special {
+        command: "vkCmdCopyBufferToImage",
+        check_last: call(
+            "hooks::cmd_copy_buffer_to_image_checks",
+            &["self", "src_buffer", "dst_image", "regions"],
+        ),
+        settles: &[(
+            "VUID-vkCmdCopyBufferToImage-pRegions-00171",
+            How::Dynamic(BUFFER_IMAGE_RANGE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyImageToBuffer",
+        check_last: call(
+            "hooks::cmd_copy_image_to_buffer_checks",
+            &["self", "src_image", "dst_buffer", "regions"],
+        ),
+        settles: &[(
+            "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
+            How::Dynamic(BUFFER_IMAGE_RANGE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyBufferToImage2",
+        check_last: call(
+            "hooks::cmd_copy_buffer_to_image2_checks",
+            &["self", "copy_buffer_to_image_info"],
+        ),
+        settles: &[(
+            "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
+            How::Dynamic(BUFFER_IMAGE_RANGE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyImageToBuffer2",
+        check_last: call(
+            "hooks::cmd_copy_image_to_buffer2_checks",
+            &["self", "copy_image_to_buffer_info"],
+        ),
+        settles: &[(
+            "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
+            How::Dynamic(BUFFER_IMAGE_RANGE),
+        )],
+        ..NONE
+    },
     Special {
         command: "vkCmdCopyBuffer",
         check: call(

@@ -345,11 +345,15 @@ fn convert_format(f: vk::Format) -> crate::registry::FormatDef {
         }
     }
     let mut components = Vec::new();
-    let mut planes = 0;
+    let mut bits = Vec::new();
+    let mut plane_formats = Vec::new();
     for child in f.children {
         match child {
-            vk::FormatChild::Component { name, .. } => components.push(name),
-            vk::FormatChild::Plane { .. } => planes += 1,
+            vk::FormatChild::Component { name, bits: b, .. } => {
+                components.push(name);
+                bits.push(b);
+            }
+            vk::FormatChild::Plane { compatible, .. } => plane_formats.push(compatible),
             _ => {}
         }
     }
@@ -358,7 +362,9 @@ fn convert_format(f: vk::Format) -> crate::registry::FormatDef {
         block_size: f.blockSize,
         block_extent,
         components,
-        planes,
+        planes: plane_formats.len() as u8,
+        plane_formats,
+        bits,
     }
 }
 

@@ -49,6 +49,10 @@ pub struct FormatDef {
     pub components: Vec<String>,
     /// How many planes (0 for a format that is not multi-planar).
     pub planes: u8,
+    /// Each plane's compatible single-plane format, in plane order.
+    pub plane_formats: Vec<String>,
+    /// Each component's bit width as written (`8`, `24`, `compressed`), in order.
+    pub bits: Vec<String>,
 }
 
 /// One `<type>` element.

@@ -1650,6 +1650,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
 
 The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyBufferToImage-pRegions-00171`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -1671,7 +1672,7 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 36 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_buffer_to_image(
         &mut self,
@@ -1679,7 +1680,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 36 (exp
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
-    ) {
+    ) -> Result<()> {
         {
             let r = self
                 .validate_cmd_copy_buffer_to_image(
@@ -1688,10 +1689,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 36 (exp
                     dst_image_layout,
                     regions,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_copy_buffer_to_image_checks(
+            self,
+            src_buffer,
+            dst_image,
+            regions,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1707,7 +1712,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 36 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image_unchecked(
         &mut self,
@@ -1715,21 +1720,24 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_copy_buffer_to_image;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_buffer.raw(),
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_buffer.address(), || src_buffer.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_buffer.raw(),
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions.len() as u32,
+                    regions.as_ptr().cast(),
+                )
+            };
+            self.retain_with(src_buffer.address(), || src_buffer.retained());
+            self.retain_with(dst_image.address(), || dst_image.retained());
+        }
+        Ok(())
     }
     /**`vkCmdCopyImage`
 
@@ -1836,6 +1844,7 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
 
 The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyImageToBuffer-pRegions-00183`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00186`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -1857,7 +1866,7 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_image_to_buffer(
         &mut self,
@@ -1865,7 +1874,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 34 (exp
         src_image_layout: vk::ImageLayout,
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
-    ) {
+    ) -> Result<()> {
         {
             let r = self
                 .validate_cmd_copy_image_to_buffer(
@@ -1874,10 +1883,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 34 (exp
                     dst_buffer,
                     regions,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_copy_image_to_buffer_checks(
+            self,
+            src_image,
+            dst_buffer,
+            regions,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1893,7 +1906,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 34 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer_unchecked(
         &mut self,
@@ -1901,21 +1914,24 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
         src_image_layout: vk::ImageLayout,
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_copy_image_to_buffer;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_buffer.raw(),
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_buffer.raw(),
+                    regions.len() as u32,
+                    regions.as_ptr().cast(),
+                )
+            };
+            self.retain_with(src_image.address(), || src_image.retained());
+            self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        }
+        Ok(())
     }
     /**`vkCmdCopyQueryPoolResults`
 

@@ -189,13 +189,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
     pub fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         {
             let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_copy_buffer_to_image2_checks(self, copy_buffer_to_image_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
@@ -204,35 +203,42 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_copy_buffer_to_image2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a>
-                    as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_buffer_to_image_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::copy_buffer_to_image_info2(e.as_raw(), live, &mut kept)
-                };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    copy_buffer_to_image_info as *const CopyBufferToImageInfo2<'a>
+                        as *const _,
+                )
+            };
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in core::iter::once(copy_buffer_to_image_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::copy_buffer_to_image_info2(
+                            e.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdCopyImage2`
 
@@ -306,13 +312,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
     pub fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         {
             let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::hooks::cmd_copy_image_to_buffer2_checks(self, copy_image_to_buffer_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
@@ -321,35 +326,42 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_copy_image_to_buffer2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a>
-                    as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_image_to_buffer_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::copy_image_to_buffer_info2(e.as_raw(), live, &mut kept)
-                };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    copy_image_to_buffer_info as *const CopyImageToBufferInfo2<'a>
+                        as *const _,
+                )
+            };
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in core::iter::once(copy_image_to_buffer_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::copy_image_to_buffer_info2(
+                            e.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdResetEvent2`
 

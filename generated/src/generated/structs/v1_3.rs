@@ -505,6 +505,7 @@ impl<'a> CopyBufferInfo2<'a> {
 
 The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferToImageInfo2.html). Settled by the wrappers:
 
+- `VUID-VkCopyBufferToImageInfo2-pRegions-00171`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-00174`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyBufferToImageInfo2-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -525,7 +526,7 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -664,6 +665,7 @@ impl<'a> CopyImageInfo2<'a> {
 
 The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyImageToBufferInfo2.html). Settled by the wrappers:
 
+- `VUID-VkCopyImageToBufferInfo2-pRegions-00183`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00186`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyImageToBufferInfo2-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -680,10 +682,10 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 36.
+Left to the caller (listed one by one in the crate's `validation.json`): 35.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 32: explicit rule; the wrappers do not check it*/
+- 31: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
