@@ -630,6 +630,11 @@ oracle_cases! {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
     },
+    attachment_reference: vk::AttachmentReference {
+        "VUID-VkAttachmentReference-layout-03077" => |v, l, o| {
+            v.layout = vk::ImageLayout::from_raw(0);
+        },
+    },
     subpass_dependency: vk::SubpassDependency {
         "VUID-VkSubpassDependency-srcStageMask-04090" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
@@ -700,6 +705,11 @@ oracle_cases! {
         },
         "VUID-VkSubpassDescription2-multiview-06558" => |v, l, o| {
             v.view_mask = 1;
+        },
+    },
+    attachment_reference2: vk::AttachmentReference2<'_> {
+        "VUID-VkAttachmentReference2-layout-03077" => |v, l, o| {
+            v.layout = vk::ImageLayout::from_raw(0);
         },
     },
     subpass_dependency2: vk::SubpassDependency2<'_> {
@@ -803,6 +813,14 @@ oracle_cases! {
             v.subresource_range.layer_count = 7;
         },
     },
+    image_subresource_range: vk::ImageSubresourceRange {
+        "VUID-VkImageSubresourceRange-levelCount-01720" => |v, l, o| {
+            v.level_count = 0;
+        },
+        "VUID-VkImageSubresourceRange-layerCount-01721" => |v, l, o| {
+            v.layer_count = 0;
+        },
+    },
     sampler_create_info: vk::SamplerCreateInfo<'_> {
         "VUID-VkSamplerCreateInfo-maxLod-01973" => |v, l, o| {
             v.max_lod = v.min_lod - 1.0;
@@ -832,6 +850,17 @@ oracle_cases! {
     descriptor_pool_size: vk::DescriptorPoolSize {
         "VUID-VkDescriptorPoolSize-descriptorCount-00302" => |v, l, o| {
             v.descriptor_count = 0;
+        },
+    },
+    descriptor_buffer_info: vk::DescriptorBufferInfo {
+        "VUID-VkDescriptorBufferInfo-offset-00340" => |v, l, o| {
+            v.offset = o.buffer.size as _;
+        },
+        "VUID-VkDescriptorBufferInfo-range-00341" => |v, l, o| {
+            v.range = 0;
+        },
+        "VUID-VkDescriptorBufferInfo-range-00342" => |v, l, o| {
+            v.range = (o.buffer.size as i64 - v.offset as i64 + 1) as _;
         },
     },
     query_pool_create_info: vk::QueryPoolCreateInfo<'_> {

@@ -407,7 +407,9 @@ macro_rules! create {
     ($s:expr, $method:ident, $unchecked:ident, $($arg:expr),+) => {{
         let safe = $s.device.$method($($arg),+).map(drop);
         // SAFETY: as in `buffer_create_info`.
-        let layer = under_layer($s, || drop(unsafe { $s.device.$unchecked($($arg),+) }));
+        let layer = under_layer($s, || {
+            let _ = unsafe { $s.device.$unchecked($($arg),+) };
+        });
         Outcome { safe, layer }
     }};
 }
@@ -2131,4 +2133,104 @@ fn a_feature_enabled_through_its_extension_struct_is_known() {
         "the layer reported the barrier:\n{}",
         out.layer.join("\n")
     );
+}
+
+/// A uniform-buffer descriptor write of a buffer info (the buffer made as `o.buffer`
+/// says, with uniform usage), through `update_descriptor_sets`.
+fn descriptor_buffer_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::DescriptorBufferInfo, &Limits, &mut Objects),
+) -> Outcome {
+    let d = &s.device;
+    let mut o = Objects::default();
+    o.buffer.usage |= vk::BufferUsageFlags::UNIFORM_BUFFER;
+    change(&mut Default::default(), limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::COMPUTE)];
+    let layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: vk::DescriptorType::UNIFORM_BUFFER,
+        descriptor_count: 1,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("descriptor pool");
+    let layouts = tuff::HandleSlice::new(&[&layout]);
+    let set = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )
+        .expect("descriptor set")
+        .pop()
+        .expect("one set");
+    let mut info = tuff::DescriptorBufferInfo::new()
+        .buffer(Some(&buffer))
+        .offset(0)
+        .range(o.buffer.size);
+    // SAFETY: as in `buffer_create_info`.
+    change(unsafe { info.raw_values_mut() }, limits, &mut o.clone());
+    let infos = [info];
+    let writes = [tuff::WriteDescriptorSet::new(&set)
+        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+        .buffer_info(&infos)];
+    create!(
+        s,
+        update_descriptor_sets,
+        update_descriptor_sets_unchecked,
+        &writes,
+        &[]
+    )
+}
+
+/// A clear of the fixture's image over one subresource range.
+fn image_subresource_range(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::ImageSubresourceRange, &Limits, &mut Objects),
+) -> Outcome {
+    cmd_clear_color_image(s, limits, &|_, l, o| {
+        let mut range = o.image_subresource_range;
+        change(&mut range, l, o);
+        o.image_subresource_range = range;
+    })
+}
+
+/// The render pass of [`render_pass`], its subpass's color reference changed.
+fn attachment_reference(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::AttachmentReference, &Limits, &mut Objects),
+) -> Outcome {
+    let mut o = Objects::default();
+    let mut reference = o.attachment_reference_color_attachments;
+    change(&mut reference, limits, &mut o);
+    o.attachment_reference_color_attachments = reference;
+    render_pass(s, &o, |_| {})
+}
+
+/// The render pass of [`render_pass2`], its subpass's color reference changed.
+fn attachment_reference2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::AttachmentReference2<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    let mut o = Objects::default();
+    let mut reference = o.attachment_reference2_color_attachments;
+    change(&mut reference, limits, &mut o);
+    o.attachment_reference2_color_attachments = reference;
+    render_pass2(s, &o, |_| {})
 }

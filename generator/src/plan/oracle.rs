@@ -66,6 +66,10 @@ pub const FIXTURES: &[&str] = &[
     "VkBufferViewCreateInfo",
     "VkBufferMemoryBarrier",
     "VkImageMemoryBarrier",
+    "VkDescriptorBufferInfo",
+    "VkImageSubresourceRange",
+    "VkAttachmentReference",
+    "VkAttachmentReference2",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -138,6 +142,8 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkAttachmentDescription2-format-03292", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription2-format-03293", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription2-format-06700", COLOR_REFERENCE),
+    ("VUID-VkAttachmentReference-separateDepthStencilLayouts-03313", COLOR_REFERENCE_LAYOUT),
+    ("VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313", COLOR_REFERENCE_LAYOUT),
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
@@ -148,6 +154,7 @@ const FROM_EXTERNAL: &str = "the fixture's dependency comes from `VK_SUBPASS_EXT
 const RANGE_BASE: &str = "a range is an element, so its case moves the base past the end, which breaks the rule that the base lies inside (`baseMipLevel-01470`, `baseArrayLayer-01472`) too";
 const DEPTH_LAYOUTS: &str = "the layouts the rule forbids are depth-only or stencil-only ones, which without `separateDepthStencilLayouts` (off on the fixtures' device) break `separateDepthStencilLayouts-03284` or `03285` too";
 const COLOR_REFERENCE: &str = "the fixture's attachment is its subpass's color attachment, which a depth/stencil format cannot be (`VkSubpassDescription-pColorAttachments-02648`)";
+const COLOR_REFERENCE_LAYOUT: &str = "the fixture's reference is its subpass's color attachment, and the depth-only layouts the rule forbids without the feature a color attachment may not have either (`VkSubpassDescription-attachment-06919`, checked first)";
 const NO_INPUT: &str = "the fixture's subpass has no input attachment, and one needs a descriptor-free input the test pipelines lack";
 const NO_RESOLVE: &str = "the fixture's subpass has no resolve attachment, which needs a multisampled color attachment to resolve";
 const SPARSE: &str = "setting a sparse residency or aliased bit needs `SPARSE_BINDING` too, which breaks the `sparseBinding` rule as well on a device without sparse features";

@@ -782,12 +782,12 @@ impl<'a> CopyDescriptorSet<'a> {
 
 The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferInfo.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorBufferInfo-offset-00340`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkDescriptorBufferInfo-range-00341`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkDescriptorBufferInfo-range-00342`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkDescriptorBufferInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {

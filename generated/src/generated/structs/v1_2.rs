@@ -138,14 +138,15 @@ for AttachmentDescriptionStencilLayout<'a> {}
 
 The rules are on [`VkAttachmentReference2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReference2.html). Settled by the wrappers:
 
+- `VUID-VkAttachmentReference2-layout-03077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentReference2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentReference2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
