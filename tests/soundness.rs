@@ -3911,3 +3911,210 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
     rec.end().expect("end");
     assert_silent(&s.messages);
 }
+
+/// A pipeline layout past the device's descriptor limits (per stage, or across all
+/// stages of its set layouts), with more set layouts than can be bound, or with two
+/// push-constant ranges for one stage is refused, and the layer names the same rule
+/// for the unchecked call. Each case is sized from the device's own limits.
+#[test]
+fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let l = s.physical.get_physical_device_properties().limits;
+    let mut p12 = vk::PhysicalDeviceVulkan12Properties::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p12);
+    // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
+    unsafe {
+        s.instance
+            .fns()
+            .get_physical_device_properties2(*s.physical, &mut p2)
+    };
+    let (dyn_ubo, dyn_ssbo) = (
+        p12.max_descriptor_set_update_after_bind_uniform_buffers_dynamic,
+        p12.max_descriptor_set_update_after_bind_storage_buffers_dynamic,
+    );
+    use vk::DescriptorType as T;
+    let compute = vk::ShaderStageFlags::COMPUTE;
+    let fragment = vk::ShaderStageFlags::FRAGMENT;
+    // (descriptor type, count, stage, the rule): one binding of `count` descriptors.
+    let mut cases = vec![
+        (
+            T::SAMPLER,
+            l.max_per_stage_descriptor_samplers + 1,
+            compute,
+            "descriptorType-03016",
+        ),
+        (
+            T::UNIFORM_BUFFER,
+            l.max_per_stage_descriptor_uniform_buffers + 1,
+            compute,
+            "descriptorType-03017",
+        ),
+        (
+            T::STORAGE_BUFFER,
+            l.max_per_stage_descriptor_storage_buffers + 1,
+            compute,
+            "descriptorType-03018",
+        ),
+        (
+            T::SAMPLED_IMAGE,
+            l.max_per_stage_descriptor_sampled_images + 1,
+            compute,
+            "descriptorType-03019",
+        ),
+        (
+            T::STORAGE_IMAGE,
+            l.max_per_stage_descriptor_storage_images + 1,
+            compute,
+            "descriptorType-03020",
+        ),
+        (
+            T::INPUT_ATTACHMENT,
+            l.max_per_stage_descriptor_input_attachments + 1,
+            fragment,
+            "descriptorType-03021",
+        ),
+        (
+            T::SAMPLER,
+            l.max_descriptor_set_samplers + 1,
+            compute,
+            "descriptorType-03028",
+        ),
+        (
+            T::UNIFORM_BUFFER,
+            l.max_descriptor_set_uniform_buffers + 1,
+            compute,
+            "descriptorType-03029",
+        ),
+        (
+            T::UNIFORM_BUFFER_DYNAMIC,
+            l.max_descriptor_set_uniform_buffers_dynamic + 1,
+            compute,
+            "descriptorType-03030",
+        ),
+        (
+            T::STORAGE_BUFFER,
+            l.max_descriptor_set_storage_buffers + 1,
+            compute,
+            "descriptorType-03031",
+        ),
+        (
+            T::STORAGE_BUFFER_DYNAMIC,
+            l.max_descriptor_set_storage_buffers_dynamic + 1,
+            compute,
+            "descriptorType-03032",
+        ),
+        (
+            T::SAMPLED_IMAGE,
+            l.max_descriptor_set_sampled_images + 1,
+            compute,
+            "descriptorType-03033",
+        ),
+        (
+            T::STORAGE_IMAGE,
+            l.max_descriptor_set_storage_images + 1,
+            compute,
+            "descriptorType-03034",
+        ),
+        (
+            T::INPUT_ATTACHMENT,
+            l.max_descriptor_set_input_attachments + 1,
+            fragment,
+            "descriptorType-03035",
+        ),
+    ];
+    // Where the update-after-bind limit on dynamic buffers is the smaller one (as on
+    // lavapipe), a layout past it is within the others' set-wide limits.
+    if dyn_ubo < l.max_descriptor_set_uniform_buffers_dynamic {
+        cases.push((
+            T::UNIFORM_BUFFER_DYNAMIC,
+            dyn_ubo + 1,
+            compute,
+            "pSetLayouts-03038",
+        ));
+    }
+    if dyn_ssbo < l.max_descriptor_set_storage_buffers_dynamic {
+        cases.push((
+            T::STORAGE_BUFFER_DYNAMIC,
+            dyn_ssbo + 1,
+            compute,
+            "pSetLayouts-03040",
+        ));
+    }
+    assert_eq!(
+        cases.len(),
+        16,
+        "the device's update-after-bind limits on dynamic buffers are not the smaller ones"
+    );
+    for (ty, count, stage, rule) in cases {
+        let rule = format!("VUID-VkPipelineLayoutCreateInfo-{rule}");
+        let bindings = [tuff::DescriptorSetLayoutBinding::new()
+            .binding(0)
+            .descriptor_type(ty)
+            .descriptor_count(count)
+            .stage_flags(stage)];
+        let set_layout = d
+            .create_descriptor_set_layout(
+                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+            )
+            .expect("set layout");
+        let layouts = tuff::HandleSlice::new(&[&set_layout]);
+        let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
+        assert_eq!(vuid(d.create_pipeline_layout(&info)), rule, "{rule}");
+        assert_silent(&s.messages);
+        // SAFETY: the layer skips the call it reports, so the driver never sees it.
+        layer_names(&s, &rule, || {
+            let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
+        });
+    }
+    // More set layouts than can be bound at once.
+    let empty = d
+        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
+        .expect("set layout");
+    let many: Vec<&tuff::DescriptorSetLayout> =
+        (0..=l.max_bound_descriptor_sets).map(|_| &empty).collect();
+    let layouts = tuff::HandleSlice::new(&many);
+    let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
+    let rule = "VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286";
+    assert_eq!(vuid(d.create_pipeline_layout(&info)), rule);
+    // SAFETY: as above.
+    layer_names(&s, rule, || {
+        let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
+    });
+    // Two push-constant ranges for one stage.
+    let ranges = [
+        vk::PushConstantRange {
+            stage_flags: compute,
+            offset: 0,
+            size: 4,
+        },
+        vk::PushConstantRange {
+            stage_flags: compute | fragment,
+            offset: 4,
+            size: 4,
+        },
+    ];
+    let info = tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&ranges);
+    let rule = "VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292";
+    assert_eq!(vuid(d.create_pipeline_layout(&info)), rule);
+    // SAFETY: as above.
+    layer_names(&s, rule, || {
+        let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
+    });
+    // At the limits, a layout is accepted.
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(T::UNIFORM_BUFFER)
+        .descriptor_count(l.max_per_stage_descriptor_uniform_buffers)
+        .stage_flags(compute)];
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let layouts = tuff::HandleSlice::new(&[&set_layout]);
+    d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
+        .expect("a layout at the per-stage limit");
+    assert_silent(&s.messages);
+}

@@ -148,6 +148,8 @@ pub(crate) struct BindingRecord {
 pub(crate) struct SetLayoutRecord {
     /// The bindings, sorted by binding number.
     pub bindings: Vec<BindingRecord>,
+    /// Created with `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`.
+    pub update_after_bind: bool,
 }
 
 impl SetLayoutRecord {

@@ -1223,6 +1223,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
             let r = self.validate_create_pipeline_layout(create_info);
             r?;
         }
+        crate::hooks::create_pipeline_layout_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
@@ -1231,7 +1232,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
 
 # Safety
 
-The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time: `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286`, `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03020`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03021`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03022`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03023`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03024`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03025`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03026`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03027`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03028`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03029`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03030`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03031`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03032`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03033`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03034`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03035`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03036`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03037`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03039`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03041`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03042`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03043`, and those of the structs it takes.*/
     #[inline]
     pub unsafe fn create_pipeline_layout_unchecked<'a>(
         &self,

@@ -2393,22 +2393,6 @@ pub fn check_pipeline_layout_create_info(
         s,
         "VUID-VkPipelineLayoutCreateInfo-flags-parameter",
     )?;
-    if s
-        .limits()
-        .is_some_and(|l| {
-            (v.set_layout_count as i128) > (l.max_bound_descriptor_sets as i128)
-        })
-    {
-        return Err(
-            fail(
-                "VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286",
-                format!(
-                    "`setLayoutCount` must be less than or equal to `VkPhysicalDeviceLimits::maxBoundDescriptorSets` (`setLayoutCount` = {:?})",
-                    v.set_layout_count
-                ),
-            ),
-        );
-    }
     // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_push_constant_ranges, v.push_constant_range_count) } {
         crate::checks::check_push_constant_range(e, s)?;
