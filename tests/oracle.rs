@@ -2142,41 +2142,11 @@ fn descriptor_buffer_info(
     limits: &Limits,
     change: &dyn Fn(&mut vk::DescriptorBufferInfo, &Limits, &mut Objects),
 ) -> Outcome {
-    let d = &s.device;
     let mut o = Objects::default();
     o.buffer.usage |= vk::BufferUsageFlags::UNIFORM_BUFFER;
     change(&mut Default::default(), limits, &mut o);
     let (buffer, _memory) = make_buffer(s, &o.buffer);
-    let bindings = [tuff::DescriptorSetLayoutBinding::new()
-        .binding(0)
-        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
-        .descriptor_count(1)
-        .stage_flags(vk::ShaderStageFlags::COMPUTE)];
-    let layout = d
-        .create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-        )
-        .expect("set layout");
-    let sizes = [vk::DescriptorPoolSize {
-        ty: vk::DescriptorType::UNIFORM_BUFFER,
-        descriptor_count: 1,
-    }];
-    let pool = d
-        .create_descriptor_pool(
-            &tuff::DescriptorPoolCreateInfo::new()
-                .max_sets(1)
-                .pool_sizes(&sizes),
-        )
-        .expect("descriptor pool");
-    let layouts = tuff::HandleSlice::new(&[&layout]);
-    let set = d
-        .allocate_descriptor_sets(
-            &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-        )
-        .expect("descriptor set")
-        .pop()
-        .expect("one set");
+    let set = pipelines::uniform_set(s);
     let mut info = tuff::DescriptorBufferInfo::new()
         .buffer(Some(&buffer))
         .offset(0)
@@ -2184,7 +2154,7 @@ fn descriptor_buffer_info(
     // SAFETY: as in `buffer_create_info`.
     change(unsafe { info.raw_values_mut() }, limits, &mut o.clone());
     let infos = [info];
-    let writes = [tuff::WriteDescriptorSet::new(&set)
+    let writes = [tuff::WriteDescriptorSet::new(&set.set)
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .buffer_info(&infos)];
     create!(

@@ -14,7 +14,7 @@ mod tuff_setup;
 #[path = "common/vulkan.rs"]
 mod vulkan;
 
-use pipelines::host_buffer;
+use pipelines::{host_buffer, uniform_set};
 use tuff::vk;
 use tuff_setup::{setup, Setup};
 use vulkan::assert_silent;
@@ -671,11 +671,7 @@ fn a_descriptor_pool_is_not_reset_while_its_sets_are_alive() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let set = uniform_set(&s);
-    let UniformSet {
-        set,
-        _pool: pool,
-        _layout: layout,
-    } = set;
+    let pipelines::UniformSet { set, pool, layout } = set;
     assert_eq!(
         vuid(
             s.device
@@ -1023,52 +1019,6 @@ fn arrays_that_share_a_count_cannot_disagree() {
         .viewport_count(2);
     assert!(state.p_viewports.is_null());
     assert_silent(&s.messages);
-}
-
-/// A descriptor set of one uniform-buffer binding, with its layout and pool.
-struct UniformSet {
-    set: tuff::DescriptorSet,
-    _pool: tuff::DescriptorPool,
-    _layout: tuff::DescriptorSetLayout,
-}
-
-fn uniform_set(s: &Setup) -> UniformSet {
-    let d = &s.device;
-    let bindings = [tuff::DescriptorSetLayoutBinding::new()
-        .binding(0)
-        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
-        .descriptor_count(1)
-        .stage_flags(vk::ShaderStageFlags::COMPUTE)];
-    let layout = d
-        .create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-        )
-        .expect("set layout");
-    let sizes = [vk::DescriptorPoolSize {
-        ty: vk::DescriptorType::UNIFORM_BUFFER,
-        descriptor_count: 1,
-    }];
-    let pool = d
-        .create_descriptor_pool(
-            &tuff::DescriptorPoolCreateInfo::new()
-                .max_sets(1)
-                .pool_sizes(&sizes),
-        )
-        .expect("descriptor pool");
-    let layouts = tuff::HandleSlice::new(&[&layout]);
-    let set = d
-        .allocate_descriptor_sets(
-            &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-        )
-        .expect("descriptor set")
-        .pop()
-        .expect("one set");
-    UniformSet {
-        set,
-        _pool: pool,
-        _layout: layout,
-    }
 }
 
 #[test]

@@ -401,3 +401,45 @@ impl Pipelines {
         rec
     }
 }
+
+/// A descriptor set of one uniform-buffer binding, with its layout and pool.
+pub struct UniformSet {
+    pub set: tuff::DescriptorSet,
+    pub pool: tuff::DescriptorPool,
+    pub layout: tuff::DescriptorSetLayout,
+}
+
+pub fn uniform_set(s: &Setup) -> UniformSet {
+    let d = &s.device;
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::COMPUTE)];
+    let layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: vk::DescriptorType::UNIFORM_BUFFER,
+        descriptor_count: 1,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("descriptor pool");
+    let layouts = tuff::HandleSlice::new(&[&layout]);
+    let set = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )
+        .expect("descriptor set")
+        .pop()
+        .expect("one set");
+    UniformSet { set, pool, layout }
+}
