@@ -11,6 +11,7 @@ fn misuse_does_not_compile() {
     t.compile_fail("compile_fail/pushed_struct_reused.rs");
     t.compile_fail("compile_fail/outside_command_in_continuing_secondary.rs");
     t.compile_fail("compile_fail/raw_handle_for_wrapper.rs");
+    t.compile_fail("compile_fail/method_with_callers_rules_needs_unsafe.rs");
     // trybuild builds these programs with tuff's default features, whatever this
     // crate's: Rc, so a handle cannot cross threads. With `multi_thread` wrappers
     // can, which the threaded tests of `soundness.rs` do.

@@ -2,6 +2,11 @@
 //! each misuse below is caught by the wrapper with the VUID of the rule it breaks,
 //! before anything reaches the driver, so the layer hears nothing. The safe methods
 //! run these checks in every build.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 
 #[path = "common/tuff_setup.rs"]
 mod tuff_setup;
@@ -31,19 +36,19 @@ fn enum_and_flags_values_are_checked() {
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER)
         .sharing_mode(vk::SharingMode::from_raw(77));
     assert_eq!(
-        vuid(d.create_buffer(&bad_mode)),
+        vuid(unsafe { d.create_buffer(&bad_mode) }),
         "VUID-VkBufferCreateInfo-sharingMode-parameter"
     );
     let undefined_bit = tuff::BufferCreateInfo::new()
         .size(64)
         .usage(vk::BufferUsageFlags::from_raw(1 << 30));
     assert_eq!(
-        vuid(d.create_buffer(&undefined_bit)),
+        vuid(unsafe { d.create_buffer(&undefined_bit) }),
         "VUID-VkBufferCreateInfo-usage-parameter"
     );
     let no_usage = tuff::BufferCreateInfo::new().size(64);
     assert_eq!(
-        vuid(d.create_buffer(&no_usage)),
+        vuid(unsafe { d.create_buffer(&no_usage) }),
         "VUID-VkBufferCreateInfo-usage-requiredbitmask"
     );
     // A format of VK_IMG_format_pvrtc, which this device did not enable.
@@ -60,12 +65,12 @@ fn enum_and_flags_values_are_checked() {
         .samples(vk::SampleCountFlags::TYPE_1)
         .usage(vk::ImageUsageFlags::SAMPLED);
     assert_eq!(
-        vuid(d.create_image(&image)),
+        vuid(unsafe { d.create_image(&image) }),
         "VUID-VkImageCreateInfo-format-parameter"
     );
     // The same info with a core format passes the checks and creates the image.
     let image = image.format(vk::Format::R8G8B8A8_UNORM);
-    assert!(d.create_image(&image).is_ok());
+    assert!(unsafe { d.create_image(&image) }.is_ok());
     assert_silent(&s.messages);
 }
 
@@ -78,26 +83,29 @@ fn objects_of_another_device_are_refused() {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
-    let other = d
-        .parent()
-        .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
-        .expect("second device");
-    let buffer = d
-        .create_buffer(
+    let other = unsafe {
+        d.parent()
+            .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
+    }
+    .expect("second device");
+    let buffer = unsafe {
+        d.create_buffer(
             &tuff::BufferCreateInfo::new()
                 .size(256)
                 .usage(vk::BufferUsageFlags::UNIFORM_BUFFER),
         )
-        .expect("buffer");
-    let foreign_memory = other
-        .allocate_memory(
+    }
+    .expect("buffer");
+    let foreign_memory = unsafe {
+        other.allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(256)
                 .memory_type_index(0),
         )
-        .expect("memory of the other device");
+    }
+    .expect("memory of the other device");
     assert_eq!(
-        vuid(d.bind_buffer_memory(&buffer, &foreign_memory, 0)),
+        vuid(unsafe { d.bind_buffer_memory(&buffer, &foreign_memory, 0) }),
         "VUID-vkBindBufferMemory-memory-parent"
     );
     assert_eq!(
@@ -105,11 +113,10 @@ fn objects_of_another_device_are_refused() {
         "VUID-vkGetBufferMemoryRequirements-buffer-parent"
     );
     // Two handles that must share a device: a queue of one and a fence of the other.
-    let foreign_fence = other
-        .create_fence(&tuff::FenceCreateInfo::new())
+    let foreign_fence = unsafe { other.create_fence(&tuff::FenceCreateInfo::new()) }
         .expect("fence of the other device");
     assert_eq!(
-        vuid(s.queue.queue_submit(&[], &foreign_fence)),
+        vuid(unsafe { s.queue.queue_submit(&[], &foreign_fence) }),
         "VUID-vkQueueSubmit-commonparent"
     );
     assert_silent(&s.messages);
@@ -135,7 +142,7 @@ fn counts_and_chains_are_checked() {
         .push_next(&mut a)
         .push_next(&mut b);
     assert_eq!(
-        vuid(d.parent().create_device(&twice)),
+        vuid(unsafe { d.parent().create_device(&twice) }),
         "VUID-VkDeviceCreateInfo-sType-unique"
     );
     assert_silent(&s.messages);
@@ -162,8 +169,8 @@ fn a_primary_only_command_in_a_secondary_buffer_fails_at_end() {
         })
         .clear_values(&clear);
     // Neither the begin nor the matching end reaches the driver.
-    let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    let rec = rec.cmd_end_render_pass();
+    let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+    let rec = unsafe { rec.cmd_end_render_pass() };
     assert_eq!(vuid(rec.end()), "VUID-vkCmdBeginRenderPass-bufferlevel");
     assert!(!cb.is_executable());
     assert_silent(&s.messages);

@@ -8,6 +8,11 @@
 //! VUID and nothing else, or say nothing at all: the rule is then "proven by the error
 //! alone", as for rules the layer does not check. Any other outcome fails the test.
 //! The generator reports exactly these rules as dynamically settled.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 
 #[path = "common/pipelines.rs"]
 mod pipelines;
@@ -162,15 +167,18 @@ fn make_buffer(s: &Setup, spec: &BufferSpec) -> (tuff::Buffer, Option<tuff::Devi
         let info = tuff::BufferCreateInfo::new()
             .size(spec.size)
             .usage(spec.usage);
-        (s.device.create_buffer(&info).expect("buffer"), None)
+        (
+            unsafe { s.device.create_buffer(&info) }.expect("buffer"),
+            None,
+        )
     }
 }
 
 /// A 2D RGBA8 image as `spec` says, with device memory bound unless it says not.
 fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceMemory>) {
     let d = &s.device;
-    let image = d
-        .create_image(
+    let image = unsafe {
+        d.create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
                 .format(vk::Format::R8G8B8A8_UNORM)
@@ -180,7 +188,8 @@ fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceM
                 .samples(spec.samples)
                 .usage(spec.usage),
         )
-        .expect("image");
+    }
+    .expect("image");
     if !spec.bind {
         return (image, None);
     }
@@ -248,7 +257,7 @@ fn buffer_create_info(
         limits,
         &mut Objects::default(),
     );
-    let safe = s.device.create_buffer(&info).map(drop);
+    let safe = unsafe { s.device.create_buffer(&info) }.map(drop);
     // SAFETY: the layer skips the call if it finds the rule broken; where it does
     // not, the driver gets a value that breaks only a rule the layer does not check.
     let layer = under_layer(s, || {
@@ -280,7 +289,7 @@ fn image_create_info(
         limits,
         &mut Objects::default(),
     );
-    let safe = s.device.create_image(&info).map(drop);
+    let safe = unsafe { s.device.create_image(&info) }.map(drop);
     // SAFETY: as in `buffer_create_info`.
     let layer = under_layer(s, || {
         drop(unsafe { s.device.create_image_unchecked(&info) })
@@ -305,7 +314,7 @@ fn sampler_create_info(
         limits,
         &mut Objects::default(),
     );
-    let safe = s.device.create_sampler(&info).map(drop);
+    let safe = unsafe { s.device.create_sampler(&info) }.map(drop);
     // SAFETY: as in `buffer_create_info`.
     let layer = under_layer(s, || {
         drop(unsafe { s.device.create_sampler_unchecked(&info) })
@@ -320,7 +329,7 @@ fn barrier(s: &Setup, info: &tuff::DependencyInfo<'_>) -> Outcome {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_pipeline_barrier2(info);
+    unsafe { rec.cmd_pipeline_barrier2(info) };
     let safe = rec.end();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
@@ -405,7 +414,7 @@ fn image_memory_barrier2(
 /// Creates with the safe method and, under the layer, with its `_unchecked` twin.
 macro_rules! create {
     ($s:expr, $method:ident, $unchecked:ident, $($arg:expr),+) => {{
-        let safe = $s.device.$method($($arg),+).map(drop);
+        let safe = unsafe { $s.device.$method($($arg),+) }.map(drop);
         // SAFETY: as in `buffer_create_info`.
         let layer = under_layer($s, || {
             let _ = unsafe { $s.device.$unchecked($($arg),+) };
@@ -723,9 +732,10 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
         offset: 0,
         size: 16,
     }];
-    let layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
-        .expect("layout");
+    let layout = unsafe {
+        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+    }
+    .expect("layout");
     let stages = pipelines::test_stages(&vert, &frag);
     let mut parts = Graphics {
         assembly: tuff::PipelineInputAssemblyStateCreateInfo::new()
@@ -956,7 +966,7 @@ macro_rules! event_fixture {
             let e = event(s);
             record(
                 s,
-                |r| r.$name(&e, a.stage_mask),
+                |r| unsafe { r.$name(&e, a.stage_mask) },
                 // SAFETY: as in `buffer_create_info`; the command buffer is never
                 // submitted.
                 |r| unsafe { r.$unchecked(&e, a.stage_mask) },
@@ -999,11 +1009,11 @@ fn cmd_wait_events(
     record(
         s,
         |r| {
-            r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER);
-            r.cmd_wait_events(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[])
+            unsafe { r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER) };
+            unsafe { r.cmd_wait_events(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[]) }
         },
         |r| {
-            r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER);
+            unsafe { r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER) };
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe {
                 r.cmd_wait_events_unchecked(
@@ -1032,7 +1042,7 @@ fn cmd_pipeline_barrier(
     change(&mut a, limits, &mut Objects::default());
     record(
         s,
-        |r| {
+        |r| unsafe {
             r.cmd_pipeline_barrier(
                 a.src_stage_mask,
                 a.dst_stage_mask,
@@ -1057,13 +1067,14 @@ fn cmd_pipeline_barrier(
 }
 
 fn timestamps(s: &Setup) -> tuff::QueryPool {
-    s.device
-        .create_query_pool(
+    unsafe {
+        s.device.create_query_pool(
             &tuff::QueryPoolCreateInfo::new()
                 .query_type(vk::QueryType::TIMESTAMP)
                 .query_count(1),
         )
-        .expect("query pool")
+    }
+    .expect("query pool")
 }
 
 fn cmd_write_timestamp(
@@ -1079,11 +1090,11 @@ fn cmd_write_timestamp(
     record(
         s,
         |r| {
-            r.cmd_reset_query_pool(&pool, 0, 1);
-            r.cmd_write_timestamp(a.pipeline_stage, &pool, 0)
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
+            unsafe { r.cmd_write_timestamp(a.pipeline_stage, &pool, 0) }
         },
         |r| {
-            r.cmd_reset_query_pool(&pool, 0, 1);
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe { r.cmd_write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
         },
@@ -1123,7 +1134,9 @@ fn cmd_clear_color_image(
     let color = vk::ClearColorValue::default();
     record(
         s,
-        |r| r.cmd_clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range]),
+        |r| unsafe {
+            r.cmd_clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range])
+        },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_clear_color_image_unchecked(
@@ -1152,7 +1165,9 @@ fn cmd_copy_image(
     let region = [o.image_copy];
     record(
         s,
-        |r| r.cmd_copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region),
+        |r| unsafe {
+            r.cmd_copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)
+        },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_image_unchecked(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)
@@ -1177,7 +1192,7 @@ fn cmd_blit_image(
     let nearest = vk::Filter::NEAREST;
     record(
         s,
-        |r| {
+        |r| unsafe {
             r.cmd_blit_image(
                 &src,
                 a.src_image_layout,
@@ -1216,7 +1231,7 @@ fn cmd_copy_buffer_to_image(
     let region = [o.buffer_image_copy];
     record(
         s,
-        |r| r.cmd_copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region),
+        |r| unsafe { r.cmd_copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_buffer_to_image_unchecked(&buffer, &image, a.dst_image_layout, &region)
@@ -1239,7 +1254,7 @@ fn cmd_copy_image_to_buffer(
     let region = [o.buffer_image_copy];
     record(
         s,
-        |r| r.cmd_copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region),
+        |r| unsafe { r.cmd_copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_image_to_buffer_unchecked(&image, a.src_image_layout, &buffer, &region)
@@ -1448,7 +1463,7 @@ macro_rules! transfer2_fixture {
                 change(unsafe { info.raw_values_mut() }, limits, &mut $o.clone());
                 record(
                     s,
-                    |r| r.$cmd(info),
+                    |r| unsafe { r.$cmd(info) },
                     // SAFETY: as in `buffer_create_info`; the command buffer is never
                     // submitted.
                     |r| unsafe { r.$unchecked(info) },
@@ -1604,20 +1619,22 @@ fn draw(
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            let mut rec = rec.cmd_begin_render_pass(
-                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-                    .render_area(area)
-                    .clear_values(&clear),
-                vk::SubpassContents::INLINE,
-            );
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+            let mut rec = unsafe {
+                rec.cmd_begin_render_pass(
+                    &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                        .render_area(area)
+                        .clear_values(&clear),
+                    vk::SubpassContents::INLINE,
+                )
+            };
+            unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
                 .expect("bind");
-            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+            unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("viewport");
             rec.cmd_set_scissor(0, &[area]).expect("scissor");
             rec.cmd_push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
                 .expect("push");
             call(&mut rec);
-            let _ = rec.cmd_end_render_pass().end();
+            let _ = unsafe { rec.cmd_end_render_pass() }.end();
         };
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut safe = Some(safe);
@@ -1653,7 +1670,7 @@ fn cmd_draw_indirect(
     let (buffer, _memory) = make_buffer(s, &o.buffer);
     draw(
         s,
-        |r| r.cmd_draw_indirect(&buffer, 0, a.draw_count, 16),
+        |r| unsafe { r.cmd_draw_indirect(&buffer, 0, a.draw_count, 16) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| drop(unsafe { r.cmd_draw_indirect_unchecked(&buffer, 0, a.draw_count, 16) }),
     )
@@ -1674,13 +1691,11 @@ fn cmd_draw_indexed_indirect(
     draw(
         s,
         |r| {
-            r.cmd_bind_index_buffer(&indices, 0, index)
-                .expect("index buffer");
-            r.cmd_draw_indexed_indirect(&buffer, 0, a.draw_count, 20)
+            unsafe { r.cmd_bind_index_buffer(&indices, 0, index) }.expect("index buffer");
+            unsafe { r.cmd_draw_indexed_indirect(&buffer, 0, a.draw_count, 20) }
         },
         |r| {
-            r.cmd_bind_index_buffer(&indices, 0, index)
-                .expect("index buffer");
+            unsafe { r.cmd_bind_index_buffer(&indices, 0, index) }.expect("index buffer");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             drop(unsafe { r.cmd_draw_indexed_indirect_unchecked(&buffer, 0, a.draw_count, 20) })
@@ -1699,15 +1714,16 @@ fn cmd_dispatch_indirect(
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(s, &target);
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
-            .expect("bind");
-        r.cmd_bind_descriptor_sets(
-            vk::PipelineBindPoint::COMPUTE,
-            &p.compute_layout,
-            0,
-            &[&p.set],
-            &[],
-        )
+        unsafe { r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute) }.expect("bind");
+        unsafe {
+            r.cmd_bind_descriptor_sets(
+                vk::PipelineBindPoint::COMPUTE,
+                &p.compute_layout,
+                0,
+                &[&p.set],
+                &[],
+            )
+        }
         .expect("sets");
     };
     let mut result = Ok(());
@@ -1715,7 +1731,7 @@ fn cmd_dispatch_indirect(
         s,
         |r| {
             bind(r);
-            result = r.cmd_dispatch_indirect(&buffer, 0);
+            result = unsafe { r.cmd_dispatch_indirect(&buffer, 0) };
         },
         |r| {
             bind(r);
@@ -1753,7 +1769,7 @@ fn cmd_resolve_image(
     let (dst, _m2) = make_image(s, &o.dst_image);
     record(
         s,
-        |r| {
+        |r| unsafe {
             r.cmd_resolve_image(
                 &src,
                 a.src_image_layout,
@@ -1822,11 +1838,11 @@ fn cmd_copy_query_pool_results(
     record(
         s,
         |r| {
-            r.cmd_reset_query_pool(&pool, 0, 1);
-            r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, 8, flags)
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
+            unsafe { r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, 8, flags) }
         },
         |r| {
-            r.cmd_reset_query_pool(&pool, 0, 1);
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             unsafe {
@@ -1871,7 +1887,7 @@ fn barrier1(
     let flags = vk::DependencyFlags::empty();
     record(
         s,
-        |r| r.cmd_pipeline_barrier(stage, stage, flags, &[], buffers, images),
+        |r| unsafe { r.cmd_pipeline_barrier(stage, stage, flags, &[], buffers, images) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.cmd_pipeline_barrier_unchecked(stage, stage, flags, &[], buffers, images) },
     )
@@ -2047,34 +2063,38 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_pipeline_barrier(
-        vk::PipelineStageFlags::GEOMETRY_SHADER,
-        vk::PipelineStageFlags::TRANSFER,
-        vk::DependencyFlags::empty(),
-        &[],
-        &[],
-        &[],
-    );
+    unsafe {
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::GEOMETRY_SHADER,
+            vk::PipelineStageFlags::TRANSFER,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &[],
+        )
+    };
     assert_eq!(
         refusal(rec.end()),
         "VUID-vkCmdPipelineBarrier-srcStageMask-04090"
     );
     // A cube-array view of the frame's image without the imageCubeArray feature.
     assert_eq!(
-        refusal(
+        refusal(unsafe {
             d.create_image_view(
                 &tuff::ImageViewCreateInfo::new(&target.image)
                     .view_type(vk::ImageViewType::CUBE_ARRAY)
                     .format(vk::Format::R8G8B8A8_UNORM)
                     .subresource_range(WHOLE),
             )
-        ),
+        }),
         "VUID-VkImageViewCreateInfo-viewType-01004"
     );
     assert_eq!(
-        refusal(d.create_buffer(
-            &tuff::BufferCreateInfo::new().usage(vk::BufferUsageFlags::TRANSFER_DST),
-        )),
+        refusal(unsafe {
+            d.create_buffer(
+                &tuff::BufferCreateInfo::new().usage(vk::BufferUsageFlags::TRANSFER_DST),
+            )
+        }),
         "VUID-VkBufferCreateInfo-size-00912"
     );
     vulkan::assert_silent(&s.messages);
@@ -2085,13 +2105,13 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     work.record(rec, &target, 8, Some(&readback.0))
         .end()
         .expect("end");
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
+    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-        .expect("submit");
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+    }
+    .expect("submit");
     let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
         .expect("wait");

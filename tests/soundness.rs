@@ -1,11 +1,17 @@
-//! Adversarial programs: each uses only tuff's safe API, on lavapipe with the
-//! validation layer and its synchronization validation on, and tries to make Vulkan
+//! Adversarial programs: each uses only tuff's checked API (safe methods, and `unsafe`
+//! checked methods whose listed rules it keeps), never an `_unchecked` twin, on
+//! lavapipe with the validation layer and its synchronization validation on, and tries to make Vulkan
 //! use or free something it must not. Each must either run with no message from the
 //! layer, or get an error from tuff before Vulkan sees the call.
 //!
 //! A submission is held in flight for as long as a test needs by a host-set event:
 //! its command buffer waits for the event, which the test sets when it is done
 //! attacking, so "pending" never depends on timing.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 
 #[path = "common/pipelines.rs"]
 mod pipelines;
@@ -39,9 +45,7 @@ fn assert_layer_reports(s: &Setup, vuid: &str) {
 }
 
 fn fence(s: &Setup) -> tuff::Fence {
-    s.device
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence")
+    unsafe { s.device.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence")
 }
 
 fn event(s: &Setup) -> tuff::Event {
@@ -51,9 +55,7 @@ fn event(s: &Setup) -> tuff::Event {
 }
 
 fn semaphore(s: &Setup) -> tuff::Semaphore {
-    s.device
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
-        .expect("semaphore")
+    unsafe { s.device.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore")
 }
 
 fn transfer_buffer(s: &Setup) -> (tuff::Buffer, tuff::DeviceMemory) {
@@ -70,23 +72,26 @@ fn record_gated_fill(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin");
-    rec.cmd_wait_events(
-        &[gate],
-        vk::PipelineStageFlags::HOST,
-        vk::PipelineStageFlags::TRANSFER,
-        &[],
-        &[],
-        &[],
-    );
-    rec.cmd_fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7)
-        .expect("fill");
+    unsafe {
+        rec.cmd_wait_events(
+            &[gate],
+            vk::PipelineStageFlags::HOST,
+            vk::PipelineStageFlags::TRANSFER,
+            &[],
+            &[],
+            &[],
+        )
+    };
+    unsafe { rec.cmd_fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7) }.expect("fill");
     rec.end().expect("end");
 }
 
 fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer], fence: &tuff::Fence) -> tuff::Result<()> {
     let handles = tuff::HandleSlice::new(cbs);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], fence)
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], fence)
+    }
 }
 
 fn wait(s: &Setup, fence: &tuff::Fence) {
@@ -119,7 +124,7 @@ fn submit2_holds_what_it_submits_until_its_fence_signals() {
         let submits = [tuff::SubmitInfo2::new()
             .command_buffer_infos(&cb_infos)
             .signal_semaphore_infos(&signal_infos)];
-        s.queue.queue_submit2(&submits, &done).expect("submit2");
+        unsafe { s.queue.queue_submit2(&submits, &done) }.expect("submit2");
         // Everything the submission uses goes while it waits for the host.
         drop(cb);
         drop(pool);
@@ -127,7 +132,7 @@ fn submit2_holds_what_it_submits_until_its_fence_signals() {
         drop(memory);
     }
     drop(signalled);
-    s.device.set_event(&gate).expect("set event");
+    unsafe { s.device.set_event(&gate) }.expect("set event");
     wait(&s, &done);
     assert_silent(&s.messages);
 }
@@ -173,7 +178,7 @@ fn a_pending_submission_cannot_be_reset_resubmitted_or_rerecorded() {
     drop(pool);
     assert_silent(&s.messages);
 
-    s.device.set_event(&gate).expect("set event");
+    unsafe { s.device.set_event(&gate) }.expect("set event");
     wait(&s, &done);
     // Complete now: every refused call goes through.
     s.device.reset_fences(&[&done]).expect("reset");
@@ -241,17 +246,16 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
     {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let signals = tuff::HandleSlice::new(&[&signalled]);
-        s.queue
-            .queue_submit(
+        unsafe {
+            s.queue.queue_submit(
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)],
                 &first,
             )
-            .expect("first submit");
-        s.queue
-            .queue_submit(&[], &second)
-            .expect("second submit, no command buffers");
+        }
+        .expect("first submit");
+        unsafe { s.queue.queue_submit(&[], &second) }.expect("second submit, no command buffers");
     }
     // The semaphore is in use by the pending batch; the second fence has no command
     // buffer to keep alive but its wait is still owed before it goes.
@@ -267,16 +271,17 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
 fn a_signalled_fence_is_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let signalled = s
-        .device
-        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
-        .expect("fence");
+    let signalled = unsafe {
+        s.device
+            .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+    }
+    .expect("fence");
     assert_eq!(
         vuid(submit(&s, &[], &signalled)),
         "VUID-vkQueueSubmit-fence-00063"
     );
     assert_eq!(
-        vuid(s.queue.queue_submit2(&[], &signalled)),
+        vuid(unsafe { s.queue.queue_submit2(&[], &signalled) }),
         "VUID-vkQueueSubmit2-fence-04894"
     );
     assert_silent(&s.messages);
@@ -286,20 +291,22 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
     unsafe { s.queue.queue_submit_unchecked(&[], &signalled) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00063");
     s.queue.queue_wait_idle().expect("idle");
-    let signalled = s
-        .device
-        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
-        .expect("fence");
+    let signalled = unsafe {
+        s.device
+            .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+    }
+    .expect("fence");
     // SAFETY: as above.
     unsafe { s.queue.queue_submit2_unchecked(&[], &signalled) }.expect("unchecked submit2");
     assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04894");
     s.queue.queue_wait_idle().expect("idle");
-    let signalled = s
-        .device
-        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
-        .expect("fence");
+    let signalled = unsafe {
+        s.device
+            .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+    }
+    .expect("fence");
     assert_eq!(
-        vuid(s.queue.queue_bind_sparse(&[], &signalled)),
+        vuid(unsafe { s.queue.queue_bind_sparse(&[], &signalled) }),
         "VUID-vkQueueBindSparse-fence-01113"
     );
     assert_silent(&s.messages);
@@ -332,11 +339,11 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00064"
     );
     assert_eq!(
-        vuid(s.queue.queue_submit2(&[], &done)),
+        vuid(unsafe { s.queue.queue_submit2(&[], &done) }),
         "VUID-vkQueueSubmit2-fence-04895"
     );
     assert_eq!(
-        vuid(s.queue.queue_bind_sparse(&[], &done)),
+        vuid(unsafe { s.queue.queue_bind_sparse(&[], &done) }),
         "VUID-vkQueueBindSparse-fence-01114"
     );
     assert_eq!(
@@ -401,7 +408,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
     let mut rec = secondary
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
         .expect("begin secondary");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
     rec.end().expect("end secondary");
     assert_eq!(
         vuid(submit(&s, &[&secondary], &done)),
@@ -427,7 +434,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
                 .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
         )
         .expect("begin once");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 2).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
     rec.end().expect("end once");
     submit(&s, &[&once], &done).expect("first submission");
     wait(&s, &done);
@@ -470,22 +477,24 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
     let inheritance = tuff::CommandBufferInheritanceInfo::new();
     let secondary_begin = tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
     let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 3).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 3) }.expect("fill");
     rec.end().expect("end secondary");
 
     let (_ppool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin primary");
-    rec.cmd_wait_events(
-        &[&gate],
-        vk::PipelineStageFlags::HOST,
-        vk::PipelineStageFlags::TRANSFER,
-        &[],
-        &[],
-        &[],
-    );
-    rec.cmd_execute_commands(&[&secondary]).expect("execute");
+    unsafe {
+        rec.cmd_wait_events(
+            &[&gate],
+            vk::PipelineStageFlags::HOST,
+            vk::PipelineStageFlags::TRANSFER,
+            &[],
+            &[],
+            &[],
+        )
+    };
+    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
     rec.end().expect("end primary");
     submit(&s, &[&primary], &done).expect("submit");
 
@@ -493,13 +502,13 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         vuid(secondary.begin(&secondary_begin)),
         "VUID-vkBeginCommandBuffer-commandBuffer-00049"
     );
-    s.device.set_event(&gate).expect("set event");
+    unsafe { s.device.set_event(&gate) }.expect("set event");
     wait(&s, &done);
     s.device.reset_fences(&[&done]).expect("reset");
 
     // Recorded again once complete: the primary that executes it is now invalid.
     let mut rec = secondary.begin(&secondary_begin).expect("begin again");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 4).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 4) }.expect("fill");
     rec.end().expect("end again");
     assert_eq!(
         vuid(submit(&s, &[&primary], &done)),
@@ -517,7 +526,7 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 5).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 5) }.expect("fill");
     rec.end().expect("end");
     let done = fence(&s);
     submit(&s, &[&cb], &done).expect("submit");
@@ -541,10 +550,11 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
 fn a_buffer_of_a_pool_without_reset_is_recorded_once() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let pool = s
-        .device
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
+    let pool = unsafe {
+        s.device
+            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+    }
+    .expect("pool");
     let mut cb = s
         .device
         .allocate_command_buffers(
@@ -580,10 +590,11 @@ fn a_buffer_of_a_pool_without_reset_is_recorded_once() {
 fn reset_of_a_buffer_of_a_pool_without_reset_is_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let pool = s
-        .device
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
+    let pool = unsafe {
+        s.device
+            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+    }
+    .expect("pool");
     let mut cb = s
         .device
         .allocate_command_buffers(
@@ -622,7 +633,7 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
     assert_eq!(
         vuid(s.device.reset_command_pool(&pool, none)),
         "VUID-vkEndCommandBuffer-commandBuffer-00059"
@@ -656,7 +667,7 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
         vuid(cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())),
         "VUID-vkResetCommandBuffer-commandBuffer-00045"
     );
-    s.device.set_event(&gate).expect("set");
+    unsafe { s.device.set_event(&gate) }.expect("set");
     wait(&s, &done);
     cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())
         .expect("reset once complete");
@@ -685,13 +696,13 @@ fn a_descriptor_pool_is_not_reset_while_its_sets_are_alive() {
         .expect("reset once no set is left");
     // The pool gives sets again after its reset.
     let layouts = tuff::HandleSlice::new(&[&layout]);
-    let again = s
-        .device
-        .allocate_descriptor_sets(
+    let again = unsafe {
+        s.device.allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-        .expect("allocate after reset");
+    }
+    .expect("allocate after reset");
     assert_eq!(again.len(), 1);
     assert_silent(&s.messages);
 }
@@ -755,9 +766,13 @@ fn recorder_states_follow_the_begin_info() {
             },
         })
         .clear_values(&clear);
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
-    rec.cmd_execute_commands(&[&secondary]).expect("execute");
-    rec.cmd_end_render_pass().end().expect("end primary");
+    let mut rec = unsafe {
+        rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS)
+    };
+    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.cmd_end_render_pass() }
+        .end()
+        .expect("end primary");
     let done = fence(&s);
     submit(&s, &[&primary], &done).expect("submit");
     wait(&s, &done);
@@ -775,7 +790,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
+        unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
         drop(rec);
     }
     assert_eq!(
@@ -785,7 +800,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin after an abandoned recording");
-    rec.cmd_fill_buffer(&buffer, 0, 256, 2).expect("fill");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
     rec.end().expect("end");
     submit(&s, &[&cb], &done).expect("submit");
     wait(&s, &done);
@@ -813,9 +828,8 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
     let setter;
     {
         // A second view of the target's image, given only at render-pass begin.
-        let view = s
-            .device
-            .create_image_view(
+        let view = unsafe {
+            s.device.create_image_view(
                 &tuff::ImageViewCreateInfo::new(&target.image)
                     .view_type(vk::ImageViewType::TYPE_2D)
                     .format(vk::Format::R8G8B8A8_UNORM)
@@ -827,14 +841,14 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
                         layer_count: 1,
                     }),
             )
-            .expect("view");
+        }
+        .expect("view");
         let views = tuff::HandleSlice::new(&[&view]);
         // An imageless framebuffer reads no view at creation, only the count: it is
         // given the target's own view, so that only the begin info names `view`.
         let creation_views = tuff::HandleSlice::new(&[&target.view]);
-        let framebuffer = s
-            .device
-            .create_framebuffer(
+        let framebuffer = unsafe {
+            s.device.create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&target.render_pass)
                     .flags(vk::FramebufferCreateFlags::IMAGELESS)
                     .attachments(&creation_views)
@@ -843,7 +857,8 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
                     .layers(1)
                     .push_next(&mut attachments_info),
             )
-            .expect("imageless framebuffer");
+        }
+        .expect("imageless framebuffer");
         live_with_view = s.device.live_object_count();
         let mut at_begin = tuff::RenderPassAttachmentBeginInfo::new().attachments(&views);
         let clear = [vk::ClearValue::default()];
@@ -860,16 +875,18 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        rec.cmd_wait_events(
-            &[&gate],
-            vk::PipelineStageFlags::HOST,
-            vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
-            &[],
-            &[],
-            &[],
-        );
-        let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-        rec.cmd_end_render_pass().end().expect("end");
+        unsafe {
+            rec.cmd_wait_events(
+                &[&gate],
+                vk::PipelineStageFlags::HOST,
+                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+                &[],
+                &[],
+                &[],
+            )
+        };
+        let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        unsafe { rec.cmd_end_render_pass() }.end().expect("end");
         submit(&s, &[&cb], &done).expect("submit");
         // Set from another thread after a while, so that a failed assertion below
         // does not leave the queue waiting for ever.
@@ -895,22 +912,20 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
 fn a_set_layout_keeps_its_immutable_samplers() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let sampler = s
-        .device
-        .create_sampler(&tuff::SamplerCreateInfo::new())
-        .expect("sampler");
+    let sampler =
+        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let samplers = tuff::HandleSlice::new(&[&sampler]);
     let bindings = [tuff::DescriptorSetLayoutBinding::new()
         .binding(0)
         .descriptor_type(vk::DescriptorType::SAMPLER)
         .immutable_samplers(&samplers)
         .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
-    let layout = s
-        .device
-        .create_descriptor_set_layout(
+    let layout = unsafe {
+        s.device.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-        .expect("set layout");
+    }
+    .expect("set layout");
     let with_both = s.device.live_object_count();
     drop(samplers);
     drop(sampler);
@@ -1003,10 +1018,8 @@ fn arrays_that_share_a_count_cannot_disagree() {
     assert!(write.p_buffer_info.is_null());
 
     // A count that means something alone clears the array it no longer matches.
-    let sampler = s
-        .device
-        .create_sampler(&tuff::SamplerCreateInfo::new())
-        .expect("sampler");
+    let sampler =
+        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let samplers = tuff::HandleSlice::new(&[&sampler]);
     let binding = tuff::DescriptorSetLayoutBinding::new()
         .immutable_samplers(&samplers)
@@ -1026,10 +1039,8 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let set = uniform_set(&s);
-    let sampler = s
-        .device
-        .create_sampler(&tuff::SamplerCreateInfo::new())
-        .expect("sampler");
+    let sampler =
+        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let target = s.color_target(4, vk::ImageUsageFlags::SAMPLED);
     let images = [tuff::DescriptorImageInfo::new(&sampler, &target.view)
         .image_layout(vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL)];
@@ -1038,7 +1049,7 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .image_info(&images)];
     assert_eq!(
-        vuid(s.device.update_descriptor_sets(&writes, &[])),
+        vuid(unsafe { s.device.update_descriptor_sets(&writes, &[]) }),
         "VUID-VkWriteDescriptorSet-descriptorType-00324"
     );
     // The same write through `_unchecked` crashes inside the layer or the driver
@@ -1056,7 +1067,7 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
 fn two_wrappers_of_one_queue_never_submit_at_once() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let other = s.device.get_device_queue(s.family, 0);
+    let other = unsafe { s.device.get_device_queue(s.family, 0) };
     let (buffer, _memory) = transfer_buffer(&s);
     std::thread::scope(|scope| {
         for queue in [&s.queue, &other] {
@@ -1068,13 +1079,14 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 let mut rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                rec.cmd_fill_buffer(buffer, 0, 256, 1).expect("fill");
+                unsafe { rec.cmd_fill_buffer(buffer, 0, 256, 1) }.expect("fill");
                 rec.end().expect("end");
                 let cbs = tuff::HandleSlice::new(&[&cb]);
                 for _ in 0..200 {
-                    queue
-                        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
-                        .expect("submit");
+                    unsafe {
+                        queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+                    }
+                    .expect("submit");
                     wait(s, &done);
                     s.device.reset_fences(&[&done]).expect("reset");
                 }
@@ -1109,7 +1121,7 @@ fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
                     let mut rec = cb
                         .begin(&tuff::CommandBufferBeginInfo::new())
                         .expect("begin");
-                    rec.cmd_fill_buffer(buffer, 0, 256, i).expect("fill");
+                    unsafe { rec.cmd_fill_buffer(buffer, 0, 256, i) }.expect("fill");
                     rec.end().expect("end");
                 }
                 // Freed while the other thread may be recording from the same pool.
@@ -1221,10 +1233,11 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
         .semaphore_type(vk::SemaphoreType::TIMELINE)
         .initial_value(0);
-    let timeline = s
-        .device
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
-        .expect("timeline semaphore");
+    let timeline = unsafe {
+        s.device
+            .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+    }
+    .expect("timeline semaphore");
 
     assert_eq!(
         vuid(s.device.get_semaphore_counter_value(&binary)),
@@ -1245,48 +1258,55 @@ fn timeline_semaphores_are_used_only_with_their_values() {
         "VUID-VkSemaphoreWaitInfo-pSemaphores-03256"
     );
     assert_eq!(
-        vuid(
+        vuid(unsafe {
             s.device
                 .signal_semaphore(&tuff::SemaphoreSignalInfo::new(&binary).value(1))
-        ),
+        }),
         "VUID-VkSemaphoreSignalInfo-semaphore-03257"
     );
 
     let done = fence(&s);
     let timelines = tuff::HandleSlice::new(&[&timeline]);
-    let no_values = s.queue.queue_submit(
-        &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
-        &done,
-    );
+    let no_values = unsafe {
+        s.queue.queue_submit(
+            &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
+            &done,
+        )
+    };
     assert_eq!(vuid(no_values), "VUID-VkSubmitInfo-pWaitSemaphores-03239");
     // A count without values, and values of another count.
     let mut counted = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_value_count(1);
-    let r = s.queue.queue_submit(
-        &[tuff::SubmitInfo::new()
-            .signal_semaphores(&timelines)
-            .push_next(&mut counted)],
-        &done,
-    );
+    let r = unsafe {
+        s.queue.queue_submit(
+            &[tuff::SubmitInfo::new()
+                .signal_semaphores(&timelines)
+                .push_next(&mut counted)],
+            &done,
+        )
+    };
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     let mut two = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1, 2]);
-    let r = s.queue.queue_submit(
-        &[tuff::SubmitInfo::new()
-            .signal_semaphores(&timelines)
-            .push_next(&mut two)],
-        &done,
-    );
+    let r = unsafe {
+        s.queue.queue_submit(
+            &[tuff::SubmitInfo::new()
+                .signal_semaphores(&timelines)
+                .push_next(&mut two)],
+            &done,
+        )
+    };
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     assert_silent(&s.messages);
 
     let mut one = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
-    s.queue
-        .queue_submit(
+    unsafe {
+        s.queue.queue_submit(
             &[tuff::SubmitInfo::new()
                 .signal_semaphores(&timelines)
                 .push_next(&mut one)],
             &done,
         )
-        .expect("submit with its value");
+    }
+    .expect("submit with its value");
     let wait_one = tuff::SemaphoreWaitInfo::new()
         .semaphores(&timelines, &[1])
         .expect("one value per semaphore");
@@ -1326,10 +1346,12 @@ impl Submitter {
                     .iter()
                     .map(|cb| tuff::CommandBufferSubmitInfo::new(cb))
                     .collect();
-                s.queue.queue_submit2(
-                    &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
-                    fence,
-                )
+                unsafe {
+                    s.queue.queue_submit2(
+                        &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
+                        fence,
+                    )
+                }
             }
         }
     }
@@ -1365,7 +1387,7 @@ fn record_execute(
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin primary");
-    rec.cmd_execute_commands(&[secondary]).expect("execute");
+    unsafe { rec.cmd_execute_commands(&[secondary]) }.expect("execute");
     rec.end().expect("end primary");
 }
 
@@ -1387,15 +1409,17 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
         let secondary_begin =
             tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
         let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
-        rec.cmd_wait_events(
-            &[&gate],
-            vk::PipelineStageFlags::HOST,
-            vk::PipelineStageFlags::TRANSFER,
-            &[],
-            &[],
-            &[],
-        );
-        rec.cmd_fill_buffer(&buffer, 0, 256, 1).expect("fill");
+        unsafe {
+            rec.cmd_wait_events(
+                &[&gate],
+                vk::PipelineStageFlags::HOST,
+                vk::PipelineStageFlags::TRANSFER,
+                &[],
+                &[],
+                &[],
+            )
+        };
+        unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
         rec.end().expect("end secondary");
         assert_eq!(
             vuid(submitter.submit(&s, &[&secondary], &done)),
@@ -1421,11 +1445,11 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin third");
         assert_eq!(
-            vuid(rec.cmd_execute_commands(&[&secondary])),
+            vuid(unsafe { rec.cmd_execute_commands(&[&secondary]) }),
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091"
         );
         rec.end().expect("end third");
-        s.device.set_event(&gate).expect("set");
+        unsafe { s.device.set_event(&gate) }.expect("set");
         wait(&s, &done);
         s.device.reset_fences(&[&done]).expect("reset");
 
@@ -1448,7 +1472,7 @@ fn debug_names_are_given_only_to_objects_the_device_can_lock() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let (buffer, _memory) = transfer_buffer(&s);
-    let name = |ty: vk::ObjectType, raw: u64| {
+    let name = |ty: vk::ObjectType, raw: u64| unsafe {
         s.device.set_debug_utils_object_name_ext(
             &tuff::DebugUtilsObjectNameInfoEXT::new()
                 .object_type(ty)
@@ -1476,10 +1500,11 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
     let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
         .semaphore_type(vk::SemaphoreType::TIMELINE)
         .initial_value(0);
-    let timeline = s
-        .device
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
-        .expect("timeline semaphore");
+    let timeline = unsafe {
+        s.device
+            .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+    }
+    .expect("timeline semaphore");
     let before = s.device.live_object_count();
     {
         let (buffer, _memory) = transfer_buffer(&s);
@@ -1493,21 +1518,22 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let signals = tuff::HandleSlice::new(&[&timeline]);
         let mut values = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
-        s.queue
-            .queue_submit(
+        unsafe {
+            s.queue.queue_submit(
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)
                     .push_next(&mut values)],
                 &done,
             )
-            .expect("submit");
+        }
+        .expect("submit");
     }
     assert!(
         s.device.live_object_count() > before,
         "the pending submission keeps its buffer, memory, pool and command buffer"
     );
-    s.device.set_event(&gate).expect("set");
+    unsafe { s.device.set_event(&gate) }.expect("set");
     let timelines = tuff::HandleSlice::new(&[&timeline]);
     let wait_info = tuff::SemaphoreWaitInfo::new()
         .semaphores(&timelines, &[1])
@@ -1542,10 +1568,11 @@ fn buffer_copies_stay_inside_their_buffers() {
     let (small, _small_memory) = host_buffer(&s, 16, usage);
     let (dst_only, _m1) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_DST);
     let (src_only, _m2) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_SRC);
-    let unbound = s
-        .device
-        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
-        .expect("buffer");
+    let unbound = unsafe {
+        s.device
+            .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+    }
+    .expect("buffer");
     let region = |src_offset, dst_offset, size| {
         [vk::BufferCopy {
             src_offset,
@@ -1624,12 +1651,12 @@ fn buffer_copies_stay_inside_their_buffers() {
         .expect("begin");
     for (expected, src, dst, regions) in &cases {
         assert_eq!(
-            vuid(rec.cmd_copy_buffer(src, dst, regions)),
+            vuid(unsafe { rec.cmd_copy_buffer(src, dst, regions) }),
             *expected,
             "copy {regions:?}"
         );
     }
-    rec.cmd_copy_buffer(&big, &small, &region(64, 0, 16))
+    unsafe { rec.cmd_copy_buffer(&big, &small, &region(64, 0, 16)) }
         .expect("a copy inside both buffers");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -1666,22 +1693,22 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
     let (target, _target_memory) = host_buffer(&s, 256, usage);
     let before = d.live_object_count();
-    let buffer = d
-        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+    let buffer = unsafe { d.create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage)) }
         .expect("buffer");
     let reqs = d
         .get_buffer_memory_requirements(&buffer)
         .expect("requirements");
-    let memory = d
-        .allocate_memory(
+    let memory = unsafe {
+        d.allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(reqs.size)
                 .memory_type_index(
                     s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::HOST_VISIBLE),
                 ),
         )
-        .expect("memory");
-    d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &memory)])
+    }
+    .expect("memory");
+    unsafe { d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &memory)]) }
         .expect("bind");
     drop(memory);
     assert_eq!(
@@ -1693,15 +1720,17 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_copy_buffer(
-        &buffer,
-        &target,
-        &[vk::BufferCopy {
-            src_offset: 0,
-            dst_offset: 0,
-            size: 256,
-        }],
-    )
+    unsafe {
+        rec.cmd_copy_buffer(
+            &buffer,
+            &target,
+            &[vk::BufferCopy {
+                src_offset: 0,
+                dst_offset: 0,
+                size: 256,
+            }],
+        )
+    }
     .expect("copy");
     rec.end().expect("end");
     let done = fence(&s);
@@ -1736,27 +1765,26 @@ fn slices_sharing_a_count_have_its_length() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     assert_eq!(
-        vuid(rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0])),
+        vuid(unsafe { rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0]) }),
         "VUID-vkCmdBindVertexBuffers-pOffsets-parameter"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 0], &[256], &[])),
+        vuid(unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 0], &[256], &[]) }),
         "VUID-vkCmdBindVertexBuffers2-pSizes-parameter"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[], &[16, 16])),
+        vuid(unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[], &[16, 16]) }),
         "VUID-vkCmdBindVertexBuffers2-pStrides-parameter"
     );
     assert_eq!(
-        vuid(rec.cmd_wait_events2(&[&gate], &[])),
+        vuid(unsafe { rec.cmd_wait_events2(&[&gate], &[]) }),
         "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter"
     );
     // The same recorder goes on: equal lengths, and empty optional slices as NULL.
-    rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0, 16])
-        .expect("one offset per buffer");
-    rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[])
+    unsafe { rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0, 16]) }.expect("one offset per buffer");
+    unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[]) }
         .expect("no sizes and no strides");
-    rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[128], &[])
+    unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[128], &[]) }
         .expect("a size per buffer");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -1775,10 +1803,11 @@ fn buffer_commands_stay_inside_their_buffers() {
         | vk::BufferUsageFlags::INDEX_BUFFER;
     let (buffer, _m) = host_buffer(&s, 256, all);
     let (src_only, _m2) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_SRC);
-    let unbound = s
-        .device
-        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(all))
-        .expect("buffer");
+    let unbound = unsafe {
+        s.device
+            .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(all))
+    }
+    .expect("buffer");
     static BIG: [u8; 65540] = [0; 65540];
     type Rec<'r> = tuff::Recorder<'r, tuff::Outside>;
     type Call<'b> = Box<dyn Fn(&mut Rec<'_>, bool) -> tuff::Result<()> + 'b>;
@@ -1794,7 +1823,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                         // under test; the command buffer is never submitted.
                         unsafe { rec.cmd_fill_buffer_unchecked(&buf, offset, size, 0) }
                     } else {
-                        rec.cmd_fill_buffer(&buf, offset, size, 0)
+                        unsafe { rec.cmd_fill_buffer(&buf, offset, size, 0) }
                     }
                 }),
             )
@@ -1812,7 +1841,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                     // SAFETY: as for the fills.
                     unsafe { rec.cmd_update_buffer_unchecked(&buf, offset, data) }
                 } else {
-                    rec.cmd_update_buffer(&buf, offset, data)
+                    unsafe { rec.cmd_update_buffer(&buf, offset, data) }
                 }
             }),
         )
@@ -1826,7 +1855,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                     // SAFETY: as for the fills.
                     unsafe { rec.cmd_bind_vertex_buffers_unchecked(0, &[&buf], &[offset]) }
                 } else {
-                    rec.cmd_bind_vertex_buffers(0, &[&buf], &[offset])
+                    unsafe { rec.cmd_bind_vertex_buffers(0, &[&buf], &[offset]) }
                 }
             }),
         )
@@ -1842,7 +1871,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                         rec.cmd_bind_index_buffer_unchecked(&buf, offset, vk::IndexType::UINT32)
                     }
                 } else {
-                    rec.cmd_bind_index_buffer(&buf, offset, vk::IndexType::UINT32)
+                    unsafe { rec.cmd_bind_index_buffer(&buf, offset, vk::IndexType::UINT32) }
                 }
             }),
         )
@@ -1904,17 +1933,14 @@ fn buffer_commands_stay_inside_their_buffers() {
     // 65,540 bytes: more than one update may carry (and than the buffer holds).
     let (large, _m3) = host_buffer(&s, 1 << 17, vk::BufferUsageFlags::TRANSFER_DST);
     assert_eq!(
-        vuid(rec.cmd_update_buffer(&large, 0, big)),
+        vuid(unsafe { rec.cmd_update_buffer(&large, 0, big) }),
         "VUID-vkCmdUpdateBuffer-dataSize-00037"
     );
     // The recorder goes on with correct calls, which run.
-    rec.cmd_fill_buffer(&buffer, 0, 128, 7).expect("fill");
-    rec.cmd_update_buffer(&buffer, 252, &[1, 2, 3, 4])
-        .expect("update");
-    rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252])
-        .expect("vertex");
-    rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
-        .expect("index");
+    unsafe { rec.cmd_fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
+    unsafe { rec.cmd_update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
+    unsafe { rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252]) }.expect("vertex");
+    unsafe { rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32) }.expect("index");
     rec.end().expect("end");
     assert_silent(&s.messages);
     let done = fence(&s);
@@ -1948,11 +1974,13 @@ fn query_results_stay_inside_data_and_pool() {
     let s = setup(true);
     let d = &s.device;
     let pool = |ty| {
-        d.create_query_pool(
-            &tuff::QueryPoolCreateInfo::new()
-                .query_type(ty)
-                .query_count(4),
-        )
+        unsafe {
+            d.create_query_pool(
+                &tuff::QueryPoolCreateInfo::new()
+                    .query_type(ty)
+                    .query_count(4),
+            )
+        }
         .expect("query pool")
     };
     let occlusion = pool(vk::QueryType::OCCLUSION);
@@ -2078,48 +2106,54 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::VERTEX)];
-    let set_layout = d
-        .create_descriptor_set_layout(
+    let set_layout = unsafe {
+        d.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-        .expect("set layout");
+    }
+    .expect("set layout");
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let layout = d
-        .create_pipeline_layout(
+    let layout = unsafe {
+        d.create_pipeline_layout(
             &tuff::PipelineLayoutCreateInfo::new()
                 .push_constant_ranges(&ranges)
                 .set_layouts(&set_layouts),
         )
-        .expect("layout");
+    }
+    .expect("layout");
     let sizes = [vk::DescriptorPoolSize {
         ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
         descriptor_count: 1,
     }];
-    let pool = d
-        .create_descriptor_pool(
+    let pool = unsafe {
+        d.create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(1)
                 .pool_sizes(&sizes),
         )
-        .expect("descriptor pool");
-    let set = d
-        .allocate_descriptor_sets(
+    }
+    .expect("descriptor pool");
+    let set = unsafe {
+        d.allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
         )
-        .expect("set")
-        .pop()
-        .expect("one set");
+    }
+    .expect("set")
+    .pop()
+    .expect("one set");
     let (buffer, _memory) = host_buffer(&s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
     let info = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&buffer))
         .range(64)];
-    d.update_descriptor_sets(
-        &[tuff::WriteDescriptorSet::new(&set)
-            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
-            .buffer_info(&info)],
-        &[],
-    )
+    unsafe {
+        d.update_descriptor_sets(
+            &[tuff::WriteDescriptorSet::new(&set)
+                .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+                .buffer_info(&info)],
+            &[],
+        )
+    }
     .expect("write");
     let vertex = vk::ShaderStageFlags::VERTEX;
     let both = vertex | vk::ShaderStageFlags::FRAGMENT;
@@ -2149,11 +2183,11 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     }
     let graphics = vk::PipelineBindPoint::GRAPHICS;
     assert_eq!(
-        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0])),
+        vuid(unsafe { rec.cmd_bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0]) }),
         "VUID-vkCmdBindDescriptorSets-firstSet-00360"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[])),
+        vuid(unsafe { rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[]) }),
         "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359"
     );
     // The recorder goes on with correct calls.
@@ -2161,8 +2195,7 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         .expect("push");
     rec.cmd_push_constants(&layout, vk::ShaderStageFlags::FRAGMENT, 16, &bytes[..16])
         .expect("push");
-    rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0])
-        .expect("bind");
+    unsafe { rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0]) }.expect("bind");
     rec.end().expect("end");
     assert_silent(&s.messages);
 
@@ -2199,8 +2232,7 @@ fn private_data_names_live_objects_only() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let slot = d
-        .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
+    let slot = unsafe { d.create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new()) }
         .expect("slot");
     let (buffer, _memory) = host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_DST);
     let dropped = {
@@ -2230,14 +2262,13 @@ fn private_data_names_live_objects_only() {
         assert_eq!(vuid(d.set_private_data(ty, handle, &slot, 7)), expected);
     }
     assert!(matches!(
-        d.get_private_data(vk::ObjectType::BUFFER, dropped, &slot),
+        unsafe { d.get_private_data(vk::ObjectType::BUFFER, dropped, &slot) },
         Err(tuff::Error::Misuse(_))
     ));
     d.set_private_data(vk::ObjectType::BUFFER, live, &slot, 7)
         .expect("set");
     assert_eq!(
-        d.get_private_data(vk::ObjectType::BUFFER, live, &slot)
-            .expect("get"),
+        unsafe { d.get_private_data(vk::ObjectType::BUFFER, live, &slot) }.expect("get"),
         7
     );
     let device = vk::Handle::as_raw(d.raw());
@@ -2261,7 +2292,7 @@ fn debug_names_are_given_only_to_live_objects() {
         let (gone, _m) = transfer_buffer(&s);
         gone.raw().as_raw()
     };
-    let name = |ty: vk::ObjectType, raw: u64| {
+    let name = |ty: vk::ObjectType, raw: u64| unsafe {
         s.device.set_debug_utils_object_name_ext(
             &tuff::DebugUtilsObjectNameInfoEXT::new()
                 .object_type(ty)
@@ -2325,11 +2356,12 @@ fn descriptor_updates_stay_inside_their_sets() {
         binding(2, uniform, 1),
         binding(3, storage, 2),
     ];
-    let set_layout = d
-        .create_descriptor_set_layout(
+    let set_layout = unsafe {
+        d.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-        .expect("set layout");
+    }
+    .expect("set layout");
     let sizes = [
         vk::DescriptorPoolSize {
             ty: uniform,
@@ -2340,20 +2372,22 @@ fn descriptor_updates_stay_inside_their_sets() {
             descriptor_count: 4,
         },
     ];
-    let pool = d
-        .create_descriptor_pool(
+    let pool = unsafe {
+        d.create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(2)
                 .pool_sizes(&sizes),
         )
-        .expect("pool");
+    }
+    .expect("pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout, &set_layout]);
-    let mut sets = d
-        .allocate_descriptor_sets(
+    let mut sets = unsafe {
+        d.allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-        .expect("sets");
+    }
+    .expect("sets");
     let (b, a) = (sets.pop().expect("two"), sets.pop().expect("two"));
     let usage = vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::STORAGE_BUFFER;
     let (buffer, _memory) = host_buffer(&s, 1024, usage);
@@ -2433,22 +2467,30 @@ fn descriptor_updates_stay_inside_their_sets() {
         ),
     ];
     for (expected, w) in &writes {
-        assert_eq!(vuid(d.update_descriptor_sets(&[*w], &[])), *expected);
+        assert_eq!(
+            vuid(unsafe { d.update_descriptor_sets(&[*w], &[]) }),
+            *expected
+        );
     }
     // The writes that set up the copies' sources, then the copies.
-    d.update_descriptor_sets(
-        &[
-            write(&a, 0, 1, uniform, &two),
-            write(&a, 0, 0, uniform, &one),
-            write(&a, 3, 0, storage, &two),
-        ],
-        &[],
-    )
+    unsafe {
+        d.update_descriptor_sets(
+            &[
+                write(&a, 0, 1, uniform, &two),
+                write(&a, 0, 0, uniform, &one),
+                write(&a, 3, 0, storage, &two),
+            ],
+            &[],
+        )
+    }
     .expect("a write running on from binding 0 into binding 2");
     for (expected, c) in &copies {
-        assert_eq!(vuid(d.update_descriptor_sets(&[], &[*c])), *expected);
+        assert_eq!(
+            vuid(unsafe { d.update_descriptor_sets(&[], &[*c]) }),
+            *expected
+        );
     }
-    d.update_descriptor_sets(&[], &[copy(0, 0, 0, 0, 3), copy(3, 0, 3, 0, 2)])
+    unsafe { d.update_descriptor_sets(&[], &[copy(0, 0, 0, 0, 3), copy(3, 0, 3, 0, 2)]) }
         .expect("copies inside both sets");
     assert_silent(&s.messages);
 
@@ -2499,7 +2541,7 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
                 // test; the command buffer is never submitted.
                 unsafe { rec.cmd_set_viewport_unchecked(first, &v) }
             } else {
-                rec.cmd_set_viewport(first, &v)
+                unsafe { rec.cmd_set_viewport(first, &v) }
             }
         })
     };
@@ -2520,7 +2562,7 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
                 // SAFETY: as above.
                 unsafe { rec.cmd_set_viewport_with_count_unchecked(&v) }
             } else {
-                rec.cmd_set_viewport_with_count(&v)
+                unsafe { rec.cmd_set_viewport_with_count(&v) }
             }
         })
     };
@@ -2561,7 +2603,7 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
     for (expected, call) in &cases {
         assert_eq!(vuid(call(&mut rec, false)), *expected);
     }
-    rec.cmd_set_viewport(0, &[viewport]).expect("one viewport");
+    unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("one viewport");
     rec.cmd_set_scissor(0, &[rect(0, 0, 16, 16)])
         .expect("one scissor");
     rec.end().expect("end");
@@ -2613,7 +2655,7 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         .expect("begin");
     let over = max as usize + 1;
     assert_eq!(
-        vuid(rec.cmd_set_viewport(1, &vec![viewport; max as usize])),
+        vuid(unsafe { rec.cmd_set_viewport(1, &vec![viewport; max as usize]) }),
         "VUID-vkCmdSetViewport-firstViewport-01223"
     );
     assert_eq!(
@@ -2621,15 +2663,14 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         "VUID-vkCmdSetScissor-firstScissor-00592"
     );
     assert_eq!(
-        vuid(rec.cmd_set_viewport_with_count(&vec![viewport; over])),
+        vuid(unsafe { rec.cmd_set_viewport_with_count(&vec![viewport; over]) }),
         "VUID-vkCmdSetViewportWithCount-viewportCount-03394"
     );
     assert_eq!(
         vuid(rec.cmd_set_scissor_with_count(&vec![scissor; over])),
         "VUID-vkCmdSetScissorWithCount-scissorCount-03397"
     );
-    rec.cmd_set_viewport(0, &vec![viewport; max as usize])
-        .expect("every viewport");
+    unsafe { rec.cmd_set_viewport(0, &vec![viewport; max as usize]) }.expect("every viewport");
     rec.cmd_set_scissor(1, &vec![scissor; max as usize - 1])
         .expect("every scissor but the first");
     rec.end().expect("end");
@@ -2701,7 +2742,7 @@ fn pipeline_creation_reads_inside_its_arrays() {
             // SAFETY: the layer skips the call, which breaks only the rule under test.
             unsafe { d.create_compute_pipelines_unchecked(None, &info) }.map(|_| ())
         } else {
-            d.create_compute_pipelines(None, &info).map(|_| ())
+            unsafe { d.create_compute_pipelines(None, &info) }.map(|_| ())
         }
     };
     let stages = [
@@ -2774,15 +2815,17 @@ fn pipeline_creation_reads_inside_its_arrays() {
         assert_eq!(vuid(compute(spec, false)), *expected);
     }
     for (expected, info) in &graphics_cases {
-        assert_eq!(vuid(d.create_graphics_pipelines(None, &[*info])), *expected);
+        assert_eq!(
+            vuid(unsafe { d.create_graphics_pipelines(None, &[*info]) }),
+            *expected
+        );
     }
     let inside = [entry(0, 4)];
     let good = tuff::SpecializationInfo::new()
         .map_entries(&inside)
         .data(&data);
     compute(&good, false).expect("a constant inside the data");
-    let (_pipelines, r) = d
-        .create_graphics_pipelines(None, &[graphics(2, false)])
+    let (_pipelines, r) = unsafe { d.create_graphics_pipelines(None, &[graphics(2, false)]) }
         .expect("viewports and scissors both dynamic");
     assert_eq!(r, vk::Result::SUCCESS);
     assert_silent(&s.messages);
@@ -2883,9 +2926,9 @@ fn indices_and_chained_counts_match_what_they_index() {
         ),
     ];
     for (expected, info) in &cases {
-        assert_eq!(vuid(d.create_render_pass(info)), *expected);
+        assert_eq!(vuid(unsafe { d.create_render_pass(info) }), *expected);
     }
-    d.create_render_pass(&base().subpasses(&good))
+    unsafe { d.create_render_pass(&base().subpasses(&good)) }
         .expect("a render pass inside its arrays");
     assert_silent(&s.messages);
     s.messages.abort_on_error(true);
@@ -2905,15 +2948,15 @@ fn indices_and_chained_counts_match_what_they_index() {
     let batch = [tuff::SubmitInfo::new().push_next(&mut group)];
     let done = fence(&s);
     assert_eq!(
-        vuid(s.queue.queue_submit(&batch, &done)),
+        vuid(unsafe { s.queue.queue_submit(&batch, &done) }),
         "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083"
     );
-    let set_layout = d
-        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
-        .expect("set layout");
-    let pool = d
-        .create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1))
-        .expect("pool");
+    let set_layout =
+        unsafe { d.create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new()) }
+            .expect("set layout");
+    let pool =
+        unsafe { d.create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1)) }
+            .expect("pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
     let counts = [1u32, 1];
     let mut variable =
@@ -2922,7 +2965,7 @@ fn indices_and_chained_counts_match_what_they_index() {
         .set_layouts(&layouts)
         .push_next(&mut variable);
     assert_eq!(
-        vuid(d.allocate_descriptor_sets(&pool, &allocate)),
+        vuid(unsafe { d.allocate_descriptor_sets(&pool, &allocate) }),
         "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045"
     );
     assert_silent(&s.messages);
@@ -2958,26 +3001,25 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
+        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
         "VUID-vkCmdDispatch-None-02700"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute)),
+        vuid(unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute) }),
         "VUID-vkCmdBindPipeline-pipelineBindPoint-00780"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_pipeline(compute, &p.graphics)),
+        vuid(unsafe { rec.cmd_bind_pipeline(compute, &p.graphics) }),
         "VUID-vkCmdBindPipeline-pipelineBindPoint-00779"
     );
-    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
+    unsafe { rec.cmd_bind_pipeline(compute, &p.compute) }.expect("bind");
     assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
+        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
         "VUID-vkCmdDispatch-None-02697"
     );
-    rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
+    unsafe { rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[]) }
         .expect("sets");
-    rec.cmd_dispatch(1, 1, 1)
-        .expect("a dispatch with its pipeline and set");
+    unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("a dispatch with its pipeline and set");
     rec.end().expect("end");
     let done = fence(&s);
     submit(&s, &[&cb], &done).expect("submit");
@@ -3010,7 +3052,7 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
     // SAFETY: as above.
     unsafe { rec.cmd_bind_pipeline_unchecked(compute, &p.graphics) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindPipeline-pipelineBindPoint-00780");
-    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
+    unsafe { rec.cmd_bind_pipeline(compute, &p.compute) }.expect("bind");
     // SAFETY: as above.
     unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdDispatch-None-02697");
@@ -3040,7 +3082,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 // test; the command buffer is never submitted.
                 unsafe { $rec.$g($($a),*) }
             } else {
-                $rec.$f($($a),*)
+                unsafe { $rec.$f($($a),*) }
             }
         };
     }
@@ -3161,10 +3203,11 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
     let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.vert.spv"));
     let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.frag.spv"));
     let stages = pipelines::test_stages(&vert, &frag);
-    let empty = s
-        .device
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
-        .expect("layout");
+    let empty = unsafe {
+        s.device
+            .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+    }
+    .expect("layout");
     let binding = [vk::VertexInputBindingDescription {
         binding: 0,
         stride: 20,
@@ -3188,7 +3231,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         .vertex_binding_descriptions(&binding)
         .vertex_attribute_descriptions(&attributes);
     let (mut vertex_pipeline, _) =
-        pipelines::with_graphics_info(&stages, &empty, &target.render_pass, |info| {
+        pipelines::with_graphics_info(&stages, &empty, &target.render_pass, |info| unsafe {
             s.device
                 .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
         })
@@ -3210,8 +3253,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(dispatch(&mut rec, false)), no_pipeline);
             }
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
-            .expect("bind");
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute) }.expect("bind");
         for (name, dispatch) in &dispatches {
             let no_set = format!("VUID-vkCmd{name}-None-02697");
             if unchecked {
@@ -3221,7 +3263,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(dispatch(&mut rec, false)), no_set);
             }
         }
-        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
         for (expected, draw) in &draws {
             if unchecked {
                 draw(&mut rec, true).expect("recorded");
@@ -3232,9 +3274,9 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         // With the graphics pipeline bound: indexed draws need an index buffer, and a
         // direct one reads only indices inside it.
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
             .expect("bind");
-        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+        unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("viewport");
         rec.cmd_set_scissor(0, &[scissor]).expect("scissor");
         let no_index: [(&str, &DrawCall<'_>); 3] = [
             ("VUID-vkCmdDrawIndexed-None-07312", &draws[1].1),
@@ -3249,7 +3291,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(draw(&mut rec, false)), expected);
             }
         }
-        rec.cmd_bind_index_buffer(&args, 0, vk::IndexType::UINT32)
+        unsafe { rec.cmd_bind_index_buffer(&args, 0, vk::IndexType::UINT32) }
             .expect("index buffer");
         // 65 indices of 4 bytes from a buffer of 256.
         let past = "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825";
@@ -3258,11 +3300,11 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             unsafe { rec.cmd_draw_indexed_unchecked(65, 1, 0, 0, 0) }.expect("recorded");
             assert_layer_reports(&s, past);
         } else {
-            assert_eq!(vuid(rec.cmd_draw_indexed(65, 1, 0, 0, 0)), past);
+            assert_eq!(vuid(unsafe { rec.cmd_draw_indexed(65, 1, 0, 0, 0) }), past);
         }
         // A pipeline whose vertex shader reads binding 0, with no vertex buffer
         // bound: every draw is refused, and accepted once one is.
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline)
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline) }
             .expect("bind");
         for (no_pipeline, draw) in &draws {
             let expected = no_pipeline.replace("02700", "04007");
@@ -3275,12 +3317,10 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         s.messages.abort_on_error(false);
         if !unchecked {
-            rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
-                .expect("vertex buffer");
-            rec.cmd_draw(3, 1, 0, 0)
-                .expect("a draw with its vertex buffer bound");
+            unsafe { rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0]) }.expect("vertex buffer");
+            unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw with its vertex buffer bound");
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
             .expect("bind");
         if !unchecked {
             let color = [0u8; 16];
@@ -3291,10 +3331,9 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 &color,
             )
             .expect("push");
-            rec.cmd_draw_indexed(64, 1, 0, 0, 0)
-                .expect("64 indices inside the buffer");
+            unsafe { rec.cmd_draw_indexed(64, 1, 0, 0, 0) }.expect("64 indices inside the buffer");
         }
-        rec.cmd_end_render_pass().end().expect("end");
+        unsafe { rec.cmd_end_render_pass() }.end().expect("end");
         if !unchecked {
             assert_silent(&s.messages);
         }
@@ -3314,8 +3353,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let s = setup(true);
     let d = &s.device;
     let comp = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.comp.spv"));
-    let empty = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+    let empty = unsafe { d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new()) }
         .expect("empty layout");
     let stage = || {
         tuff::PipelineShaderStageCreateInfo::new(c"main")
@@ -3324,7 +3362,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     };
     let compute = [tuff::ComputePipelineCreateInfo::new(stage(), &empty)];
     assert_eq!(
-        vuid(d.create_compute_pipelines(None, &compute)),
+        vuid(unsafe { d.create_compute_pipelines(None, &compute) }),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     // A stage without a module: no code that had the shader promise.
@@ -3333,7 +3371,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         &empty,
     )];
     assert_eq!(
-        vuid(d.create_compute_pipelines(None, &no_module)),
+        vuid(unsafe { d.create_compute_pipelines(None, &no_module) }),
         "VUID-VkPipelineShaderStageCreateInfo-module-06716"
     );
     // A one-set layout whose bindings 0 and 1 have these types and stages.
@@ -3345,15 +3383,18 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
                 .descriptor_count(1)
                 .stage_flags(stages)
         });
-        let set_layout = d
-            .create_descriptor_set_layout(
+        let set_layout = unsafe {
+            d.create_descriptor_set_layout(
                 &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
             )
-            .expect("set layout");
-        d.create_pipeline_layout(
-            &tuff::PipelineLayoutCreateInfo::new()
-                .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
-        )
+        }
+        .expect("set layout");
+        unsafe {
+            d.create_pipeline_layout(
+                &tuff::PipelineLayoutCreateInfo::new()
+                    .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
+            )
+        }
         .expect("layout")
     };
     let (uniform, storage) = (
@@ -3364,7 +3405,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let vertex_only = layout_of([uniform, storage], vk::ShaderStageFlags::VERTEX);
     let hidden = [tuff::ComputePipelineCreateInfo::new(stage(), &vertex_only)];
     assert_eq!(
-        vuid(d.create_compute_pipelines(None, &hidden)),
+        vuid(unsafe { d.create_compute_pipelines(None, &hidden) }),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     // Visible to the compute stage, but the uniform block's binding holds storage
@@ -3372,7 +3413,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let wrong_type = layout_of([storage, storage], vk::ShaderStageFlags::COMPUTE);
     let mistyped = [tuff::ComputePipelineCreateInfo::new(stage(), &wrong_type)];
     assert_eq!(
-        vuid(d.create_compute_pipelines(None, &mistyped)),
+        vuid(unsafe { d.create_compute_pipelines(None, &mistyped) }),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     assert_silent(&s.messages);
@@ -3388,14 +3429,17 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         offset: 0,
         size: 8,
     }];
-    let short_layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&short))
-        .expect("layout");
+    let short_layout = unsafe {
+        d.create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&short),
+        )
+    }
+    .expect("layout");
     let rp = &target.render_pass;
     for layout in [&empty, &short_layout] {
         pipelines::with_graphics_info(&stages, layout, rp, |info| {
             assert_eq!(
-                vuid(d.create_graphics_pipelines(None, &[info])),
+                vuid(unsafe { d.create_graphics_pipelines(None, &[info]) }),
                 "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
             );
         });
@@ -3422,15 +3466,16 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
 
 /// Memory for `reqs` of `size` bytes, of the first type the object allows.
 fn memory_for(s: &Setup, reqs: &vk::MemoryRequirements, size: u64) -> tuff::DeviceMemory {
-    s.device
-        .allocate_memory(
+    unsafe {
+        s.device.allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(size)
                 .memory_type_index(
                     s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
                 ),
         )
-        .expect("memory")
+    }
+    .expect("memory")
 }
 
 /// Runs `unchecked` with the layer told to skip the erroring call, so the driver
@@ -3453,34 +3498,38 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     let s = setup(true);
     let d = &s.device;
     let buffer = || {
-        d.create_buffer(
-            &tuff::BufferCreateInfo::new()
-                .size(4096)
-                .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
-        )
+        unsafe {
+            d.create_buffer(
+                &tuff::BufferCreateInfo::new()
+                    .size(4096)
+                    .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
+            )
+        }
         .expect("buffer")
     };
     let image = || {
-        d.create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 64,
-                    height: 64,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::SAMPLED),
-        )
+        unsafe {
+            d.create_image(
+                &tuff::ImageCreateInfo::new()
+                    .image_type(vk::ImageType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .extent(vk::Extent3D {
+                        width: 64,
+                        height: 64,
+                        depth: 1,
+                    })
+                    .mip_levels(1)
+                    .array_layers(1)
+                    .samples(vk::SampleCountFlags::TYPE_1)
+                    .usage(vk::ImageUsageFlags::SAMPLED),
+            )
+        }
         .expect("image")
     };
     let b = buffer();
     let b_reqs = d.get_buffer_memory_requirements(&b).expect("requirements");
     let i = image();
-    let i_reqs = d.get_image_memory_requirements(&i).expect("requirements");
+    let i_reqs = unsafe { d.get_image_memory_requirements(&i) }.expect("requirements");
     // (offset, memory size, the rule it breaks), for buffers then images.
     let buffer_cases = [
         (b_reqs.size * 2, b_reqs.size * 2, "memoryOffset-01031"),
@@ -3494,10 +3543,13 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     for (offset, size, rule) in buffer_cases {
         let memory = memory_for(&s, &b_reqs, size);
         let one = format!("VUID-vkBindBufferMemory-{rule}");
-        assert_eq!(vuid(d.bind_buffer_memory(&b, &memory, offset)), one);
+        assert_eq!(
+            vuid(unsafe { d.bind_buffer_memory(&b, &memory, offset) }),
+            one
+        );
         let two = format!("VUID-VkBindBufferMemoryInfo-{rule}");
         let infos = [tuff::BindBufferMemoryInfo::new(&b, &memory).memory_offset(offset)];
-        assert_eq!(vuid(d.bind_buffer_memory2(&infos)), two);
+        assert_eq!(vuid(unsafe { d.bind_buffer_memory2(&infos) }), two);
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports (its messenger says so), so the
         // driver never binds the memory.
@@ -3526,10 +3578,13 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     for (offset, size, rule, rule2) in image_cases {
         let memory = memory_for(&s, &i_reqs, size);
         let one = format!("VUID-vkBindImageMemory-{rule}");
-        assert_eq!(vuid(d.bind_image_memory(&i, &memory, offset)), one);
+        assert_eq!(
+            vuid(unsafe { d.bind_image_memory(&i, &memory, offset) }),
+            one
+        );
         let two = format!("VUID-VkBindImageMemoryInfo-{rule2}");
         let infos = [tuff::BindImageMemoryInfo::new(&i, &memory).memory_offset(offset)];
-        assert_eq!(vuid(d.bind_image_memory2(&infos)), two);
+        assert_eq!(vuid(unsafe { d.bind_image_memory2(&infos) }), two);
         assert_silent(&s.messages);
         // SAFETY: as for the buffer.
         layer_names(&s, &one, || {
@@ -3542,28 +3597,28 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     }
     // Bound once, correctly; a second bind of either is refused.
     let b_memory = memory_for(&s, &b_reqs, b_reqs.size);
-    d.bind_buffer_memory(&b, &b_memory, 0).expect("bind");
+    unsafe { d.bind_buffer_memory(&b, &b_memory, 0) }.expect("bind");
     let i_memory = memory_for(&s, &i_reqs, i_reqs.size);
-    d.bind_image_memory(&i, &i_memory, 0).expect("bind");
+    unsafe { d.bind_image_memory(&i, &i_memory, 0) }.expect("bind");
     assert_silent(&s.messages);
     let again = memory_for(&s, &b_reqs, b_reqs.size);
     assert_eq!(
-        vuid(d.bind_buffer_memory(&b, &again, 0)),
+        vuid(unsafe { d.bind_buffer_memory(&b, &again, 0) }),
         "VUID-vkBindBufferMemory-buffer-07459"
     );
     let infos = [tuff::BindBufferMemoryInfo::new(&b, &again)];
     assert_eq!(
-        vuid(d.bind_buffer_memory2(&infos)),
+        vuid(unsafe { d.bind_buffer_memory2(&infos) }),
         "VUID-VkBindBufferMemoryInfo-buffer-07459"
     );
     let again_i = memory_for(&s, &i_reqs, i_reqs.size);
     assert_eq!(
-        vuid(d.bind_image_memory(&i, &again_i, 0)),
+        vuid(unsafe { d.bind_image_memory(&i, &again_i, 0) }),
         "VUID-vkBindImageMemory-image-07460"
     );
     let infos_i = [tuff::BindImageMemoryInfo::new(&i, &again_i)];
     assert_eq!(
-        vuid(d.bind_image_memory2(&infos_i)),
+        vuid(unsafe { d.bind_image_memory2(&infos_i) }),
         "VUID-VkBindImageMemoryInfo-image-07460"
     );
     assert_silent(&s.messages);
@@ -3593,7 +3648,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
         tuff::BindBufferMemoryInfo::new(&fresh, &m2),
     ];
     assert_eq!(
-        vuid(d.bind_buffer_memory2(&twice)),
+        vuid(unsafe { d.bind_buffer_memory2(&twice) }),
         "VUID-VkBindBufferMemoryInfo-buffer-07459"
     );
     assert_silent(&s.messages);
@@ -3693,7 +3748,7 @@ fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
         "VUID-VkImageCreateInfo-samples-02258",
     ));
     for (info, rule) in &cases {
-        assert_eq!(vuid(d.create_image(info)), *rule, "{rule}");
+        assert_eq!(vuid(unsafe { d.create_image(info) }), *rule, "{rule}");
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports (its messenger says so), so the
         // driver never creates the image.
@@ -3710,8 +3765,7 @@ fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
             depth: 1,
         })
         .mip_levels(32 - optimal2d.max_extent.width.leading_zeros());
-    d.create_image(&largest)
-        .expect("the largest image the limits allow");
+    unsafe { d.create_image(&largest) }.expect("the largest image the limits allow");
     assert_silent(&s.messages);
 }
 
@@ -3730,8 +3784,8 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
     // 4x4 RGBA8 texels are 64 bytes: exactly the buffer.
     let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
     let (buffer, _memory) = host_buffer(&s, 64, usage);
-    let image = d
-        .create_image(
+    let image = unsafe {
+        d.create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
                 .format(vk::Format::R8G8B8A8_UNORM)
@@ -3745,7 +3799,8 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
                 .samples(vk::SampleCountFlags::TYPE_1)
                 .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST),
         )
-        .expect("image");
+    }
+    .expect("image");
     let _image_memory = s.bind_image(&image);
     let layer = vk::ImageSubresourceLayers {
         aspect_mask: vk::ImageAspectFlags::COLOR,
@@ -3823,22 +3878,24 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
             } else {
                 // A refused copy is not recorded, and the recording goes on.
                 assert_eq!(
-                    vuid(rec.cmd_copy_buffer_to_image(&buffer, &image, dst, &[*r])),
+                    vuid(unsafe { rec.cmd_copy_buffer_to_image(&buffer, &image, dst, &[*r]) }),
                     to_image
                 );
                 rec.end().expect("end");
                 let calls: [(&str, RecordCall<'_>); 3] = [
                     (
                         to_buffer,
-                        Box::new(|rec| rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[*r])),
+                        Box::new(|rec| unsafe {
+                            rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[*r])
+                        }),
                     ),
                     (
                         to_image2,
-                        Box::new(|rec| rec.cmd_copy_buffer_to_image2(&into)),
+                        Box::new(|rec| unsafe { rec.cmd_copy_buffer_to_image2(&into) }),
                     ),
                     (
                         to_buffer2,
-                        Box::new(|rec| rec.cmd_copy_image_to_buffer2(&out)),
+                        Box::new(|rec| unsafe { rec.cmd_copy_image_to_buffer2(&out) }),
                     ),
                 ];
                 for (expected, call) in calls {
@@ -3856,7 +3913,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[fits])
+    unsafe { rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[fits]) }
         .expect("a region that fills the buffer exactly");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -4004,14 +4061,19 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
             .descriptor_type(ty)
             .descriptor_count(count)
             .stage_flags(stage)];
-        let set_layout = d
-            .create_descriptor_set_layout(
+        let set_layout = unsafe {
+            d.create_descriptor_set_layout(
                 &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
             )
-            .expect("set layout");
+        }
+        .expect("set layout");
         let layouts = tuff::HandleSlice::new(&[&set_layout]);
         let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
-        assert_eq!(vuid(d.create_pipeline_layout(&info)), rule, "{rule}");
+        assert_eq!(
+            vuid(unsafe { d.create_pipeline_layout(&info) }),
+            rule,
+            "{rule}"
+        );
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports, so the driver never sees it.
         layer_names(&s, &rule, || {
@@ -4019,15 +4081,15 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
         });
     }
     // More set layouts than can be bound at once.
-    let empty = d
-        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
-        .expect("set layout");
+    let empty =
+        unsafe { d.create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new()) }
+            .expect("set layout");
     let many: Vec<&tuff::DescriptorSetLayout> =
         (0..=l.max_bound_descriptor_sets).map(|_| &empty).collect();
     let layouts = tuff::HandleSlice::new(&many);
     let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
     let rule = "VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286";
-    assert_eq!(vuid(d.create_pipeline_layout(&info)), rule);
+    assert_eq!(vuid(unsafe { d.create_pipeline_layout(&info) }), rule);
     // SAFETY: as above.
     layer_names(&s, rule, || {
         let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
@@ -4047,7 +4109,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
     ];
     let info = tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&ranges);
     let rule = "VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292";
-    assert_eq!(vuid(d.create_pipeline_layout(&info)), rule);
+    assert_eq!(vuid(unsafe { d.create_pipeline_layout(&info) }), rule);
     // SAFETY: as above.
     layer_names(&s, rule, || {
         let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
@@ -4058,13 +4120,16 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
         .descriptor_type(T::UNIFORM_BUFFER)
         .descriptor_count(l.max_per_stage_descriptor_uniform_buffers)
         .stage_flags(compute)];
-    let set_layout = d
-        .create_descriptor_set_layout(
+    let set_layout = unsafe {
+        d.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-        .expect("set layout");
+    }
+    .expect("set layout");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
-    d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
-        .expect("a layout at the per-stage limit");
+    unsafe {
+        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
+    }
+    .expect("a layout at the per-stage limit");
     assert_silent(&s.messages);
 }

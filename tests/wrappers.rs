@@ -7,6 +7,11 @@
 //! `SamplerYcbcrConversion` is the one handle type of the emitted API not made here;
 //! surfaces and swapchains are made in a window of the X server named by `DISPLAY`
 //! (Xvfb on CI).
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 
 #[path = "common/pipelines.rs"]
 mod pipelines;
@@ -49,96 +54,97 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     let d = &s.device;
     let mut bag: Vec<Box<dyn Any>> = Vec::new();
     let (buffer, memory) = buffer_with_memory(s, 4096);
-    let view = d
-        .create_buffer_view(
+    let view = unsafe {
+        d.create_buffer_view(
             &tuff::BufferViewCreateInfo::new(&buffer)
                 .format(vk::Format::R32_UINT)
                 .range(vk::WHOLE_SIZE),
         )
-        .expect("buffer view");
+    }
+    .expect("buffer view");
     let target = s.color_target(16, vk::ImageUsageFlags::SAMPLED);
     // Shader modules, both pipelines and a descriptor update template, used by a
     // submission that is still in flight when the bag is dropped.
     let work = pipelines(s, &target);
-    let sampler = d
-        .create_sampler(&tuff::SamplerCreateInfo::new())
-        .expect("sampler");
+    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let bindings = [tuff::DescriptorSetLayoutBinding::new()
         .binding(0)
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::VERTEX)];
-    let set_layout = d
-        .create_descriptor_set_layout(
+    let set_layout = unsafe {
+        d.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings[..]),
         )
-        .expect("set layout");
+    }
+    .expect("set layout");
     let sizes = [vk::DescriptorPoolSize {
         ty: vk::DescriptorType::UNIFORM_BUFFER,
         descriptor_count: 4,
     }];
-    let pool = d
-        .create_descriptor_pool(
+    let pool = unsafe {
+        d.create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .flags(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
                 .max_sets(4)
                 .pool_sizes(&sizes),
         )
-        .expect("descriptor pool");
+    }
+    .expect("descriptor pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let sets = d
-        .allocate_descriptor_sets(
+    let sets = unsafe {
+        d.allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-        .expect("descriptor sets");
+    }
+    .expect("descriptor sets");
     let buffer_info = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&buffer))
         .range(256)];
     let writes = [tuff::WriteDescriptorSet::new(&sets[0])
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .buffer_info(&buffer_info)];
-    d.update_descriptor_sets(&writes, &[])
-        .expect("descriptor writes");
+    unsafe { d.update_descriptor_sets(&writes, &[]) }.expect("descriptor writes");
     let ranges = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::VERTEX,
         offset: 0,
         size: 64,
     }];
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let pipeline_layout = d
-        .create_pipeline_layout(
+    let pipeline_layout = unsafe {
+        d.create_pipeline_layout(
             &tuff::PipelineLayoutCreateInfo::new()
                 .set_layouts(&set_layouts)
                 .push_constant_ranges(&ranges),
         )
-        .expect("pipeline layout");
-    let cache = d
-        .create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new())
+    }
+    .expect("pipeline layout");
+    let cache = unsafe { d.create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new()) }
         .expect("pipeline cache");
     let cache_data = d
         .get_pipeline_cache_data(&cache)
         .expect("pipeline cache data");
     assert!(!cache_data.is_empty(), "a pipeline cache has a header");
-    let semaphore = d
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
-        .expect("semaphore");
+    let semaphore =
+        unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
     let event = d
         .create_event(&tuff::EventCreateInfo::new())
         .expect("event");
-    let query_pool = d
-        .create_query_pool(
+    let query_pool = unsafe {
+        d.create_query_pool(
             &tuff::QueryPoolCreateInfo::new()
                 .query_type(vk::QueryType::OCCLUSION)
                 .query_count(2),
         )
-        .expect("query pool");
-    let slot = d
-        .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
+    }
+    .expect("query pool");
+    let slot = unsafe { d.create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new()) }
         .expect("private data slot");
-    let command_pool = d
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("command pool");
+    let command_pool = unsafe {
+        d.create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+    }
+    .expect("command pool");
     let cbs = d
         .allocate_command_buffers(
             &command_pool,
@@ -147,9 +153,7 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
                 .command_buffer_count(2),
         )
         .expect("command buffers");
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
+    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
     let mut cbs = cbs;
     let mut rec = cbs[0]
         .begin(&tuff::CommandBufferBeginInfo::new())
@@ -157,9 +161,11 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     rec = work.record(rec, &target, 16, None);
     rec.end().expect("end");
     let handles = tuff::HandleSlice::new(&[&cbs[0]]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-        .expect("submit");
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+    }
+    .expect("submit");
     let ColorTarget {
         image,
         memory: image_memory,
@@ -250,9 +256,10 @@ fn parents_dropped_before_children_stay_alive() {
         ..
     } = setup(true);
     let _ = (memory_types, queue);
-    let pool = device
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(family))
-        .expect("pool");
+    let pool = unsafe {
+        device.create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(family))
+    }
+    .expect("pool");
     let cbs = device
         .allocate_command_buffers(
             &pool,
@@ -273,9 +280,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
+    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
     for round in 0..20u32 {
         let (buffer, memory) = buffer_with_memory(&s, 1 << 20);
         let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -283,13 +288,12 @@ fn resources_dropped_while_their_submission_is_in_flight() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         for i in 0..64u64 {
-            rec.cmd_fill_buffer(&buffer, i * 16384, 16384, round)
-                .expect("fill");
+            unsafe { rec.cmd_fill_buffer(&buffer, i * 16384, 16384, round) }.expect("fill");
         }
         rec.end().expect("end");
         let cb_handles = tuff::HandleSlice::new(&[&cb]);
         let submits = [tuff::SubmitInfo::new().command_buffers(&cb_handles)];
-        s.queue.queue_submit(&submits, &fence).expect("submit");
+        unsafe { s.queue.queue_submit(&submits, &fence) }.expect("submit");
         // Everything the submission uses goes while it may still run; the fence
         // keeps the command buffer, and through it the buffer and memory, alive.
         let _ = submits;
@@ -313,8 +317,7 @@ fn a_submitted_buffer_is_written() {
     let s = setup(true);
     let (buffer, memory) = buffer_with_memory(&s, 256);
     submit_and_wait(&s, |rec| {
-        rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5)
-            .expect("fill")
+        unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5) }.expect("fill")
     });
     // Read back through ash on the raw handles: Deref keeps the layer transparent.
     let bytes = access_memory(&s, &memory, 256, None);
@@ -336,15 +339,13 @@ fn present_one_frame(
         .get_swapchain_images_khr(swapchain)
         .expect("swapchain images");
     assert!(!images.is_empty());
-    let acquired = d
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
-        .expect("semaphore");
-    let rendered = d
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
-        .expect("semaphore");
-    let (index, r) = d
-        .acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None)
-        .expect("acquire");
+    let acquired =
+        unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
+    let rendered =
+        unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
+    let (index, r) =
+        unsafe { d.acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None) }
+            .expect("acquire");
     assert!(
         r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
         "{r:?}"
@@ -378,50 +379,54 @@ fn present_one_frame(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_pipeline_barrier(
-        vk::PipelineStageFlags::TRANSFER,
-        vk::PipelineStageFlags::TRANSFER,
-        vk::DependencyFlags::empty(),
-        &[],
-        &[],
-        &[barrier(
-            vk::ImageLayout::UNDEFINED,
+    unsafe {
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::TRANSFER,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &[barrier(
+                vk::ImageLayout::UNDEFINED,
+                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+                vk::AccessFlags::empty(),
+                vk::AccessFlags::TRANSFER_WRITE,
+            )],
+        )
+    };
+    unsafe {
+        rec.cmd_clear_color_image(
+            image,
             vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-            vk::AccessFlags::empty(),
-            vk::AccessFlags::TRANSFER_WRITE,
-        )],
-    );
-    rec.cmd_clear_color_image(
-        image,
-        vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-        &vk::ClearColorValue {
-            float32: [0.1, 0.2, 0.3, 1.0],
-        },
-        &[range],
-    );
-    rec.cmd_pipeline_barrier(
-        vk::PipelineStageFlags::TRANSFER,
-        vk::PipelineStageFlags::BOTTOM_OF_PIPE,
-        vk::DependencyFlags::empty(),
-        &[],
-        &[],
-        &[barrier(
-            vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-            vk::ImageLayout::PRESENT_SRC_KHR,
-            vk::AccessFlags::TRANSFER_WRITE,
-            vk::AccessFlags::empty(),
-        )],
-    );
+            &vk::ClearColorValue {
+                float32: [0.1, 0.2, 0.3, 1.0],
+            },
+            &[range],
+        )
+    };
+    unsafe {
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &[barrier(
+                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+                vk::ImageLayout::PRESENT_SRC_KHR,
+                vk::AccessFlags::TRANSFER_WRITE,
+                vk::AccessFlags::empty(),
+            )],
+        )
+    };
     rec.end().expect("end");
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
+    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
     let waits = tuff::HandleSlice::new(&[&acquired]);
     let signals = tuff::HandleSlice::new(&[&rendered]);
     let cbs = tuff::HandleSlice::new(&[&cb]);
     let stages = [vk::PipelineStageFlags::TRANSFER];
-    s.queue
-        .queue_submit(
+    unsafe {
+        s.queue.queue_submit(
             &[tuff::SubmitInfo::new()
                 .wait_semaphores(&waits, &stages)
                 .expect("one stage per semaphore")
@@ -429,18 +434,19 @@ fn present_one_frame(
                 .signal_semaphores(&signals)],
             &fence,
         )
-        .expect("submit");
+    }
+    .expect("submit");
     let swapchains = tuff::HandleSlice::new(&[swapchain]);
     let indices = [index];
-    let r = s
-        .queue
-        .queue_present_khr(
+    let r = unsafe {
+        s.queue.queue_present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)
                 .swapchains(&swapchains, &indices)
                 .expect("one index per swapchain"),
         )
-        .expect("present");
+    }
+    .expect("present");
     assert!(
         r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
         "{r:?}"
@@ -475,18 +481,21 @@ fn swapchain_info<'a>(
     s: &Setup,
     surface: &'a tuff::SurfaceKHR,
 ) -> tuff::SwapchainCreateInfoKHR<'a> {
-    let caps = s
-        .physical
-        .get_physical_device_surface_capabilities_khr(surface)
-        .expect("surface capabilities");
-    let formats = s
-        .physical
-        .get_physical_device_surface_formats_khr(Some(surface))
-        .expect("surface formats");
-    let modes = s
-        .physical
-        .get_physical_device_surface_present_modes_khr(Some(surface))
-        .expect("present modes");
+    let caps = unsafe {
+        s.physical
+            .get_physical_device_surface_capabilities_khr(surface)
+    }
+    .expect("surface capabilities");
+    let formats = unsafe {
+        s.physical
+            .get_physical_device_surface_formats_khr(Some(surface))
+    }
+    .expect("surface formats");
+    let modes = unsafe {
+        s.physical
+            .get_physical_device_surface_present_modes_khr(Some(surface))
+    }
+    .expect("present modes");
     assert!(
         modes.contains(&vk::PresentModeKHR::FIFO),
         "FIFO is always supported"
@@ -523,30 +532,33 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
         // `window` drops after every object made from the surface: the bag below
         // empties first.
         let surface = xlib_surface(&s, &window);
-        let supported = s
-            .physical
-            .get_physical_device_surface_support_khr(s.family, &surface)
-            .expect("surface support");
+        let supported = unsafe {
+            s.physical
+                .get_physical_device_surface_support_khr(s.family, &surface)
+        }
+        .expect("surface support");
         assert_eq!(
             supported,
             vk::TRUE,
             "the graphics queue family presents to X11"
         );
-        let pool = s
-            .device
-            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-            .expect("pool");
-        let first = s
-            .device
-            .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
-            .expect("swapchain");
+        let pool = unsafe {
+            s.device.create_command_pool(
+                &tuff::CommandPoolCreateInfo::new().queue_family_index(s.family),
+            )
+        }
+        .expect("pool");
+        let first = unsafe {
+            s.device
+                .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+        }
+        .expect("swapchain");
         assert!(first.presents_to(&surface));
         let mut bag = present_one_frame(&s, &first, &pool);
         // The recreate path after a resize: the new swapchain retires the old one, and
         // both keep the surface alive.
         window.resize(80, 40);
-        let second = first
-            .recreate(&s.device, &surface, &swapchain_info(&s, &surface))
+        let second = unsafe { first.recreate(&s.device, &surface, &swapchain_info(&s, &surface)) }
             .expect("recreate");
         bag.extend(present_one_frame(&s, &second, &pool));
         bag.push(Box::new(first));
@@ -584,12 +596,10 @@ fn recreate_refuses_another_surface() {
     let s = setup_with(true, Wsi::Xlib);
     // Both windows outlive every object made from their surfaces.
     let (a, b) = (xlib_surface(&s, &window_a), xlib_surface(&s, &window_b));
-    let swapchain = s
-        .device
-        .create_swapchain_khr(&a, &swapchain_info(&s, &a))
-        .expect("swapchain");
+    let swapchain =
+        unsafe { s.device.create_swapchain_khr(&a, &swapchain_info(&s, &a)) }.expect("swapchain");
     assert!(!swapchain.presents_to(&b));
-    match swapchain.recreate(&s.device, &b, &swapchain_info(&s, &b)) {
+    match unsafe { swapchain.recreate(&s.device, &b, &swapchain_info(&s, &b)) } {
         Err(tuff::Error::Validation { vuid, .. }) => {
             assert_eq!(vuid, "VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933")
         }
@@ -616,13 +626,13 @@ fn pipelines_draw_and_dispatch() {
     work.record(rec, &target, 8, Some(&readback.0))
         .end()
         .expect("end");
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
+    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-        .expect("submit");
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+    }
+    .expect("submit");
     let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
         .expect("wait");
@@ -689,13 +699,13 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
     let kept = fill(&mut rec);
     rec.end().expect("end");
     assert!(cb.is_executable());
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
+    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-        .expect("submit");
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+    }
+    .expect("submit");
     drop(kept);
     let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
@@ -713,20 +723,22 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     let allocators: [(&str, &dyn tuff::runtime::Allocator); 2] = [("gpu", &gpu), ("naive", &naive)];
     for (name, allocator) in allocators {
         let info = |usage| tuff::BufferCreateInfo::new().size(256).usage(usage);
-        let source = d
-            .create_buffer_in(
+        let source = unsafe {
+            d.create_buffer_in(
                 &info(vk::BufferUsageFlags::TRANSFER_SRC),
                 allocator,
                 tuff::MemoryLocation::Upload,
             )
-            .expect("source");
-        let target = d
-            .create_buffer_in(
+        }
+        .expect("source");
+        let target = unsafe {
+            d.create_buffer_in(
                 &info(vk::BufferUsageFlags::TRANSFER_DST),
                 allocator,
                 tuff::MemoryLocation::Readback,
             )
-            .expect("target");
+        }
+        .expect("target");
         assert!(source.memory().size() >= 256, "{name}");
         let words: Vec<u32> = (0..64).map(|i| i * 3 + 1).collect();
         source.memory().write(0, &words).expect("write");
@@ -738,15 +750,17 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
         // The copy's source goes, memory and all, while the copy may still run: the
         // submission keeps it (the layer would report memory freed in use).
         submit_and_wait(&s, |rec| {
-            rec.cmd_copy_buffer(
-                &source,
-                &target,
-                &[vk::BufferCopy {
-                    src_offset: 0,
-                    dst_offset: 0,
-                    size: 256,
-                }],
-            )
+            unsafe {
+                rec.cmd_copy_buffer(
+                    &source,
+                    &target,
+                    &[vk::BufferCopy {
+                        src_offset: 0,
+                        dst_offset: 0,
+                        size: 256,
+                    }],
+                )
+            }
             .expect("copy");
             source
         });
@@ -760,18 +774,15 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     }
     // A buffer made and filled in one call; empty data still makes a valid buffer.
     let usage = vk::BufferUsageFlags::INDEX_BUFFER;
-    let filled = d
-        .create_buffer_with(usage, &[5u16, 6, 7], &gpu)
-        .expect("filled buffer");
+    let filled =
+        unsafe { d.create_buffer_with(usage, &[5u16, 6, 7], &gpu) }.expect("filled buffer");
     assert_eq!(filled.memory().read::<u16>(0, 3).expect("read"), [5, 6, 7]);
     let empty: [u32; 0] = [];
-    let empty = d
-        .create_buffer_with(usage, &empty, &naive)
-        .expect("empty buffer");
+    let empty = unsafe { d.create_buffer_with(usage, &empty, &naive) }.expect("empty buffer");
     assert!(empty.memory().size() >= 1);
     // An image in device-local memory, and the refusals.
-    let image = d
-        .create_image_in(
+    let image = unsafe {
+        d.create_image_in(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
                 .format(vk::Format::D32_SFLOAT)
@@ -787,13 +798,12 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
             &gpu,
             tuff::MemoryLocation::DeviceLocal,
         )
-        .expect("image");
+    }
+    .expect("image");
     assert!(image.memory().size() >= 64 * 64 * 4);
-    let refusal = |info: tuff::BufferCreateInfo<'_>| match d.create_buffer_in(
-        &info.size(64),
-        &gpu,
-        tuff::MemoryLocation::Upload,
-    ) {
+    let refusal = |info: tuff::BufferCreateInfo<'_>| match unsafe {
+        d.create_buffer_in(&info.size(64), &gpu, tuff::MemoryLocation::Upload)
+    } {
         Err(tuff::Error::Validation { vuid, .. }) => vuid,
         Err(other) => panic!("expected a refusal, got {other}"),
         Ok(_) => panic!("expected a refusal, got a buffer"),
@@ -824,18 +834,19 @@ fn an_allocator_of_another_device_is_refused() {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
-    let other = s
-        .physical
-        .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
-        .expect("second device");
+    let other = unsafe {
+        s.physical
+            .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
+    }
+    .expect("second device");
     let foreign = other.naive_allocator();
     let info = tuff::BufferCreateInfo::new()
         .size(64)
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    match s
-        .device
-        .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
-    {
+    match unsafe {
+        s.device
+            .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
+    } {
         Err(tuff::Error::Validation { vuid, .. }) => {
             assert_eq!(vuid, "VUID-vkBindBufferMemory-memory-parent")
         }
@@ -851,15 +862,20 @@ fn missing_layers_extensions_and_features_are_named() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let entry = tuff::Entry::load().expect("loader");
+    // Through `_unchecked`: the checked constructors refuse an extension outside the
+    // emitted API before the driver can say it is absent (tested below).
+    // SAFETY: the layers and extensions are absent or only the layer's own, so the
+    // instance is never created and no rule of an unemitted extension can apply.
     let create = |layers: &[tuff::CStrPtr<'_>], exts: &[tuff::CStrPtr<'_>]| {
-        entry
-            .create_instance(
+        unsafe {
+            entry.create_instance_unchecked(
                 &tuff::InstanceCreateInfo::new()
                     .enabled_layer_names(layers)
                     .enabled_extension_names(exts),
             )
-            .err()
-            .expect("the instance was created")
+        }
+        .err()
+        .expect("the instance was created")
     };
     let not_present = |e: tuff::Error| match e {
         tuff::Error::NotPresent { what, names, .. } => (what, names),
@@ -897,8 +913,7 @@ fn missing_layers_extensions_and_features_are_named() {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
-    let bare = entry
-        .create_instance(&tuff::InstanceCreateInfo::new())
+    let bare = unsafe { entry.create_instance(&tuff::InstanceCreateInfo::new()) }
         .expect("instance without layers");
     let physical = bare
         .enumerate_physical_devices()
@@ -909,30 +924,77 @@ fn missing_layers_extensions_and_features_are_named() {
                 == s.physical.get_physical_device_properties().device_name
         })
         .expect("the same device on the second instance");
-    let e = physical
-        .create_device(
+    let e = unsafe {
+        physical.create_device(
             &tuff::DeviceCreateInfo::new()
                 .queue_create_infos(&queues)
                 .enabled_features(Some(&probe)),
         )
-        .err()
-        .expect("a device with a missing feature");
+    }
+    .err()
+    .expect("a device with a missing feature");
     assert_eq!(
         not_present(e),
         ("device feature", vec!["sparseBinding".to_owned()])
     );
-    let e = physical
-        .create_device(
+    // SAFETY: the extension is absent, so the device is never created.
+    let e = unsafe {
+        physical.create_device_unchecked(
             &tuff::DeviceCreateInfo::new()
                 .queue_create_infos(&queues)
                 .enabled_extension_names(&[c"VK_TUFF_absent".into()]),
         )
-        .err()
-        .expect("a device with a missing extension");
+    }
+    .err()
+    .expect("a device with a missing extension");
     assert_eq!(
         not_present(e),
         ("device extension", vec!["VK_TUFF_absent".to_owned()])
     );
+    assert_silent(&s.messages);
+}
+
+/// An extension outside the emitted API would add rules that no safe method checks,
+/// so the checked constructors refuse it, present or not, before the driver sees it.
+#[test]
+fn extensions_outside_the_emitted_api_are_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let entry = tuff::Entry::load().expect("loader");
+    let refused = |e: tuff::Error| match e {
+        tuff::Error::ExtensionNotEmitted(name) => name,
+        other => panic!("expected ExtensionNotEmitted, got {other}"),
+    };
+    // Present (the layer provides it) but not emitted.
+    let e = unsafe {
+        entry.create_instance(
+            &tuff::InstanceCreateInfo::new()
+                .enabled_layer_names(&[c"VK_LAYER_KHRONOS_validation".into()])
+                .enabled_extension_names(&[
+                    c"VK_EXT_debug_utils".into(),
+                    c"VK_EXT_validation_features".into(),
+                ]),
+        )
+    }
+    .err()
+    .expect("an instance with an unemitted extension");
+    assert_eq!(refused(e), "VK_EXT_validation_features");
+    let priorities = [1.0f32];
+    let queues = [tuff::DeviceQueueCreateInfo::new()
+        .queue_family_index(s.family)
+        .queue_priorities(&priorities)];
+    for name in [c"VK_KHR_maintenance4", c"VK_TUFF_absent"] {
+        let e = unsafe {
+            s.physical.create_device(
+                &tuff::DeviceCreateInfo::new()
+                    .queue_create_infos(&queues)
+                    .enabled_extension_names(&[c"VK_KHR_swapchain".into(), name.into()]),
+            )
+        }
+        .err()
+        .expect("a device with an unemitted extension");
+        assert_eq!(refused(e), name.to_str().expect("ASCII"));
+    }
     assert_silent(&s.messages);
 }
 
@@ -981,14 +1043,14 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let s = setup(true);
     let d = &s.device;
     let gpu = d.gpu_allocator().expect("gpu allocator");
-    let mut frames = d.frames_in_flight(s.family, 3).expect("frames in flight");
+    let mut frames = unsafe { d.frames_in_flight(s.family, 3) }.expect("frames in flight");
     assert_eq!(frames.len(), 3);
     let targets: Vec<_> = (0..3)
         .map(|_| {
             let info = tuff::BufferCreateInfo::new()
                 .size(64)
                 .usage(vk::BufferUsageFlags::TRANSFER_DST);
-            d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback)
+            unsafe { d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback) }
                 .expect("target")
         })
         .collect();
@@ -996,22 +1058,23 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let record = |frame: &mut tuff::Frame<'_>, n: u32| {
         let target = &targets[frame.index];
         let mut rec = frame.record().expect("record");
-        rec.cmd_fill_buffer(target, 0, vk::WHOLE_SIZE, n)
-            .expect("fill");
+        unsafe { rec.cmd_fill_buffer(target, 0, vk::WHOLE_SIZE, n) }.expect("fill");
         let to_host = [tuff::BufferMemoryBarrier::new(target)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(vk::AccessFlags::HOST_READ)
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .size(vk::WHOLE_SIZE)];
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::HOST,
-            vk::DependencyFlags::empty(),
-            &[],
-            &to_host,
-            &[],
-        );
+        unsafe {
+            rec.cmd_pipeline_barrier(
+                vk::PipelineStageFlags::TRANSFER,
+                vk::PipelineStageFlags::HOST,
+                vk::DependencyFlags::empty(),
+                &[],
+                &to_host,
+                &[],
+            )
+        };
         rec.end().expect("end");
     };
     let mut order = Vec::new();
@@ -1027,21 +1090,20 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
         // A chain of semaphores, each dropped once the next submission waits on it,
         // while that submission may still run: the frame's fence keeps it (the layer
         // would report a semaphore destroyed in use).
-        let signal = d
-            .create_semaphore(&tuff::SemaphoreCreateInfo::new())
-            .expect("semaphore");
+        let signal =
+            unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
         let waits: Vec<_> = previous
             .iter()
             .map(|p| (p, vk::PipelineStageFlags::TRANSFER))
             .collect();
-        frame.submit(&s.queue, &waits, &[&signal]).expect("submit");
+        unsafe { frame.submit(&s.queue, &waits, &[&signal]) }.expect("submit");
         previous = Some(signal);
     }
     assert_eq!(order, [0, 1, 2, 0, 1, 2, 0]);
     // A frame submitted without a new recording is refused, and the ring stays on it.
     let frame = frames.next_frame().expect("next frame");
     assert_eq!(frame.index, 1);
-    let refused = frame.submit(&s.queue, &[], &[]);
+    let refused = unsafe { frame.submit(&s.queue, &[], &[]) };
     assert!(
         matches!(refused, Err(tuff::Error::Validation { vuid, .. })
             if vuid == "VUID-vkQueueSubmit-pCommandBuffers-00070"),
@@ -1054,7 +1116,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
         previous.as_ref().expect("a semaphore"),
         vk::PipelineStageFlags::TRANSFER,
     )];
-    frame.submit(&s.queue, &waits, &[]).expect("submit");
+    unsafe { frame.submit(&s.queue, &waits, &[]) }.expect("submit");
     drop(previous);
     frames.wait_all().expect("wait for all frames");
     let last: Vec<u32> = targets.iter().map(first).collect();

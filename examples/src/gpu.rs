@@ -77,7 +77,9 @@ impl Gpu {
         if validation {
             info = info.enabled_layer_names(&layers).push_next(&mut chained);
         }
-        let instance = entry.create_instance(&info).with_context(|| {
+        // SAFETY: the enabled extensions include every one they require, and the API version
+        // is at least 1.0.
+        let instance = unsafe { entry.create_instance(&info) }.with_context(|| {
             let hint = if validation {
                 " (the layer: apt-get install vulkan-validationlayers)"
             } else {
@@ -134,22 +136,26 @@ impl Gpu {
         let queues = [tuff::DeviceQueueCreateInfo::new()
             .queue_family_index(family)
             .queue_priorities(&[1.0])];
-        let device = physical
-            .create_device(
+        // SAFETY: one queue of a family the instance reported, with no flags, and only
+        // features and extensions the scene checked the device has.
+        let device = unsafe {
+            physical.create_device(
                 &tuff::DeviceCreateInfo::new()
                     .queue_create_infos(&queues)
                     .enabled_extension_names(device_exts)
                     .enabled_features(Some(&features)),
             )
-            .with_context(|| {
-                format!(
-                    "cannot create a device on \"{name}\" for the {} scene",
-                    req.scene
-                )
-            })?;
+        }
+        .with_context(|| {
+            format!(
+                "cannot create a device on \"{name}\" for the {} scene",
+                req.scene
+            )
+        })?;
         Ok(Gpu {
             allocator: device.gpu_allocator()?,
-            queue: device.get_device_queue(family, 0),
+            // SAFETY: the device was created with one queue of this family, with no flags.
+            queue: unsafe { device.get_device_queue(family, 0) },
             family,
             device,
             physical,
@@ -177,9 +183,11 @@ impl Gpu {
         location: tuff::MemoryLocation,
     ) -> Result<tuff::Bound<tuff::Buffer>> {
         let info = tuff::BufferCreateInfo::new().size(size).usage(usage);
-        Ok(self
-            .device
-            .create_buffer_in(&info, &self.allocator, location)?)
+        // SAFETY: an exclusive buffer with no flags and no chain, far below maxBufferSize.
+        Ok(unsafe {
+            self.device
+                .create_buffer_in(&info, &self.allocator, location)
+        }?)
     }
 
     /// A 2D image in device-local memory, which the image keeps.
@@ -198,11 +206,13 @@ impl Gpu {
             .samples(vk::SampleCountFlags::TYPE_1)
             .usage(usage);
         let local = tuff::MemoryLocation::DeviceLocal;
-        Ok(self
-            .device
-            .create_image_in(&info, &self.allocator, local)?
-            .into_parts()
-            .0)
+        Ok(
+            // SAFETY: a 2D depth attachment in a format the scene checked the device supports,
+            // at the target's size.
+            unsafe { self.device.create_image_in(&info, &self.allocator, local) }?
+                .into_parts()
+                .0,
+        )
     }
 
     /// A 2D view of the whole of `image`.
@@ -212,12 +222,16 @@ impl Gpu {
         format: vk::Format,
         aspect: vk::ImageAspectFlags,
     ) -> Result<tuff::ImageView> {
-        Ok(self.device.create_image_view(
-            &tuff::ImageViewCreateInfo::new(image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(format)
-                .subresource_range(whole(aspect)),
-        )?)
+        // SAFETY: a view of the whole image, of its own format and type, with the aspect its
+        // format has.
+        Ok(unsafe {
+            self.device.create_image_view(
+                &tuff::ImageViewCreateInfo::new(image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(format)
+                    .subresource_range(whole(aspect)),
+            )
+        }?)
     }
 }
 

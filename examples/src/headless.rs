@@ -75,7 +75,8 @@ pub fn render<S: Scene>(
         vk::BufferUsageFlags::TRANSFER_DST,
         tuff::MemoryLocation::Readback,
     )?;
-    let mut ring = gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?;
+    // SAFETY: the device was created with a queue of this family.
+    let mut ring = unsafe { gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT) }?;
     let start = Instant::now();
     for n in 0..frames {
         let mut frame = ring.next_frame()?;
@@ -89,7 +90,10 @@ pub fn render<S: Scene>(
         let copy = last.then_some((&images[slot], &*readback));
         let framebuffer = &targets.framebuffers[slot];
         render::record_frame(&mut frame, &render_pass, framebuffer, &scene, &view, copy)?;
-        frame.submit(&gpu.queue, &[], &[])?;
+        // SAFETY: the frame's commands were recorded for this queue's family, use no events or
+        // secondaries, and its semaphores are waited and signalled in order, one acquire or
+        // present each.
+        unsafe { frame.submit(&gpu.queue, &[], &[]) }?;
     }
     ring.wait_all()?;
     let elapsed = start.elapsed();

@@ -87,7 +87,10 @@ pub fn graphics(
     if desc.depth {
         info = info.depth_stencil_state(Some(&depth));
     }
-    let (mut pipelines, _) = gpu.device.create_graphics_pipelines(None, &[info])?;
+    // SAFETY: the create infos keep the rules the method lists: shaders promised at their
+    // creation, states the render pass's attachments accept, no dynamic state beyond viewport
+    // and scissor.
+    let (mut pipelines, _) = unsafe { gpu.device.create_graphics_pipelines(None, &[info]) }?;
     pipelines.pop().context("no pipeline was created")
 }
 
@@ -109,5 +112,7 @@ pub fn layout(
     if push_size > 0 {
         info = info.push_constant_ranges(&push);
     }
-    Ok(gpu.device.create_pipeline_layout(&info)?)
+    // SAFETY: a few sets and push-constant bytes, within every device's minimum limits, with
+    // live set layouts.
+    Ok(unsafe { gpu.device.create_pipeline_layout(&info) }?)
 }

@@ -128,12 +128,16 @@ pub fn render_pass(
             dependency_flags: vk::DependencyFlags::empty(),
         },
     ];
-    Ok(gpu.device.create_render_pass(
-        &tuff::RenderPassCreateInfo::new()
-            .attachments(&attachments)
-            .subpasses(&subpasses)
-            .dependencies(&dependencies),
-    )?)
+    // SAFETY: one subpass whose attachments are described with formats the device supports for
+    // that use, with valid layouts and no dependency beyond what the subpass needs.
+    Ok(unsafe {
+        gpu.device.create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses)
+                .dependencies(&dependencies),
+        )
+    }?)
 }
 
 /// Framebuffers over a set of color images (offscreen targets or swapchain images)
@@ -172,13 +176,17 @@ impl Framebuffers {
                     .flatten()
                     .collect();
                 let attachments = tuff::HandleSlice::new(&attachments);
-                Ok(gpu.device.create_framebuffer(
-                    &tuff::FramebufferCreateInfo::new(render_pass)
-                        .attachments(&attachments)
-                        .width(extent.width)
-                        .height(extent.height)
-                        .layers(1),
-                )?)
+                // SAFETY: the attachments are live views of the render pass's formats and
+                // sample counts, one layer, at the framebuffer's size.
+                Ok(unsafe {
+                    gpu.device.create_framebuffer(
+                        &tuff::FramebufferCreateInfo::new(render_pass)
+                            .attachments(&attachments)
+                            .width(extent.width)
+                            .height(extent.height)
+                            .layers(1),
+                    )
+                }?)
             })
             .collect::<Result<Vec<_>>>()?;
         Ok(Framebuffers {
@@ -213,43 +221,54 @@ pub fn record_frame<S: Scene>(
         },
     ];
     let area: vk::Rect2D = view.extent.into();
-    let mut rec = frame.record()?.cmd_begin_render_pass(
-        &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
-            .render_area(area)
-            // Without a depth attachment, only the color is cleared.
-            .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
-        vk::SubpassContents::INLINE,
-    );
-    rec.cmd_set_viewport(
-        0,
-        &[vk::Viewport {
-            x: 0.0,
-            y: 0.0,
-            width: view.extent.width as f32,
-            height: view.extent.height as f32,
-            min_depth: 0.0,
-            max_depth: 1.0,
-        }],
-    )?;
+    // SAFETY: the frame's command buffer is recorded once per submission, from a graphics pool.
+    let mut rec = unsafe {
+        frame.record()?.cmd_begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
+                .render_area(area)
+                // Without a depth attachment, only the color is cleared.
+                .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
+            vk::SubpassContents::INLINE,
+        )
+    };
+    // SAFETY: one viewport of the target's size, with depths in 0..1.
+    unsafe {
+        rec.cmd_set_viewport(
+            0,
+            &[vk::Viewport {
+                x: 0.0,
+                y: 0.0,
+                width: view.extent.width as f32,
+                height: view.extent.height as f32,
+                min_depth: 0.0,
+                max_depth: 1.0,
+            }],
+        )
+    }?;
     rec.cmd_set_scissor(0, &[area])?;
     scene.draw(&mut rec, view)?;
-    let mut rec = rec.cmd_end_render_pass();
+    // SAFETY: the render pass has one subpass and no query was begun in it.
+    let mut rec = unsafe { rec.cmd_end_render_pass() };
     if let Some((image, buffer)) = readback {
-        rec.cmd_copy_image_to_buffer(
-            image,
-            vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-            buffer,
-            &[vk::BufferImageCopy {
-                image_subresource: vk::ImageSubresourceLayers {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    mip_level: 0,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                },
-                image_extent: view.extent.into(),
-                ..Default::default()
-            }],
-        )?;
+        // SAFETY: the region is the whole color image, in TRANSFER_SRC_OPTIMAL after the
+        // barrier above, copied into a readback buffer of exactly its size.
+        unsafe {
+            rec.cmd_copy_image_to_buffer(
+                image,
+                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                buffer,
+                &[vk::BufferImageCopy {
+                    image_subresource: vk::ImageSubresourceLayers {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        mip_level: 0,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    },
+                    image_extent: view.extent.into(),
+                    ..Default::default()
+                }],
+            )
+        }?;
         // A fence wait does not make device writes visible to the host; this does.
         let to_host = [tuff::BufferMemoryBarrier::new(buffer)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
@@ -258,14 +277,18 @@ pub fn record_frame<S: Scene>(
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .offset(0)
             .size(vk::WHOLE_SIZE)];
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::HOST,
-            vk::DependencyFlags::empty(),
-            &[],
-            &to_host,
-            &[],
-        );
+        // SAFETY: the barrier names the whole color image with the layout it is in, on this
+        // queue's family, with stages this queue supports.
+        unsafe {
+            rec.cmd_pipeline_barrier(
+                vk::PipelineStageFlags::TRANSFER,
+                vk::PipelineStageFlags::HOST,
+                vk::DependencyFlags::empty(),
+                &[],
+                &to_host,
+                &[],
+            )
+        };
     }
     rec.end()?;
     Ok(())

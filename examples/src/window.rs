@@ -136,16 +136,19 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
                     .window(handle.window),
             )
         }?;
-        if gpu
-            .physical
-            .get_physical_device_surface_support_khr(gpu.family, &surface)?
-            == vk::FALSE
+        // SAFETY: the family index is below the physical device's queue family count.
+        if unsafe {
+            gpu.physical
+                .get_physical_device_surface_support_khr(gpu.family, &surface)
+        }? == vk::FALSE
         {
             bail!("\"{}\" cannot present to this window", gpu.name);
         }
-        let formats = gpu
-            .physical
-            .get_physical_device_surface_formats_khr(Some(&surface))?;
+        // SAFETY: the surface belongs to this instance and the physical device supports it.
+        let formats = unsafe {
+            gpu.physical
+                .get_physical_device_surface_formats_khr(Some(&surface))
+        }?;
         // Unorm, as headless, so a window shows the same colors as the PNG.
         let format = formats
             .iter()
@@ -166,9 +169,11 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             rendered: Vec::new(),
             images: Vec::new(),
             swapchain: None,
-            frames: gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?,
+            // SAFETY: the device was created with a queue of this family.
+            frames: unsafe { gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT) }?,
             acquired: (0..FRAMES_IN_FLIGHT)
-                .map(|_| {
+                // SAFETY: a binary semaphore with no chain.
+                .map(|_| unsafe {
                     gpu.device
                         .create_semaphore(&tuff::SemaphoreCreateInfo::new())
                 })
@@ -238,9 +243,11 @@ impl<S: Scene> Live<S> {
             return Ok(Some(framebuffers.extent));
         }
         self.resized = false;
-        let caps = gpu
-            .physical
-            .get_physical_device_surface_capabilities_khr(&self.surface)?;
+        // SAFETY: the surface belongs to this instance and the physical device supports it.
+        let caps = unsafe {
+            gpu.physical
+                .get_physical_device_surface_capabilities_khr(&self.surface)
+        }?;
         let size = self.window.inner_size();
         let Some(extent) = swapchain_extent(&caps, size.width, size.height) else {
             // Looked at again every frame until the window has an area.
@@ -275,11 +282,15 @@ impl<S: Scene> Live<S> {
             .clipped(vk::TRUE);
         let swapchain = match &self.swapchain {
             Some(old) => {
-                let new = old.recreate(&gpu.device, &self.surface, &info)?;
+                // SAFETY: the info comes from the surface's current capabilities and formats,
+                // and the surface supports presenting from the chosen queue family.
+                let new = unsafe { old.recreate(&gpu.device, &self.surface, &info) }?;
                 self.recreations += 1;
                 new
             }
-            None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
+            // SAFETY: the info comes from the surface's current capabilities and formats, and
+            // the surface supports presenting from the chosen queue family.
+            None => unsafe { gpu.device.create_swapchain_khr(&self.surface, &info) }?,
         };
         self.framebuffers = None;
         self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;
@@ -287,7 +298,8 @@ impl<S: Scene> Live<S> {
         self.rendered = self
             .images
             .iter()
-            .map(|_| {
+            // SAFETY: a binary semaphore with no chain.
+            .map(|_| unsafe {
                 gpu.device
                     .create_semaphore(&tuff::SemaphoreCreateInfo::new())
             })
@@ -317,21 +329,22 @@ impl<S: Scene> Live<S> {
         let mut frame = self.frames.next_frame()?;
         let acquired = &self.acquired[frame.index];
         let swapchain = self.swapchain.as_ref().context("no swapchain")?;
-        let index =
-            match gpu
-                .device
+        // SAFETY: the semaphore is unsignalled with no pending wait, and the swapchain is not
+        // retired.
+        let index = match unsafe {
+            gpu.device
                 .acquire_next_image_khr(swapchain, u64::MAX, Some(acquired), None)
-            {
-                Ok((index, r)) => {
-                    self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
-                    index as usize
-                }
-                Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
-                    self.stale = true;
-                    return Ok(false);
-                }
-                Err(e) => return Err(e.into()),
-            };
+        } {
+            Ok((index, r)) => {
+                self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
+                index as usize
+            }
+            Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
+                self.stale = true;
+                return Ok(false);
+            }
+            Err(e) => return Err(e.into()),
+        };
         let view = View {
             extent,
             time: self.start.elapsed().as_secs_f32(),
@@ -350,15 +363,22 @@ impl<S: Scene> Live<S> {
         )?;
         let stage = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
         let rendered = &self.rendered[index];
-        frame.submit(&gpu.queue, &[(acquired, stage)], &[rendered])?;
+        // SAFETY: the frame's commands were recorded for this queue's family, use no events or
+        // secondaries, and its semaphores are waited and signalled in order, one acquire or
+        // present each.
+        unsafe { frame.submit(&gpu.queue, &[(acquired, stage)], &[rendered]) }?;
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
         let indices = [index as u32];
         let signals = tuff::HandleSlice::new(&[rendered]);
-        match gpu.queue.queue_present_khr(
-            &tuff::PresentInfoKHR::new()
-                .wait_semaphores(&signals)
-                .swapchains(&swapchains, &indices)?,
-        ) {
+        // SAFETY: the image was acquired and rendered to, is in PRESENT_SRC_KHR, and the wait
+        // semaphore is signalled by this frame's submission.
+        match unsafe {
+            gpu.queue.queue_present_khr(
+                &tuff::PresentInfoKHR::new()
+                    .wait_semaphores(&signals)
+                    .swapchains(&swapchains, &indices)?,
+            )
+        } {
             Ok(r) => self.stale |= r == vk::Result::SUBOPTIMAL_KHR,
             Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => self.stale = true,
             Err(e) => return Err(e.into()),

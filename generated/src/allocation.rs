@@ -20,7 +20,8 @@
 //! let info = tuff::BufferCreateInfo::new()
 //!     .size(12)
 //!     .usage(vk::BufferUsageFlags::VERTEX_BUFFER);
-//! let vertices = device.create_buffer_in(&info, &allocator, MemoryLocation::Upload)?;
+//! // SAFETY: a small exclusive buffer with no flags and no chain.
+//! let vertices = unsafe { device.create_buffer_in(&info, &allocator, MemoryLocation::Upload) }?;
 //! vertices.memory().write(0, &[0.0f32, -0.5, 0.5])?;
 //! # Ok(()) }
 //! ```
@@ -106,15 +107,23 @@ impl Device {
     /// written. Empty `data` gives a one-byte buffer, as a buffer cannot be empty
     /// (`VUID-VkBufferCreateInfo-size-00912`).
     ///
+    /// # Safety
+    ///
+    /// The caller upholds the rules [`Device::create_buffer`]'s `# Safety` section
+    /// lists for a create info with only `size` and `usage` set: today, that `data`
+    /// is no larger than the device's `maxBufferSize`
+    /// (`VUID-VkBufferCreateInfo-size-06409`).
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// let allocator = device.gpu_allocator()?;
     /// let usage = tuff::vk::BufferUsageFlags::INDEX_BUFFER;
-    /// let indices = device.create_buffer_with(usage, &[0u32, 1, 2], &allocator)?;
+    /// // SAFETY: 12 bytes are within any device's maxBufferSize.
+    /// let indices = unsafe { device.create_buffer_with(usage, &[0u32, 1, 2], &allocator) }?;
     /// assert_eq!(indices.memory().read::<u32>(0, 3)?, [0, 1, 2]);
     /// # Ok(()) }
     /// ```
-    pub fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
+    pub unsafe fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
         &self,
         usage: vk::BufferUsageFlags,
         data: &[T],
@@ -122,7 +131,9 @@ impl Device {
     ) -> Result<Bound<Buffer>> {
         let size = (core::mem::size_of_val(data) as u64).max(1);
         let info = BufferCreateInfo::new().size(size).usage(usage);
-        let buffer = self.create_buffer_in(&info, allocator, MemoryLocation::Upload)?;
+        // SAFETY: the caller keeps `size` within maxBufferSize; the info sets nothing
+        // else the rules of `create_buffer` are about.
+        let buffer = unsafe { self.create_buffer_in(&info, allocator, MemoryLocation::Upload) }?;
         buffer.memory().write(0, data)?;
         Ok(buffer)
     }
@@ -134,17 +145,23 @@ impl Device {
     /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
     /// fails.
     ///
+    /// # Safety
+    ///
+    /// The caller upholds the rules [`Device::create_buffer`]'s `# Safety` section
+    /// lists for `info`, except those this method refuses above.
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// use tuff::{vk, MemoryLocation};
     /// let info = tuff::BufferCreateInfo::new()
     ///     .size(64)
     ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    /// let uniforms = device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload)?;
+    /// // SAFETY: 64 bytes, exclusive, no flags and no chain: none of the rules applies.
+    /// let uniforms = unsafe { device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload) }?;
     /// uniforms.memory().write(0, &[1.0f32; 16])?;
     /// # Ok(()) }
     /// ```
-    pub fn create_buffer_in<A: Allocator + ?Sized>(
+    pub unsafe fn create_buffer_in<A: Allocator + ?Sized>(
         &self,
         info: &BufferCreateInfo<'_>,
         allocator: &A,
@@ -172,7 +189,8 @@ impl Device {
              VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for",
         )?;
         refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
-        let buffer = self.create_buffer(info)?;
+        // SAFETY: the caller upholds the rules `create_buffer` lists.
+        let buffer = unsafe { self.create_buffer(info) }?;
         let requirements = self.get_buffer_memory_requirements(&buffer)?;
         let allocation = allocator
             .allocate(&AllocationRequest::new(requirements, location))
@@ -200,6 +218,11 @@ impl Device {
     /// allocation does not fit the image, and with [`Error::Alloc`] when the allocator
     /// fails.
     ///
+    /// # Safety
+    ///
+    /// The caller upholds the rules [`Device::create_image`]'s `# Safety` section lists
+    /// for `info`, except those this method refuses above.
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// use tuff::{vk, MemoryLocation};
@@ -211,10 +234,12 @@ impl Device {
     ///     .array_layers(1)
     ///     .samples(vk::SampleCountFlags::TYPE_1)
     ///     .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT);
-    /// let depth = device.create_image_in(&info, &device.gpu_allocator()?, MemoryLocation::DeviceLocal)?;
+    /// // SAFETY: a plain 2D depth image, exclusive, no flags and no chain, which
+    /// // every device supports at this size.
+    /// let depth = unsafe { device.create_image_in(&info, &device.gpu_allocator()?, MemoryLocation::DeviceLocal) }?;
     /// # drop(depth); Ok(()) }
     /// ```
-    pub fn create_image_in<A: Allocator + ?Sized>(
+    pub unsafe fn create_image_in<A: Allocator + ?Sized>(
         &self,
         info: &ImageCreateInfo<'_>,
         allocator: &A,
@@ -240,8 +265,10 @@ impl Device {
             "a protected image needs protected memory, which the allocators do not give",
         )?;
         refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
-        let image = self.create_image(info)?;
-        let requirements = self.get_image_memory_requirements(&image)?;
+        // SAFETY: the caller upholds the rules `create_image` lists.
+        let image = unsafe { self.create_image(info) }?;
+        // SAFETY: the image is not disjoint (refused above).
+        let requirements = unsafe { self.get_image_memory_requirements(&image) }?;
         let mut request = AllocationRequest::new(requirements, location);
         request.linear = raw.tiling == vk::ImageTiling::LINEAR;
         let allocation = allocator.allocate(&request).map_err(alloc_error)?;

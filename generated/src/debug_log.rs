@@ -13,12 +13,16 @@
 //! let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
 //! let extensions = [tuff::CStrPtr::from(c"VK_EXT_debug_utils")];
 //! let mut chained = log.messenger_info();
-//! let instance = entry.create_instance(
-//!     &tuff::InstanceCreateInfo::new()
-//!         .enabled_layer_names(&layers)
-//!         .enabled_extension_names(&extensions)
-//!         .push_next(&mut chained),
-//! )?;
+//! // SAFETY: VK_EXT_debug_utils, which the chained messenger needs, is enabled, and
+//! // it requires no other extension; the API version is left at 1.0.
+//! let instance = unsafe {
+//!     entry.create_instance(
+//!         &tuff::InstanceCreateInfo::new()
+//!             .enabled_layer_names(&layers)
+//!             .enabled_extension_names(&extensions)
+//!             .push_next(&mut chained),
+//!     )
+//! }?;
 //! let messenger = instance.create_debug_utils_messenger_ext(&log.messenger_info())?;
 //! // ... use Vulkan ...
 //! drop((messenger, instance));

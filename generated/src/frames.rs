@@ -12,14 +12,16 @@
 //!
 //! ```no_run
 //! # fn f(device: &tuff::Device, queue: &tuff::Queue, family: u32) -> tuff::Result<()> {
-//! let mut frames = device.frames_in_flight(family, 2)?;
+//! // SAFETY: the device was created with a queue of `family`.
+//! let mut frames = unsafe { device.frames_in_flight(family, 2) }?;
 //! for _ in 0..100 {
 //!     let mut frame = frames.next_frame()?;
 //!     // frame.index picks this frame's uniform buffer, descriptor set, ...
 //!     let rec = frame.record()?;
 //!     // ... record the frame's commands ...
 //!     rec.end()?;
-//!     frame.submit(queue, &[], &[])?;
+//!     // SAFETY: the recording keeps the rules `Queue::queue_submit` lists.
+//!     unsafe { frame.submit(queue, &[], &[]) }?;
 //! }
 //! frames.wait_all()?;
 //! # Ok(()) }
@@ -49,23 +51,32 @@ impl Device {
     /// A ring of `count` frames in flight (at least one) whose command buffers are
     /// submitted to queues of family `queue_family_index`.
     ///
+    /// # Safety
+    ///
+    /// The device was created with a queue of family `queue_family_index`
+    /// (`VUID-vkCreateCommandPool-queueFamilyIndex-01937`).
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-    /// let frames = device.frames_in_flight(0, 2)?;
+    /// // SAFETY: the device was created with a queue of family 0.
+    /// let frames = unsafe { device.frames_in_flight(0, 2) }?;
     /// assert_eq!(frames.len(), 2);
     /// # Ok(()) }
     /// ```
-    pub fn frames_in_flight(
+    pub unsafe fn frames_in_flight(
         &self,
         queue_family_index: u32,
         count: usize,
     ) -> Result<FramesInFlight> {
         let count = count.max(1);
-        let pool = self.create_command_pool(
-            &CommandPoolCreateInfo::new()
-                .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
-                .queue_family_index(queue_family_index),
-        )?;
+        // SAFETY: the caller promises the family; the pool is not protected.
+        let pool = unsafe {
+            self.create_command_pool(
+                &CommandPoolCreateInfo::new()
+                    .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
+                    .queue_family_index(queue_family_index),
+            )
+        }?;
         let buffers = self.allocate_command_buffers(
             &pool,
             &CommandBufferAllocateInfo::new(&pool)
@@ -75,7 +86,8 @@ impl Device {
         let signalled = FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED);
         let frames = buffers
             .into_iter()
-            .map(|cb| Ok((cb, self.create_fence(&signalled)?)))
+            // SAFETY: no export info is chained, so no handle type needs support.
+            .map(|cb| Ok((cb, unsafe { self.create_fence(&signalled) }?)))
             .collect::<Result<Vec<_>>>()?;
         Ok(FramesInFlight { frames, next: 0 })
     }
@@ -161,7 +173,13 @@ impl Frame<'_> {
     /// `VUID-vkQueueSubmit-pCommandBuffers-00070` if the command buffer was not
     /// recorded and ended since its last submission (a one-time-submit command buffer
     /// is no longer executable once submitted).
-    pub fn submit(
+    ///
+    /// # Safety
+    ///
+    /// The caller upholds the rules [`Queue::queue_submit`]'s `# Safety` section
+    /// lists for a submission of this frame's command buffer with `waits` and
+    /// `signals` (what was recorded into it, and the semaphores' states).
+    pub unsafe fn submit(
         self,
         queue: &Queue,
         waits: &[(&Semaphore, vk::PipelineStageFlags)],
@@ -192,10 +210,13 @@ impl Frame<'_> {
         let device = self.commands.device();
         // The fence was seen signalled by `next_frame`, so the reset cannot orphan a wait.
         device.reset_fences(&[self.fence])?;
-        if let Err(e) = queue.queue_submit(&[info], self.fence) {
+        // SAFETY: the caller upholds the rules of this submission.
+        if let Err(e) = unsafe { queue.queue_submit(&[info], self.fence) } {
             // An empty batch signals the fence once the queue's earlier work is done,
             // so the next wait for this frame does not hang on a failed submission.
-            let _ = queue.queue_submit(&[], self.fence);
+            // SAFETY: an empty batch has no command buffer or semaphore for a rule to
+            // be about.
+            let _ = unsafe { queue.queue_submit(&[], self.fence) };
             return Err(e);
         }
         // The submission holds its semaphores; the frame needs a new recording.

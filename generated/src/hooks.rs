@@ -1616,6 +1616,33 @@ pub(crate) fn create_instance_scope(
     }
 }
 
+/// Every extension an instance enables is part of the emitted API: an extension
+/// tuff does not emit adds rules to the commands tuff does emit (a feature that
+/// relaxes or changes what a struct may hold), and no safe method checks those.
+pub(crate) fn instance_extensions_emitted(create_info: &InstanceCreateInfo<'_>) -> Result<()> {
+    extensions_emitted(&create_info.enabled_extensions())
+}
+
+/// Every extension a device enables is part of the emitted API (see
+/// [`instance_extensions_emitted`]).
+pub(crate) fn device_extensions_emitted(create_info: &DeviceCreateInfo<'_>) -> Result<()> {
+    extensions_emitted(&create_info.enabled_extensions())
+}
+
+fn extensions_emitted(names: &[&core::ffi::CStr]) -> Result<()> {
+    for name in names {
+        let known = name
+            .to_str()
+            .is_ok_and(|n| crate::api_info::EXTENSIONS.contains(&n));
+        if !known {
+            return Err(Error::ExtensionNotEmitted(
+                name.to_string_lossy().into_owned(),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The scope of `vkCreateDevice`'s checks: the instance's, with the device
 /// extensions it enables.
 pub(crate) fn create_device_scope<'p>(

@@ -28,6 +28,11 @@ pub enum Error {
     /// the extension.
     #[error("extension {0} is not enabled on this instance or device")]
     ExtensionNotEnabled(&'static str),
+    /// A safe `create_instance` or `create_device` was asked to enable an extension
+    /// that tuff does not emit. Its rules would then apply to calls no safe method
+    /// checks them on; the `unsafe` `_unchecked` constructor enables it.
+    #[error("extension {0} is outside tuff's emitted API (`api_info::EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it")]
+    ExtensionNotEmitted(String),
     /// A mapped-memory access did not fit in the mapping, or its flush or
     /// invalidate range could not be formed.
     #[error("mapped memory: {0}")]

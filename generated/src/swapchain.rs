@@ -21,14 +21,20 @@ impl SwapchainKHR {
     /// Fails with the rule's VUID when `surface` is not the one this swapchain
     /// presents to (`VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`).
     ///
+    /// # Safety
+    ///
+    /// The caller upholds the rules [`Device::create_swapchain_khr`]'s `# Safety`
+    /// section lists for `create_info`.
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device, surface: &tuff::SurfaceKHR, old: &tuff::SwapchainKHR,
     /// #      info: &tuff::SwapchainCreateInfoKHR) -> tuff::Result<()> {
-    /// let swapchain = old.recreate(device, surface, info)?;
+    /// // SAFETY: `info` was made from the surface's current capabilities.
+    /// let swapchain = unsafe { old.recreate(device, surface, info) }?;
     /// drop(swapchain);
     /// # Ok(()) }
     /// ```
-    pub fn recreate<'a>(
+    pub unsafe fn recreate<'a>(
         &'a self,
         device: &Device,
         surface: &SurfaceKHR,
@@ -47,6 +53,8 @@ impl SwapchainKHR {
             });
         }
         let info = (*create_info).old_swapchain(Some(self));
-        device.create_swapchain_khr(surface, &info)
+        // SAFETY: the caller upholds the rules of `create_info`; `oldSwapchain` is this
+        // live swapchain of the same device and surface (checked above).
+        unsafe { device.create_swapchain_khr(surface, &info) }
     }
 }

@@ -150,7 +150,11 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans, &config);
     let mut report = report::build(&model, &validity, &plans.records);
-    report.add_methods(&plans.methods, &scene_calls(&opts.config, &config));
+    report.add_methods(
+        &plans.methods,
+        &plans.safety,
+        &scene_calls(&opts.config, &config),
+    );
     let mut files = emission.files;
     files.extend(report::render(&report));
     Ok(Generation {

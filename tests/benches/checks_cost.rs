@@ -13,6 +13,11 @@
 //! layer's message log must stay empty: every call here is valid.
 //!
 //! Run with `cargo bench -p tuff-tests --bench checks_cost`.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 
 #[path = "../common/pipelines.rs"]
 mod pipelines;
@@ -52,13 +57,14 @@ fn bench(validation: bool) -> Bench {
     let target = s.color_target(64, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(&s, &target);
     let d = &s.device;
-    let pool = d
-        .create_command_pool(
+    let pool = unsafe {
+        d.create_command_pool(
             &tuff::CommandPoolCreateInfo::new()
                 .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
                 .queue_family_index(s.family),
         )
-        .expect("pool");
+    }
+    .expect("pool");
     let mut cbs = d
         .allocate_command_buffers(
             &pool,
@@ -73,10 +79,7 @@ fn bench(validation: bool) -> Bench {
             .expect("end");
     }
     let fences = (0..SUBMITS)
-        .map(|_| {
-            d.create_fence(&tuff::FenceCreateInfo::new())
-                .expect("fence")
-        })
+        .map(|_| unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence"))
         .collect();
     Bench {
         s,
@@ -151,17 +154,16 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
     let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(AREA)
         .clear_values(&clear);
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
-        .expect("bind");
-    rec.cmd_set_viewport(0, &[VIEWPORT]).expect("viewport");
+    let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+    unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline) }.expect("bind");
+    unsafe { rec.cmd_set_viewport(0, &[VIEWPORT]) }.expect("viewport");
     rec.cmd_set_scissor(0, &[AREA]).expect("scissor");
     let stage = vk::ShaderStageFlags::FRAGMENT;
     for i in 0..DRAWS {
         if checked {
             rec.cmd_push_constants(layout, stage, 0, black_box(&PUSH))
                 .expect("recorded");
-            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
+            unsafe { rec.cmd_draw(36, 1, black_box(i), 0) }.expect("recorded");
         } else {
             // SAFETY: the same valid calls as the checked branch makes.
             unsafe {
@@ -172,7 +174,7 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
             }
         }
     }
-    rec.cmd_end_render_pass().end().expect("end");
+    unsafe { rec.cmd_end_render_pass() }.end().expect("end");
 }
 
 fn buffer_info() -> vk::BufferCreateInfo<'static> {
@@ -199,7 +201,7 @@ fn buffers_tuff(b: &Bench, checked: bool) {
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
     for _ in 0..BUFFERS {
         let buffer = if checked {
-            b.s.device.create_buffer(black_box(&info))
+            unsafe { b.s.device.create_buffer(black_box(&info)) }
         } else {
             // SAFETY: the same valid create info as the checked branch passes.
             unsafe { b.s.device.create_buffer_unchecked(black_box(&info)) }
@@ -225,7 +227,7 @@ fn submits_tuff(b: &Bench, checked: bool) {
         let cbs = tuff::HandleSlice::new(&one);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
         let r = if checked {
-            b.s.queue.queue_submit(&submit, fence)
+            unsafe { b.s.queue.queue_submit(&submit, fence) }
         } else {
             // SAFETY: as in `submits_ash`.
             unsafe { b.s.queue.queue_submit_unchecked(&submit, fence) }

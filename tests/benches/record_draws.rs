@@ -7,6 +7,11 @@
 //!
 //! Run with `cargo bench -p tuff-tests --bench record_draws`, and with
 //! `--features multi_thread` for `Vrc` = `Arc` and real locks.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 
 #[path = "../common/pipelines.rs"]
 mod pipelines;
@@ -36,9 +41,10 @@ fn main() {
     // scissor.
     let p = pipelines::pipelines(&s, &target);
     let (layout, pipeline) = (&p.graphics_layout, &p.graphics);
-    let pool = d
-        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-        .expect("pool");
+    let pool = unsafe {
+        d.create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+    }
+    .expect("pool");
     let mut cbs = d
         .allocate_command_buffers(
             &pool,
@@ -101,17 +107,16 @@ fn main() {
         let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             .clear_values(&clear);
-        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
-            .expect("bind");
-        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+        let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline) }.expect("bind");
+        unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("viewport");
         rec.cmd_set_scissor(0, &[area]).expect("scissor");
         for i in 0..DRAWS {
             rec.cmd_push_constants(layout, vk::ShaderStageFlags::FRAGMENT, 0, black_box(&push))
                 .expect("recorded");
-            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
+            unsafe { rec.cmd_draw(36, 1, black_box(i), 0) }.expect("recorded");
         }
-        rec.cmd_end_render_pass().end().expect("end");
+        unsafe { rec.cmd_end_render_pass() }.end().expect("end");
     };
 
     let mut ash_ns = Vec::new();

@@ -2,6 +2,11 @@
 //! template, made through the wrappers from the committed SPIR-V, and a recording
 //! that uses them all: a draw into a color target and a dispatch whose output the
 //! host can read back.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 #![allow(dead_code)]
 
 use crate::tuff_setup::{ColorTarget, Setup};
@@ -40,14 +45,13 @@ pub fn host_buffer(
     usage: vk::BufferUsageFlags,
 ) -> (tuff::Buffer, tuff::DeviceMemory) {
     let d = &s.device;
-    let buffer = d
-        .create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(usage))
+    let buffer = unsafe { d.create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(usage)) }
         .expect("buffer");
     let reqs = d
         .get_buffer_memory_requirements(&buffer)
         .expect("memory requirements");
-    let memory = d
-        .allocate_memory(
+    let memory = unsafe {
+        d.allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(reqs.size)
                 .memory_type_index(s.memory_type(
@@ -55,8 +59,9 @@ pub fn host_buffer(
                     vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
                 )),
         )
-        .expect("memory");
-    d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
+    }
+    .expect("memory");
+    unsafe { d.bind_buffer_memory(&buffer, &memory, 0) }.expect("bind");
     (buffer, memory)
 }
 
@@ -156,15 +161,18 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
         offset: 0,
         size: 16,
     }];
-    let graphics_layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
-        .expect("graphics layout");
+    let graphics_layout = unsafe {
+        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+    }
+    .expect("graphics layout");
     let stages = test_stages(&vert, &frag);
-    let (mut graphics, r) =
-        with_graphics_info(&stages, &graphics_layout, &target.render_pass, |info| {
-            d.create_graphics_pipelines(None, &[info])
-        })
-        .expect("graphics pipeline");
+    let (mut graphics, r) = with_graphics_info(
+        &stages,
+        &graphics_layout,
+        &target.render_pass,
+        |info| unsafe { d.create_graphics_pipelines(None, &[info]) },
+    )
+    .expect("graphics pipeline");
     assert_eq!(r, vk::Result::SUCCESS);
     let graphics = graphics.pop().expect("one pipeline");
 
@@ -180,24 +188,27 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::COMPUTE),
     ];
-    let compute_set_layout = d
-        .create_descriptor_set_layout(
+    let compute_set_layout = unsafe {
+        d.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-        .expect("compute set layout");
+    }
+    .expect("compute set layout");
     let set_layouts = tuff::HandleSlice::new(&[&compute_set_layout]);
-    let compute_layout = d
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
-        .expect("compute layout");
+    let compute_layout = unsafe {
+        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+    }
+    .expect("compute layout");
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&comp));
-    let (mut compute, r) = d
-        .create_compute_pipelines(
+    let (mut compute, r) = unsafe {
+        d.create_compute_pipelines(
             None,
             &[tuff::ComputePipelineCreateInfo::new(stage, &compute_layout)],
         )
-        .expect("compute pipeline");
+    }
+    .expect("compute pipeline");
     assert_eq!(r, vk::Result::SUCCESS);
     let compute = compute.pop().expect("one pipeline");
 
@@ -211,21 +222,23 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
             descriptor_count: 1,
         },
     ];
-    let descriptor_pool = d
-        .create_descriptor_pool(
+    let descriptor_pool = unsafe {
+        d.create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(1)
                 .pool_sizes(&sizes),
         )
-        .expect("descriptor pool");
-    let set = d
-        .allocate_descriptor_sets(
+    }
+    .expect("descriptor pool");
+    let set = unsafe {
+        d.allocate_descriptor_sets(
             &descriptor_pool,
             &tuff::DescriptorSetAllocateInfo::new(&descriptor_pool).set_layouts(&set_layouts),
         )
-        .expect("descriptor set")
-        .pop()
-        .expect("one set");
+    }
+    .expect("descriptor set")
+    .pop()
+    .expect("one set");
 
     let uniform = host_buffer(s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
     access_memory(s, &uniform.1, 4, Some(&FACTOR.to_le_bytes()));
@@ -251,13 +264,14 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
             stride,
         },
     ];
-    let template = d
-        .create_descriptor_update_template(
+    let template = unsafe {
+        d.create_descriptor_update_template(
             &tuff::DescriptorUpdateTemplateCreateInfo::new(&compute_set_layout, &compute_layout)
                 .template_type(vk::DescriptorUpdateTemplateType::DESCRIPTOR_SET)
                 .descriptor_update_entries(&entries),
         )
-        .expect("descriptor update template");
+    }
+    .expect("descriptor update template");
     let data = [
         vk::DescriptorBufferInfo {
             buffer: *uniform.0,
@@ -312,25 +326,29 @@ impl Pipelines {
                 height: size,
             },
         };
-        let mut rec = rec.cmd_begin_render_pass(
-            &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-                .render_area(area)
-                .clear_values(&clear),
-            vk::SubpassContents::INLINE,
-        );
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics)
+        let mut rec = unsafe {
+            rec.cmd_begin_render_pass(
+                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                    .render_area(area)
+                    .clear_values(&clear),
+                vk::SubpassContents::INLINE,
+            )
+        };
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics) }
             .expect("recorded");
-        rec.cmd_set_viewport(
-            0,
-            &[vk::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: size as f32,
-                height: size as f32,
-                min_depth: 0.0,
-                max_depth: 1.0,
-            }],
-        )
+        unsafe {
+            rec.cmd_set_viewport(
+                0,
+                &[vk::Viewport {
+                    x: 0.0,
+                    y: 0.0,
+                    width: size as f32,
+                    height: size as f32,
+                    min_depth: 0.0,
+                    max_depth: 1.0,
+                }],
+            )
+        }
         .expect("recorded");
         rec.cmd_set_scissor(0, &[area]).expect("recorded");
         let color: Vec<u8> = COLOR.iter().flat_map(|c| c.to_le_bytes()).collect();
@@ -341,8 +359,8 @@ impl Pipelines {
             &color,
         )
         .expect("recorded");
-        rec.cmd_draw(3, 1, 0, 0).expect("recorded");
-        let mut rec = rec.cmd_end_render_pass();
+        unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("recorded");
+        let mut rec = unsafe { rec.cmd_end_render_pass() };
         if let Some(buffer) = readback {
             let to_transfer = [tuff::ImageMemoryBarrier::new(&target.image)
                 .src_access_mask(vk::AccessFlags::COLOR_ATTACHMENT_WRITE)
@@ -358,46 +376,52 @@ impl Pipelines {
                     base_array_layer: 0,
                     layer_count: 1,
                 })];
-            rec.cmd_pipeline_barrier(
-                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
-                vk::PipelineStageFlags::TRANSFER,
-                vk::DependencyFlags::empty(),
-                &[],
-                &[],
-                &to_transfer,
-            );
-            rec.cmd_copy_image_to_buffer(
-                &target.image,
-                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                buffer,
-                &[vk::BufferImageCopy {
-                    image_subresource: vk::ImageSubresourceLayers {
-                        aspect_mask: vk::ImageAspectFlags::COLOR,
-                        mip_level: 0,
-                        base_array_layer: 0,
-                        layer_count: 1,
-                    },
-                    image_extent: vk::Extent3D {
-                        width: 1,
-                        height: 1,
-                        depth: 1,
-                    },
-                    ..Default::default()
-                }],
-            )
+            unsafe {
+                rec.cmd_pipeline_barrier(
+                    vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+                    vk::PipelineStageFlags::TRANSFER,
+                    vk::DependencyFlags::empty(),
+                    &[],
+                    &[],
+                    &to_transfer,
+                )
+            };
+            unsafe {
+                rec.cmd_copy_image_to_buffer(
+                    &target.image,
+                    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                    buffer,
+                    &[vk::BufferImageCopy {
+                        image_subresource: vk::ImageSubresourceLayers {
+                            aspect_mask: vk::ImageAspectFlags::COLOR,
+                            mip_level: 0,
+                            base_array_layer: 0,
+                            layer_count: 1,
+                        },
+                        image_extent: vk::Extent3D {
+                            width: 1,
+                            height: 1,
+                            depth: 1,
+                        },
+                        ..Default::default()
+                    }],
+                )
+            }
             .expect("recorded");
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute) }
             .expect("recorded");
-        rec.cmd_bind_descriptor_sets(
-            vk::PipelineBindPoint::COMPUTE,
-            &self.compute_layout,
-            0,
-            &[&self.set],
-            &[],
-        )
+        unsafe {
+            rec.cmd_bind_descriptor_sets(
+                vk::PipelineBindPoint::COMPUTE,
+                &self.compute_layout,
+                0,
+                &[&self.set],
+                &[],
+            )
+        }
         .expect("recorded");
-        rec.cmd_dispatch(1, 1, 1).expect("recorded");
+        unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("recorded");
         rec
     }
 }
@@ -416,30 +440,33 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::COMPUTE)];
-    let layout = d
-        .create_descriptor_set_layout(
+    let layout = unsafe {
+        d.create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-        .expect("set layout");
+    }
+    .expect("set layout");
     let sizes = [vk::DescriptorPoolSize {
         ty: vk::DescriptorType::UNIFORM_BUFFER,
         descriptor_count: 1,
     }];
-    let pool = d
-        .create_descriptor_pool(
+    let pool = unsafe {
+        d.create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(1)
                 .pool_sizes(&sizes),
         )
-        .expect("descriptor pool");
+    }
+    .expect("descriptor pool");
     let layouts = tuff::HandleSlice::new(&[&layout]);
-    let set = d
-        .allocate_descriptor_sets(
+    let set = unsafe {
+        d.allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-        .expect("descriptor set")
-        .pop()
-        .expect("one set");
+    }
+    .expect("descriptor set")
+    .pop()
+    .expect("one set");
     UniformSet { set, pool, layout }
 }

@@ -1,4 +1,9 @@
 //! An instance, device and queue made entirely through the generated wrappers.
+//!
+//! SAFETY of the `unsafe` blocks around checked methods: such a method is `unsafe`
+//! because it leaves rules to its caller (its `# Safety` section lists them). The
+//! calls here keep every rule so listed and break, on purpose, only rules the method
+//! checks; that one argument covers every such block in this file.
 #![allow(dead_code)]
 
 use tuff::vk;
@@ -94,8 +99,7 @@ fn setup_full(
             .enabled_layer_names(&layers)
             .push_next(&mut messenger_info);
     }
-    let instance = entry
-        .create_instance(&info)
+    let instance = unsafe { entry.create_instance(&info) }
         .expect("cannot create an instance (is VK_LAYER_KHRONOS_validation installed?)");
     let messenger = validation.then(|| {
         instance
@@ -151,8 +155,8 @@ fn setup_full(
     } else {
         info.push_next(&mut features13).push_next(&mut features12)
     };
-    let device = physical.create_device(&info).expect("create device");
-    let queue = device.get_device_queue(family, 0);
+    let device = unsafe { physical.create_device(&info) }.expect("create device");
+    let queue = unsafe { device.get_device_queue(family, 0) };
     let memory_types = physical.get_physical_device_memory_properties();
     Setup {
         queue,
@@ -187,14 +191,14 @@ impl Setup {
         &self,
         level: vk::CommandBufferLevel,
     ) -> (tuff::CommandPool, tuff::CommandBuffer) {
-        let pool = self
-            .device
-            .create_command_pool(
+        let pool = unsafe {
+            self.device.create_command_pool(
                 &tuff::CommandPoolCreateInfo::new()
                     .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
                     .queue_family_index(self.family),
             )
-            .expect("pool");
+        }
+        .expect("pool");
         let cb = self
             .device
             .allocate_command_buffers(
@@ -224,27 +228,26 @@ impl Setup {
     /// Allocates memory for `image` and binds it.
     pub fn bind_image(&self, image: &tuff::Image) -> tuff::DeviceMemory {
         let d = &self.device;
-        let reqs = d
-            .get_image_memory_requirements(image)
-            .expect("memory requirements");
-        let memory = d
-            .allocate_memory(
+        let reqs = unsafe { d.get_image_memory_requirements(image) }.expect("memory requirements");
+        let memory = unsafe {
+            d.allocate_memory(
                 &tuff::MemoryAllocateInfo::new()
                     .allocation_size(reqs.size)
                     .memory_type_index(
                         self.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
                     ),
             )
-            .expect("image memory");
-        d.bind_image_memory(image, &memory, 0).expect("bind image");
+        }
+        .expect("image memory");
+        unsafe { d.bind_image_memory(image, &memory, 0) }.expect("bind image");
         memory
     }
 
     /// A color target of `size` x `size` pixels; `usage` is added to COLOR_ATTACHMENT.
     pub fn color_target(&self, size: u32, usage: vk::ImageUsageFlags) -> ColorTarget {
         let d = &self.device;
-        let image = d
-            .create_image(
+        let image = unsafe {
+            d.create_image(
                 &tuff::ImageCreateInfo::new()
                     .image_type(vk::ImageType::TYPE_2D)
                     .format(vk::Format::R8G8B8A8_UNORM)
@@ -258,10 +261,11 @@ impl Setup {
                     .samples(vk::SampleCountFlags::TYPE_1)
                     .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
             )
-            .expect("image");
+        }
+        .expect("image");
         let memory = self.bind_image(&image);
-        let view = d
-            .create_image_view(
+        let view = unsafe {
+            d.create_image_view(
                 &tuff::ImageViewCreateInfo::new(&image)
                     .view_type(vk::ImageViewType::TYPE_2D)
                     .format(vk::Format::R8G8B8A8_UNORM)
@@ -273,7 +277,8 @@ impl Setup {
                         layer_count: 1,
                     }),
             )
-            .expect("image view");
+        }
+        .expect("image view");
         let attachments = [vk::AttachmentDescription {
             format: vk::Format::R8G8B8A8_UNORM,
             samples: vk::SampleCountFlags::TYPE_1,
@@ -292,23 +297,25 @@ impl Setup {
         let subpasses = [tuff::SubpassDescription::new()
             .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
             .color_attachments(&color)];
-        let render_pass = d
-            .create_render_pass(
+        let render_pass = unsafe {
+            d.create_render_pass(
                 &tuff::RenderPassCreateInfo::new()
                     .attachments(&attachments)
                     .subpasses(&subpasses),
             )
-            .expect("render pass");
+        }
+        .expect("render pass");
         let views = tuff::HandleSlice::new(&[&view]);
-        let framebuffer = d
-            .create_framebuffer(
+        let framebuffer = unsafe {
+            d.create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&render_pass)
                     .attachments(&views)
                     .width(size)
                     .height(size)
                     .layers(1),
             )
-            .expect("framebuffer");
+        }
+        .expect("framebuffer");
         ColorTarget {
             image,
             memory,

@@ -40,9 +40,13 @@ impl Bezier {
             .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::VERTEX)];
-        let set_layout = d.create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-        )?;
+        // SAFETY: a few bindings of distinct numbers, of basic types, in the stages that use
+        // them, within every device's minimum limits.
+        let set_layout = unsafe {
+            d.create_descriptor_set_layout(
+                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+            )
+        }?;
         let layout = pipeline::layout(
             gpu,
             &[&set_layout],
@@ -72,39 +76,52 @@ impl Bezier {
                 depth: true,
             },
         )?;
-        let pool = d.create_descriptor_pool(
-            &tuff::DescriptorPoolCreateInfo::new()
-                .max_sets(1)
-                .pool_sizes(&[vk::DescriptorPoolSize {
-                    ty: vk::DescriptorType::STORAGE_BUFFER,
-                    descriptor_count: 1,
-                }]),
-        )?;
+        // SAFETY: a pool of a few sets of the types the layouts use, no flags.
+        let pool = unsafe {
+            d.create_descriptor_pool(
+                &tuff::DescriptorPoolCreateInfo::new()
+                    .max_sets(1)
+                    .pool_sizes(&[vk::DescriptorPoolSize {
+                        ty: vk::DescriptorType::STORAGE_BUFFER,
+                        descriptor_count: 1,
+                    }]),
+            )
+        }?;
         let layouts = tuff::HandleSlice::new(&[&set_layout]);
-        let set = d
-            .allocate_descriptor_sets(
+        // SAFETY: the pool was made with room for every set the scene allocates, of these types.
+        let set = unsafe {
+            d.allocate_descriptor_sets(
                 &pool,
                 &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-            )?
-            .pop()
-            .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
+            )
+        }?
+        .pop()
+        .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
         // vec4 per point: std430 pads a vec3 array to 16 bytes anyway.
         let points: Vec<[f32; 4]> = CONTROL_POINTS
             .iter()
             .map(|p| [p[0], p[1], p[2], 1.0])
             .collect();
-        let points = d.create_buffer_with(vk::BufferUsageFlags::STORAGE_BUFFER, &points, a)?;
+        let points =
+            // SAFETY: a small buffer, far below any device's maxBufferSize.
+            unsafe { d.create_buffer_with(vk::BufferUsageFlags::STORAGE_BUFFER, &points, a) }?;
         let index_data: Vec<u32> = PATCHES.iter().flatten().map(|&i| u32::from(i)).collect();
-        let indices = d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a)?;
+        let indices =
+            // SAFETY: a small buffer, far below any device's maxBufferSize.
+            unsafe { d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a) }?;
         let info = [tuff::DescriptorBufferInfo::new()
             .buffer(Some(&points))
             .range(vk::WHOLE_SIZE)];
-        d.update_descriptor_sets(
-            &[tuff::WriteDescriptorSet::new(&set)
-                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                .buffer_info(&info)],
-            &[],
-        )?;
+        // SAFETY: each write names a binding of the set's layout with its type and count, and
+        // a live buffer range inside the buffer with the matching usage.
+        unsafe {
+            d.update_descriptor_sets(
+                &[tuff::WriteDescriptorSet::new(&set)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .buffer_info(&info)],
+                &[],
+            )
+        }?;
         Ok(Bezier {
             options,
             pipeline,
@@ -131,21 +148,32 @@ impl Scene for Bezier {
             view.time,
             view.extent,
         );
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_descriptor_sets(
-            vk::PipelineBindPoint::GRAPHICS,
-            &self.layout,
-            0,
-            &[&self.set],
-            &[],
-        )?;
-        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
+        // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
+        // render pass.
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
+        // SAFETY: the sets were allocated with the layout's set layouts and written before
+        // recording, and the pipeline's bind point and layout match them.
+        unsafe {
+            rec.cmd_bind_descriptor_sets(
+                vk::PipelineBindPoint::GRAPHICS,
+                &self.layout,
+                0,
+                &[&self.set],
+                &[],
+            )
+        }?;
+        // SAFETY: the index buffer is the scene's own, bound at offset 0 of its allocation,
+        // which is aligned for any index type (VUID-vkCmdBindIndexBuffer-offset-00432).
+        unsafe { rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32) }?;
         rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params))?;
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and
         // handle went missing; the speckle test caught it).
         for patch in 0..PATCHES.len() as u32 {
-            rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0)?;
+            // SAFETY: the pipeline bound above was made for this render pass and subpass with
+            // this layout; its sets, vertex and index buffers and dynamic viewport and scissor
+            // are bound and set, and every index is within the vertex buffer.
+            unsafe { rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0) }?;
         }
         Ok(())
     }

@@ -37,9 +37,13 @@ impl Teapots {
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT)];
-        let set_layout = d.create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-        )?;
+        // SAFETY: a few bindings of distinct numbers, of basic types, in the stages that use
+        // them, within every device's minimum limits.
+        let set_layout = unsafe {
+            d.create_descriptor_set_layout(
+                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+            )
+        }?;
         let pipeline_layout = pipeline::layout(
             gpu,
             &[&set_layout],
@@ -64,19 +68,25 @@ impl Teapots {
                 depth: true,
             },
         )?;
-        let pool = d.create_descriptor_pool(
-            &tuff::DescriptorPoolCreateInfo::new()
-                .max_sets(FRAMES_IN_FLIGHT as u32)
-                .pool_sizes(&[vk::DescriptorPoolSize {
-                    ty: vk::DescriptorType::UNIFORM_BUFFER,
-                    descriptor_count: FRAMES_IN_FLIGHT as u32,
-                }]),
-        )?;
+        // SAFETY: a pool of a few sets of the types the layouts use, no flags.
+        let pool = unsafe {
+            d.create_descriptor_pool(
+                &tuff::DescriptorPoolCreateInfo::new()
+                    .max_sets(FRAMES_IN_FLIGHT as u32)
+                    .pool_sizes(&[vk::DescriptorPoolSize {
+                        ty: vk::DescriptorType::UNIFORM_BUFFER,
+                        descriptor_count: FRAMES_IN_FLIGHT as u32,
+                    }]),
+            )
+        }?;
         let layouts = tuff::HandleSlice::new(&[&set_layout; FRAMES_IN_FLIGHT]);
-        let sets = d.allocate_descriptor_sets(
-            &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-        )?;
+        // SAFETY: the pool was made with room for every set the scene allocates, of these types.
+        let sets = unsafe {
+            d.allocate_descriptor_sets(
+                &pool,
+                &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            )
+        }?;
         let size = std::mem::size_of::<CameraBlock>() as u64;
         let uniforms = (0..FRAMES_IN_FLIGHT)
             .map(|_| gpu.buffer(size, vk::BufferUsageFlags::UNIFORM_BUFFER, Upload))
@@ -85,16 +95,24 @@ impl Teapots {
             let info = [tuff::DescriptorBufferInfo::new()
                 .buffer(Some(buffer))
                 .range(size)];
-            d.update_descriptor_sets(
-                &[tuff::WriteDescriptorSet::new(set)
-                    .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
-                    .buffer_info(&info)],
-                &[],
-            )?;
+            // SAFETY: each write names a binding of the set's layout with its type and count,
+            // and a live buffer range inside the buffer with the matching usage.
+            unsafe {
+                d.update_descriptor_sets(
+                    &[tuff::WriteDescriptorSet::new(set)
+                        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+                        .buffer_info(&info)],
+                    &[],
+                )
+            }?;
         }
         let (flat, index_data) = mesh_data();
-        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &flat, a)?;
-        let indices = d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a)?;
+        let vertices =
+            // SAFETY: a small buffer, far below any device's maxBufferSize.
+            unsafe { d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &flat, a) }?;
+        let indices =
+            // SAFETY: a small buffer, far below any device's maxBufferSize.
+            unsafe { d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a) }?;
         Ok(Teapots {
             layout_data: layout,
             pipeline,
@@ -124,16 +142,25 @@ impl Scene for Teapots {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         view: &View,
     ) -> tuff::Result<()> {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_descriptor_sets(
-            vk::PipelineBindPoint::GRAPHICS,
-            &self.pipeline_layout,
-            0,
-            &[&self.sets[view.slot]],
-            &[],
-        )?;
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
-        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
+        // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
+        // render pass.
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
+        // SAFETY: the sets were allocated with the layout's set layouts and written before
+        // recording, and the pipeline's bind point and layout match them.
+        unsafe {
+            rec.cmd_bind_descriptor_sets(
+                vk::PipelineBindPoint::GRAPHICS,
+                &self.pipeline_layout,
+                0,
+                &[&self.sets[view.slot]],
+                &[],
+            )
+        }?;
+        // SAFETY: one binding, well under maxVertexInputBindings, with a live buffer.
+        unsafe { rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]) }?;
+        // SAFETY: the index buffer is the scene's own, bound at offset 0 of its allocation,
+        // which is aligned for any index type (VUID-vkCmdBindIndexBuffer-offset-00432).
+        unsafe { rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32) }?;
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);
             rec.cmd_push_constants(
@@ -142,7 +169,10 @@ impl Scene for Teapots {
                 0,
                 bytemuck::bytes_of(&block),
             )?;
-            rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0)?;
+            // SAFETY: the pipeline bound above was made for this render pass and subpass with
+            // this layout; its sets, vertex and index buffers and dynamic viewport and scissor
+            // are bound and set, and every index is within the vertex buffer.
+            unsafe { rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0) }?;
         }
         Ok(())
     }

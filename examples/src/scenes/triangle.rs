@@ -57,7 +57,9 @@ impl Triangle {
                 depth: false,
             },
         )?;
-        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES, a)?;
+        let vertices =
+            // SAFETY: a small buffer, far below any device's maxBufferSize.
+            unsafe { d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES, a) }?;
         Ok(Triangle { pipeline, vertices })
     }
 }
@@ -74,9 +76,15 @@ impl Scene for Triangle {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         _view: &View,
     ) -> tuff::Result<()> {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
-        rec.cmd_draw(3, 1, 0, 0)?;
+        // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
+        // render pass.
+        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
+        // SAFETY: one binding, well under maxVertexInputBindings, with a live buffer.
+        unsafe { rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]) }?;
+        // SAFETY: the pipeline bound above was made for this render pass and subpass with this
+        // layout; its sets, vertex buffers and dynamic viewport and scissor are bound and set,
+        // and the shaders read only what they bind.
+        unsafe { rec.cmd_draw(3, 1, 0, 0) }?;
         Ok(())
     }
 }

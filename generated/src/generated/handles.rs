@@ -920,7 +920,8 @@ impl Device {
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// let before = device.live_object_count();
-    /// let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
+    /// // SAFETY: no export info is chained, so no handle type needs support.
+    /// let fence = unsafe { device.create_fence(&tuff::FenceCreateInfo::new()) }?;
     /// assert_eq!(device.live_object_count(), before + 1);
     /// drop(fence);
     /// assert_eq!(device.live_object_count(), before);

@@ -792,6 +792,18 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             ),
         ),
     };
+    // Rules that apply, that no check enforces and no reviewed class covers make the
+    // method `unsafe`; its docs list them (`plan/safety.rs`).
+    let owned = all
+        .safety
+        .get(&plan.name)
+        .map_or(&[][..], |m| m.owned.as_slice());
+    let unsafe_kw = if owned.is_empty() {
+        unsafe_kw
+    } else {
+        quote!(unsafe)
+    };
+    let owned_doc = owned_rules_doc(owned, safety.is_empty());
     // No `-> ()`: a unit return is left out, as hand-written code would.
     let ret_arrow = if ret.to_string() == "()" {
         quote!()
@@ -799,7 +811,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         quote!(-> #ret)
     };
     let doc = format!(
-        "`{}`{safety}{}",
+        "`{}`{safety}{owned_doc}{}",
         plan.name,
         super::doc_rules(all, &plan.name)
     );
@@ -857,7 +869,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             } else {
                 format!(": {}, and those of the structs it takes", owned.join(", "))
             }
-        ) + &safety.replace("\n\n# Safety\n\n", " ");
+        ) + &safety.replace("\n\n# Safety\n\n", " ")
+            + if owned.is_empty() {
+                ""
+            } else {
+                " So does every rule the `# Safety` section of the checked method lists."
+            };
         // The scope is bound only when a check reads it.
         let uses_scope = checks.iter().any(crate::plan::checks::Check::uses_scope);
         let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
@@ -982,6 +999,23 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     };
     (impl_header(plan, cmd, &cfg), method, validator)
+}
+
+/// The `# Safety` text of a method whose caller owns `owned` (empty when it owns
+/// none), with the section's heading when `heading` says no other text gave it one.
+fn owned_rules_doc(owned: &[crate::plan::safety::Owned], heading: bool) -> String {
+    if owned.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from(if heading { "\n\n# Safety\n\n" } else { "\n\n" });
+    s.push_str(&format!(
+        "The caller upholds {} that no check of this method enforces (its command's and those of the structs it takes):\n",
+        if owned.len() == 1 { "the rule".to_owned() } else { format!("these {} rules", owned.len()) }
+    ));
+    for o in owned {
+        s.push_str(&format!("\n- `{}`: {}", o.vuid, o.text));
+    }
+    s
 }
 
 /// Whether a parameter or result type names the lifetime `'a`, which the method

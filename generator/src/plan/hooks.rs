@@ -131,7 +131,7 @@ const SECONDARY: &str = "checked (a secondary without SIMULTANEOUS_USE that is p
 const TIMELINE_VALUES: &str =
     "checks each batch gives one value per timeline semaphore it waits on or signals";
 const UNPROVEN: &str =
-    "checked in every build, but no test breaks it yet, so the report does not count it";
+    "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
 const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
 const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
 const QUERIES: &str = "checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride";
@@ -179,7 +179,7 @@ const IMAGE_LIMITS: &str = "checks the create info against its Image Creation Li
 const LAYOUT_LIMITS: &str = "checks the set layouts' recorded bindings, counted per kind in each stage and across all stages, against the device's limits (the update-after-bind ones from its Vulkan 1.2 properties), the set count against maxBoundDescriptorSets, and the push-constant ranges for a stage named twice";
 const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
-const SETS_UNPROVEN: &str = "checked in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
+const SETS_UNPROVEN: &str = "checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
 const VERTEX_BOUND: &str = "checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound)";
 const BUFFER_IMAGE_RANGE: &str = "checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size";
 const INDEX_BOUND: &str = "checks an index buffer is bound, which the recorder tracks";
@@ -1044,6 +1044,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateInstance",
+        check: call("hooks::instance_extensions_emitted", &["create_info"]),
         created: call("hooks::instance_created", &["self", "out", "create_info"]),
         error: call("presence::instance_error", &["self", "create_info", "r"]),
         scope: call("hooks::create_instance_scope", &["create_info"]),
@@ -1051,6 +1052,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateDevice",
+        check: call("hooks::device_extensions_emitted", &["create_info"]),
         created: call("hooks::device_created", &["self", "out", "create_info"]),
         error: call("presence::device_error", &["self", "create_info", "r"]),
         scope: call("hooks::create_device_scope", &["self", "create_info"]),

@@ -25,10 +25,13 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
         .iter()
         .map(|plan| {
             let mut seen: BTreeSet<String> = BTreeSet::new();
+            // `pAllocator` is always NULL: its struct's rules cannot apply.
             let mut todo: Vec<String> = model.commands[&plan.name]
                 .params
                 .iter()
-                .map(|p| p.type_name.clone())
+                .zip(&plan.params)
+                .filter(|(_, shape)| !matches!(shape, super::commands::Param::Allocator))
+                .map(|(p, _)| p.type_name.clone())
                 .collect();
             while let Some(t) = todo.pop() {
                 let Some(def) = model.types.get(&t) else {

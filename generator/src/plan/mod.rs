@@ -3,7 +3,7 @@
 //! members' shapes ([`shape`]); the dynamic checks of commands and structs
 //! ([`checks::Checker`]); the host synchronization of each call ([`sync`]); which
 //! structs can reach a handle ([`reach`]); the special cases of commands, in one
-//! table ([`hooks`]); and for every rule of the emitted API how
+//! table ([`hooks`]); which methods are safe ([`safety`]); and for every rule of the emitted API how
 //! it is settled ([`settle`]). Renderers (`emit`) and the report are functions of
 //! [`Plans`]; nothing here imports them.
 
@@ -13,6 +13,7 @@ pub mod hooks;
 pub mod methods;
 pub mod oracle;
 pub mod reach;
+pub mod safety;
 pub mod settle;
 pub mod shape;
 pub mod sync;
@@ -101,6 +102,8 @@ pub struct Plans<'c, 'm> {
     pub methods: Vec<methods::MethodRow>,
     /// For every rule of the emitted API, how it is settled.
     pub records: Vec<Record>,
+    /// Each method's safety, by command name.
+    pub safety: BTreeMap<String, safety::MethodSafety>,
     /// The same records by the item (command or struct) each rule belongs to.
     pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
 }
@@ -114,6 +117,7 @@ impl<'c, 'm> Plans<'c, 'm> {
         let oracle = oracle::cases(cx, &checker);
         let methods = methods::rows(cx, &ok);
         let records = settle::records(cx, &checker, &commands, &oracle);
+        let safety = safety::decide(cx, &methods, &records);
         let item_of: BTreeMap<&str, &str> = cx
             .validity
             .rules
@@ -136,6 +140,7 @@ impl<'c, 'm> Plans<'c, 'm> {
             oracle,
             methods,
             records,
+            safety,
             by_item,
         }
     }

@@ -326,24 +326,49 @@ fn methods_section(s: &mut String, r: &Report) {
     if r.methods.is_empty() {
         return;
     }
+    let safe = r.methods.iter().filter(|m| m.safe).count();
+    let scenes = r.methods.iter().filter(|m| m.scenes).count();
+    let scenes_safe = r.methods.iter().filter(|m| m.scenes && m.safe).count();
+    let _ = writeln!(
+        s,
+        "\n## Safe and `unsafe` methods\n\n\
+         A method is safe only when every rule that applies to a call of it (its command's \
+         own and those of every struct it can pass, through members and `pNext` chains) is \
+         enforced, statically or by a check its safe form always runs, or belongs to one of \
+         the reviewed classes below (`generator/src/plan/safety.rs`, `REVIEWED`). Any other \
+         method is `unsafe fn`, and its `# Safety` section lists the rules its caller owns, \
+         by VUID and text. Rules that the safe methods check but no oracle case proves yet \
+         count as enforced here and as left to the user in the tables above.\n\n\
+         Safe: {safe} of {} methods; {scenes_safe} of the {scenes} the scenes call.\n",
+        r.methods.len()
+    );
+    for c in &r.classes {
+        let _ = writeln!(
+            s,
+            "- **{}** ({} rules): {}.",
+            c.name,
+            c.rules.len(),
+            c.reason
+        );
+    }
     let _ = writeln!(
         s,
         "\n## Per method (emitted API)\n\n\
-         The rules that apply to a call of each safe method: its command's own and those \
-         of every struct it can pass (members and `pNext` chains), counted as in the \
-         stricter table. Every method listed is safe today and its `_unchecked` twin is \
-         `unsafe`; the last column is what a caller of the safe method still owns. The \
-         methods the scenes call come first.\n\n\
-         | Method | Scenes | Rules | Static | Dynamic | Left to the caller |\n\
-         |---|---|---|---|---|---|"
+         The rules that apply to a call of each method, counted as in the stricter table; \
+         the last column is what a caller owns (not enforced, in no reviewed class), which \
+         makes the method `unsafe` when it is not zero. The `_unchecked` twins are always \
+         `unsafe`. The methods the scenes call come first.\n\n\
+         | Method | Scenes | Safe | Rules | Static | Dynamic | Left to the user | Caller owns |\n\
+         |---|---|---|---|---|---|---|---|"
     );
     for m in &r.methods {
         let [n, st, dy, user] = m.counts;
         let scenes = if m.scenes { "yes" } else { "" };
+        let safe = if m.safe { "yes" } else { "`unsafe`" };
         let _ = writeln!(
             s,
-            "| `{}` | {scenes} | {n} | {st} | {dy} | {user} |",
-            m.method
+            "| `{}` | {scenes} | {safe} | {n} | {st} | {dy} | {user} | {} |",
+            m.method, m.owned
         );
     }
 }

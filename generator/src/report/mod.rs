@@ -95,6 +95,8 @@ pub struct Report<'a> {
     /// The rules that apply to each emitted method, tallied; empty unless
     /// [`Report::add_methods`] ran.
     pub methods: Vec<MethodTally>,
+    /// The reviewed classes with their rules; empty unless [`Report::add_methods`] ran.
+    pub classes: Vec<ClassTally>,
 }
 
 /// The rules that apply to one emitted method: its command's and those of every
@@ -107,6 +109,21 @@ pub struct MethodTally {
     pub scenes: bool,
     /// Rules that apply, statically solved, dynamically solved, left to the caller.
     pub counts: [usize; 4],
+    /// Whether the method is emitted safe (`plan/safety.rs`).
+    pub safe: bool,
+    /// Rules the caller of the method owns: not enforced, in no reviewed class.
+    pub owned: usize,
+}
+
+/// One reviewed class of rules a safe method may leave unchecked.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ClassTally {
+    /// Its name.
+    pub name: &'static str,
+    /// Why its rules cannot break memory safety through safe code.
+    pub reason: &'static str,
+    /// The rules in it that a safe method leaves unchecked.
+    pub rules: Vec<String>,
 }
 
 impl Report<'_> {
@@ -115,8 +132,25 @@ impl Report<'_> {
     pub fn add_methods(
         &mut self,
         rows: &[crate::plan::methods::MethodRow],
+        safety: &BTreeMap<String, crate::plan::safety::MethodSafety>,
         scene_calls: &std::collections::BTreeSet<String>,
     ) {
+        let mut classes: Vec<ClassTally> = crate::plan::safety::REVIEWED
+            .iter()
+            .map(|c| ClassTally {
+                name: c.name,
+                reason: c.reason,
+                rules: Vec::new(),
+            })
+            .collect();
+        for (vuid, class) in safety.values().flat_map(|m| &m.classed) {
+            classes[*class].rules.push(vuid.clone());
+        }
+        for c in &mut classes {
+            c.rules.sort();
+            c.rules.dedup();
+        }
+        self.classes = classes;
         let mut by_item: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
         for st in &self.settled {
             let counted = st.rule.emitted
@@ -145,10 +179,13 @@ impl Report<'_> {
                         _ => 3,
                     }] += 1;
                 }
+                let owned = safety.get(&row.command).map_or(0, |m| m.owned.len());
                 MethodTally {
                     method: row.method.clone(),
                     scenes: scene_calls.contains(&row.method),
                     counts,
+                    safe: owned == 0,
+                    owned,
                 }
             })
             .collect();
@@ -176,6 +213,7 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         unknown_records: Vec::new(),
         validity,
         methods: Vec::new(),
+        classes: Vec::new(),
     };
     let known: std::collections::BTreeSet<&str> =
         validity.rules.iter().map(|r| r.vuid.as_str()).collect();

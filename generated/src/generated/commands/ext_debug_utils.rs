@@ -32,7 +32,7 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] checks at run time: `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] checks at run time: `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_debug_utils_label_ext_unchecked<'a>(
         &mut self,
@@ -55,6 +55,13 @@ The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] chec
     }
     /**`vkCmdEndDebugUtilsLabelEXT`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01912`: There must be an outstanding `vkCmdBeginDebugUtilsLabelEXT` command prior to the `vkCmdEndDebugUtilsLabelEXT` on the queue that `commandBuffer` is submitted to
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01913`: If `commandBuffer` is a secondary command buffer, there must be an outstanding `vkCmdBeginDebugUtilsLabelEXT` command recorded to `commandBuffer` that has not previously been ended by a call to `vkCmdEndDebugUtilsLabelEXT`
+
 # Valid usage
 
 The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndDebugUtilsLabelEXT.html). Settled by the wrappers:
@@ -66,7 +73,7 @@ The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
+    pub unsafe fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         {
             let r = self.validate_cmd_end_debug_utils_label_ext();
             r?;
@@ -79,7 +86,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
         let fp = self
@@ -123,7 +130,7 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_insert_debug_utils_label_ext_unchecked<'a>(
         &mut self,
@@ -203,6 +210,13 @@ The caller upholds the rules that [`Self::create_debug_utils_messenger_ext`] che
     }
     /**`vkSubmitDebugUtilsMessageEXT`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591`: The `objectType` member of each element of `pCallbackData->pObjects` must not be `VK_OBJECT_TYPE_UNKNOWN`
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
+
 # Valid usage
 
 The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSubmitDebugUtilsMessageEXT.html). Settled by the wrappers:
@@ -215,7 +229,7 @@ The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn submit_debug_utils_message_ext<'a>(
+    pub unsafe fn submit_debug_utils_message_ext<'a>(
         &self,
         message_severity: vk::DebugUtilsMessageSeverityFlagsEXT,
         message_types: vk::DebugUtilsMessageTypeFlagsEXT,
@@ -244,7 +258,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] checks at run time: `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::submit_debug_utils_message_ext`] checks at run time: `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`, `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn submit_debug_utils_message_ext_unchecked<'a>(
         &self,
@@ -305,6 +319,12 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
     }
     /**`vkQueueEndDebugUtilsLabelEXT`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkQueueEndDebugUtilsLabelEXT-None-01911`: There must be an outstanding `vkQueueBeginDebugUtilsLabelEXT` command prior to the `vkQueueEndDebugUtilsLabelEXT` on the queue
+
 # Valid usage
 
 The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueEndDebugUtilsLabelEXT.html). Settled by the wrappers:
@@ -313,7 +333,7 @@ The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
+    pub unsafe fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
         let fp = self
             .parent()
             .ext()
@@ -360,6 +380,14 @@ The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://re
 impl Device {
     /**`vkSetDebugUtilsObjectNameEXT`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587`: `pNameInfo->objectType` must not be `VK_OBJECT_TYPE_UNKNOWN`
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588`: `pNameInfo->objectHandle` must not be VK_NULL_HANDLE
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
+
 # Valid usage
 
 The rules are on [`vkSetDebugUtilsObjectNameEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectNameEXT.html). Settled by the wrappers:
@@ -369,7 +397,7 @@ The rules are on [`vkSetDebugUtilsObjectNameEXT`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn set_debug_utils_object_name_ext<'a>(
+    pub unsafe fn set_debug_utils_object_name_ext<'a>(
         &self,
         name_info: &DebugUtilsObjectNameInfoEXT<'a>,
     ) -> Result<()> {

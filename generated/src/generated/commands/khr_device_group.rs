@@ -6,6 +6,19 @@ use super::*;
 impl Device {
     /**`vkAcquireNextImage2KHR`
 
+# Safety
+
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkAcquireNextImage2KHR-surface-07784`: If forward progress cannot be guaranteed for the `surface` used to create `swapchain`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
+- `VUID-VkAcquireNextImageInfoKHR-swapchain-01675`: `swapchain` must not be in the retired state
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-01288`: If `semaphore` is not VK_NULL_HANDLE it must be unsignaled
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-01781`: If `semaphore` is not VK_NULL_HANDLE it must not have any uncompleted signal or wait operations pending
+- `VUID-VkAcquireNextImageInfoKHR-fence-01289`: If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-01782`: `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
+- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01290`: `deviceMask` must be a valid device mask
+- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01291`: `deviceMask` must not be zero
+
 # Valid usage
 
 The rules are on [`vkAcquireNextImage2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImage2KHR.html). Settled by the wrappers:
@@ -16,7 +29,7 @@ The rules are on [`vkAcquireNextImage2KHR`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn acquire_next_image2_khr<'a>(
+    pub unsafe fn acquire_next_image2_khr<'a>(
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
     ) -> Result<(u32, vk::Result)> {
@@ -33,7 +46,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time: `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time: `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn acquire_next_image2_khr_unchecked<'a>(
         &self,
@@ -93,6 +106,12 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
     }
     /**`vkGetDeviceGroupSurfacePresentModesKHR`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`: `surface` must be supported by all physical devices associated with `device`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+
 # Valid usage
 
 The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html). Settled by the wrappers:
@@ -104,7 +123,7 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](htt
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_device_group_surface_present_modes_khr(
+    pub unsafe fn get_device_group_surface_present_modes_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
@@ -126,7 +145,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_group_surface_present_modes_khr_unchecked(
         &self,
@@ -157,6 +176,13 @@ The caller upholds the rules that [`Self::get_device_group_surface_present_modes
 impl PhysicalDevice {
     /**`vkGetPhysicalDevicePresentRectanglesKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDevicePresentRectanglesKHR.html). Settled by the wrappers:
@@ -169,7 +195,7 @@ The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](ht
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_present_rectangles_khr(
+    pub unsafe fn get_physical_device_present_rectangles_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {
@@ -191,7 +217,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_present_rectangles_khr_unchecked(
         &self,

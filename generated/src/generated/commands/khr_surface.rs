@@ -6,6 +6,13 @@ use super::*;
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilitiesKHR.html). Settled by the wrappers:
@@ -17,7 +24,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_surface_capabilities_khr(
+    pub unsafe fn get_physical_device_surface_capabilities_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
@@ -33,7 +40,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_capabilities_khr_unchecked(
         &self,
@@ -56,6 +63,13 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
     }
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormatsKHR.html). Settled by the wrappers:
@@ -68,7 +82,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_surface_formats_khr(
+    pub unsafe fn get_physical_device_surface_formats_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
@@ -84,7 +98,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_formats_khr_unchecked(
         &self,
@@ -113,6 +127,13 @@ The caller upholds the rules that [`Self::get_physical_device_surface_formats_kh
     }
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModesKHR.html). Settled by the wrappers:
@@ -125,7 +146,7 @@ The rules are on [`vkGetPhysicalDeviceSurfacePresentModesKHR`'s reference page](
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_surface_present_modes_khr(
+    pub unsafe fn get_physical_device_surface_present_modes_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
@@ -141,7 +162,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_present_modes_khr_unchecked(
         &self,
@@ -170,6 +191,12 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
     }
     /**`vkGetPhysicalDeviceSurfaceSupportKHR`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceSupportKHR.html). Settled by the wrappers:
@@ -181,7 +208,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_surface_support_khr(
+    pub unsafe fn get_physical_device_surface_support_khr(
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,
@@ -203,7 +230,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_support_khr_unchecked(
         &self,

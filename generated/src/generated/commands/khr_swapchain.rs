@@ -6,6 +6,17 @@ use super::*;
 impl Device {
     /**`vkAcquireNextImageKHR`
 
+# Safety
+
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkAcquireNextImageKHR-swapchain-01285`: `swapchain` must not be in the retired state
+- `VUID-vkAcquireNextImageKHR-semaphore-01286`: If `semaphore` is not VK_NULL_HANDLE it must be unsignaled
+- `VUID-vkAcquireNextImageKHR-semaphore-01779`: If `semaphore` is not VK_NULL_HANDLE it must not have any uncompleted signal or wait operations pending
+- `VUID-vkAcquireNextImageKHR-fence-01287`: If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-vkAcquireNextImageKHR-semaphore-01780`: `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
+- `VUID-vkAcquireNextImageKHR-surface-07783`: If forward progress cannot be guaranteed for the `surface` used to create the `swapchain` member of `pAcquireInfo`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
+
 # Valid usage
 
 The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImageKHR.html). Settled by the wrappers:
@@ -21,10 +32,10 @@ The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7.
 
-- 1: checked in every build, but no test breaks it yet, so the report does not count it
+- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 6: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn acquire_next_image_khr(
+    pub unsafe fn acquire_next_image_khr(
         &self,
         swapchain: &SwapchainKHR,
         timeout: u64,
@@ -58,7 +69,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
 
 # Safety
 
-The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, `VUID-vkAcquireNextImageKHR-semaphore-03265`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, `VUID-vkAcquireNextImageKHR-semaphore-03265`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn acquire_next_image_khr_unchecked(
         &self,
@@ -104,6 +115,27 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
     }
     /**`vkCreateSwapchainKHR`
 
+# Safety
+
+The caller upholds these 16 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkSwapchainCreateInfoKHR-surface-01270`: `surface` must be a surface that is supported by the device as determined using vkGetPhysicalDeviceSurfaceSupportKHR
+- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01272`: `minImageCount` must be less than or equal to the value returned in the `maxImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface if the returned `maxImageCount` is not zero
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273`: `imageFormat` and `imageColorSpace` must match the `format` and `colorSpace` members, respectively, of one of the `VkSurfaceFormatKHR` structures returned by `vkGetPhysicalDeviceSurfaceFormatsKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`: `imageExtent` members `width` and `height` must both be non-zero
+- `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`: `imageArrayLayers` must be greater than `0` and less than or equal to the `maxImageArrayLayers` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`: If `presentMode` is `VK_PRESENT_MODE_IMMEDIATE_KHR`, `VK_PRESENT_MODE_MAILBOX_KHR`, `VK_PRESENT_MODE_FIFO_KHR` or `VK_PRESENT_MODE_FIFO_RELAXED_KHR`, `imageUsage` must be a subset of the supported usage flags present in the `supportedUsageFlags` member of the VkSurfaceCapabilitiesKHR structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for `surface`
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277`: If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`: `preTransform` must be one of the bits present in the `supportedTransforms` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: `compositeAlpha` must be one of the bits present in the `supportedCompositeAlpha` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-01281`: `presentMode` must be one of the VkPresentModeKHR values returned by `vkGetPhysicalDeviceSurfacePresentModesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`: If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a non-retired swapchain associated with native window referred to by `surface`
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01778`: The implied image creation parameters of the swapchain must be supported as reported by vkGetPhysicalDeviceImageFormatProperties
+- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`: `minImageCount` must be greater than or equal to the value returned in the `minImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for the surface
+- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274`: `imageExtent` must be between `minImageExtent` and `maxImageExtent`, inclusive, where `minImageExtent` and `maxImageExtent` are members of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428`: If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
+- `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_SWAPCHAIN_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT_KHR`
+
 # Valid usage
 
 The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
@@ -113,7 +145,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
 - `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_swapchain_khr<'a>(
+    pub unsafe fn create_swapchain_khr<'a>(
         &self,
         surface: &SurfaceKHR,
         create_info: &SwapchainCreateInfoKHR<'a>,
@@ -220,7 +252,7 @@ The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.k
 
 # Safety
 
-The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at run time: `VUID-vkGetSwapchainImagesKHR-swapchain-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at run time: `VUID-vkGetSwapchainImagesKHR-swapchain-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_swapchain_images_khr_unchecked(
         &self,
@@ -263,6 +295,24 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
 impl Queue {
     /**`vkQueuePresentKHR`
 
+# Safety
+
+The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkQueuePresentKHR-pSwapchains-01292`: Each element of `pSwapchains` member of `pPresentInfo` must be a swapchain that is created for a surface for which presentation is supported from `queue` as determined using a call to `vkGetPhysicalDeviceSurfaceSupportKHR`
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`: When a semaphore wait operation referring to a binary semaphore defined by the elements of the `pWaitSemaphores` member of `pPresentInfo` executes on `queue`, there must be no other queues waiting on the same semaphore
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`: All elements of the `pWaitSemaphores` member of `pPresentInfo` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: All elements of the `pWaitSemaphores` member of `pPresentInfo` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends (if any) must have also been submitted for execution
+- `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297`: `swapchainCount` must equal `0` or VkPresentInfoKHR::`swapchainCount`
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01298`: If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_LOCAL_BIT_KHR`, then each element of `pDeviceMasks` must have exactly one bit set, and the corresponding element of VkDeviceGroupPresentCapabilitiesKHR::`presentMask` must be non-zero
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01299`: If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_REMOTE_BIT_KHR`, then each element of `pDeviceMasks` must have exactly one bit set, and some physical device in the logical device must include that bit in its VkDeviceGroupPresentCapabilitiesKHR::`presentMask`
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01300`: If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_SUM_BIT_KHR`, then each element of `pDeviceMasks` must have a value for which all set bits are set in one of the elements of VkDeviceGroupPresentCapabilitiesKHR::`presentMask`
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01301`: If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_LOCAL_MULTI_DEVICE_BIT_KHR`, then for each bit set in each element of `pDeviceMasks`, the corresponding element of VkDeviceGroupPresentCapabilitiesKHR::`presentMask` must be non-zero
+- `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302`: The value of each element of `pDeviceMasks` must be equal to the device mask passed in VkAcquireNextImageInfoKHR::`deviceMask` when the image index was last acquired
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`: `mode` must have exactly one bit set, and that bit must have been included in VkDeviceGroupSwapchainCreateInfoKHR::`modes`
+- `VUID-VkPresentInfoKHR-pImageIndices-01296`: Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by the corresponding element of the `pSwapchains` array, and the presented image subresource must be in the `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` layout at the time the operation is executed on a `VkDevice`
+- `VUID-VkPresentInfoKHR-pResults-parameter`: If `pResults` is not `NULL`, `pResults` must be a valid pointer to an array of `swapchainCount` VkResult values
+
 # Valid usage
 
 The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueuePresentKHR.html). Settled by the wrappers:
@@ -272,10 +322,10 @@ The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
-- 1: checked in every build, but no test breaks it yet, so the report does not count it
+- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 5: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn queue_present_khr<'a>(
+    pub unsafe fn queue_present_khr<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<vk::Result> {
@@ -331,7 +381,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_present_khr_unchecked<'a>(
         &self,

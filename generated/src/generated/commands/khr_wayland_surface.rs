@@ -6,6 +6,13 @@ use super::*;
 impl Instance {
     /**`vkCreateWaylandSurfaceKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkWaylandSurfaceCreateInfoKHR-display-01304`: `display` must point to a valid Wayland `wl_display`
+- `VUID-VkWaylandSurfaceCreateInfoKHR-surface-01305`: `surface` must point to a valid Wayland `wl_surface`
+
 # Valid usage
 
 The rules are on [`vkCreateWaylandSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWaylandSurfaceKHR.html). Settled by the wrappers:
@@ -15,7 +22,7 @@ The rules are on [`vkCreateWaylandSurfaceKHR`'s reference page](https://registry
 - `VUID-vkCreateWaylandSurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateWaylandSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_wayland_surface_khr<'a>(
+    pub unsafe fn create_wayland_surface_khr<'a>(
         &self,
         create_info: &WaylandSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {

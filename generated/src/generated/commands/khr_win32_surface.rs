@@ -6,6 +6,13 @@ use super::*;
 impl Instance {
     /**`vkCreateWin32SurfaceKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkWin32SurfaceCreateInfoKHR-hinstance-01307`: `hinstance` must be a valid Win32 `HINSTANCE`
+- `VUID-VkWin32SurfaceCreateInfoKHR-hwnd-01308`: `hwnd` must be a valid Win32 `HWND`
+
 # Valid usage
 
 The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWin32SurfaceKHR.html). Settled by the wrappers:
@@ -15,7 +22,7 @@ The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.k
 - `VUID-vkCreateWin32SurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateWin32SurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_win32_surface_khr<'a>(
+    pub unsafe fn create_win32_surface_khr<'a>(
         &self,
         create_info: &Win32SurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {
@@ -63,6 +70,12 @@ The caller upholds the rules that [`Self::create_win32_surface_khr`] checks at r
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceWin32PresentationSupportKHR`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceWin32PresentationSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceWin32PresentationSupportKHR.html). Settled by the wrappers:
@@ -71,7 +84,7 @@ The rules are on [`vkGetPhysicalDeviceWin32PresentationSupportKHR`'s reference p
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_win32_presentation_support_khr(
+    pub unsafe fn get_physical_device_win32_presentation_support_khr(
         &self,
         queue_family_index: u32,
     ) -> Result<vk::Bool32> {

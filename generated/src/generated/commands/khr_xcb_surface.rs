@@ -6,6 +6,13 @@ use super::*;
 impl Instance {
     /**`vkCreateXcbSurfaceKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkXcbSurfaceCreateInfoKHR-connection-01310`: `connection` must point to a valid X11 `xcb_connection_t`
+- `VUID-VkXcbSurfaceCreateInfoKHR-window-01311`: `window` must be a valid X11 `xcb_window_t`
+
 # Valid usage
 
 The rules are on [`vkCreateXcbSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateXcbSurfaceKHR.html). Settled by the wrappers:
@@ -15,7 +22,7 @@ The rules are on [`vkCreateXcbSurfaceKHR`'s reference page](https://registry.khr
 - `VUID-vkCreateXcbSurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateXcbSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_xcb_surface_khr<'a>(
+    pub unsafe fn create_xcb_surface_khr<'a>(
         &self,
         create_info: &XcbSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {

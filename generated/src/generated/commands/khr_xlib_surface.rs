@@ -6,6 +6,13 @@ use super::*;
 impl Instance {
     /**`vkCreateXlibSurfaceKHR`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkXlibSurfaceCreateInfoKHR-dpy-01313`: `dpy` must point to a valid Xlib `Display`
+- `VUID-VkXlibSurfaceCreateInfoKHR-window-01314`: `window` must be a valid Xlib `Window`
+
 # Valid usage
 
 The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateXlibSurfaceKHR.html). Settled by the wrappers:
@@ -15,7 +22,7 @@ The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.kh
 - `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_xlib_surface_khr<'a>(
+    pub unsafe fn create_xlib_surface_khr<'a>(
         &self,
         create_info: &XlibSurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {

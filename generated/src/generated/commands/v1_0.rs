@@ -37,7 +37,7 @@ The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.
 
 # Safety
 
-The caller upholds the rules that [`Self::allocate_command_buffers`] checks at run time: `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::allocate_command_buffers`] checks at run time: `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn allocate_command_buffers_unchecked<'a>(
         &self,
@@ -77,6 +77,13 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
     }
     /**`vkAllocateDescriptorSets`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044`: If any element of `pSetLayouts` was created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set, `descriptorPool` must have been created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046`: If VkDescriptorSetAllocateInfo::`pSetLayouts`[i] has a variable-sized descriptor binding, then `pDescriptorCounts`[i] must be less than or equal to the descriptor count specified for that binding when the descriptor set layout was created
+
 # Valid usage
 
 The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateDescriptorSets.html). Settled by the wrappers:
@@ -86,7 +93,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
 - `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: dynamic (checks the count is not 0)*/
     #[inline]
-    pub fn allocate_descriptor_sets<'a>(
+    pub unsafe fn allocate_descriptor_sets<'a>(
         &self,
         descriptor_pool: &DescriptorPool,
         allocate_info: &DescriptorSetAllocateInfo<'a>,
@@ -112,7 +119,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
 
 # Safety
 
-The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn allocate_descriptor_sets_unchecked<'a>(
         &self,
@@ -152,6 +159,28 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
     }
     /**`vkAllocateMemory`
 
+# Safety
+
+The caller upholds these 17 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkAllocateMemory-pAllocateInfo-01713`: `pAllocateInfo->allocationSize` must be less than or equal to VkPhysicalDeviceMemoryProperties::`memoryHeaps`[`memindex`].`size` where `memindex` = VkPhysicalDeviceMemoryProperties::`memoryTypes`[`pAllocateInfo->memoryTypeIndex`].`heapIndex` as returned by vkGetPhysicalDeviceMemoryProperties for the VkPhysicalDevice that `device` was created from
+- `VUID-vkAllocateMemory-pAllocateInfo-01714`: `pAllocateInfo->memoryTypeIndex` must be less than VkPhysicalDeviceMemoryProperties::`memoryTypeCount` as returned by vkGetPhysicalDeviceMemoryProperties for the VkPhysicalDevice that `device` was created from
+- `VUID-vkAllocateMemory-maxMemoryAllocationCount-04101`: There must be less than `VkPhysicalDeviceLimits::maxMemoryAllocationCount` device memory allocations currently allocated on the device
+- `VUID-VkExportMemoryAllocateInfo-handleTypes-00656`: The bits in `handleTypes` must be supported and compatible, as reported by VkExternalImageFormatProperties or VkExternalBufferProperties
+- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675`: If `VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT` is set, `deviceMask` must be a valid device mask
+- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676`: If `VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT` is set, `deviceMask` must not be zero
+- `VUID-VkMemoryAllocateInfo-None-06657`: The parameters must not define more than one import operation
+- `VUID-VkMemoryAllocateInfo-memoryTypeIndex-01872`: If the `protectedMemory` feature is not enabled, the `VkMemoryAllocateInfo::memoryTypeIndex` must not indicate a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: If VkMemoryOpaqueCaptureAddressAllocateInfo::`opaqueCaptureAddress` is not zero, `VkMemoryAllocateFlagsInfo::flags` must include `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
+- `VUID-VkMemoryAllocateInfo-flags-03330`: If `VkMemoryAllocateFlagsInfo::flags` includes `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled
+- `VUID-VkMemoryAllocateInfo-flags-03331`: If `VkMemoryAllocateFlagsInfo::flags` includes `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`, the `bufferDeviceAddress` feature must be enabled
+- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333`: If the parameters define an import operation, VkMemoryOpaqueCaptureAddressAllocateInfo::`opaqueCaptureAddress` must be zero
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01432`: At least one of `image` and `buffer` must be VK_NULL_HANDLE
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01434`: If `image` is not VK_NULL_HANDLE, `image` must have been created without `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` set in VkImageCreateInfo::`flags`
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01436`: If `buffer` is not VK_NULL_HANDLE, `buffer` must have been created without `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` set in VkBufferCreateInfo::`flags`
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01433`: If `image` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the image
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01435`: If `buffer` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the buffer
+
 # Valid usage
 
 The rules are on [`vkAllocateMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateMemory.html). Settled by the wrappers:
@@ -163,7 +192,7 @@ The rules are on [`vkAllocateMemory`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn allocate_memory<'a>(
+    pub unsafe fn allocate_memory<'a>(
         &self,
         allocate_info: &MemoryAllocateInfo<'a>,
     ) -> Result<DeviceMemory> {
@@ -210,6 +239,18 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
     }
     /**`vkBindBufferMemory`
 
+# Safety
+
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkBindBufferMemory-buffer-01444`: If `buffer` requires a dedicated allocation (as reported by vkGetBufferMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `buffer`), `memory` must have been allocated with VkMemoryDedicatedAllocateInfo::`buffer` equal to `buffer`
+- `VUID-vkBindBufferMemory-memory-01508`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`buffer` was not VK_NULL_HANDLE, then `buffer` must equal VkMemoryDedicatedAllocateInfo::`buffer`, and `memoryOffset` must be zero
+- `VUID-vkBindBufferMemory-None-01898`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit set, the buffer must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindBufferMemory-None-01899`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit not set, the buffer must not be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindBufferMemory-memory-02726`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
+- `VUID-vkBindBufferMemory-memory-02727`: If `memory` was allocated by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
+- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: If the VkPhysicalDeviceBufferDeviceAddressFeatures::`bufferDeviceAddress` feature is enabled and `buffer` was created with the `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT` bit set, `memory` must have been allocated with the `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT` bit set
+
 # Valid usage
 
 The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory.html). Settled by the wrappers:
@@ -226,10 +267,10 @@ The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 15.
 
-- 2: checked in every build, but no test breaks it yet, so the report does not count it
+- 2: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 13: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn bind_buffer_memory(
+    pub unsafe fn bind_buffer_memory(
         &self,
         buffer: &Buffer,
         memory: &DeviceMemory,
@@ -254,7 +295,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 15.
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run time: `VUID-vkBindBufferMemory-buffer-parent`, `VUID-vkBindBufferMemory-memory-parent`, `VUID-vkBindBufferMemory-buffer-07459`, `VUID-vkBindBufferMemory-buffer-01030`, `VUID-vkBindBufferMemory-memoryOffset-01031`, `VUID-vkBindBufferMemory-memory-01035`, `VUID-vkBindBufferMemory-memoryOffset-01036`, `VUID-vkBindBufferMemory-size-01037`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run time: `VUID-vkBindBufferMemory-buffer-parent`, `VUID-vkBindBufferMemory-memory-parent`, `VUID-vkBindBufferMemory-buffer-07459`, `VUID-vkBindBufferMemory-buffer-01030`, `VUID-vkBindBufferMemory-memoryOffset-01031`, `VUID-vkBindBufferMemory-memory-01035`, `VUID-vkBindBufferMemory-memoryOffset-01036`, `VUID-vkBindBufferMemory-size-01037`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_buffer_memory_unchecked(
         &self,
@@ -279,6 +320,17 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
     }
     /**`vkBindImageMemory`
 
+# Safety
+
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkBindImageMemory-image-01445`: If `image` requires a dedicated allocation (as reported by vkGetImageMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `image`), `memory` must have been created with VkMemoryDedicatedAllocateInfo::`image` equal to `image`
+- `VUID-vkBindImageMemory-memory-01509`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`image` was not VK_NULL_HANDLE, then `image` must equal VkMemoryDedicatedAllocateInfo::`image` and `memoryOffset` must be zero
+- `VUID-vkBindImageMemory-None-01901`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit set, the image must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindImageMemory-None-01902`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit not set, the image must not be bound to a memory object created with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindImageMemory-memory-02728`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
+- `VUID-vkBindImageMemory-memory-02729`: If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
+
 # Valid usage
 
 The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory.html). Settled by the wrappers:
@@ -295,10 +347,10 @@ The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
-- 3: checked in every build, but no test breaks it yet, so the report does not count it
+- 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 14: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn bind_image_memory(
+    pub unsafe fn bind_image_memory(
         &self,
         image: &Image,
         memory: &DeviceMemory,
@@ -323,7 +375,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_image_memory`] checks at run time: `VUID-vkBindImageMemory-image-parent`, `VUID-vkBindImageMemory-memory-parent`, `VUID-vkBindImageMemory-image-07460`, `VUID-vkBindImageMemory-image-01045`, `VUID-vkBindImageMemory-memoryOffset-01046`, `VUID-vkBindImageMemory-memory-01047`, `VUID-vkBindImageMemory-memoryOffset-01048`, `VUID-vkBindImageMemory-size-01049`, `VUID-vkBindImageMemory-image-01608`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::bind_image_memory`] checks at run time: `VUID-vkBindImageMemory-image-parent`, `VUID-vkBindImageMemory-memory-parent`, `VUID-vkBindImageMemory-image-07460`, `VUID-vkBindImageMemory-image-01045`, `VUID-vkBindImageMemory-memoryOffset-01046`, `VUID-vkBindImageMemory-memory-01047`, `VUID-vkBindImageMemory-memoryOffset-01048`, `VUID-vkBindImageMemory-size-01049`, `VUID-vkBindImageMemory-image-01608`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_image_memory_unchecked(
         &self,
@@ -348,6 +400,20 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
     }
     /**`vkCreateBuffer`
 
+# Safety
+
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateBuffer-flags-00911`: If the `flags` member of `pCreateInfo` includes `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, creating this `VkBuffer` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
+- `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkBufferCreateInfo-flags-00918`: If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`
+- `VUID-VkBufferCreateInfo-sharingMode-01419`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
+- `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
+- `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
+- `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: If VkBufferOpaqueCaptureAddressCreateInfo::`opaqueCaptureAddress` is not zero, `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
+- `VUID-VkBufferCreateInfo-flags-06549`: If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled
+- `VUID-VkBufferCreateInfo-size-06409`: `size` must be less than or equal to VkPhysicalDeviceMaintenance4Properties::`maxBufferSize`
+
 # Valid usage
 
 The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBuffer.html). Settled by the wrappers:
@@ -359,7 +425,7 @@ The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_buffer<'a>(
+    pub unsafe fn create_buffer<'a>(
         &self,
         create_info: &BufferCreateInfo<'a>,
     ) -> Result<Buffer> {
@@ -405,6 +471,20 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time (th
     }
     /**`vkCreateBufferView`
 
+# Safety
+
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkBufferViewCreateInfo-range-00929`: If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be an integer multiple of the texel block size of `format`
+- `VUID-VkBufferViewCreateInfo-range-00930`: If `range` is not equal to `VK_WHOLE_SIZE`, the number of texel buffer elements given by ({lfloor}`range` / (texel block size){rfloor} {times} (texels per block)) where texel block size and texels per block are as defined in the Compatible Formats table for `format`, must be less than or equal to `VkPhysicalDeviceLimits::maxTexelBufferElements`
+- `VUID-VkBufferViewCreateInfo-range-04059`: If `range` is equal to `VK_WHOLE_SIZE`, the number of texel buffer elements given by ({lfloor}(size - `offset`) / (texel block size){rfloor} {times} (texels per block)) where size is the size of `buffer`, and texel block size and texels per block are as defined in the Compatible Formats table for `format`, must be less than or equal to `VkPhysicalDeviceLimits::maxTexelBufferElements`
+- `VUID-VkBufferViewCreateInfo-buffer-00932`: `buffer` must have been created with a `usage` value containing at least one of `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT` or `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT`
+- `VUID-VkBufferViewCreateInfo-buffer-00933`: If `buffer` was created with `usage` containing `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT`, `format` must be supported for uniform texel buffers, as specified by the `VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by vkGetPhysicalDeviceFormatProperties
+- `VUID-VkBufferViewCreateInfo-buffer-00934`: If `buffer` was created with `usage` containing `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT`, `format` must be supported for storage texel buffers, as specified by the `VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by vkGetPhysicalDeviceFormatProperties
+- `VUID-VkBufferViewCreateInfo-offset-02749`: If the `texelBufferAlignment` feature is not enabled, `offset` must be a multiple of `VkPhysicalDeviceLimits::minTexelBufferOffsetAlignment`
+- `VUID-VkBufferViewCreateInfo-buffer-02750`: If the `texelBufferAlignment` feature is enabled and if `buffer` was created with `usage` containing `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT`, `offset` must be a multiple of the lesser of VkPhysicalDeviceTexelBufferAlignmentProperties::`storageTexelBufferOffsetAlignmentBytes` or, if VkPhysicalDeviceTexelBufferAlignmentProperties::`storageTexelBufferOffsetSingleTexelAlignment` is `VK_TRUE`, the size of a texel of the requested `format`. If the size of a texel is a multiple of three bytes, then the size of a single component of `format` is used instead
+- `VUID-VkBufferViewCreateInfo-buffer-02751`: If the `texelBufferAlignment` feature is enabled and if `buffer` was created with `usage` containing `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT`, `offset` must be a multiple of the lesser of VkPhysicalDeviceTexelBufferAlignmentProperties::`uniformTexelBufferOffsetAlignmentBytes` or, if VkPhysicalDeviceTexelBufferAlignmentProperties::`uniformTexelBufferOffsetSingleTexelAlignment` is `VK_TRUE`, the size of a texel of the requested `format`. If the size of a texel is a multiple of three bytes, then the size of a single component of `format` is used instead
+
 # Valid usage
 
 The rules are on [`vkCreateBufferView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html). Settled by the wrappers:
@@ -414,7 +494,7 @@ The rules are on [`vkCreateBufferView`'s reference page](https://registry.khrono
 - `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_buffer_view<'a>(
+    pub unsafe fn create_buffer_view<'a>(
         &self,
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<BufferView> {
@@ -475,6 +555,13 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
     }
     /**`vkCreateCommandPool`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: `pCreateInfo->queueFamilyIndex` must be the index of a queue family available in the logical device `device`
+- `VUID-VkCommandPoolCreateInfo-flags-02860`: If the `protectedMemory` feature is not enabled, the `VK_COMMAND_POOL_CREATE_PROTECTED_BIT` bit of `flags` must not be set
+
 # Valid usage
 
 The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html). Settled by the wrappers:
@@ -486,7 +573,7 @@ The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_command_pool<'a>(
+    pub unsafe fn create_command_pool<'a>(
         &self,
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
@@ -532,6 +619,61 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
     }
     /**`vkCreateComputePipelines`
 
+# Safety
+
+The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateComputePipelines-flags-00695`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
+- `VUID-vkCreateComputePipelines-flags-00696`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
+- `VUID-vkCreateComputePipelines-pipelineCache-02873`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
+- `VUID-VkComputePipelineCreateInfo-flags-00697`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is -1, `basePipelineHandle` must be a valid handle to a compute `VkPipeline`
+- `VUID-VkComputePipelineCreateInfo-flags-00698`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is VK_NULL_HANDLE, `basePipelineIndex` must be a valid index into the calling command&#8217;s `pCreateInfos` parameter
+- `VUID-VkComputePipelineCreateInfo-flags-00699`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is not -1, `basePipelineHandle` must be VK_NULL_HANDLE
+- `VUID-VkComputePipelineCreateInfo-flags-00700`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be -1
+- `VUID-VkComputePipelineCreateInfo-stage-00701`: The `stage` member of `stage` must be `VK_SHADER_STAGE_COMPUTE_BIT`
+- `VUID-VkComputePipelineCreateInfo-stage-00702`: The shader code for the entry point identified by `stage` and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces chapter
+- `VUID-VkComputePipelineCreateInfo-layout-01687`: The number of resources in `layout` accessible to the compute shader stage must be less than or equal to `VkPhysicalDeviceLimits::maxPerStageResources`
+- `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be `1`
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: If `pipelineStageCreationFeedbackCount` is not `0`, `pPipelineStageCreationFeedbacks` must be a valid pointer to an array of `pipelineStageCreationFeedbackCount` VkPipelineCreationFeedback structures
+- `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: `pName` must be the name of an `OpEntryPoint` in `module` with an execution model that matches `stage`
+- `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: If the identified entry point includes any variable in its interface that is declared with the `ClipDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxClipDistances`
+- `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: If the identified entry point includes any variable in its interface that is declared with the `CullDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxCullDistances`
+- `VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710`: If the identified entry point includes any variables in its interface that are declared with the `ClipDistance` or `CullDistance` `BuiltIn` decoration, those variables must not have array sizes which sum to more than `VkPhysicalDeviceLimits::maxCombinedClipAndCullDistances`
+- `VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711`: If the identified entry point includes any variable in its interface that is declared with the `SampleMask` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxSampleMaskWords`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00712`: If `stage` is `VK_SHADER_STAGE_VERTEX_BIT`, the identified entry point must not include any input variable in its interface that is decorated with `CullDistance`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00713`: If `stage` is `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT` or `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, and the identified entry point has an `OpExecutionMode` instruction specifying a patch size with `OutputVertices`, the patch size must be greater than `0` and less than or equal to `VkPhysicalDeviceLimits::maxTessellationPatchSize`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00714`: If `stage` is `VK_SHADER_STAGE_GEOMETRY_BIT`, the identified entry point must have an `OpExecutionMode` instruction specifying a maximum output vertex count that is greater than `0` and less than or equal to `VkPhysicalDeviceLimits::maxGeometryOutputVertices`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00715`: If `stage` is `VK_SHADER_STAGE_GEOMETRY_BIT`, the identified entry point must have an `OpExecutionMode` instruction specifying an invocation count that is greater than `0` and less than or equal to `VkPhysicalDeviceLimits::maxGeometryShaderInvocations`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-02596`: If `stage` is either `VK_SHADER_STAGE_VERTEX_BIT`, `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT`, `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, or `VK_SHADER_STAGE_GEOMETRY_BIT`, and the identified entry point writes to `Layer` for any primitive, it must write the same value to `Layer` for all vertices of a given primitive
+- `VUID-VkPipelineShaderStageCreateInfo-stage-02597`: If `stage` is either `VK_SHADER_STAGE_VERTEX_BIT`, `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT`, `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, or `VK_SHADER_STAGE_GEOMETRY_BIT`, and the identified entry point writes to `ViewportIndex` for any primitive, it must write the same value to `ViewportIndex` for all vertices of a given primitive
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, the identified entry point must not include any output variables in its interface decorated with `CullDistance`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, and the identified entry point writes to `FragDepth` in any execution path, all execution paths that are not exclusive to helper invocations must either discard the fragment, or write or initialize the value of `FragDepth`
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02784`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set, the `subgroupSizeControl` feature must be enabled
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02785`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the `computeFullSubgroups` feature must be enabled
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, `flags` must not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, the `subgroupSizeControl` feature must be enabled, and `stage` must be a valid bit specified in `requiredSubgroupSizeStages`
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain and `stage` is `VK_SHADER_STAGE_COMPUTE_BIT`, the local workgroup size of the shader must be less than or equal to the product of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize` and `maxComputeWorkgroupSubgroups`
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, and `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the local workgroup size in the X dimension of the pipeline must be a multiple of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize`
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02758`: If `flags` has both the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` and `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flags set, the local workgroup size in the X dimension of the pipeline must be a multiple of `maxSubgroupSize`
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02759`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set and `flags` does not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set and no VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, the local workgroup size in the X dimension of the pipeline must be a multiple of `subgroupSize`
+- `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: The shader code used by the pipeline must be valid as described by the Khronos SPIR-V Specification after applying the specializations provided in `pSpecializationInfo`, if any, and then converting all specialization constants into fixed constants
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: `requiredSubgroupSize` must be a power-of-two integer
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: `requiredSubgroupSize` must be greater or equal to `minSubgroupSize`
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: `requiredSubgroupSize` must be less than or equal to `maxSubgroupSize`
+- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: `codeSize` must be greater than 0
+- `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
+- `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
+- `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
+- `VUID-VkShaderModuleCreateInfo-pCode-04146`: `pCode` must not declare any SPIR-V extension that is not supported by the API, as described by the Extension section of the SPIR-V Environment appendix
+- `VUID-VkShaderModuleCreateInfo-pCode-04147`: If `pCode` declares any of the SPIR-V extensions listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
+- `VUID-VkShaderModuleCreateInfo-codeSize-01086`: `codeSize` must be a multiple of 4
+- `VUID-VkShaderModuleCreateInfo-pCode-01087`: `pCode` must point to valid SPIR-V code, formatted and packed as described by the Khronos SPIR-V Specification
+- `VUID-VkShaderModuleCreateInfo-pCode-01088`: `pCode` must adhere to the validation rules described by the Validation Rules within a Module section of the SPIR-V Environment appendix
+- `VUID-VkSpecializationInfo-constantID-04911`: The `constantID` value of each element of `pMapEntries` must be unique within `pMapEntries`
+- `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
+
 # Valid usage
 
 The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html). Settled by the wrappers:
@@ -546,7 +688,7 @@ The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_compute_pipelines<'a>(
+    pub unsafe fn create_compute_pipelines<'a>(
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
@@ -564,7 +706,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -623,6 +765,12 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
     }
     /**`vkCreateDescriptorPool`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDescriptorPoolSize-type-02218`: If `type` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4`
+
 # Valid usage
 
 The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
@@ -632,7 +780,7 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
 - `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_descriptor_pool<'a>(
+    pub unsafe fn create_descriptor_pool<'a>(
         &self,
         create_info: &DescriptorPoolCreateInfo<'a>,
     ) -> Result<DescriptorPool> {
@@ -677,6 +825,33 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
     }
     /**`vkCreateDescriptorSetLayout`
 
+# Safety
+
+The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
+- `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` and `descriptorCount` is not `0`, then `stageFlags` must be `0` or `VK_SHADER_STAGE_FRAGMENT_BIT`
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02209`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4`
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: If `bindingCount` is not zero, `bindingCount` must equal VkDescriptorSetLayoutCreateInfo::`bindingCount`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingSampledImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_SAMPLER`, `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, or `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`: All bindings with descriptor type `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUpdateUnusedWhilePending` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingPartiallyBound` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingVariableDescriptorCount` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, that element&#8217;s `descriptorType` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`: If VkPhysicalDeviceInlineUniformBlockFeatures::`descriptorBindingInlineUniformBlockUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: The VkDescriptorSetLayoutBinding::`binding` members of the elements of the `pBindings` array must each have different values
+- `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, `flags` must include `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`
+- `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, then all bindings must not have `descriptorType` of `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
+
 # Valid usage
 
 The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
@@ -686,7 +861,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
 - `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_descriptor_set_layout<'a>(
+    pub unsafe fn create_descriptor_set_layout<'a>(
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<DescriptorSetLayout> {
@@ -801,6 +976,12 @@ The caller upholds the rules that [`Self::create_event`] checks at run time (tho
     }
     /**`vkCreateFence`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkExportFenceCreateInfo-handleTypes-01446`: The bits in `handleTypes` must be supported and compatible, as reported by VkExternalFenceProperties
+
 # Valid usage
 
 The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFence.html). Settled by the wrappers:
@@ -810,7 +991,10 @@ The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org
 - `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
+    pub unsafe fn create_fence<'a>(
+        &self,
+        create_info: &FenceCreateInfo<'a>,
+    ) -> Result<Fence> {
         {
             let r = self.validate_create_fence(create_info);
             r?;
@@ -847,6 +1031,39 @@ The caller upholds the rules that [`Self::create_fence`] checks at run time (tho
     }
     /**`vkCreateFramebuffer`
 
+# Safety
+
+The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateFramebuffer-pCreateInfo-02777`: If `pCreateInfo->flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, and `attachmentCount` is not `0`, each element of `pCreateInfo->pAttachments` must have been created on `device`
+- `VUID-VkFramebufferCreateInfo-attachmentCount-00876`: `attachmentCount` must be equal to the attachment count specified in `renderPass`
+- `VUID-VkFramebufferCreateInfo-flags-02778`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT` and `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkImageView handles
+- `VUID-VkFramebufferCreateInfo-pAttachments-00877`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as a color attachment or resolve attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-pAttachments-02633`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as a depth/stencil attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-pAttachments-00879`: If `renderpass` is not VK_NULL_HANDLE, `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-pAttachments-00880`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with a VkFormat value that matches the VkFormat specified by the corresponding `VkAttachmentDescription` in `renderPass`
+- `VUID-VkFramebufferCreateInfo-pAttachments-00881`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with a `samples` value that matches the `samples` value specified by the corresponding `VkAttachmentDescription` in `renderPass`
+- `VUID-VkFramebufferCreateInfo-flags-04533`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have been created with a VkImageCreateInfo::`extent.width` greater than or equal to `width`
+- `VUID-VkFramebufferCreateInfo-flags-04534`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have been created with a VkImageCreateInfo::`extent.height` greater than or equal to `height`
+- `VUID-VkFramebufferCreateInfo-flags-04535`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have been created with a VkImageViewCreateInfo::`subresourceRange.layerCount` greater than or equal to `layers`
+- `VUID-VkFramebufferCreateInfo-pAttachments-00883`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must only specify a single mip level
+- `VUID-VkFramebufferCreateInfo-pAttachments-00884`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with the identity swizzle
+- `VUID-VkFramebufferCreateInfo-flags-04113`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with VkImageViewCreateInfo::`viewType` not equal to `VK_IMAGE_VIEW_TYPE_3D`
+- `VUID-VkFramebufferCreateInfo-pAttachments-02634`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as a depth/stencil resolve attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-renderPass-04536`: If `renderPass` was specified with non-zero view masks, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have a `layerCount` greater than the index of the most significant bit set in any of those view masks
+- `VUID-VkFramebufferCreateInfo-renderPass-02531`: If `renderPass` was specified with non-zero view masks, `layers` must be `1`
+- `VUID-VkFramebufferCreateInfo-pAttachments-00891`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is a 2D or 2D array image view taken from a 3D image must not be a depth/stencil format
+- `VUID-VkFramebufferCreateInfo-flags-03190`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `pNext` chain must include a VkFramebufferAttachmentsCreateInfo structure
+- `VUID-VkFramebufferCreateInfo-flags-03191`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `attachmentImageInfoCount` member of a VkFramebufferAttachmentsCreateInfo structure in the `pNext` chain must be equal to either zero or `attachmentCount`
+- `VUID-VkFramebufferCreateInfo-flags-04541`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `width` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure in the `pNext` chain that is used as an input, color, resolve or depth/stencil attachment in `renderPass` must be greater than or equal to `width`
+- `VUID-VkFramebufferCreateInfo-flags-04542`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `height` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure in the `pNext` chain that is used as an input, color, resolve or depth/stencil attachment in `renderPass` must be greater than or equal to `height`
+- `VUID-VkFramebufferCreateInfo-flags-03201`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `usage` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain that refers to an attachment used as a color attachment or resolve attachment by `renderPass` must include `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-flags-03202`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `usage` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain that refers to an attachment used as a depth/stencil attachment by `renderPass` must include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-flags-03204`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `usage` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain that refers to an attachment used as an input attachment by `renderPass` must include `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkFramebufferCreateInfo-flags-03205`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, at least one element of the `pViewFormats` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain must be equal to the corresponding value of VkAttachmentDescription::`format` used to create `renderPass`
+- `VUID-VkFramebufferCreateInfo-renderPass-03198`: If multiview is enabled for `renderPass` and `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `layerCount` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain used as an input, color, resolve, or depth/stencil attachment in `renderPass` must be greater than the maximum bit index set in the view mask in the subpasses in which it is used in `renderPass`
+- `VUID-VkFramebufferCreateInfo-renderPass-04546`: If multiview is not enabled for `renderPass` and `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `layerCount` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain used as an input, color, resolve, or depth/stencil attachment in `renderPass` must be greater than or equal to `layers`
+
 # Valid usage
 
 The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
@@ -858,7 +1075,7 @@ The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_framebuffer<'a>(
+    pub unsafe fn create_framebuffer<'a>(
         &self,
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<Framebuffer> {
@@ -919,6 +1136,169 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
     }
     /**`vkCreateGraphicsPipelines`
 
+# Safety
+
+The caller upholds these 158 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
+- `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
+- `VUID-VkGraphicsPipelineCreateInfo-flags-00722`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is -1, `basePipelineHandle` must be a valid handle to a graphics `VkPipeline`
+- `VUID-VkGraphicsPipelineCreateInfo-flags-00723`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is VK_NULL_HANDLE, `basePipelineIndex` must be a valid index into the calling command&#8217;s `pCreateInfos` parameter
+- `VUID-VkGraphicsPipelineCreateInfo-flags-00724`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is not -1, `basePipelineHandle` must be VK_NULL_HANDLE
+- `VUID-VkGraphicsPipelineCreateInfo-flags-00725`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be -1
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00729`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes a tessellation control shader stage, it must include a tessellation evaluation shader stage
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00730`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes a tessellation evaluation shader stage, it must include a tessellation control shader stage
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes a tessellation control shader stage and a tessellation evaluation shader stage, `pTessellationState` must be a valid pointer to a valid VkPipelineTessellationStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00732`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes tessellation shader stages, the shader code of at least one stage must contain an `OpExecutionMode` instruction specifying the type of subdivision in the pipeline
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00733`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes tessellation shader stages, and the shader code of both stages contain an `OpExecutionMode` instruction specifying the type of subdivision in the pipeline, they must both specify the same subdivision mode
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00734`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes tessellation shader stages, the shader code of at least one stage must contain an `OpExecutionMode` instruction specifying the output patch size in the pipeline
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00735`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes tessellation shader stages, and the shader code of both contain an `OpExecutionMode` instruction specifying the out patch size in the pipeline, they must both specify the same patch size
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes tessellation shader stages, the `topology` member of `pInputAssembly` must be `VK_PRIMITIVE_TOPOLOGY_PATCH_LIST`
+- `VUID-VkGraphicsPipelineCreateInfo-topology-00737`: If the pipeline is being created with pre-rasterization shader state and the `topology` member of `pInputAssembly` is `VK_PRIMITIVE_TOPOLOGY_PATCH_LIST`, `pStages` must include tessellation shader stages
+- `VUID-VkGraphicsPipelineCreateInfo-Vertex-07722`: If the pipeline is being created with a `Vertex` {ExecutionModel} and no `TessellationEvaluation` or `Geometry` {ExecutionModel}, and the `topology` member of `pInputAssembly` is `VK_PRIMITIVE_TOPOLOGY_POINT_LIST`, a `PointSize` decorated variable must be written to
+- `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723`: If the pipeline is being created with a `TessellationEvaluation` {ExecutionModel}, no `Geometry` {ExecutionModel}, uses the `PointMode` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is enabled, a `PointSize` decorated variable must be written to
+- `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724`: If the pipeline is being created with a `TessellationEvaluation` {ExecutionModel}, no `Geometry` {ExecutionModel}, uses the `PointMode` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is not enabled, a `PointSize` decorated variable must not be written to
+- `VUID-VkGraphicsPipelineCreateInfo-Geometry-07725`: If the pipeline is being created with a `Geometry` {ExecutionModel}, uses the `OutputPoints` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is enabled, a `PointSize` decorated variable must be written to
+- `VUID-VkGraphicsPipelineCreateInfo-Geometry-07726`: If the pipeline is being created with a `Geometry` {ExecutionModel}, uses the `OutputPoints` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is not enabled, a `PointSize` decorated variable must not be written to
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00738`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes a geometry shader stage, and does not include any tessellation shader stages, its shader code must contain an `OpExecutionMode` instruction specifying an input primitive type that is compatible with the primitive topology specified in `pInputAssembly`
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00739`: If the pipeline is being created with pre-rasterization shader state and `pStages` includes a geometry shader stage, and also includes tessellation shader stages, its shader code must contain an `OpExecutionMode` instruction specifying an input primitive type that is compatible with the primitive topology that is output by the tessellation stages
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00740`: If the pipeline is being created with pre-rasterization shader state and fragment shader state, it includes both a fragment shader and a geometry shader, and the fragment shader code reads from an input variable that is decorated with `PrimitiveId`, then the geometry shader code must write to a matching output variable, decorated with `PrimitiveId`, in all execution paths
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06038`: If `renderPass` is not VK_NULL_HANDLE and the pipeline is being created with fragment shader state the fragment shader must not read from any input attachment that is defined as `VK_ATTACHMENT_UNUSED` in `subpass`
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00742`: If the pipeline is being created with pre-rasterization shader state and multiple pre-rasterization shader stages are included in `pStages`, the shader code for the entry points identified by those `pStages` and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces chapter
+- `VUID-VkGraphicsPipelineCreateInfo-None-04889`: If the pipeline is being created with pre-rasterization shader state and fragment shader state, the fragment shader and last pre-rasterization shader stage and any relevant state must adhere to the pipeline linking rules described in the Shader Interfaces chapter
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`: If `renderPass` is not VK_NULL_HANDLE, and the pipeline is being created with fragment output interface state, then for each color attachment in the subpass, if the potential format features of the format of the corresponding attachment description do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`: If the pipeline is being created with pre-rasterization shader state, and the `wideLines` feature is not enabled, and no element of the `pDynamicStates` member of `pDynamicState` is `VK_DYNAMIC_STATE_LINE_WIDTH`, the `lineWidth` member of `pRasterizationState` must be `1.0`
+- `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`: If the pipeline is being created with pre-rasterization shader state, and the `rasterizerDiscardEnable` member of `pRasterizationState` is `VK_FALSE`, `pViewportState` must be a valid pointer to a valid VkPipelineViewportStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751`: If the pipeline is being created with fragment output interface state, `pMultisampleState` must be a valid pointer to a valid VkPipelineMultisampleStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06043`: If `renderPass` is not VK_NULL_HANDLE, the pipeline is being created with fragment shader state, and `subpass` uses a depth/stencil attachment, `pDepthStencilState` must be a valid pointer to a valid VkPipelineDepthStencilStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06044`: If `renderPass` is not VK_NULL_HANDLE, the pipeline is being created with fragment output interface state, and `subpass` uses color attachments, `pColorBlendState` must be a valid pointer to a valid VkPipelineColorBlendStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754`: If the pipeline is being created with pre-rasterization shader state, the `depthBiasClamp` feature is not enabled, no element of the `pDynamicStates` member of `pDynamicState` is `VK_DYNAMIC_STATE_DEPTH_BIAS`, and the `depthBiasEnable` member of `pRasterizationState` is `VK_TRUE`, the `depthBiasClamp` member of `pRasterizationState` must be `0.0`
+- `VUID-VkGraphicsPipelineCreateInfo-subpass-00758`: If the pipeline is being created with fragment output interface state, and `subpass` does not use any color and/or depth/stencil attachments, then the `rasterizationSamples` member of `pMultisampleState` must follow the rules for a zero-attachment subpass
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06046`: If `renderPass` is not VK_NULL_HANDLE, `subpass` must be a valid subpass within `renderPass`
+- `VUID-VkGraphicsPipelineCreateInfo-layout-01688`: The number of resources in `layout` accessible to each shader stage that is used by the pipeline must be less than or equal to `VkPhysicalDeviceLimits::maxPerStageResources`
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-02098`: If the pipeline is being created with vertex input state, `pInputAssemblyState` must be a valid pointer to a valid VkPipelineInputAssemblyStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-06894`: If the pipeline is being created with pre-rasterization shader state but not fragment shader state, elements of `pStages` must not have `stage` set to `VK_SHADER_STAGE_FRAGMENT_BIT`
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-06895`: If the pipeline is being created with fragment shader state but not pre-rasterization shader state, elements of `pStages` must not have `stage` set to a shader stage which participates in pre-rasterization
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-06896`: If the pipeline is being created with pre-rasterization shader state, all elements of `pStages` must have a `stage` set to a shader stage which participates in fragment shader state or pre-rasterization shader state
+- `VUID-VkGraphicsPipelineCreateInfo-stage-06897`: If the pipeline is being created with fragment shader state and/or pre-rasterization shader state, any value of `stage` must not be set in more than one element of `pStages`
+- `VUID-VkGraphicsPipelineCreateInfo-stage-00727`: If the pipeline is being created with pre-rasterization shader state the `stage` member of one element of `pStages` must be `VK_SHADER_STAGE_VERTEX_BIT`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06042`: If `renderPass` is not VK_NULL_HANDLE, and the pipeline is being created with fragment output interface state, and the subpass uses color attachments, the `attachmentCount` member of `pColorBlendState` must be equal to the `colorAttachmentCount` used to create `subpass`
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379`: If the pipeline is being created with pre-rasterization shader state, and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` is included in the `pDynamicStates` array then `viewportCount` must be zero
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380`: If the pipeline is being created with pre-rasterization shader state, and `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` is included in the `pDynamicStates` array then `scissorCount` must be zero
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132`: If the pipeline is being created with pre-rasterization shader state, and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` is included in the `pDynamicStates` array then `VK_DYNAMIC_STATE_VIEWPORT` must not be present
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133`: If the pipeline is being created with pre-rasterization shader state, and `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` is included in the `pDynamicStates` array then `VK_DYNAMIC_STATE_SCISSOR` must not be present
+- `VUID-VkGraphicsPipelineCreateInfo-pViewportState-04892`: If the pipeline is being created with pre-rasterization shader state, and the graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled, `pViewportState` must be a valid pointer to a valid VkPipelineViewportStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869`: If the `extendedDynamicState2LogicOp` feature is not enabled, there must be no element of the `pDynamicStates` member of `pDynamicState` set to `VK_DYNAMIC_STATE_LOGIC_OP_EXT`
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04870`: If the `extendedDynamicState2PatchControlPoints` feature is not enabled, there must be no element of the `pDynamicStates` member of `pDynamicState` set to `VK_DYNAMIC_STATE_PATCH_CONTROL_POINTS_EXT`
+- `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755`: If the pipeline is being created with fragment shader state, and no element of the `pDynamicStates` member of `pDynamicState` is `VK_DYNAMIC_STATE_DEPTH_BOUNDS`, and the `depthBoundsTestEnable` member of `pDepthStencilState` is `VK_TRUE`, the `minDepthBounds` and `maxDepthBounds` members of `pDepthStencilState` must be between `0.0` and `1.0`, inclusive
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06047`: If `renderPass` is not VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, `subpass` viewMask is not `0`, and `multiviewTessellationShader` is not enabled, then `pStages` must not include tessellation shaders
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06048`: If `renderPass` is not VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, `subpass` viewMask is not `0`, and `multiviewGeometryShader` is not enabled, then `pStages` must not include a geometry shader
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06049`: If `renderPass` is not VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and `subpass` viewMask is not `0`, all of the shaders in the pipeline must not write to the `Layer` built-in output
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06050`: If `renderPass` is not VK_NULL_HANDLE and the pipeline is being created with pre-rasterization shader state, and `subpass` viewMask is not `0`, then all of the shaders in the pipeline must not include variables decorated with the `Layer` built-in decoration in their interfaces
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07717`: If `renderPass` is not VK_NULL_HANDLE and the pipeline is being created with pre-rasterization shader state, and `subpass` viewMask is not `0`, then all of the shaders in the pipeline must not include variables decorated with the `ViewMask` built-in decoration in their interfaces
+- `VUID-VkGraphicsPipelineCreateInfo-flags-00764`: `flags` must not contain the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-01565`: If the pipeline is being created with fragment shader state and an input attachment was referenced by an `aspectMask` at `renderPass` creation time, the fragment shader must only read from the aspects that were specified for that input attachment
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-02097`: If the pipeline is being created with vertex input state, `pVertexInputState` must be a valid pointer to a valid VkPipelineVertexInputStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-None-06573`: The pipeline must be created with a complete set of state
+- `VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601`: `pRasterizationState` must be a valid pointer to a valid VkPipelineRasterizationStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-layout-06602`: `layout` must be a valid VkPipelineLayout handle
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06603`: If `renderPass` is not VK_NULL_HANDLE, `renderPass` must be a valid VkRenderPass handle
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06575`: If the pipeline is being created with pre-rasterization shader state, fragment shader state, or fragment output interface state, `renderPass` must be VK_NULL_HANDLE or a valid render pass object
+- `VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576`: If the `dynamicRendering` feature is not enabled and the pipeline is being created with pre-rasterization shader state, fragment shader state, or fragment output interface state, `renderPass` must not be VK_NULL_HANDLE
+- `VUID-VkGraphicsPipelineCreateInfo-multiview-06577`: If the `multiview` feature is not enabled, the pipeline is being created with pre-rasterization shader state, fragment shader state, or fragment output interface state, and `renderPass` is VK_NULL_HANDLE, VkPipelineRenderingCreateInfo::`viewMask` must be `0`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06578`: If the pipeline is being created with pre-rasterization shader state, fragment shader state, or fragment output interface state, and `renderPass` is VK_NULL_HANDLE, the index of the most significant bit in VkPipelineRenderingCreateInfo::`viewMask` must be less than `maxMultiviewViewCount`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06579`: If the pipeline is being created with fragment output interface state, and `renderPass` is VK_NULL_HANDLE, and VkPipelineRenderingCreateInfo::`colorAttachmentCount` is not 0, VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` must be a valid pointer to an array of `colorAttachmentCount` valid VkFormat values
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06580`: If the pipeline is being created with fragment output interface state, and `renderPass` is VK_NULL_HANDLE, each element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` must be a valid VkFormat value
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06583`: If the pipeline is being created with fragment output interface state, and `renderPass` is VK_NULL_HANDLE, VkPipelineRenderingCreateInfo::`depthAttachmentFormat` must be a valid VkFormat value
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06584`: If the pipeline is being created with fragment output interface state, and `renderPass` is VK_NULL_HANDLE, VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` must be a valid VkFormat value
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06585`: If the pipeline is being created with fragment output interface state, `renderPass` is VK_NULL_HANDLE, and VkPipelineRenderingCreateInfo::`depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06586`: If the pipeline is being created with fragment output interface state, `renderPass` is VK_NULL_HANDLE, and VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06587`: If the pipeline is being created with fragment output interface state, `renderPass` is VK_NULL_HANDLE, and VkPipelineRenderingCreateInfo::`depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format that includes a depth aspect
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06588`: If the pipeline is being created with fragment output interface state, `renderPass` is VK_NULL_HANDLE, and VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format that includes a stencil aspect
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06589`: If the pipeline is being created with fragment output interface state, `renderPass` is VK_NULL_HANDLE, VkPipelineRenderingCreateInfo::`depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, and VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, `depthAttachmentFormat` must equal `stencilAttachmentFormat`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06053`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with fragment shader state and fragment output interface state, and either of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` or VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` are not `VK_FORMAT_UNDEFINED`, `pDepthStencilState` must be a valid pointer to a valid VkPipelineDepthStencilStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06054`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with fragment output interface state, and VkPipelineRenderingCreateInfo::`colorAttachmentCount` is not equal to `0`, `pColorBlendState` must be a valid pointer to a valid VkPipelineColorBlendStateCreateInfo structure
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06055`: If `renderPass` is VK_NULL_HANDLE and the pipeline is being created with fragment output interface state, `pColorBlendState->attachmentCount` must be equal to VkPipelineRenderingCreateInfo::`colorAttachmentCount`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06056`: If `renderPass` is VK_NULL_HANDLE and the pipeline is being created with fragment shader state the fragment shader must not read from any input attachment
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`: If the pipeline is being created with fragment output interface state, `renderPass` is VK_NULL_HANDLE, and any element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` is not `VK_FORMAT_UNDEFINED`, that format must be a format with potential format features that include `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06057`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, VkPipelineRenderingCreateInfo::`viewMask` is not `0`, and the `multiviewTessellationShader` feature is not enabled, then `pStages` must not include tessellation shaders
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06058`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, VkPipelineRenderingCreateInfo::`viewMask` is not `0`, and the `multiviewGeometryShader` feature is not enabled, then `pStages` must not include a geometry shader
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07718`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and VkPipelineRenderingCreateInfo::`viewMask` is not `0`, all of the shaders in the pipeline must not write to the `Layer` built-in output
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06059`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and VkPipelineRenderingCreateInfo::`viewMask` is not `0`, all of the shaders in the pipeline must not include variables decorated with the `Layer` built-in decoration in their interfaces
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-07719`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and VkPipelineRenderingCreateInfo::`viewMask` is not `0`, all of the shaders in the pipeline must not include variables decorated with the `ViewIndex` built-in decoration in their interfaces
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06061`: If the pipeline is being created with fragment shader state and `renderPass` is VK_NULL_HANDLE, fragment shaders in `pStages` must not include the `InputAttachment` capability
+- `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`: If the pipeline is being created with fragment output interface state and `renderPass` is VK_NULL_HANDLE, for each color attachment format defined by the `pColorAttachmentFormats` member of VkPipelineRenderingCreateInfo, if its potential format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
+- `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be equal to `stageCount`
+- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`: If the `independentBlend` feature is not enabled, all elements of `pAttachments` must be identical
+- `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`: If `logicOpEnable` is `VK_TRUE`, `logicOp` must be a valid VkLogicOp value
+- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`: If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkPipelineColorBlendAttachmentState structures
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: If `pipelineStageCreationFeedbackCount` is not `0`, `pPipelineStageCreationFeedbacks` must be a valid pointer to an array of `pipelineStageCreationFeedbackCount` VkPipelineCreationFeedback structures
+- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`: Each element of `pDynamicStates` must be unique
+- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428`: If `topology` is `VK_PRIMITIVE_TOPOLOGY_POINT_LIST`, `VK_PRIMITIVE_TOPOLOGY_LINE_LIST`, `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST`, `VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY`, `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY` or `VK_PRIMITIVE_TOPOLOGY_PATCH_LIST`, `primitiveRestartEnable` must be `VK_FALSE`
+- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429`: If the `geometryShader` feature is not enabled, `topology` must not be any of `VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY`, `VK_PRIMITIVE_TOPOLOGY_LINE_STRIP_WITH_ADJACENCY`, `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY` or `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP_WITH_ADJACENCY`
+- `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`: `minSampleShading` must be in the range [0,1]
+- `VUID-VkPipelineMultisampleStateCreateInfo-pSampleMask-parameter`: If `pSampleMask` is not `NULL`, `pSampleMask` must be a valid pointer to an array of \(\lceil{\mathit{rasterizationSamples} \over 32}\rceil\) VkSampleMask values
+- `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: `pName` must be the name of an `OpEntryPoint` in `module` with an execution model that matches `stage`
+- `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: If the identified entry point includes any variable in its interface that is declared with the `ClipDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxClipDistances`
+- `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: If the identified entry point includes any variable in its interface that is declared with the `CullDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxCullDistances`
+- `VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710`: If the identified entry point includes any variables in its interface that are declared with the `ClipDistance` or `CullDistance` `BuiltIn` decoration, those variables must not have array sizes which sum to more than `VkPhysicalDeviceLimits::maxCombinedClipAndCullDistances`
+- `VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711`: If the identified entry point includes any variable in its interface that is declared with the `SampleMask` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxSampleMaskWords`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00712`: If `stage` is `VK_SHADER_STAGE_VERTEX_BIT`, the identified entry point must not include any input variable in its interface that is decorated with `CullDistance`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00713`: If `stage` is `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT` or `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, and the identified entry point has an `OpExecutionMode` instruction specifying a patch size with `OutputVertices`, the patch size must be greater than `0` and less than or equal to `VkPhysicalDeviceLimits::maxTessellationPatchSize`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00714`: If `stage` is `VK_SHADER_STAGE_GEOMETRY_BIT`, the identified entry point must have an `OpExecutionMode` instruction specifying a maximum output vertex count that is greater than `0` and less than or equal to `VkPhysicalDeviceLimits::maxGeometryOutputVertices`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00715`: If `stage` is `VK_SHADER_STAGE_GEOMETRY_BIT`, the identified entry point must have an `OpExecutionMode` instruction specifying an invocation count that is greater than `0` and less than or equal to `VkPhysicalDeviceLimits::maxGeometryShaderInvocations`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-02596`: If `stage` is either `VK_SHADER_STAGE_VERTEX_BIT`, `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT`, `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, or `VK_SHADER_STAGE_GEOMETRY_BIT`, and the identified entry point writes to `Layer` for any primitive, it must write the same value to `Layer` for all vertices of a given primitive
+- `VUID-VkPipelineShaderStageCreateInfo-stage-02597`: If `stage` is either `VK_SHADER_STAGE_VERTEX_BIT`, `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT`, `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, or `VK_SHADER_STAGE_GEOMETRY_BIT`, and the identified entry point writes to `ViewportIndex` for any primitive, it must write the same value to `ViewportIndex` for all vertices of a given primitive
+- `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, the identified entry point must not include any output variables in its interface decorated with `CullDistance`
+- `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, and the identified entry point writes to `FragDepth` in any execution path, all execution paths that are not exclusive to helper invocations must either discard the fragment, or write or initialize the value of `FragDepth`
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02784`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set, the `subgroupSizeControl` feature must be enabled
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02785`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the `computeFullSubgroups` feature must be enabled
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, `flags` must not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, the `subgroupSizeControl` feature must be enabled, and `stage` must be a valid bit specified in `requiredSubgroupSizeStages`
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain and `stage` is `VK_SHADER_STAGE_COMPUTE_BIT`, the local workgroup size of the shader must be less than or equal to the product of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize` and `maxComputeWorkgroupSubgroups`
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, and `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the local workgroup size in the X dimension of the pipeline must be a multiple of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize`
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02758`: If `flags` has both the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` and `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flags set, the local workgroup size in the X dimension of the pipeline must be a multiple of `maxSubgroupSize`
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02759`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set and `flags` does not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set and no VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, the local workgroup size in the X dimension of the pipeline must be a multiple of `subgroupSize`
+- `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: The shader code used by the pipeline must be valid as described by the Khronos SPIR-V Specification after applying the specializations provided in `pSpecializationInfo`, if any, and then converting all specialization constants into fixed constants
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: `requiredSubgroupSize` must be a power-of-two integer
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: `requiredSubgroupSize` must be greater or equal to `minSubgroupSize`
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: `requiredSubgroupSize` must be less than or equal to `maxSubgroupSize`
+- `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`: `patchControlPoints` must be greater than zero and less than or equal to `VkPhysicalDeviceLimits::maxTessellationPatchSize`
+- `VUID-VkPipelineVertexInputStateCreateInfo-binding-00615`: For every `binding` specified by each element of `pVertexAttributeDescriptions`, a `VkVertexInputBindingDescription` must exist in `pVertexBindingDescriptions` with the same value of `binding`
+- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616`: All elements of `pVertexBindingDescriptions` must describe distinct binding numbers
+- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`: All elements of `pVertexAttributeDescriptions` must describe distinct attribute locations
+- `VUID-VkPipelineViewportStateCreateInfo-x-02821`: The `x` and `y` members of `offset` member of any element of `pScissors` must be greater than or equal to `0`
+- `VUID-VkPipelineViewportStateCreateInfo-offset-02822`: Evaluation of (`offset.x` + `extent.width`) must not cause a signed integer addition overflow for any element of `pScissors`
+- `VUID-VkPipelineViewportStateCreateInfo-offset-02823`: Evaluation of (`offset.y` + `extent.height`) must not cause a signed integer addition overflow for any element of `pScissors`
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`: If the graphics pipeline is being created without `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` and `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` and `viewportCount` must be identical
+- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`: If the graphics pipeline is being created with `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` set then `viewportCount` must be `0`, otherwise it must be greater than `0`
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`: If the graphics pipeline is being created with `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` must be `0`, otherwise it must be greater than `0`
+- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: `codeSize` must be greater than 0
+- `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
+- `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
+- `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
+- `VUID-VkShaderModuleCreateInfo-pCode-04146`: `pCode` must not declare any SPIR-V extension that is not supported by the API, as described by the Extension section of the SPIR-V Environment appendix
+- `VUID-VkShaderModuleCreateInfo-pCode-04147`: If `pCode` declares any of the SPIR-V extensions listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
+- `VUID-VkShaderModuleCreateInfo-codeSize-01086`: `codeSize` must be a multiple of 4
+- `VUID-VkShaderModuleCreateInfo-pCode-01087`: `pCode` must point to valid SPIR-V code, formatted and packed as described by the Khronos SPIR-V Specification
+- `VUID-VkShaderModuleCreateInfo-pCode-01088`: `pCode` must adhere to the validation rules described by the Validation Rules within a Module section of the SPIR-V Environment appendix
+- `VUID-VkSpecializationInfo-constantID-04911`: The `constantID` value of each element of `pMapEntries` must be unique within `pMapEntries`
+- `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
+- `VUID-VkVertexInputAttributeDescription-format-00623`: `format` must be allowed as a vertex buffer format, as specified by the `VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by `vkGetPhysicalDeviceFormatProperties`
+- `VUID-VkViewport-width-01771`: `width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0]
+- `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
+- `VUID-VkViewport-x-01774`: `x` must be greater than or equal to `viewportBoundsRange`[0]
+- `VUID-VkViewport-x-01232`: (`x` + `width`) must be less than or equal to `viewportBoundsRange`[1]
+- `VUID-VkViewport-y-01775`: `y` must be greater than or equal to `viewportBoundsRange`[0]
+- `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
+- `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
+- `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
+- `VUID-VkViewport-minDepth-02540`: `minDepth` must be between `0.0` and `1.0`, inclusive
+- `VUID-VkViewport-maxDepth-02541`: `maxDepth` must be between `0.0` and `1.0`, inclusive
+
 # Valid usage
 
 The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html). Settled by the wrappers:
@@ -933,7 +1313,7 @@ The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_graphics_pipelines<'a>(
+    pub unsafe fn create_graphics_pipelines<'a>(
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
@@ -952,7 +1332,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_graphics_pipelines_unchecked<'a>(
         &self,
@@ -1011,6 +1391,48 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
     }
     /**`vkCreateImage`
 
+# Safety
+
+The caller upholds these 37 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateImage-flags-00939`: If the `flags` member of `pCreateInfo` includes `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, creating this `VkImage` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
+- `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
+- `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
+- `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,
+- `VUID-VkImageCreateInfo-usage-00963`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set
+- `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
+- `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
+- `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-flags-00987`: If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`
+- `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
+- `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
+- `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
+- `VUID-VkImageCreateInfo-pNext-00990`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalImageFormatProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceImageFormatProperties2 with `format`, `imageType`, `tiling`, `usage`, and `flags` equal to those in this structure, and with a VkPhysicalDeviceExternalImageFormatInfo structure included in the `pNext` chain, with a `handleType` equal to any one of the handle types specified in VkExternalMemoryImageCreateInfo::`handleTypes`
+- `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
+- `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
+- `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
+- `VUID-VkImageCreateInfo-flags-01573`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`
+- `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
+- `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkImageCreateInfo-format-06412`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `imageType` must be `VK_IMAGE_TYPE_2D`
+- `VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260`: If `format` is a multi-planar format, and if `imageCreateFormatFeatures` (as defined in Image Creation Limits) does not contain `VK_FORMAT_FEATURE_DISJOINT_BIT`, then `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
+- `VUID-VkImageCreateInfo-format-01577`: If `format` is not a multi-planar format, and `flags` does not include `VK_IMAGE_CREATE_ALIAS_BIT`, `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
+- `VUID-VkImageCreateInfo-format-04712`: If `format` has a `_422` or `_420` suffix, `width` must be a multiple of 2
+- `VUID-VkImageCreateInfo-format-04713`: If `format` has a `_420` suffix, `height` must be a multiple of 2
+- `VUID-VkImageCreateInfo-format-02795`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02796`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02797`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02798`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-Format-02536`: If `Format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
+- `VUID-VkImageCreateInfo-format-02537`: If `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
+- `VUID-VkImageCreateInfo-format-02538`: If the `shaderStorageImageMultisample` feature is not enabled, `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` including `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkImageCreateInfo-pNext-06722`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain and VkImageFormatListCreateInfo::`viewFormatCount` is not zero, then each format in VkImageFormatListCreateInfo::`pViewFormats` must either be compatible with the `format` as described in the compatibility table or, if `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, be an uncompressed format that is size-compatible with `format`
+- `VUID-VkImageCreateInfo-flags-04738`: If `flags` does not contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` and the `pNext` chain includes a VkImageFormatListCreateInfo structure, then VkImageFormatListCreateInfo::`viewFormatCount` must be `0` or `1`
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
+
 # Valid usage
 
 The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImage.html). Settled by the wrappers:
@@ -1022,7 +1444,10 @@ The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
+    pub unsafe fn create_image<'a>(
+        &self,
+        create_info: &ImageCreateInfo<'a>,
+    ) -> Result<Image> {
         {
             let r = self.validate_create_image(create_info);
             r?;
@@ -1036,7 +1461,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_image`] checks at run time: `VUID-VkImageCreateInfo-mipLevels-00958`, `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`, `VUID-VkImageCreateInfo-extent-02252`, `VUID-VkImageCreateInfo-extent-02253`, `VUID-VkImageCreateInfo-extent-02254`, `VUID-VkImageCreateInfo-mipLevels-02255`, `VUID-VkImageCreateInfo-arrayLayers-02256`, `VUID-VkImageCreateInfo-samples-02258`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_image`] checks at run time: `VUID-VkImageCreateInfo-mipLevels-00958`, `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`, `VUID-VkImageCreateInfo-extent-02252`, `VUID-VkImageCreateInfo-extent-02253`, `VUID-VkImageCreateInfo-extent-02254`, `VUID-VkImageCreateInfo-mipLevels-02255`, `VUID-VkImageCreateInfo-arrayLayers-02256`, `VUID-VkImageCreateInfo-samples-02258`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_image_unchecked<'a>(
         &self,
@@ -1087,6 +1512,50 @@ The caller upholds the rules that [`Self::create_image`] checks at run time: `VU
     }
     /**`vkCreateImageView`
 
+# Safety
+
+The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkImageViewCreateInfo-image-01003`: If `image` was not created with `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT` then `viewType` must not be `VK_IMAGE_VIEW_TYPE_CUBE` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`
+- `VUID-VkImageViewCreateInfo-image-04441`: `image` must have been created with a `usage` value containing at least one of the usages defined in the valid image usage list for image views
+- `VUID-VkImageViewCreateInfo-None-02273`: The format features of the resultant image view must contain at least one bit
+- `VUID-VkImageViewCreateInfo-usage-02274`: If `usage` contains `VK_IMAGE_USAGE_SAMPLED_BIT`, then the format features of the resultant image view must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT`
+- `VUID-VkImageViewCreateInfo-usage-02275`: If `usage` contains `VK_IMAGE_USAGE_STORAGE_BIT`, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT`
+- `VUID-VkImageViewCreateInfo-usage-02276`: If `usage` contains `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkImageViewCreateInfo-usage-02277`: If `usage` contains `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageViewCreateInfo-usage-02652`: If `usage` contains `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, then the image view&#8217;s format features must contain at least one of `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageViewCreateInfo-subResourceRange-01021`: `viewType` must be compatible with the type of `image` as shown in the view type compatibility table
+- `VUID-VkImageViewCreateInfo-imageViewType-04973`: If `viewType` is `VK_IMAGE_VIEW_TYPE_1D`, `VK_IMAGE_VIEW_TYPE_2D`, or `VK_IMAGE_VIEW_TYPE_3D`; and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, then `subresourceRange.layerCount` must be 1
+- `VUID-VkImageViewCreateInfo-imageViewType-04974`: If `viewType` is `VK_IMAGE_VIEW_TYPE_1D`, `VK_IMAGE_VIEW_TYPE_2D`, or `VK_IMAGE_VIEW_TYPE_3D`; and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, then the remaining number of layers must be 1
+- `VUID-VkImageViewCreateInfo-viewType-02961`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be a multiple of `6`
+- `VUID-VkImageViewCreateInfo-viewType-02962`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be `6`
+- `VUID-VkImageViewCreateInfo-viewType-02963`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be a multiple of `6`
+- `VUID-VkImageViewCreateInfo-image-06723`: If `image` was created with `VK_IMAGE_TYPE_3D` but without `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set then `viewType` must not be `VK_IMAGE_VIEW_TYPE_2D_ARRAY`
+- `VUID-VkImageViewCreateInfo-image-04970`: If `image` was created with `VK_IMAGE_TYPE_3D` and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY` then `subresourceRange.levelCount` must be 1
+- `VUID-VkImageViewCreateInfo-image-04971`: If `image` was created with `VK_IMAGE_TYPE_3D` and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY` then VkImageCreateInfo::`flags` must not contain any of `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, and `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`
+- `VUID-VkImageViewCreateInfo-image-04972`: If `image` was created with a `samples` value not equal to `VK_SAMPLE_COUNT_1_BIT` then `viewType` must be either `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`
+- `VUID-VkImageViewCreateInfo-image-02724`: If `image` is a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.baseArrayLayer` must be less than the depth computed from `baseMipLevel` and `extent.depth` specified in VkImageCreateInfo when `image` was created, according to the formula defined in Image Miplevel Sizing
+- `VUID-VkImageViewCreateInfo-subresourceRange-02725`: If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `image` is a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.layerCount` must be non-zero and `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the depth computed from `baseMipLevel` and `extent.depth` specified in VkImageCreateInfo when `image` was created, according to the formula defined in Image Miplevel Sizing
+- `VUID-VkImageViewCreateInfo-image-06727`: If `image` was created with `VK_IMAGE_TYPE_3D` but without `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set then `viewType` must not be `VK_IMAGE_VIEW_TYPE_2D`
+- `VUID-VkImageViewCreateInfo-image-01482`: If `image` is not a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, or `viewType` is not `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-VkImageViewCreateInfo-subresourceRange-01483`: If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `image` is not a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, or `viewType` is not `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.layerCount` must be non-zero and `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-VkImageViewCreateInfo-image-01761`: If `image` was created with the `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` flag, but without the `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT` flag, and if the `format` of the `image` is not a multi-planar format, `format` must be compatible with the `format` used to create `image`, as defined in Format Compatibility Classes
+- `VUID-VkImageViewCreateInfo-image-01583`: If `image` was created with the `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT` flag, `format` must be compatible with, or must be an uncompressed format that is size-compatible with, the `format` used to create `image`
+- `VUID-VkImageViewCreateInfo-image-07072`: If `image` was created with the `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT` flag and `format` is a non-compressed format, the `levelCount` and `layerCount` members of `subresourceRange` must both be `1`
+- `VUID-VkImageViewCreateInfo-pNext-01585`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain of the VkImageCreateInfo structure used when creating `image` and VkImageFormatListCreateInfo::`viewFormatCount` is not zero then `format` must be one of the formats in VkImageFormatListCreateInfo::`pViewFormats`
+- `VUID-VkImageViewCreateInfo-image-01586`: If `image` was created with the `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` flag, if the `format` of the `image` is a multi-planar format, and if `subresourceRange.aspectMask` is one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`, then `format` must be compatible with the VkFormat for the plane of the `image` `format` indicated by `subresourceRange.aspectMask`, as defined in Compatible formats of planes of multi-planar formats
+- `VUID-VkImageViewCreateInfo-subresourceRange-07818`: If `subresourceRange.aspectMask` contains any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`, then it must only have a single bit set
+- `VUID-VkImageViewCreateInfo-image-01762`: If `image` was not created with the `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` flag, or if the `format` of the `image` is a multi-planar format and if `subresourceRange.aspectMask` is `VK_IMAGE_ASPECT_COLOR_BIT`, `format` must be identical to the `format` used to create `image`
+- `VUID-VkImageViewCreateInfo-format-06415`: If the image view requires a sampler {YCbCr} conversion and `usage` contains `VK_IMAGE_USAGE_SAMPLED_BIT`, then the `pNext` chain must include a VkSamplerYcbcrConversionInfo structure with a conversion value other than VK_NULL_HANDLE
+- `VUID-VkImageViewCreateInfo-format-04714`: If `format` has a `_422` or `_420` suffix then `image` must have been created with a width that is a multiple of 2
+- `VUID-VkImageViewCreateInfo-format-04715`: If `format` has a `_420` suffix then `image` must have been created with a height that is a multiple of 2
+- `VUID-VkImageViewCreateInfo-pNext-01970`: If the `pNext` chain includes a VkSamplerYcbcrConversionInfo structure with a `conversion` value other than VK_NULL_HANDLE, all members of `components` must have the identity swizzle
+- `VUID-VkImageViewCreateInfo-pNext-06658`: If the `pNext` chain includes a VkSamplerYcbcrConversionInfo structure with a `conversion` value other than VK_NULL_HANDLE, `format` must be the same used in VkSamplerYcbcrConversionCreateInfo::`format`
+- `VUID-VkImageViewCreateInfo-pNext-02662`: If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, and `image` was not created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, its `usage` member must not include any bits that were not set in the `usage` member of the VkImageCreateInfo structure used to create `image`
+- `VUID-VkImageViewCreateInfo-pNext-02663`: If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, `image` was created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, and `subresourceRange.aspectMask` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, the `usage` member of the VkImageViewUsageCreateInfo structure must not include any bits that were not set in the `usage` member of the VkImageStencilUsageCreateInfo structure used to create `image`
+- `VUID-VkImageViewCreateInfo-pNext-02664`: If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, `image` was created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, and `subresourceRange.aspectMask` includes bits other than `VK_IMAGE_ASPECT_STENCIL_BIT`, the `usage` member of the VkImageViewUsageCreateInfo structure must not include any bits that were not set in the `usage` member of the VkImageCreateInfo structure used to create `image`
+
 # Valid usage
 
 The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
@@ -1096,7 +1565,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
 - `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_image_view<'a>(
+    pub unsafe fn create_image_view<'a>(
         &self,
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<ImageView> {
@@ -1157,6 +1626,13 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
     }
     /**`vkCreatePipelineCache`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00768`: If `initialDataSize` is not `0`, it must be equal to the size of `pInitialData`, as returned by `vkGetPipelineCacheData` when `pInitialData` was originally retrieved
+- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769`: If `initialDataSize` is not `0`, `pInitialData` must have been retrieved from a previous call to `vkGetPipelineCacheData`
+
 # Valid usage
 
 The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html). Settled by the wrappers:
@@ -1166,7 +1642,7 @@ The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khr
 - `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_pipeline_cache<'a>(
+    pub unsafe fn create_pipeline_cache<'a>(
         &self,
         create_info: &PipelineCacheCreateInfo<'a>,
     ) -> Result<PipelineCache> {
@@ -1206,6 +1682,19 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
     }
     /**`vkCreatePipelineLayout`
 
+# Safety
+
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02214`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorInlineUniformBlocks`
+- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02215`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorUpdateAfterBindInlineUniformBlocks`
+- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02216`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetInlineUniformBlocks`
+- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02217`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetUpdateAfterBindInlineUniformBlocks`
+- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561`: Elements of `pSetLayouts` must be valid VkDescriptorSetLayout objects
+- `VUID-VkPushConstantRange-offset-00295`: `offset` must be a multiple of `4`
+- `VUID-VkPushConstantRange-size-00297`: `size` must be a multiple of `4`
+- `VUID-VkPushConstantRange-size-00298`: `size` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `offset`
+
 # Valid usage
 
 The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
@@ -1215,7 +1704,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
 - `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_pipeline_layout<'a>(
+    pub unsafe fn create_pipeline_layout<'a>(
         &self,
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<PipelineLayout> {
@@ -1232,7 +1721,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
 
 # Safety
 
-The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time: `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286`, `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03020`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03021`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03022`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03023`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03024`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03025`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03026`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03027`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03028`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03029`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03030`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03031`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03032`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03033`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03034`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03035`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03036`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03037`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03039`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03041`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03042`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03043`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time: `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286`, `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03020`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03021`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03022`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03023`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03024`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03025`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03026`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03027`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03028`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03029`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03030`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03031`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03032`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03033`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03034`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03035`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03036`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03037`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03039`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03041`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03042`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03043`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_pipeline_layout_unchecked<'a>(
         &self,
@@ -1283,6 +1772,13 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
     }
     /**`vkCreateQueryPool`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkQueryPoolCreateInfo-queryType-00792`: If `queryType` is `VK_QUERY_TYPE_PIPELINE_STATISTICS`, `pipelineStatistics` must be a valid combination of VkQueryPipelineStatisticFlagBits values
+- `VUID-VkQueryPoolCreateInfo-queryCount-02763`: `queryCount` must be greater than 0
+
 # Valid usage
 
 The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateQueryPool.html). Settled by the wrappers:
@@ -1292,7 +1788,7 @@ The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos
 - `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_query_pool<'a>(
+    pub unsafe fn create_query_pool<'a>(
         &self,
         create_info: &QueryPoolCreateInfo<'a>,
     ) -> Result<QueryPool> {
@@ -1338,6 +1834,57 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
     }
     /**`vkCreateRenderPass`
 
+# Safety
+
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkAttachmentDescription-format-06698`: `format` must not be VK_FORMAT_UNDEFINED
+- `VUID-VkAttachmentDescription-format-06242`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription-format-06243`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription-format-06906`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription-format-06907`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo-pAttachments-00836`: For any member of `pAttachments` with a `loadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo-pAttachments-02511`: For any member of `pAttachments` with a `stencilLoadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo-pDependencies-00837`: For any element of `pDependencies`, if the `srcSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `srcStageMask` member of that dependency must be a pipeline stage supported by the pipeline identified by the `pipelineBindPoint` member of the source subpass
+- `VUID-VkRenderPassCreateInfo-pDependencies-00838`: For any element of `pDependencies`, if the `dstSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `dstStageMask` member of that dependency must be a pipeline stage supported by the pipeline identified by the `pipelineBindPoint` member of the destination subpass
+- `VUID-VkRenderPassCreateInfo-pAttachments-01566`: For any member of `pAttachments` with a `loadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo-pAttachments-01567`: For any member of `pAttachments` with a `stencilLoadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo-pNext-01963`: If the `pNext` chain includes a VkRenderPassInputAttachmentAspectCreateInfo structure, for any element of the `pInputAttachments` member of any element of `pSubpasses` where the `attachment` member is not `VK_ATTACHMENT_UNUSED`, the `aspectMask` member of the corresponding element of VkRenderPassInputAttachmentAspectCreateInfo::`pAspectReferences` must only include aspects that are present in images of the format specified by the element of `pAttachments` at `attachment`
+- `VUID-VkRenderPassCreateInfo-pNext-01929`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, if its `dependencyCount` member is not zero, it must be equal to `dependencyCount`
+- `VUID-VkRenderPassCreateInfo-pNext-01930`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, for each non-zero element of `pViewOffsets`, the `srcSubpass` and `dstSubpass` members of `pDependencies` at the same index must not be equal
+- `VUID-VkRenderPassCreateInfo-pNext-02512`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, for any element of `pDependencies` with a `dependencyFlags` member that does not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`, the corresponding element of the `pViewOffsets` member of that VkRenderPassMultiviewCreateInfo instance must be `0`
+- `VUID-VkRenderPassCreateInfo-pNext-02513`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, elements of its `pViewMasks` member must either all be `0`, or all not be `0`
+- `VUID-VkRenderPassCreateInfo-pNext-02514`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, and each element of its `pViewMasks` member is `0`, the `dependencyFlags` member of each element of `pDependencies` must not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
+- `VUID-VkRenderPassCreateInfo-pNext-02515`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, and each element of its `pViewMasks` member is `0`, its `correlationMaskCount` member must be `0`
+- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841`: Each view index must not be set in more than one element of `pCorrelationMasks`
+- `VUID-VkRenderPassMultiviewCreateInfo-multiview-06555`: If the `multiview` feature is not enabled, each element of `pViewMasks` must be `0`
+- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697`: The index of the most significant bit in each element of `pViewMasks` must be less than `maxMultiviewViewCount`
+- `VUID-VkSubpassDependency-srcSubpass-00864`: `srcSubpass` must be less than or equal to `dstSubpass`, unless one of them is `VK_SUBPASS_EXTERNAL`, to avoid cyclic dependencies and ensure a valid execution order
+- `VUID-VkSubpassDependency-srcSubpass-00865`: `srcSubpass` and `dstSubpass` must not both be equal to `VK_SUBPASS_EXTERNAL`
+- `VUID-VkSubpassDependency-srcSubpass-06809`: If `srcSubpass` is equal to `dstSubpass` and `srcStageMask` includes a framebuffer-space stage, `dstStageMask` must only contain framebuffer-space stages
+- `VUID-VkSubpassDependency-srcAccessMask-00868`: Any access flag included in `srcAccessMask` must be supported by one of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
+- `VUID-VkSubpassDependency-dstAccessMask-00869`: Any access flag included in `dstAccessMask` must be supported by one of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
+- `VUID-VkSubpassDependency-srcSubpass-02243`: If `srcSubpass` equals `dstSubpass`, and `srcStageMask` and `dstStageMask` both include a framebuffer-space stage, then `dependencyFlags` must include `VK_DEPENDENCY_BY_REGION_BIT`
+- `VUID-VkSubpassDependency-srcStageMask-03937`: If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
+- `VUID-VkSubpassDependency-dstStageMask-03937`: If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
+- `VUID-VkSubpassDependency-srcSubpass-00872`: If `srcSubpass` equals `dstSubpass` and that subpass has more than one bit set in the view mask, then `dependencyFlags` must include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
+- `VUID-VkSubpassDescription-attachment-06915`: If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED`, ts `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`
+- `VUID-VkSubpassDescription-loadOp-00846`: If the first use of an attachment in this render pass is as an input attachment, and the attachment is not also used as a color or depth/stencil attachment in the same subpass, then `loadOp` must not be `VK_ATTACHMENT_LOAD_OP_CLEAR`
+- `VUID-VkSubpassDescription-pResolveAttachments-00847`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not be `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescription-pResolveAttachments-00848`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescription-pResolveAttachments-00849`: If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescription-pResolveAttachments-00850`: If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have the same VkFormat as its corresponding color attachment
+- `VUID-VkSubpassDescription-pColorAttachments-06868`: If neither the VK_AMD_mixed_attachment_samples extension nor the VK_NV_framebuffer_mixed_samples extension is enabled, all attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have the same sample count
+- `VUID-VkSubpassDescription-pInputAttachments-02647`: All attachments in `pInputAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain at least `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription-pColorAttachments-02648`: All attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription-pResolveAttachments-02649`: All attachments in `pResolveAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription-pDepthStencilAttachment-02650`: If `pDepthStencilAttachment` is not `NULL` and the attachment is not `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription-pDepthStencilAttachment-01418`: If neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, and if `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED` and any attachments in `pColorAttachments` are not `VK_ATTACHMENT_UNUSED`, they must have the same sample count
+- `VUID-VkSubpassDescription-attachment-00853`: Each element of `pPreserveAttachments` must not be `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescription-pPreserveAttachments-00854`: Each element of `pPreserveAttachments` must not also be an element of any other member of the subpass description
+- `VUID-VkSubpassDescription-layout-02519`: If any attachment is used by more than one VkAttachmentReference member, then each use must use the same `layout`
+- `VUID-VkSubpassDescription-pDepthStencilAttachment-04438`: `pDepthStencilAttachment` and `pColorAttachments` must not contain references to the same attachment
+
 # Valid usage
 
 The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html). Settled by the wrappers:
@@ -1347,7 +1894,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
 - `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_render_pass<'a>(
+    pub unsafe fn create_render_pass<'a>(
         &self,
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
@@ -1364,7 +1911,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
 
 # Safety
 
-The caller upholds the rules that [`Self::create_render_pass`] checks at run time: `VUID-VkRenderPassCreateInfo-attachment-00834`, `VUID-VkRenderPassCreateInfo-pDependencies-06866`, `VUID-VkRenderPassCreateInfo-pDependencies-06867`, `VUID-VkRenderPassCreateInfo-pNext-01926`, `VUID-VkRenderPassCreateInfo-pNext-01927`, `VUID-VkRenderPassCreateInfo-pNext-01928`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::create_render_pass`] checks at run time: `VUID-VkRenderPassCreateInfo-attachment-00834`, `VUID-VkRenderPassCreateInfo-pDependencies-06866`, `VUID-VkRenderPassCreateInfo-pDependencies-06867`, `VUID-VkRenderPassCreateInfo-pNext-01926`, `VUID-VkRenderPassCreateInfo-pNext-01927`, `VUID-VkRenderPassCreateInfo-pNext-01928`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_render_pass_unchecked<'a>(
         &self,
@@ -1388,6 +1935,25 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
     }
     /**`vkCreateSampler`
 
+# Safety
+
+The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
+- `VUID-VkSamplerCreateInfo-mipLodBias-01069`: The absolute value of `mipLodBias` must be less than or equal to `VkPhysicalDeviceLimits::maxSamplerLodBias`
+- `VUID-VkSamplerCreateInfo-anisotropyEnable-01071`: If `anisotropyEnable` is `VK_TRUE`, `maxAnisotropy` must be between `1.0` and `VkPhysicalDeviceLimits::maxSamplerAnisotropy`, inclusive
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: If `unnormalizedCoordinates` is `VK_TRUE`, `minFilter` and `magFilter` must be equal
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`
+- `VUID-VkSamplerCreateInfo-addressModeU-01078`: If any of `addressModeU`, `addressModeV` or `addressModeW` are `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`, `borderColor` must be a valid VkBorderColor value
+- `VUID-VkSamplerCreateInfo-addressModeU-01079`: If `samplerMirrorClampToEdge` is not enabled, and if the VK_KHR_sampler_mirror_clamp_to_edge extension is not enabled, `addressModeU`, `addressModeV` and `addressModeW` must not be `VK_SAMPLER_ADDRESS_MODE_MIRROR_CLAMP_TO_EDGE`
+- `VUID-VkSamplerCreateInfo-compareEnable-01080`: If `compareEnable` is `VK_TRUE`, `compareOp` must be a valid VkCompareOp value
+- `VUID-VkSamplerCreateInfo-minFilter-01645`: If sampler {YCbCr} conversion is enabled and the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_SEPARATE_RECONSTRUCTION_FILTER_BIT`, `minFilter` and `magFilter` must be equal to the sampler {YCbCr} conversion&#8217;s `chromaFilter`
+- `VUID-VkSamplerCreateInfo-addressModeU-01646`: If sampler {YCbCr} conversion is enabled, `addressModeU`, `addressModeV`, and `addressModeW` must be `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE`, `anisotropyEnable` must be `VK_FALSE`, and `unnormalizedCoordinates` must be `VK_FALSE`
+- `VUID-VkSamplerCreateInfo-None-01647`: if sampler {YCbCr} conversion is enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
+- `VUID-VkSamplerCreateInfo-pNext-06726`: If `samplerFilterMinmax` is not enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
+- `VUID-VkSamplerCreateInfo-compareEnable-01423`: If `compareEnable` is `VK_TRUE`, the `reductionMode` member of VkSamplerReductionModeCreateInfo must be `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
+
 # Valid usage
 
 The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html). Settled by the wrappers:
@@ -1399,7 +1965,7 @@ The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_sampler<'a>(
+    pub unsafe fn create_sampler<'a>(
         &self,
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<Sampler> {
@@ -1460,6 +2026,14 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
     }
     /**`vkCreateSemaphore`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124`: The bits in `handleTypes` must be supported and compatible, as reported by VkExternalSemaphoreProperties
+- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero
+
 # Valid usage
 
 The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html). Settled by the wrappers:
@@ -1469,7 +2043,7 @@ The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos
 - `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_semaphore<'a>(
+    pub unsafe fn create_semaphore<'a>(
         &self,
         create_info: &SemaphoreCreateInfo<'a>,
     ) -> Result<Semaphore> {
@@ -1518,6 +2092,19 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
 # Safety
 
 The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.
+
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateShaderModule-pCreateInfo-06905`: If `pCreateInfo` is not `NULL`, `pCreateInfo->pNext` must be `NULL`
+- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: `codeSize` must be greater than 0
+- `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
+- `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
+- `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
+- `VUID-VkShaderModuleCreateInfo-pCode-04146`: `pCode` must not declare any SPIR-V extension that is not supported by the API, as described by the Extension section of the SPIR-V Environment appendix
+- `VUID-VkShaderModuleCreateInfo-pCode-04147`: If `pCode` declares any of the SPIR-V extensions listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
+- `VUID-VkShaderModuleCreateInfo-codeSize-01086`: `codeSize` must be a multiple of 4
+- `VUID-VkShaderModuleCreateInfo-pCode-01087`: `pCode` must point to valid SPIR-V code, formatted and packed as described by the Khronos SPIR-V Specification
+- `VUID-VkShaderModuleCreateInfo-pCode-01088`: `pCode` must adhere to the validation rules described by the Validation Rules within a Module section of the SPIR-V Environment appendix
 
 # Valid usage
 
@@ -1600,6 +2187,17 @@ The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.
     }
     /**`vkFlushMappedMemoryRanges`
 
+# Safety
+
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkMappedMemoryRange-memory-00684`: `memory` must be currently host mapped
+- `VUID-VkMappedMemoryRange-size-00685`: If `size` is not equal to `VK_WHOLE_SIZE`, `offset` and `size` must specify a range contained within the currently mapped range of `memory`
+- `VUID-VkMappedMemoryRange-size-00686`: If `size` is equal to `VK_WHOLE_SIZE`, `offset` must be within the currently mapped range of `memory`
+- `VUID-VkMappedMemoryRange-offset-00687`: `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
+- `VUID-VkMappedMemoryRange-size-01389`: If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory object, or be equal to the end of the memory object
+- `VUID-VkMappedMemoryRange-size-01390`: If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
+
 # Valid usage
 
 The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html). Settled by the wrappers:
@@ -1608,7 +2206,7 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
 - `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
-    pub fn flush_mapped_memory_ranges<'a>(
+    pub unsafe fn flush_mapped_memory_ranges<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
@@ -1624,7 +2222,7 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
 
 # Safety
 
-The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn flush_mapped_memory_ranges_unchecked<'a>(
         &self,
@@ -1667,7 +2265,7 @@ The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://regi
 
 # Safety
 
-The caller upholds the rules that [`Self::get_buffer_memory_requirements`] checks at run time: `VUID-vkGetBufferMemoryRequirements-buffer-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_buffer_memory_requirements`] checks at run time: `VUID-vkGetBufferMemoryRequirements-buffer-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_buffer_memory_requirements_unchecked(
         &self,
@@ -1681,6 +2279,12 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements`] check
     }
     /**`vkGetDeviceMemoryCommitment`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetDeviceMemoryCommitment-memory-00690`: `memory` must have been created with a memory type that reports `VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT`
+
 # Valid usage
 
 The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html). Settled by the wrappers:
@@ -1692,7 +2296,7 @@ The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://regist
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_device_memory_commitment(
+    pub unsafe fn get_device_memory_commitment(
         &self,
         memory: &DeviceMemory,
     ) -> Result<vk::DeviceSize> {
@@ -1708,7 +2312,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_memory_commitment_unchecked(
         &self,
@@ -1722,6 +2326,14 @@ The caller upholds the rules that [`Self::get_device_memory_commitment`] checks 
     }
     /**`vkGetDeviceQueue`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`: `queueFamilyIndex` must be one of the queue family indices specified when `device` was created, via the VkDeviceQueueCreateInfo structure
+- `VUID-vkGetDeviceQueue-queueIndex-00385`: `queueIndex` must be less than the value of VkDeviceQueueCreateInfo::`queueCount` for the queue family indicated by `queueFamilyIndex` when `device` was created
+- `VUID-vkGetDeviceQueue-flags-01841`: VkDeviceQueueCreateInfo::`flags` must have been set to zero when `device` was created
+
 # Valid usage
 
 The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html). Settled by the wrappers:
@@ -1731,7 +2343,11 @@ The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_device_queue(&self, queue_family_index: u32, queue_index: u32) -> Queue {
+    pub unsafe fn get_device_queue(
+        &self,
+        queue_family_index: u32,
+        queue_index: u32,
+    ) -> Queue {
         let fp = self.fns().fp_v1_0().get_device_queue;
         let mut out = vk::Queue::null();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -1744,6 +2360,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     }
     /**`vkGetEventStatus`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetEventStatus-event-03940`: `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
+
 # Valid usage
 
 The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html). Settled by the wrappers:
@@ -1754,7 +2376,7 @@ The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
+    pub unsafe fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
         {
             let r = self.validate_get_event_status(event);
             r?;
@@ -1767,7 +2389,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_event_status_unchecked(
         &self,
@@ -1804,7 +2426,7 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_fence_status`] checks at run time: `VUID-vkGetFenceStatus-fence-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_fence_status`] checks at run time: `VUID-vkGetFenceStatus-fence-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_fence_status_unchecked(
         &self,
@@ -1821,6 +2443,12 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
     }
     /**`vkGetImageMemoryRequirements`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetImageMemoryRequirements-image-01588`: `image` must not have been created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag set
+
 # Valid usage
 
 The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements.html). Settled by the wrappers:
@@ -1832,7 +2460,7 @@ The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_image_memory_requirements(
+    pub unsafe fn get_image_memory_requirements(
         &self,
         image: &Image,
     ) -> Result<vk::MemoryRequirements> {
@@ -1848,7 +2476,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_image_memory_requirements`] checks at run time: `VUID-vkGetImageMemoryRequirements-image-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_image_memory_requirements`] checks at run time: `VUID-vkGetImageMemoryRequirements-image-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_image_memory_requirements_unchecked(
         &self,
@@ -1888,7 +2516,7 @@ The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https:/
 
 # Safety
 
-The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`] checks at run time: `VUID-vkGetImageSparseMemoryRequirements-image-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`] checks at run time: `VUID-vkGetImageSparseMemoryRequirements-image-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_image_sparse_memory_requirements_unchecked(
         &self,
@@ -1909,6 +2537,21 @@ The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`]
     }
     /**`vkGetImageSubresourceLayout`
 
+# Safety
+
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetImageSubresourceLayout-image-07789`: `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR`
+- `VUID-vkGetImageSubresourceLayout-aspectMask-00997`: The `aspectMask` member of `pSubresource` must only have a single bit set
+- `VUID-vkGetImageSubresourceLayout-mipLevel-01716`: The `mipLevel` member of `pSubresource` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717`: The `arrayLayer` member of `pSubresource` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout-format-04461`: If `format` is a color format, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04462`: If `format` has a depth component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04463`: If `format` has a stencil component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04464`: If `format` does not contain a stencil or depth component, the `aspectMask` member of `pSubresource` must not contain `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-01581`: If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with two planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-01582`: If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with three planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+
 # Valid usage
 
 The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html). Settled by the wrappers:
@@ -1921,7 +2564,7 @@ The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://regist
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_image_subresource_layout(
+    pub unsafe fn get_image_subresource_layout(
         &self,
         image: &Image,
         subresource: &vk::ImageSubresource,
@@ -1938,7 +2581,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_image_subresource_layout_unchecked(
         &self,
@@ -1986,7 +2629,7 @@ The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.kh
 
 # Safety
 
-The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at run time: `VUID-vkGetPipelineCacheData-pipelineCache-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at run time: `VUID-vkGetPipelineCacheData-pipelineCache-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_pipeline_cache_data_unchecked(
         &self,
@@ -2064,7 +2707,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, `VUID-vkGetQueryPoolResults-firstQuery-00813`, `VUID-vkGetQueryPoolResults-firstQuery-00816`, `VUID-vkGetQueryPoolResults-flags-00815`, `VUID-vkGetQueryPoolResults-flags-02827`, `VUID-vkGetQueryPoolResults-dataSize-00817`, `VUID-vkGetQueryPoolResults-queryType-00818`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, `VUID-vkGetQueryPoolResults-firstQuery-00813`, `VUID-vkGetQueryPoolResults-firstQuery-00816`, `VUID-vkGetQueryPoolResults-flags-00815`, `VUID-vkGetQueryPoolResults-flags-02827`, `VUID-vkGetQueryPoolResults-dataSize-00817`, `VUID-vkGetQueryPoolResults-queryType-00818`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_query_pool_results_unchecked(
         &self,
@@ -2121,7 +2764,7 @@ The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registr
 
 # Safety
 
-The caller upholds the rules that [`Self::get_render_area_granularity`] checks at run time: `VUID-vkGetRenderAreaGranularity-renderPass-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_render_area_granularity`] checks at run time: `VUID-vkGetRenderAreaGranularity-renderPass-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_render_area_granularity_unchecked(
         &self,
@@ -2135,6 +2778,17 @@ The caller upholds the rules that [`Self::get_render_area_granularity`] checks a
     }
     /**`vkInvalidateMappedMemoryRanges`
 
+# Safety
+
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkMappedMemoryRange-memory-00684`: `memory` must be currently host mapped
+- `VUID-VkMappedMemoryRange-size-00685`: If `size` is not equal to `VK_WHOLE_SIZE`, `offset` and `size` must specify a range contained within the currently mapped range of `memory`
+- `VUID-VkMappedMemoryRange-size-00686`: If `size` is equal to `VK_WHOLE_SIZE`, `offset` must be within the currently mapped range of `memory`
+- `VUID-VkMappedMemoryRange-offset-00687`: `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
+- `VUID-VkMappedMemoryRange-size-01389`: If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory object, or be equal to the end of the memory object
+- `VUID-VkMappedMemoryRange-size-01390`: If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
+
 # Valid usage
 
 The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html). Settled by the wrappers:
@@ -2143,7 +2797,7 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
 - `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
-    pub fn invalidate_mapped_memory_ranges<'a>(
+    pub unsafe fn invalidate_mapped_memory_ranges<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
@@ -2159,7 +2813,7 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
 
 # Safety
 
-The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] checks at run time: `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] checks at run time: `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn invalidate_mapped_memory_ranges_unchecked<'a>(
         &self,
@@ -2177,6 +2831,12 @@ The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] chec
     }
     /**`vkMergePipelineCaches`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkMergePipelineCaches-dstCache-00770`: `dstCache` must not appear in the list of source caches
+
 # Valid usage
 
 The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergePipelineCaches.html). Settled by the wrappers:
@@ -2190,7 +2850,7 @@ The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn merge_pipeline_caches(
+    pub unsafe fn merge_pipeline_caches(
         &self,
         dst_cache: &PipelineCache,
         src_caches: &[&PipelineCache],
@@ -2213,7 +2873,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn merge_pipeline_caches_unchecked(
         &self,
@@ -2281,7 +2941,7 @@ The rules are on [`vkResetCommandPool`'s reference page](https://registry.khrono
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_command_pool_unchecked(
         &self,
@@ -2339,7 +2999,7 @@ The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khr
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_descriptor_pool_unchecked(
         &self,
@@ -2363,6 +3023,14 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
     }
     /**`vkResetEvent`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkResetEvent-event-03821`: There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
+- `VUID-vkResetEvent-event-03822`: There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
+- `VUID-vkResetEvent-event-03823`: `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
+
 # Valid usage
 
 The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html). Settled by the wrappers:
@@ -2373,7 +3041,7 @@ The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn reset_event(&self, event: &Event) -> Result<()> {
+    pub unsafe fn reset_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2392,7 +3060,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2443,7 +3111,7 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2468,6 +3136,12 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
     }
     /**`vkSetEvent`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkSetEvent-event-03941`: `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
+
 # Valid usage
 
 The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html). Settled by the wrappers:
@@ -2478,7 +3152,7 @@ The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vu
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn set_event(&self, event: &Event) -> Result<()> {
+    pub unsafe fn set_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2497,7 +3171,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_event_unchecked(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2516,6 +3190,64 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
     }
     /**`vkUpdateDescriptorSets`
 
+# Safety
+
+The caller upholds these 53 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, elements of the `pTexelBufferView` member of `pDescriptorWrites`[i] must have been created on `device`
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `buffer` member of any element of the `pBufferInfo` member of `pDescriptorWrites`[i] must have been created on `device`
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `dstSet` was not allocated with a layout that included immutable samplers for `dstBinding` with `descriptorType`, the `sampler` member of any element of the `pImageInfo` member of `pDescriptorWrites`[i] must have been created on `device`
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` the `imageView` member of any element of `pDescriptorWrites`[i] must have been created on `device`
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER`, `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, or `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, `pDescriptorWrites`[i].`pImageInfo` must be a valid pointer to an array of `pDescriptorWrites`[i].`descriptorCount` valid `VkDescriptorImageInfo` structures
+- `VUID-vkUpdateDescriptorSets-None-03047`: Descriptor bindings updated by this command which were created without the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` or `VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT` bits set must not be used by any command that was recorded to a command buffer which is in the pending state
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: Host access to `pDescriptorWrites`[i].`dstSet` and `pDescriptorCopies`[i].`dstSet` must be externally synchronized unless explicitly denoted otherwise for specific flags
+- `VUID-VkCopyDescriptorSet-srcSet-00349`: If `srcSet` is equal to `dstSet`, then the source and destination ranges of descriptors must not overlap, where the ranges may include array elements from consecutive bindings as described by consecutive binding updates
+- `VUID-VkCopyDescriptorSet-dstBinding-02753`: If the descriptor type of the descriptor set binding specified by `dstBinding` is `VK_DESCRIPTOR_TYPE_SAMPLER`, then `dstSet` must not have been allocated with a layout that included immutable samplers for `dstBinding`
+- `VUID-VkCopyDescriptorSet-srcBinding-02223`: If the descriptor type of the descriptor set binding specified by `srcBinding` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `srcArrayElement` must be an integer multiple of `4`
+- `VUID-VkCopyDescriptorSet-dstBinding-02224`: If the descriptor type of the descriptor set binding specified by `dstBinding` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4`
+- `VUID-VkCopyDescriptorSet-srcBinding-02225`: If the descriptor type of the descriptor set binding specified by either `srcBinding` or `dstBinding` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4`
+- `VUID-VkCopyDescriptorSet-srcSet-01918`: If `srcSet`&#8217;s layout was created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set, then `dstSet`&#8217;s layout must also have been created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set
+- `VUID-VkCopyDescriptorSet-srcSet-01920`: If the descriptor pool from which `srcSet` was allocated was created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set, then the descriptor pool from which `dstSet` was allocated must also have been created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set
+- `VUID-VkCopyDescriptorSet-srcSet-04886`: If `srcSet`&#8217;s layout was created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set, then `dstSet`&#8217;s layout must also have been created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set
+- `VUID-VkCopyDescriptorSet-srcSet-04888`: If the descriptor pool from which `srcSet` was allocated was created without the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set, then the descriptor pool from which `dstSet` was allocated must also have been created without the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set
+- `VUID-VkDescriptorBufferInfo-buffer-02998`: If the `nullDescriptor` feature is not enabled, `buffer` must not be VK_NULL_HANDLE
+- `VUID-VkDescriptorImageInfo-imageView-06711`: `imageView` must not be 2D image view created from a 3D image
+- `VUID-VkDescriptorImageInfo-imageView-06712`: `imageView` must not be a 2D array image view created from a 3D image
+- `VUID-VkDescriptorImageInfo-imageView-01976`: If `imageView` is created from a depth/stencil image, the `aspectMask` used to create the `imageView` must include either `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT` but not both
+- `VUID-VkDescriptorImageInfo-imageLayout-00344`: `imageLayout` must match the actual VkImageLayout of each subresource accessible from `imageView` at the time this descriptor is accessed as defined by the image layout matching rules
+- `VUID-VkDescriptorImageInfo-sampler-01564`: If `sampler` is used and the VkFormat of the image is a multi-planar format, the image must have been created with `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`, and the `aspectMask` of the `imageView` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or (for three-plane formats only) `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkWriteDescriptorSet-descriptorCount-00318`: All consecutive bindings updated via a single `VkWriteDescriptorSet` structure, except those with a `descriptorCount` of zero, must all either use immutable samplers or must all not use immutable samplers
+- `VUID-VkWriteDescriptorSet-dstSet-00320`: `dstSet` must be a valid VkDescriptorSet handle
+- `VUID-VkWriteDescriptorSet-descriptorType-02994`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, each element of `pTexelBufferView` must be either a valid `VkBufferView` handle or VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSet-descriptorType-02995`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` and the `nullDescriptor` feature is not enabled, each element of `pTexelBufferView` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSet-descriptorType-00325`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `dstSet` was not allocated with a layout that included immutable samplers for `dstBinding` with `descriptorType`, the `sampler` member of each element of `pImageInfo` must be a valid `VkSampler` object
+- `VUID-VkWriteDescriptorSet-descriptorType-02996`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, or `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the `imageView` member of each element of `pImageInfo` must be either a valid `VkImageView` handle or VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSet-descriptorType-02997`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, or `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, and the `nullDescriptor` feature is not enabled, the `imageView` member of each element of `pImageInfo` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSet-descriptorType-07683`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSet-descriptorType-00327`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` or `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, the `offset` member of each element of `pBufferInfo` must be a multiple of `VkPhysicalDeviceLimits::minUniformBufferOffsetAlignment`
+- `VUID-VkWriteDescriptorSet-descriptorType-00328`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `offset` member of each element of `pBufferInfo` must be a multiple of `VkPhysicalDeviceLimits::minStorageBufferOffsetAlignment`
+- `VUID-VkWriteDescriptorSet-descriptorType-00329`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, and the `buffer` member of any element of `pBufferInfo` is the handle of a non-sparse buffer, then that buffer must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkWriteDescriptorSet-descriptorType-00330`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` or `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, the `buffer` member of each element of `pBufferInfo` must have been created with `VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-00331`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `buffer` member of each element of `pBufferInfo` must have been created with `VK_BUFFER_USAGE_STORAGE_BUFFER_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-00332`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` or `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, the `range` member of each element of `pBufferInfo`, or the effective range if `range` is `VK_WHOLE_SIZE`, must be less than or equal to `VkPhysicalDeviceLimits::maxUniformBufferRange`
+- `VUID-VkWriteDescriptorSet-descriptorType-00333`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `range` member of each element of `pBufferInfo`, or the effective range if `range` is `VK_WHOLE_SIZE`, must be less than or equal to `VkPhysicalDeviceLimits::maxStorageBufferRange`
+- `VUID-VkWriteDescriptorSet-descriptorType-00334`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER`, the `VkBuffer` that each element of `pTexelBufferView` was created from must have been created with `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-00335`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, the `VkBuffer` that each element of `pTexelBufferView` was created from must have been created with `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-00336`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` or `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with the identity swizzle
+- `VUID-VkWriteDescriptorSet-descriptorType-07729`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with exactly one aspect
+- `VUID-VkWriteDescriptorSet-descriptorType-00337`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-04149`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Sampled Image
+- `VUID-VkWriteDescriptorSet-descriptorType-04150`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Combined Image Sampler
+- `VUID-VkWriteDescriptorSet-descriptorType-04151`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Input Attachment
+- `VUID-VkWriteDescriptorSet-descriptorType-04152`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Storage Image
+- `VUID-VkWriteDescriptorSet-descriptorType-00338`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-00339`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_STORAGE_BIT` set
+- `VUID-VkWriteDescriptorSet-descriptorType-02752`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER`, then `dstSet` must not have been allocated with a layout that included immutable samplers for `dstBinding`
+- `VUID-VkWriteDescriptorSet-descriptorType-02219`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4`
+- `VUID-VkWriteDescriptorSet-descriptorType-02220`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4`
+- `VUID-VkWriteDescriptorSet-descriptorType-02221`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, the `pNext` chain must include a VkWriteDescriptorSetInlineUniformBlock structure whose `dataSize` member equals `descriptorCount`
+- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222`: `dataSize` must be an integer multiple of `4`
+
 # Valid usage
 
 The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
@@ -2526,7 +3258,7 @@ The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn update_descriptor_sets<'a>(
+    pub unsafe fn update_descriptor_sets<'a>(
         &self,
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
@@ -2552,7 +3284,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, `VUID-VkWriteDescriptorSet-dstBinding-00315`, `VUID-VkWriteDescriptorSet-dstBinding-00316`, `VUID-VkWriteDescriptorSet-descriptorType-00319`, `VUID-VkWriteDescriptorSet-dstArrayElement-00321`, `VUID-VkWriteDescriptorSet-descriptorCount-00317`, `VUID-VkCopyDescriptorSet-srcBinding-00345`, `VUID-VkCopyDescriptorSet-srcArrayElement-00346`, `VUID-VkCopyDescriptorSet-dstBinding-00347`, `VUID-VkCopyDescriptorSet-dstArrayElement-00348`, `VUID-VkCopyDescriptorSet-dstBinding-02632`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, `VUID-VkWriteDescriptorSet-dstBinding-00315`, `VUID-VkWriteDescriptorSet-dstBinding-00316`, `VUID-VkWriteDescriptorSet-descriptorType-00319`, `VUID-VkWriteDescriptorSet-dstArrayElement-00321`, `VUID-VkWriteDescriptorSet-descriptorCount-00317`, `VUID-VkCopyDescriptorSet-srcBinding-00345`, `VUID-VkCopyDescriptorSet-srcArrayElement-00346`, `VUID-VkCopyDescriptorSet-dstBinding-00347`, `VUID-VkCopyDescriptorSet-dstArrayElement-00348`, `VUID-VkCopyDescriptorSet-dstBinding-02632`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn update_descriptor_sets_unchecked<'a>(
         &self,
@@ -2605,7 +3337,7 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_for_fences_unchecked(
         &self,
@@ -2632,6 +3364,30 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
 impl PhysicalDevice {
     /**`vkCreateDevice`
 
+# Safety
+
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: All required device extensions for each extension in the VkDeviceCreateInfo::`ppEnabledExtensionNames` list must also be present in that list
+- `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`: The `queueFamilyIndex` member of each element of `pQueueCreateInfos` must be unique within `pQueueCreateInfos`, except that two members can share the same `queueFamilyIndex` if one describes protected-capable queues and one describes queues that are not protected-capable
+- `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755`: If multiple elements of `pQueueCreateInfos` share the same `queueFamilyIndex`, the sum of their `queueCount` members must be less than or equal to the `queueCount` member of the `VkQueueFamilyProperties` structure, as returned by `vkGetPhysicalDeviceQueueFamilyProperties` in the `pQueueFamilyProperties`[queueFamilyIndex]
+- `VUID-VkDeviceCreateInfo-pNext-00373`: If the `pNext` chain includes a VkPhysicalDeviceFeatures2 structure, then `pEnabledFeatures` must be `NULL`
+- `VUID-VkDeviceCreateInfo-pNext-02829`: If the `pNext` chain includes a VkPhysicalDeviceVulkan11Features structure, then it must not include a VkPhysicalDevice16BitStorageFeatures, VkPhysicalDeviceMultiviewFeatures, VkPhysicalDeviceVariablePointersFeatures, VkPhysicalDeviceProtectedMemoryFeatures, VkPhysicalDeviceSamplerYcbcrConversionFeatures, or VkPhysicalDeviceShaderDrawParametersFeatures structure
+- `VUID-VkDeviceCreateInfo-pNext-02830`: If the `pNext` chain includes a VkPhysicalDeviceVulkan12Features structure, then it must not include a VkPhysicalDevice8BitStorageFeatures, VkPhysicalDeviceShaderAtomicInt64Features, VkPhysicalDeviceShaderFloat16Int8Features, VkPhysicalDeviceDescriptorIndexingFeatures, VkPhysicalDeviceScalarBlockLayoutFeatures, VkPhysicalDeviceImagelessFramebufferFeatures, VkPhysicalDeviceUniformBufferStandardLayoutFeatures, VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures, VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures, VkPhysicalDeviceHostQueryResetFeatures, VkPhysicalDeviceTimelineSemaphoreFeatures, VkPhysicalDeviceBufferDeviceAddressFeatures, or VkPhysicalDeviceVulkanMemoryModelFeatures structure
+- `VUID-VkDeviceCreateInfo-pNext-06532`: If the `pNext` chain includes a VkPhysicalDeviceVulkan13Features structure, then it must not include a VkPhysicalDeviceDynamicRenderingFeatures, VkPhysicalDeviceImageRobustnessFeatures, VkPhysicalDeviceInlineUniformBlockFeatures, VkPhysicalDeviceMaintenance4Features, VkPhysicalDevicePipelineCreationCacheControlFeatures, VkPhysicalDevicePrivateDataFeatures, VkPhysicalDeviceShaderDemoteToHelperInvocationFeatures, VkPhysicalDeviceShaderIntegerDotProductFeatures, VkPhysicalDeviceShaderTerminateInvocationFeatures, VkPhysicalDeviceSubgroupSizeControlFeatures, VkPhysicalDeviceSynchronization2Features, VkPhysicalDeviceTextureCompressionASTCHDRFeatures, or VkPhysicalDeviceZeroInitializeWorkgroupMemoryFeatures structure
+- `VUID-VkDeviceCreateInfo-ppEnabledLayerNames-parameter`: If `enabledLayerCount` is not `0`, `ppEnabledLayerNames` must be a valid pointer to an array of `enabledLayerCount` null-terminated UTF-8 strings
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375`: Each element of `pPhysicalDevices` must be unique
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376`: All elements of `pPhysicalDevices` must be in the same device group as enumerated by vkEnumeratePhysicalDeviceGroups
+- `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377`: If `physicalDeviceCount` is not `0`, the `physicalDevice` parameter of vkCreateDevice must be an element of `pPhysicalDevices`
+- `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties`
+- `VUID-VkDeviceQueueCreateInfo-queueCount-00382`: `queueCount` must be less than or equal to the `queueCount` member of the `VkQueueFamilyProperties` structure, as returned by `vkGetPhysicalDeviceQueueFamilyProperties` in the `pQueueFamilyProperties`[queueFamilyIndex]
+- `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: Each element of `pQueuePriorities` must be between `0.0` and `1.0` inclusive
+- `VUID-VkDeviceQueueCreateInfo-flags-02861`: If the `protectedMemory` feature is not enabled, the `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT` bit of `flags` must not be set
+- `VUID-VkDeviceQueueCreateInfo-flags-06449`: If `flags` includes `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, `queueFamilyIndex` must be the index of a queue family that includes the `VK_QUEUE_PROTECTED_BIT` capability
+- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: If `multiviewGeometryShader` is enabled then `multiview` must also be enabled
+- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: If `multiviewTessellationShader` is enabled then `multiview` must also be enabled
+- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: If `variablePointers` is enabled then `variablePointersStorageBuffer` must also be enabled
+
 # Valid usage
 
 The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDevice.html). Settled by the wrappers:
@@ -2643,10 +3399,11 @@ The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_device<'a>(
+    pub unsafe fn create_device<'a>(
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
+        crate::hooks::device_extensions_emitted(create_info)?;
         {
             let r = self.validate_create_device(create_info);
             r?;
@@ -2774,7 +3531,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_format_properties_unchecked(
         &self,
@@ -2838,7 +3595,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_image_format_properties_unchecked(
         &self,
@@ -2927,6 +3684,12 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
     }
     /**`vkGetPhysicalDeviceSparseImageFormatProperties`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: `samples` must be a bit value that is set in `VkImageFormatProperties::sampleCounts` returned by `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling`, and `usage` equal to those in this command and `flags` equal to the value that is set in VkImageCreateInfo::`flags` when the image is created
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html). Settled by the wrappers:
@@ -2943,7 +3706,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_sparse_image_format_properties(
+    pub unsafe fn get_physical_device_sparse_image_format_properties(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -2978,7 +3741,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_sparse_image_format_properties_unchecked(
         &self,
@@ -3018,6 +3781,14 @@ The caller upholds the rules that [`Self::get_physical_device_sparse_image_forma
 impl Entry {
     /**`vkCreateInstance`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateInstance-ppEnabledExtensionNames-01388`: All required extensions for each extension in the VkInstanceCreateInfo::`ppEnabledExtensionNames` list must also be present in that list
+- `VUID-VkApplicationInfo-apiVersion-04010`: If `apiVersion` is not `0`, then it must be greater than or equal to VK_API_VERSION_1_0
+- `VUID-VkInstanceCreateInfo-pNext-04926`: If the `pNext` chain of `VkInstanceCreateInfo` includes a `VkDebugUtilsMessengerCreateInfoEXT` structure, the list of enabled extensions in `ppEnabledExtensionNames` must contain VK_EXT_debug_utils
+
 # Valid usage
 
 The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateInstance.html). Settled by the wrappers:
@@ -3028,10 +3799,11 @@ The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_instance<'a>(
+    pub unsafe fn create_instance<'a>(
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
+        crate::hooks::instance_extensions_emitted(create_info)?;
         {
             let r = self.validate_create_instance(create_info);
             r?;
@@ -3148,6 +3920,41 @@ The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registr
 impl Queue {
     /**`vkQueueBindSparse`
 
+# Safety
+
+The caller upholds these 30 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkQueueBindSparse-pSignalSemaphores-01115`: Each element of the `pSignalSemaphores` member of each element of `pBindInfo` must be unsignaled when the semaphore signal operation it defines is executed on the device
+- `VUID-vkQueueBindSparse-pWaitSemaphores-01116`: When a semaphore wait operation referring to a binary semaphore defined by any element of the `pWaitSemaphores` member of any element of `pBindInfo` executes on `queue`, there must be no other queues waiting on the same semaphore
+- `VUID-vkQueueBindSparse-pWaitSemaphores-01117`: All elements of the `pWaitSemaphores` member of all elements of the `pBindInfo` parameter referring to a binary semaphore must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
+- `VUID-vkQueueBindSparse-pWaitSemaphores-03245`: All elements of the `pWaitSemaphores` member of all elements of `pBindInfo` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends (if any) must have also been submitted for execution
+- `VUID-VkBindSparseInfo-pSignalSemaphores-03249`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value greater than the current value of the semaphore when the semaphore signal operation is executed
+- `VUID-VkBindSparseInfo-pWaitSemaphores-03250`: For each element of `pWaitSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pWaitSemaphoreValues` must have a value which does not differ from the current value of the semaphore or from the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
+- `VUID-VkBindSparseInfo-pSignalSemaphores-03251`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value which does not differ from the current value of the semaphore or from the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
+- `VUID-VkDeviceGroupBindSparseInfo-resourceDeviceIndex-01118`: `resourceDeviceIndex` and `memoryDeviceIndex` must both be valid device indices
+- `VUID-VkDeviceGroupBindSparseInfo-memoryDeviceIndex-01119`: Each memory allocation bound in this batch must have allocated an instance for `memoryDeviceIndex`
+- `VUID-VkSparseImageMemoryBind-memory-01104`: If the `sparseResidencyAliased` feature is not enabled, and if any other resources are bound to ranges of `memory`, the range of `memory` being bound must not overlap with those bound ranges
+- `VUID-VkSparseImageMemoryBind-memory-01105`: `memory` and `memoryOffset` must match the memory requirements of the calling command&#8217;s `image`, as described in section Resource Memory Association
+- `VUID-VkSparseImageMemoryBind-subresource-01106`: `subresource` must be a valid image subresource for `image` (see Image Views)
+- `VUID-VkSparseImageMemoryBind-offset-01107`: `offset.x` must be a multiple of the sparse image block width (`VkSparseImageFormatProperties::imageGranularity.width`) of the image
+- `VUID-VkSparseImageMemoryBind-extent-01108`: `extent.width` must either be a multiple of the sparse image block width of the image, or else (`extent.width` + `offset.x`) must equal the width of the image subresource
+- `VUID-VkSparseImageMemoryBind-offset-01109`: `offset.y` must be a multiple of the sparse image block height (`VkSparseImageFormatProperties::imageGranularity.height`) of the image
+- `VUID-VkSparseImageMemoryBind-extent-01110`: `extent.height` must either be a multiple of the sparse image block height of the image, or else (`extent.height` + `offset.y`) must equal the height of the image subresource
+- `VUID-VkSparseImageMemoryBind-offset-01111`: `offset.z` must be a multiple of the sparse image block depth (`VkSparseImageFormatProperties::imageGranularity.depth`) of the image
+- `VUID-VkSparseImageMemoryBind-extent-01112`: `extent.depth` must either be a multiple of the sparse image block depth of the image, or else (`extent.depth` + `offset.z`) must equal the depth of the image subresource
+- `VUID-VkSparseImageMemoryBind-memory-02732`: If `memory` was created with VkExportMemoryAllocateInfo::`handleTypes` not equal to `0`, at least one handle type it contained must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when the image was created
+- `VUID-VkSparseImageMemoryBind-memory-02733`: If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
+- `VUID-VkSparseImageMemoryBindInfo-image-02901`: `image` must have been created with `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` set
+- `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-01103`: If the `flags` member of any element of `pBinds` contains `VK_SPARSE_MEMORY_BIND_METADATA_BIT`, the binding range defined must be within the mip tail region of the metadata aspect of `image`
+- `VUID-VkSparseMemoryBind-memory-01096`: If `memory` is not VK_NULL_HANDLE, `memory` and `memoryOffset` must match the memory requirements of the resource, as described in section Resource Memory Association
+- `VUID-VkSparseMemoryBind-memory-01097`: If `memory` is not VK_NULL_HANDLE, `memory` must not have been created with a memory type that reports `VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT` bit set
+- `VUID-VkSparseMemoryBind-resourceOffset-01099`: `resourceOffset` must be less than the size of the resource
+- `VUID-VkSparseMemoryBind-size-01100`: `size` must be less than or equal to the size of the resource minus `resourceOffset`
+- `VUID-VkSparseMemoryBind-memoryOffset-01101`: `memoryOffset` must be less than the size of `memory`
+- `VUID-VkSparseMemoryBind-size-01102`: `size` must be less than or equal to the size of `memory` minus `memoryOffset`
+- `VUID-VkSparseMemoryBind-memory-02730`: If `memory` was created with VkExportMemoryAllocateInfo::`handleTypes` not equal to `0`, at least one handle type it contained must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` or VkExternalMemoryImageCreateInfo::`handleTypes` when the resource was created
+- `VUID-VkSparseMemoryBind-memory-02731`: If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` or VkExternalMemoryImageCreateInfo::`handleTypes` when the resource was created
+
 # Valid usage
 
 The rules are on [`vkQueueBindSparse`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBindSparse.html). Settled by the wrappers:
@@ -3162,7 +3969,7 @@ The rules are on [`vkQueueBindSparse`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn queue_bind_sparse<'a>(
+    pub unsafe fn queue_bind_sparse<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
         fence: &Fence,
@@ -3187,7 +3994,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_bind_sparse_unchecked<'a>(
         &self,
@@ -3219,6 +4026,38 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
     }
     /**`vkQueueSubmit`
 
+# Safety
+
+The caller upholds these 27 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkQueueSubmit-pCommandBuffers-00065`: Any calls to vkCmdSetEvent, vkCmdResetEvent or vkCmdWaitEvents that have been recorded into any of the command buffer elements of the `pCommandBuffers` member of any element of `pSubmits`, must not reference any VkEvent that is referenced by any of those commands in a command buffer that has been submitted to another queue and is still in the pending state
+- `VUID-vkQueueSubmit-pWaitDstStageMask-00066`: Any stage flag included in any element of the `pWaitDstStageMask` member of any element of `pSubmits` must be a pipeline stage supported by one of the capabilities of `queue`, as specified in the table of supported pipeline stages
+- `VUID-vkQueueSubmit-pSignalSemaphores-00067`: Each binary semaphore element of the `pSignalSemaphores` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed on the device
+- `VUID-vkQueueSubmit-pWaitSemaphores-00068`: When a semaphore wait operation referring to a binary semaphore defined by any element of the `pWaitSemaphores` member of any element of `pSubmits` executes on `queue`, there must be no other queues waiting on the same semaphore
+- `VUID-vkQueueSubmit-pCommandBuffers-00073`: If any secondary command buffers recorded into any element of the `pCommandBuffers` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
+- `VUID-vkQueueSubmit-pCommandBuffers-00074`: Each element of the `pCommandBuffers` member of each element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
+- `VUID-vkQueueSubmit-pSubmits-02207`: If any element of `pSubmits->pCommandBuffers` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the queue family identified by the acquire operation, with parameters matching the acquire operation as defined in the definition of such acquire operations, and which happens-before the acquire operation
+- `VUID-vkQueueSubmit-pSubmits-02808`: Any resource created with `VK_SHARING_MODE_EXCLUSIVE` that is read by an operation specified by `pSubmits` must not be owned by any queue family other than the one which `queue` belongs to, at the time it is executed
+- `VUID-vkQueueSubmit-pSubmits-04626`: Any resource created with `VK_SHARING_MODE_CONCURRENT` that is accessed by an operation specified by `pSubmits` must have included the queue family of `queue` at resource creation time
+- `VUID-vkQueueSubmit-pWaitSemaphores-00069`: All elements of the `pWaitSemaphores` member of all elements of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
+- `VUID-vkQueueSubmit-pWaitSemaphores-03238`: All elements of the `pWaitSemaphores` member of all elements of `pSubmits` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends (if any) must have also been submitted for execution
+- `VUID-vkQueueSubmit-queue-06448`: If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, there must be no element of `pSubmits` that includes an VkProtectedSubmitInfo structure in its `pNext` chain with `protectedSubmit` equal to `VK_TRUE`
+- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`: All elements of `pWaitSemaphoreDeviceIndices` and `pSignalSemaphoreDeviceIndices` must be valid device indices
+- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`: All elements of `pCommandBufferDeviceMasks` must be valid device masks
+- `VUID-VkSubmitInfo-pWaitDstStageMask-04090`: If the `geometryShader` feature is not enabled, `pWaitDstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
+- `VUID-VkSubmitInfo-pWaitDstStageMask-04091`: If the `tessellationShader` feature is not enabled, `pWaitDstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-VkSubmitInfo-pWaitDstStageMask-00078`: Each element of `pWaitDstStageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT`
+- `VUID-VkSubmitInfo-pWaitDstStageMask-03937`: If the `synchronization2` feature is not enabled, `pWaitDstStageMask` must not be `0`
+- `VUID-VkSubmitInfo-pSignalSemaphores-03242`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value greater than the current value of the semaphore when the semaphore signal operation is executed
+- `VUID-VkSubmitInfo-pWaitSemaphores-03243`: For each element of `pWaitSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pWaitSemaphoreValues` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
+- `VUID-VkSubmitInfo-pSignalSemaphores-03244`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
+- `VUID-VkSubmitInfo-pNext-04120`: If the `pNext` chain of this structure does not include a `VkProtectedSubmitInfo` structure with `protectedSubmit` set to `VK_TRUE`, then each element of the `pCommandBuffers` array must be an unprotected command buffer
+- `VUID-VkSubmitInfo-pNext-04148`: If the `pNext` chain of this structure includes a `VkProtectedSubmitInfo` structure with `protectedSubmit` set to `VK_TRUE`, then each element of the `pCommandBuffers` array must be a protected command buffer
+- `VUID-VkSubmitInfo-pCommandBuffers-06193`: If `pCommandBuffers` contains any resumed render pass instances, they must be suspended by a render pass instance earlier in submission order within `pCommandBuffers`
+- `VUID-VkSubmitInfo-pCommandBuffers-06014`: If `pCommandBuffers` contains any suspended render pass instances, they must be resumed by a render pass instance later in submission order within `pCommandBuffers`
+- `VUID-VkSubmitInfo-pCommandBuffers-06015`: If `pCommandBuffers` contains any suspended render pass instances, there must be no action or synchronization commands executed in a primary or secondary command buffer between that render pass instance and the render pass instance that resumes it
+- `VUID-VkSubmitInfo-pCommandBuffers-06016`: If `pCommandBuffers` contains any suspended render pass instances, there must be no render pass instances between that render pass instance and the render pass instance that resumes it
+
 # Valid usage
 
 The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html). Settled by the wrappers:
@@ -3238,7 +4077,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
 - 12: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn queue_submit<'a>(
+    pub unsafe fn queue_submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: &Fence,
@@ -3263,7 +4102,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,
@@ -3349,7 +4188,7 @@ The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khro
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_command_buffer`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, `VUID-vkResetCommandBuffer-commandBuffer-00045`, `VUID-vkResetCommandBuffer-commandBuffer-00046`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_command_buffer`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, `VUID-vkResetCommandBuffer-commandBuffer-00045`, `VUID-vkResetCommandBuffer-commandBuffer-00046`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_command_buffer_unchecked(
         &mut self,

@@ -5,6 +5,21 @@ use super::*;
 impl Device {
     /**`vkBindBufferMemory2`
 
+# Safety
+
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606`: `deviceIndexCount` must either be zero or equal to the number of physical devices in the logical device
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607`: All elements of `pDeviceIndices` must be valid device indices
+- `VUID-VkBindBufferMemoryInfo-buffer-01444`: If `buffer` requires a dedicated allocation (as reported by vkGetBufferMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `buffer`), `memory` must have been allocated with VkMemoryDedicatedAllocateInfo::`buffer` equal to `buffer`
+- `VUID-VkBindBufferMemoryInfo-memory-01508`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`buffer` was not VK_NULL_HANDLE, then `buffer` must equal VkMemoryDedicatedAllocateInfo::`buffer`, and `memoryOffset` must be zero
+- `VUID-VkBindBufferMemoryInfo-None-01898`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit set, the buffer must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindBufferMemoryInfo-None-01899`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit not set, the buffer must not be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindBufferMemoryInfo-memory-02726`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
+- `VUID-VkBindBufferMemoryInfo-memory-02727`: If `memory` was allocated by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
+- `VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339`: If the VkPhysicalDeviceBufferDeviceAddressFeatures::`bufferDeviceAddress` feature is enabled and `buffer` was created with the `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT` bit set, `memory` must have been allocated with the `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT` bit set
+- `VUID-VkBindBufferMemoryInfo-pNext-01605`: If the `pNext` chain includes a VkBindBufferMemoryDeviceGroupInfo structure, all instances of `memory` specified by VkBindBufferMemoryDeviceGroupInfo::`pDeviceIndices` must have been allocated
+
 # Valid usage
 
 The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory2.html). Settled by the wrappers:
@@ -13,7 +28,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
 - `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
     #[inline]
-    pub fn bind_buffer_memory2<'a>(
+    pub unsafe fn bind_buffer_memory2<'a>(
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
@@ -30,7 +45,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, `VUID-VkBindBufferMemoryInfo-buffer-07459`, `VUID-VkBindBufferMemoryInfo-buffer-01030`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`, `VUID-VkBindBufferMemoryInfo-memory-01035`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`, `VUID-VkBindBufferMemoryInfo-size-01037`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, `VUID-VkBindBufferMemoryInfo-buffer-07459`, `VUID-VkBindBufferMemoryInfo-buffer-01030`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`, `VUID-VkBindBufferMemoryInfo-memory-01035`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`, `VUID-VkBindBufferMemoryInfo-size-01037`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_buffer_memory2_unchecked<'a>(
         &self,
@@ -49,6 +64,41 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
     }
     /**`vkBindImageMemory2`
 
+# Safety
+
+The caller upholds these 30 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkBindImageMemory2-pBindInfos-02858`: If any VkBindImageMemoryInfo::`image` was created with `VK_IMAGE_CREATE_DISJOINT_BIT` then all planes of VkBindImageMemoryInfo::`image` must be bound individually in separate `pBindInfos`
+- `VUID-vkBindImageMemory2-pBindInfos-04006`: `pBindInfos` must not refer to the same image subresource more than once
+- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633`: At least one of `deviceIndexCount` and `splitInstanceBindRegionCount` must be zero
+- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634`: `deviceIndexCount` must either be zero or equal to the number of physical devices in the logical device
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635`: All elements of `pDeviceIndices` must be valid device indices
+- `VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636`: `splitInstanceBindRegionCount` must either be zero or equal to the number of physical devices in the logical device squared
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-01637`: Elements of `pSplitInstanceBindRegions` that correspond to the same instance of an image must not overlap
+- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01638`: The `offset.x` member of any element of `pSplitInstanceBindRegions` must be a multiple of the sparse image block width (`VkSparseImageFormatProperties::imageGranularity.width`) of all non-metadata aspects of the image
+- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01639`: The `offset.y` member of any element of `pSplitInstanceBindRegions` must be a multiple of the sparse image block height (`VkSparseImageFormatProperties::imageGranularity.height`) of all non-metadata aspects of the image
+- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01640`: The `extent.width` member of any element of `pSplitInstanceBindRegions` must either be a multiple of the sparse image block width of all non-metadata aspects of the image, or else `extent.width` + `offset.x` must equal the width of the image subresource
+- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01641`: The `extent.height` member of any element of `pSplitInstanceBindRegions` must either be a multiple of the sparse image block height of all non-metadata aspects of the image, or else `extent.height` + `offset.y` must equal the height of the image subresource
+- `VUID-VkBindImageMemoryInfo-image-01445`: If `image` requires a dedicated allocation (as reported by vkGetImageMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `image`), `memory` must have been created with VkMemoryDedicatedAllocateInfo::`image` equal to `image`
+- `VUID-VkBindImageMemoryInfo-memory-01509`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`image` was not VK_NULL_HANDLE, then `image` must equal VkMemoryDedicatedAllocateInfo::`image` and `memoryOffset` must be zero
+- `VUID-VkBindImageMemoryInfo-None-01901`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit set, the image must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindImageMemoryInfo-None-01902`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit not set, the image must not be bound to a memory object created with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindImageMemoryInfo-memory-02728`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
+- `VUID-VkBindImageMemoryInfo-memory-02729`: If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
+- `VUID-VkBindImageMemoryInfo-image-07736`: If `image` was created with the `VK_IMAGE_CREATE_DISJOINT_BIT` bit set, then the `pNext` chain must include a VkBindImagePlaneMemoryInfo structure
+- `VUID-VkBindImageMemoryInfo-pNext-01619`: If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements2 with `image` and where VkBindImagePlaneMemoryInfo::`planeAspect` corresponds to the VkImagePlaneMemoryRequirementsInfo::`planeAspect` in the VkImageMemoryRequirementsInfo2 structure&#8217;s `pNext` chain
+- `VUID-VkBindImageMemoryInfo-pNext-01620`: If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements2 with `image` and where VkBindImagePlaneMemoryInfo::`planeAspect` corresponds to the VkImagePlaneMemoryRequirementsInfo::`planeAspect` in the VkImageMemoryRequirementsInfo2 structure&#8217;s `pNext` chain
+- `VUID-VkBindImageMemoryInfo-pNext-01621`: If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, the difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements2 with the same `image` and where VkBindImagePlaneMemoryInfo::`planeAspect` corresponds to the VkImagePlaneMemoryRequirementsInfo::`planeAspect` in the VkImageMemoryRequirementsInfo2 structure&#8217;s `pNext` chain
+- `VUID-VkBindImageMemoryInfo-pNext-01626`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, all instances of `memory` specified by VkBindImageMemoryDeviceGroupInfo::`pDeviceIndices` must have been allocated
+- `VUID-VkBindImageMemoryInfo-pNext-01627`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, and VkBindImageMemoryDeviceGroupInfo::`splitInstanceBindRegionCount` is not zero, then `image` must have been created with the `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT` bit set
+- `VUID-VkBindImageMemoryInfo-pNext-01628`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, all elements of VkBindImageMemoryDeviceGroupInfo::`pSplitInstanceBindRegions` must be valid rectangles contained within the dimensions of `image`
+- `VUID-VkBindImageMemoryInfo-pNext-01629`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, the union of the areas of all elements of VkBindImageMemoryDeviceGroupInfo::`pSplitInstanceBindRegions` that correspond to the same instance of `image` must cover the entire image
+- `VUID-VkBindImageMemoryInfo-image-01630`: If `image` was created with a valid swapchain handle in VkImageSwapchainCreateInfoKHR::`swapchain`, then the `pNext` chain must include a VkBindImageMemorySwapchainInfoKHR structure containing the same swapchain handle
+- `VUID-VkBindImageMemoryInfo-pNext-01631`: If the `pNext` chain includes a VkBindImageMemorySwapchainInfoKHR structure, `memory` must be VK_NULL_HANDLE
+- `VUID-VkBindImageMemoryInfo-pNext-01632`: If the `pNext` chain does not include a VkBindImageMemorySwapchainInfoKHR structure, `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644`: `imageIndex` must be less than the number of images in `swapchain`
+- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283`: If the image&#8217;s `tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
+
 # Valid usage
 
 The rules are on [`vkBindImageMemory2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory2.html). Settled by the wrappers:
@@ -59,7 +109,7 @@ The rules are on [`vkBindImageMemory2`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn bind_image_memory2<'a>(
+    pub unsafe fn bind_image_memory2<'a>(
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
@@ -76,7 +126,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, `VUID-VkBindImageMemoryInfo-image-07460`, `VUID-VkBindImageMemoryInfo-image-01045`, `VUID-VkBindImageMemoryInfo-memoryOffset-01046`, `VUID-VkBindImageMemoryInfo-pNext-01615`, `VUID-VkBindImageMemoryInfo-pNext-01616`, `VUID-VkBindImageMemoryInfo-pNext-01617`, `VUID-VkBindImageMemoryInfo-pNext-01618`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, `VUID-VkBindImageMemoryInfo-image-07460`, `VUID-VkBindImageMemoryInfo-image-01045`, `VUID-VkBindImageMemoryInfo-memoryOffset-01046`, `VUID-VkBindImageMemoryInfo-pNext-01615`, `VUID-VkBindImageMemoryInfo-pNext-01616`, `VUID-VkBindImageMemoryInfo-pNext-01617`, `VUID-VkBindImageMemoryInfo-pNext-01618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_image_memory2_unchecked<'a>(
         &self,
@@ -95,6 +145,16 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
     }
     /**`vkCreateDescriptorUpdateTemplate`
 
+# Safety
+
+The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350`: If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_DESCRIPTOR_SET`, `descriptorSetLayout` must be a valid `VkDescriptorSetLayout` handle
+- `VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354`: `dstBinding` must be a valid binding in the descriptor set layout implicitly specified when using a descriptor update template to update descriptors
+- `VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355`: `dstArrayElement` and `descriptorCount` must be less than or equal to the number of array elements in the descriptor set binding implicitly specified when using a descriptor update template to update descriptors, and all applicable consecutive bindings, as described by consecutive binding updates
+- `VUID-VkDescriptorUpdateTemplateEntry-descriptor-02226`: If `descriptor` type is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4`
+- `VUID-VkDescriptorUpdateTemplateEntry-descriptor-02227`: If `descriptor` type is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4`
+
 # Valid usage
 
 The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html). Settled by the wrappers:
@@ -104,7 +164,7 @@ The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://r
 - `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_descriptor_update_template<'a>(
+    pub unsafe fn create_descriptor_update_template<'a>(
         &self,
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<DescriptorUpdateTemplate> {
@@ -170,6 +230,25 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
     }
     /**`vkCreateSamplerYcbcrConversion`
 
+# Safety
+
+The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreateSamplerYcbcrConversion-None-01648`: The `samplerYcbcrConversion` feature must be enabled
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-04060`: `format` must represent unsigned normalized values (i.e. the format must be a `UNORM` format)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-01650`: The potential format features of the sampler {YCbCr} conversion must support `VK_FORMAT_FEATURE_MIDPOINT_CHROMA_SAMPLES_BIT` or `VK_FORMAT_FEATURE_COSITED_CHROMA_SAMPLES_BIT`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_COSITED_CHROMA_SAMPLES_BIT`, `xChromaOffset` and `yChromaOffset` must not be `VK_CHROMA_LOCATION_COSITED_EVEN` if the corresponding components are downsampled
+- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_MIDPOINT_CHROMA_SAMPLES_BIT`, `xChromaOffset` and `yChromaOffset` must not be `VK_CHROMA_LOCATION_MIDPOINT` if the corresponding components are downsampled
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02581`: If the format has a `_422` or `_420` suffix, then `components.g` must be the identity swizzle
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02582`: If the format has a `_422` or `_420` suffix, then `components.a` must be the identity swizzle, `VK_COMPONENT_SWIZZLE_ONE`, or `VK_COMPONENT_SWIZZLE_ZERO`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02583`: If the format has a `_422` or `_420` suffix, then `components.r` must be the identity swizzle or `VK_COMPONENT_SWIZZLE_B`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02584`: If the format has a `_422` or `_420` suffix, then `components.b` must be the identity swizzle or `VK_COMPONENT_SWIZZLE_R`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02585`: If the format has a `_422` or `_420` suffix, and if either `components.r` or `components.b` is the identity swizzle, both values must be the identity swizzle
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655`: If `ycbcrModel` is not `VK_SAMPLER_YCBCR_MODEL_CONVERSION_RGB_IDENTITY`, then `components.r`, `components.g`, and `components.b` must correspond to components of the `format`; that is, `components.r`, `components.g`, and `components.b` must not be `VK_COMPONENT_SWIZZLE_ZERO` or `VK_COMPONENT_SWIZZLE_ONE`, and must not correspond to a component containing zero or one as a consequence of conversion to RGBA
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748`: If `ycbcrRange` is `VK_SAMPLER_YCBCR_RANGE_ITU_NARROW` then the R, G and B components obtained by applying the `component` swizzle to `format` must each have a bit-depth greater than or equal to 8
+- `VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_CHROMA_RECONSTRUCTION_EXPLICIT_FORCEABLE_BIT` `forceExplicitReconstruction` must be `VK_FALSE`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_LINEAR_FILTER_BIT`, `chromaFilter` must not be `VK_FILTER_LINEAR`
+
 # Valid usage
 
 The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html). Settled by the wrappers:
@@ -181,7 +260,7 @@ The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://reg
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_sampler_ycbcr_conversion<'a>(
+    pub unsafe fn create_sampler_ycbcr_conversion<'a>(
         &self,
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<SamplerYcbcrConversion> {
@@ -268,6 +347,33 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
     }
     /**`vkGetDescriptorSetLayoutSupport`
 
+# Safety
+
+The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
+- `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` and `descriptorCount` is not `0`, then `stageFlags` must be `0` or `VK_SHADER_STAGE_FRAGMENT_BIT`
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02209`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4`
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: If `bindingCount` is not zero, `bindingCount` must equal VkDescriptorSetLayoutCreateInfo::`bindingCount`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingSampledImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_SAMPLER`, `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, or `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`: All bindings with descriptor type `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUpdateUnusedWhilePending` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingPartiallyBound` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingVariableDescriptorCount` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, that element&#8217;s `descriptorType` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`: If VkPhysicalDeviceInlineUniformBlockFeatures::`descriptorBindingInlineUniformBlockUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
+- `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: The VkDescriptorSetLayoutBinding::`binding` members of the elements of the `pBindings` array must each have different values
+- `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, `flags` must include `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`
+- `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, then all bindings must not have `descriptorType` of `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
+
 # Valid usage
 
 The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html). Settled by the wrappers:
@@ -276,7 +382,7 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
 - `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_descriptor_set_layout_support<'a>(
+    pub unsafe fn get_descriptor_set_layout_support<'a>(
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
@@ -316,6 +422,15 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] ch
     }
     /**`vkGetDeviceGroupPeerMemoryFeatures`
 
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691`: `heapIndex` must be less than `memoryHeapCount`
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692`: `localDeviceIndex` must be a valid device index
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693`: `remoteDeviceIndex` must be a valid device index
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694`: `localDeviceIndex` must not equal `remoteDeviceIndex`
+
 # Valid usage
 
 The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html). Settled by the wrappers:
@@ -325,7 +440,7 @@ The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https:/
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_device_group_peer_memory_features(
+    pub unsafe fn get_device_group_peer_memory_features(
         &self,
         heap_index: u32,
         local_device_index: u32,
@@ -341,6 +456,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     }
     /**`vkGetDeviceQueue2`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`: `queueFamilyIndex` must be one of the queue family indices specified when `device` was created, via the VkDeviceQueueCreateInfo structure
+- `VUID-VkDeviceQueueInfo2-flags-06225`: `flags` must be equal to VkDeviceQueueCreateInfo::`flags` for a VkDeviceQueueCreateInfo structure for the queue family indicated by `queueFamilyIndex` when `device` was created
+- `VUID-VkDeviceQueueInfo2-queueIndex-01843`: `queueIndex` must be less than VkDeviceQueueCreateInfo::`queueCount` for the corresponding queue family and flags indicated by `queueFamilyIndex` and `flags` when `device` was created
+
 # Valid usage
 
 The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html). Settled by the wrappers:
@@ -349,7 +472,7 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
 - `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn get_device_queue2<'a>(
+    pub unsafe fn get_device_queue2<'a>(
         &self,
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Result<Queue> {
@@ -389,6 +512,15 @@ The caller upholds the rules that [`Self::get_device_queue2`] checks at run time
     }
     /**`vkGetImageMemoryRequirements2`
 
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkImageMemoryRequirementsInfo2-image-01589`: If `image` was created with a multi-planar format and the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
+- `VUID-VkImageMemoryRequirementsInfo2-image-01590`: If `image` was not created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
+- `VUID-VkImageMemoryRequirementsInfo2-image-01591`: If `image` was created with a single-plane format, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
+- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281`: If the image&#8217;s `tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
+
 # Valid usage
 
 The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html). Settled by the wrappers:
@@ -397,7 +529,7 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
 - `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_image_memory_requirements2<'a>(
+    pub unsafe fn get_image_memory_requirements2<'a>(
         &self,
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
@@ -503,7 +635,7 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
 
 # Safety
 
-The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-flags-zerobitmask`, `VUID-vkTrimCommandPool-commandPool-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-flags-zerobitmask`, `VUID-vkTrimCommandPool-commandPool-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn trim_command_pool_unchecked(
         &self,
@@ -525,6 +657,11 @@ The caller upholds the rules that [`Self::trim_command_pool`] checks at run time
 # Safety
 
 `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkUpdateDescriptorSetWithTemplate-pData-01685`: `pData` must be a valid pointer to a memory containing one or more valid instances of VkDescriptorImageInfo, VkDescriptorBufferInfo, or VkBufferView in a layout defined by `descriptorUpdateTemplate` when it was created with vkCreateDescriptorUpdateTemplate
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06995`: Host access to `descriptorSet` must be externally synchronized unless explicitly denoted otherwise for specific flags
 
 # Valid usage
 
@@ -565,7 +702,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::update_descriptor_set_with_template`] checks at run time: `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call.*/
+The caller upholds the rules that [`Self::update_descriptor_set_with_template`] checks at run time: `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkUpdateDescriptorSetWithTemplate` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn update_descriptor_set_with_template_unchecked(
         &self,
@@ -754,6 +891,13 @@ The caller upholds the rules that [`Self::get_physical_device_external_fence_pro
     }
     /**`vkGetPhysicalDeviceExternalSemaphoreProperties`
 
+# Safety
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalSemaphoreProperties.html). Settled by the wrappers:
@@ -762,7 +906,7 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_physical_device_external_semaphore_properties<'a>(
+    pub unsafe fn get_physical_device_external_semaphore_properties<'a>(
         &self,
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
@@ -813,6 +957,14 @@ The caller upholds the rules that [`Self::get_physical_device_external_semaphore
     }
     /**`vkGetPhysicalDeviceFeatures2`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: If `multiviewGeometryShader` is enabled then `multiview` must also be enabled
+- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: If `multiviewTessellationShader` is enabled then `multiview` must also be enabled
+- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: If `variablePointers` is enabled then `variablePointersStorageBuffer` must also be enabled
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html). Settled by the wrappers:
@@ -820,7 +972,7 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
 - `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_physical_device_features2<'a>(
+    pub unsafe fn get_physical_device_features2<'a>(
         &self,
         features: &mut PhysicalDeviceFeatures2<'a>,
     ) {
@@ -867,7 +1019,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_physical_device_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_format_properties2_unchecked<'a>(
         &self,
@@ -886,6 +1038,12 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties2
     }
     /**`vkGetPhysicalDeviceImageFormatProperties2`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html). Settled by the wrappers:
@@ -896,7 +1054,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_physical_device_image_format_properties2<'a>(
+    pub unsafe fn get_physical_device_image_format_properties2<'a>(
         &self,
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
@@ -1062,6 +1220,12 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
     }
     /**`vkGetPhysicalDeviceSparseImageFormatProperties2`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`: `samples` must be a bit value that is set in `VkImageFormatProperties::sampleCounts` returned by `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling`, and `usage` equal to those in this command and `flags` equal to the value that is set in VkImageCreateInfo::`flags` when the image is created
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html). Settled by the wrappers:
@@ -1071,7 +1235,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub fn get_physical_device_sparse_image_format_properties2<'a>(
+    pub unsafe fn get_physical_device_sparse_image_format_properties2<'a>(
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {

@@ -5,6 +5,42 @@ use super::*;
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdDispatchBase`
 
+# Safety
+
+The caller upholds these 31 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdDispatchBase-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
+- `VUID-vkCmdDispatchBase-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
+- `VUID-vkCmdDispatchBase-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
+- `VUID-vkCmdDispatchBase-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
+- `VUID-vkCmdDispatchBase-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
+- `VUID-vkCmdDispatchBase-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
+- `VUID-vkCmdDispatchBase-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
+- `VUID-vkCmdDispatchBase-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
+- `VUID-vkCmdDispatchBase-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
+- `VUID-vkCmdDispatchBase-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
+- `VUID-vkCmdDispatchBase-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
+- `VUID-vkCmdDispatchBase-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
+- `VUID-vkCmdDispatchBase-baseGroupX-00421`: `baseGroupX` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0]
+- `VUID-vkCmdDispatchBase-baseGroupX-00422`: `baseGroupY` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1]
+- `VUID-vkCmdDispatchBase-baseGroupZ-00423`: `baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2]
+- `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] minus `baseGroupX`
+- `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] minus `baseGroupY`
+- `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] minus `baseGroupZ`
+- `VUID-vkCmdDispatchBase-baseGroupX-00427`: If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
+- `VUID-vkCmdDispatchBase-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
+- `VUID-vkCmdDispatchBase-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDispatchBase-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDispatchBase-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDispatchBase-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDispatchBase-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
+- `VUID-vkCmdDispatchBase-None-02699`: Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid as described by descriptor validity if they are statically used by the `VkPipeline` bound to the pipeline bind point used by this command
+- `VUID-vkCmdDispatchBase-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
+- `VUID-vkCmdDispatchBase-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
+- `VUID-vkCmdDispatchBase-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
+- `VUID-vkCmdDispatchBase-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
+- `VUID-vkCmdDispatchBase-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
+
 # Valid usage
 
 The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchBase.html). Settled by the wrappers:
@@ -19,7 +55,7 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 63 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_dispatch_base(
+    pub unsafe fn cmd_dispatch_base(
         &mut self,
         base_group_x: u32,
         base_group_y: u32,
@@ -56,7 +92,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 63 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
@@ -88,6 +124,15 @@ The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdSetDeviceMask`
 
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdSetDeviceMask-deviceMask-00108`: `deviceMask` must be a valid device mask value
+- `VUID-vkCmdSetDeviceMask-deviceMask-00109`: `deviceMask` must not be zero
+- `VUID-vkCmdSetDeviceMask-deviceMask-00110`: `deviceMask` must not include any set bits that were not in the VkDeviceGroupCommandBufferBeginInfo::`deviceMask` value when the command buffer began recording
+- `VUID-vkCmdSetDeviceMask-deviceMask-00111`: If `vkCmdSetDeviceMask` is called inside a render pass instance, `deviceMask` must not include any set bits that were not in the VkDeviceGroupRenderPassBeginInfo::`deviceMask` value when the render pass instance began recording
+
 # Valid usage
 
 The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDeviceMask.html). Settled by the wrappers:
@@ -98,7 +143,7 @@ The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_device_mask(&mut self, device_mask: u32) {
+    pub unsafe fn cmd_set_device_mask(&mut self, device_mask: u32) {
         {
             let r = self.validate_cmd_set_device_mask();
             if !self.accept(r) {
@@ -113,7 +158,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) {
         let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;

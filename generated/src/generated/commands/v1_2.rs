@@ -5,6 +5,79 @@ use super::*;
 impl Device {
     /**`vkCreateRenderPass2`
 
+# Safety
+
+The caller upholds these 68 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkAttachmentDescription2-format-06698`: `format` must not be VK_FORMAT_UNDEFINED
+- `VUID-VkAttachmentDescription2-format-06906`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-06907`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-pNext-06704`: If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure, `format` includes a stencil aspect, and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkAttachmentDescription2-pNext-06705`: If the `pNext` chain does includes a VkAttachmentDescriptionStencilLayout structure, `format` includes a stencil aspect, and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then VkAttachmentDescriptionStencilLayout::`stencilInitialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkAttachmentDescription2-format-06249`: If `format` is a depth/stencil format which includes both depth and stencil aspects, and `initialLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, the `pNext` chain must include a VkAttachmentDescriptionStencilLayout structure
+- `VUID-VkAttachmentDescription2-format-06250`: If `format` is a depth/stencil format which includes both depth and stencil aspects, and `finalLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, the `pNext` chain must include a VkAttachmentDescriptionStencilLayout structure
+- `VUID-VkAttachmentDescription2-format-06247`: If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure and `format` only includes a stencil aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-06248`: If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure and `format` only includes a stencil aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo2-None-03049`: If any two subpasses operate on attachments with overlapping ranges of the same `VkDeviceMemory` object, and at least one subpass writes to that area of `VkDeviceMemory`, a subpass dependency must be included (either directly or via some intermediate subpasses) between them
+- `VUID-VkRenderPassCreateInfo2-attachment-03050`: If the `attachment` member of any element of `pInputAttachments`, `pColorAttachments`, `pResolveAttachments` or `pDepthStencilAttachment`, or the attachment indexed by any element of `pPreserveAttachments` in any given element of `pSubpasses` is bound to a range of a `VkDeviceMemory` object that overlaps with any other attachment in any subpass (including the same subpass), the `VkAttachmentDescription2` structures describing them must include `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT` in `flags`
+- `VUID-VkRenderPassCreateInfo2-attachment-03051`: If the `attachment` member of any element of `pInputAttachments`, `pColorAttachments`, `pResolveAttachments` or `pDepthStencilAttachment`, or any element of `pPreserveAttachments` in any given element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, then it must be less than `attachmentCount`
+- `VUID-VkRenderPassCreateInfo2-pAttachments-02522`: For any member of `pAttachments` with a `loadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo2-pAttachments-02523`: For any member of `pAttachments` with a `stencilLoadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderPassCreateInfo2-pDependencies-03054`: For any element of `pDependencies`, if the `srcSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `srcStageMask` member of that dependency must be a pipeline stage supported by the pipeline identified by the `pipelineBindPoint` member of the source subpass
+- `VUID-VkRenderPassCreateInfo2-pDependencies-03055`: For any element of `pDependencies`, if the `dstSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `dstStageMask` member of that dependency must be a pipeline stage supported by the pipeline identified by the `pipelineBindPoint` member of the destination subpass
+- `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056`: The set of bits included in any element of `pCorrelatedViewMasks` must not overlap with the set of bits included in any other element of `pCorrelatedViewMasks`
+- `VUID-VkRenderPassCreateInfo2-viewMask-03057`: If the VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` is `0`, `correlatedViewMaskCount` must be `0`
+- `VUID-VkRenderPassCreateInfo2-viewMask-03058`: The VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` must either all be `0`, or all not be `0`
+- `VUID-VkRenderPassCreateInfo2-viewMask-03059`: If the VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` is `0`, the `dependencyFlags` member of any element of `pDependencies` must not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
+- `VUID-VkRenderPassCreateInfo2-pDependencies-03060`: For any element of `pDependencies` where its `srcSubpass` member equals its `dstSubpass` member, if the `viewMask` member of the corresponding element of `pSubpasses` includes more than one bit, its `dependencyFlags` member must include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
+- `VUID-VkRenderPassCreateInfo2-attachment-02525`: If the `attachment` member of any element of the `pInputAttachments` member of any element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, the `aspectMask` member of that element of `pInputAttachments` must only include aspects that are present in images of the format specified by the element of `pAttachments` specified by `attachment`
+- `VUID-VkRenderPassCreateInfo2-srcSubpass-02526`: The `srcSubpass` member of each element of `pDependencies` must be less than `subpassCount`
+- `VUID-VkRenderPassCreateInfo2-dstSubpass-02527`: The `dstSubpass` member of each element of `pDependencies` must be less than `subpassCount`
+- `VUID-VkRenderPassCreateInfo2-pSubpasses-06473`: If the `pSubpasses` pNext chain includes a VkSubpassDescriptionDepthStencilResolve structure and the `pDepthStencilResolveAttachment` member is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, then `attachment` must be less than `attachmentCount`
+- `VUID-VkRenderPassCreateInfo2-attachment-06244`: If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, the `layout` member of that same structure is either `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, and the `pNext` chain of that structure does not include a VkAttachmentReferenceStencilLayout structure, then the element of `pAttachments` with an index equal to `attachment` must not have a `format` that includes both depth and stencil aspects
+- `VUID-VkRenderPassCreateInfo2-attachment-06245`: If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED` and the `layout` member of that same structure is either `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, then the element of `pAttachments` with an index equal to `attachment` must have a `format` that includes only a stencil aspect
+- `VUID-VkRenderPassCreateInfo2-attachment-06246`: If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED` and the `layout` member of that same structure is either `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, then the element of `pAttachments` with an index equal to `attachment` must not have a `format` that includes only a stencil aspect
+- `VUID-VkSubpassDependency2-srcSubpass-03084`: `srcSubpass` must be less than or equal to `dstSubpass`, unless one of them is `VK_SUBPASS_EXTERNAL`, to avoid cyclic dependencies and ensure a valid execution order
+- `VUID-VkSubpassDependency2-srcSubpass-03085`: `srcSubpass` and `dstSubpass` must not both be equal to `VK_SUBPASS_EXTERNAL`
+- `VUID-VkSubpassDependency2-srcSubpass-06810`: If `srcSubpass` is equal to `dstSubpass` and `srcStageMask` includes a framebuffer-space stage, `dstStageMask` must only contain framebuffer-space stages
+- `VUID-VkSubpassDependency2-srcAccessMask-03088`: Any access flag included in `srcAccessMask` must be supported by one of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
+- `VUID-VkSubpassDependency2-dstAccessMask-03089`: Any access flag included in `dstAccessMask` must be supported by one of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
+- `VUID-VkSubpassDependency2-srcSubpass-02245`: If `srcSubpass` equals `dstSubpass`, and `srcStageMask` and `dstStageMask` both include a framebuffer-space stage, then `dependencyFlags` must include `VK_DEPENDENCY_BY_REGION_BIT`
+- `VUID-VkSubpassDependency2-viewOffset-02530`: If `viewOffset` is not equal to `0`, `srcSubpass` must not be equal to `dstSubpass`
+- `VUID-VkSubpassDependency2-srcStageMask-03937`: If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
+- `VUID-VkSubpassDependency2-dstStageMask-03937`: If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
+- `VUID-VkSubpassDescription2-attachment-06915`: If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED`, ts `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`
+- `VUID-VkSubpassDescription2-loadOp-03064`: If the first use of an attachment in this render pass is as an input attachment, and the attachment is not also used as a color or depth/stencil attachment in the same subpass, then `loadOp` must not be `VK_ATTACHMENT_LOAD_OP_CLEAR`
+- `VUID-VkSubpassDescription2-pResolveAttachments-03065`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that does not have the value `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have the value `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescription2-pResolveAttachments-03066`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescription2-pResolveAttachments-03067`: If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescription2-pResolveAttachments-03068`: Any given element of `pResolveAttachments` must have the same VkFormat as its corresponding color attachment
+- `VUID-VkSubpassDescription2-pInputAttachments-02897`: All attachments in `pInputAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain at least `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription2-pColorAttachments-02898`: All attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription2-pResolveAttachments-02899`: All attachments in `pResolveAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900`: If `pDepthStencilAttachment` is not `NULL` and the attachment is not `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872`: If none of the VK_AMD_mixed_attachment_samples extension, the VK_NV_framebuffer_mixed_samples extension, or the `multisampledRenderToSingleSampled` feature are enabled, all attachments in `pDepthStencilAttachment` or `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have the same sample count
+- `VUID-VkSubpassDescription2-attachment-03073`: Each element of `pPreserveAttachments` must not be `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescription2-pPreserveAttachments-03074`: Any given element of `pPreserveAttachments` must not also be an element of any other member of the subpass description
+- `VUID-VkSubpassDescription2-layout-02528`: If any attachment is used by more than one VkAttachmentReference2 member, then each use must use the same `layout`
+- `VUID-VkSubpassDescription2-attachment-02799`: If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must be a valid combination of VkImageAspectFlagBits
+- `VUID-VkSubpassDescription2-attachment-02800`: If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not be `0`
+- `VUID-VkSubpassDescription2-attachment-02801`: If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not include `VK_IMAGE_ASPECT_METADATA_BIT`
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`: An attachment must not be used in both `pDepthStencilAttachment` and `pColorAttachments`
+- `VUID-VkSubpassDescription2-attachment-06251`: If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED` and its `pNext` chain includes a VkAttachmentDescriptionStencilLayout structure, the `layout` member of `pDepthStencilAttachment` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkSubpassDescription2-viewMask-06706`: The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilAttachment` must not be `NULL` or have the value `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilAttachment` must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilResolveAttachment` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` and VkFormat of `pDepthStencilResolveAttachment` has a depth component, then the VkFormat of `pDepthStencilAttachment` must have a depth component with the same number of bits and numerical type
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, and VkFormat of `pDepthStencilResolveAttachment` has a stencil component, then the VkFormat of `pDepthStencilAttachment` must have a stencil component with the same number of bits and numerical type
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03178`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `depthResolveMode` and `stencilResolveMode` must not both be `VK_RESOLVE_MODE_NONE`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-depthResolveMode-03183`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` and the VkFormat of `pDepthStencilResolveAttachment` has a depth component, then the value of `depthResolveMode` must be one of the bits set in VkPhysicalDeviceDepthStencilResolveProperties::`supportedDepthResolveModes` or `VK_RESOLVE_MODE_NONE`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-stencilResolveMode-03184`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` and the VkFormat of `pDepthStencilResolveAttachment` has a stencil component, then the value of `stencilResolveMode` must be one of the bits set in VkPhysicalDeviceDepthStencilResolveProperties::`supportedStencilResolveModes` or `VK_RESOLVE_MODE_NONE`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03185`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, the VkFormat of `pDepthStencilResolveAttachment` has both depth and stencil components, VkPhysicalDeviceDepthStencilResolveProperties::`independentResolve` is `VK_FALSE`, and VkPhysicalDeviceDepthStencilResolveProperties::`independentResolveNone` is `VK_FALSE`, then the values of `depthResolveMode` and `stencilResolveMode` must be identical
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03186`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, the VkFormat of `pDepthStencilResolveAttachment` has both depth and stencil components, VkPhysicalDeviceDepthStencilResolveProperties::`independentResolve` is `VK_FALSE` and VkPhysicalDeviceDepthStencilResolveProperties::`independentResolveNone` is `VK_TRUE`, then the values of `depthResolveMode` and `stencilResolveMode` must be identical or one of them must be `VK_RESOLVE_MODE_NONE`
+
 # Valid usage
 
 The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass2.html). Settled by the wrappers:
@@ -14,7 +87,7 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub fn create_render_pass2<'a>(
+    pub unsafe fn create_render_pass2<'a>(
         &self,
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
@@ -54,6 +127,15 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
     }
     /**`vkGetBufferDeviceAddress`
 
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetBufferDeviceAddress-None-06542`: The `bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetBufferDeviceAddress-device-06543`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-VkBufferDeviceAddressInfo-buffer-02600`: If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkBufferDeviceAddressInfo-buffer-02601`: `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
+
 # Valid usage
 
 The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html). Settled by the wrappers:
@@ -63,7 +145,7 @@ The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_buffer_device_address<'a>(
+    pub unsafe fn get_buffer_device_address<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> vk::DeviceAddress {
@@ -72,6 +154,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         unsafe { fp(self.raw(), info as *const BufferDeviceAddressInfo<'a> as *const _) }
     }
     /**`vkGetBufferOpaqueCaptureAddress`
+
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`: The `bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-VkBufferDeviceAddressInfo-buffer-02600`: If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkBufferDeviceAddressInfo-buffer-02601`: `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
 
 # Valid usage
 
@@ -82,7 +173,7 @@ The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://re
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_buffer_opaque_capture_address<'a>(
+    pub unsafe fn get_buffer_opaque_capture_address<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> u64 {
@@ -91,6 +182,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         unsafe { fp(self.raw(), info as *const BufferDeviceAddressInfo<'a> as *const _) }
     }
     /**`vkGetDeviceMemoryOpaqueCaptureAddress`
+
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`: The `bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336`: `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
 
 # Valid usage
 
@@ -101,7 +200,7 @@ The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](http
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_device_memory_opaque_capture_address<'a>(
+    pub unsafe fn get_device_memory_opaque_capture_address<'a>(
         &self,
         info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> u64 {
@@ -140,7 +239,7 @@ The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registr
 
 # Safety
 
-The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, `VUID-vkGetSemaphoreCounterValue-semaphore-03255`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks at run time: `VUID-vkGetSemaphoreCounterValue-semaphore-parent`, `VUID-vkGetSemaphoreCounterValue-semaphore-03255`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_semaphore_counter_value_unchecked(
         &self,
@@ -158,6 +257,16 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
     }
     /**`vkResetQueryPool`
 
+# Safety
+
+The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkResetQueryPool-None-02665`: The `hostQueryReset` feature must be enabled
+- `VUID-vkResetQueryPool-firstQuery-02666`: `firstQuery` must be less than the number of queries in `queryPool`
+- `VUID-vkResetQueryPool-firstQuery-02667`: The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkResetQueryPool-firstQuery-02741`: Submitted commands that refer to the range specified by `firstQuery` and `queryCount` in `queryPool` must have completed execution
+- `VUID-vkResetQueryPool-firstQuery-02742`: The range of queries specified by `firstQuery` and `queryCount` in `queryPool` must not be in use by calls to vkGetQueryPoolResults or `vkResetQueryPool` in other threads
+
 # Valid usage
 
 The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html). Settled by the wrappers:
@@ -168,7 +277,7 @@ The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn reset_query_pool(
+    pub unsafe fn reset_query_pool(
         &self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -187,7 +296,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_query_pool_unchecked(
         &self,
@@ -201,6 +310,14 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
     }
     /**`vkSignalSemaphore`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkSemaphoreSignalInfo-value-03258`: `value` must have a value greater than the current value of the semaphore
+- `VUID-VkSemaphoreSignalInfo-value-03259`: `value` must be less than the value of any pending semaphore signal operations
+- `VUID-VkSemaphoreSignalInfo-value-03260`: `value` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on `semaphore` by more than `maxTimelineSemaphoreValueDifference`
+
 # Valid usage
 
 The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html). Settled by the wrappers:
@@ -208,7 +325,7 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
 - `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn signal_semaphore<'a>(
+    pub unsafe fn signal_semaphore<'a>(
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
@@ -221,7 +338,7 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
 
 # Safety
 
-The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn signal_semaphore_unchecked<'a>(
         &self,
@@ -264,7 +381,7 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_semaphores_unchecked<'a>(
         &self,

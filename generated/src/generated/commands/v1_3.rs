@@ -5,6 +5,12 @@ use super::*;
 impl Device {
     /**`vkCreatePrivateDataSlot`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCreatePrivateDataSlot-privateData-04564`: The `privateData` feature must be enabled
+
 # Valid usage
 
 The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
@@ -16,7 +22,7 @@ The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn create_private_data_slot<'a>(
+    pub unsafe fn create_private_data_slot<'a>(
         &self,
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<PrivateDataSlot> {
@@ -56,6 +62,19 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
     }
     /**`vkGetDeviceBufferMemoryRequirements`
 
+# Safety
+
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkBufferCreateInfo-flags-00918`: If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`
+- `VUID-VkBufferCreateInfo-sharingMode-01419`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
+- `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
+- `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
+- `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: If VkBufferOpaqueCaptureAddressCreateInfo::`opaqueCaptureAddress` is not zero, `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
+- `VUID-VkBufferCreateInfo-flags-06549`: If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled
+- `VUID-VkBufferCreateInfo-size-06409`: `size` must be less than or equal to VkPhysicalDeviceMaintenance4Properties::`maxBufferSize`
+
 # Valid usage
 
 The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html). Settled by the wrappers:
@@ -64,7 +83,7 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
 - `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_device_buffer_memory_requirements<'a>(
+    pub unsafe fn get_device_buffer_memory_requirements<'a>(
         &self,
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
@@ -110,6 +129,50 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
     }
     /**`vkGetDeviceImageMemoryRequirements`
 
+# Safety
+
+The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
+- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
+- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: If `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set and if the `pCreateInfo::tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
+- `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
+- `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
+- `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,
+- `VUID-VkImageCreateInfo-usage-00963`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set
+- `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
+- `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
+- `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-flags-00987`: If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`
+- `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
+- `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
+- `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
+- `VUID-VkImageCreateInfo-pNext-00990`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalImageFormatProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceImageFormatProperties2 with `format`, `imageType`, `tiling`, `usage`, and `flags` equal to those in this structure, and with a VkPhysicalDeviceExternalImageFormatInfo structure included in the `pNext` chain, with a `handleType` equal to any one of the handle types specified in VkExternalMemoryImageCreateInfo::`handleTypes`
+- `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
+- `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
+- `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
+- `VUID-VkImageCreateInfo-flags-01573`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`
+- `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
+- `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkImageCreateInfo-format-06412`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `imageType` must be `VK_IMAGE_TYPE_2D`
+- `VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260`: If `format` is a multi-planar format, and if `imageCreateFormatFeatures` (as defined in Image Creation Limits) does not contain `VK_FORMAT_FEATURE_DISJOINT_BIT`, then `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
+- `VUID-VkImageCreateInfo-format-01577`: If `format` is not a multi-planar format, and `flags` does not include `VK_IMAGE_CREATE_ALIAS_BIT`, `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
+- `VUID-VkImageCreateInfo-format-04712`: If `format` has a `_422` or `_420` suffix, `width` must be a multiple of 2
+- `VUID-VkImageCreateInfo-format-04713`: If `format` has a `_420` suffix, `height` must be a multiple of 2
+- `VUID-VkImageCreateInfo-format-02795`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02796`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02797`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02798`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-Format-02536`: If `Format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
+- `VUID-VkImageCreateInfo-format-02537`: If `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
+- `VUID-VkImageCreateInfo-format-02538`: If the `shaderStorageImageMultisample` feature is not enabled, `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` including `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkImageCreateInfo-pNext-06722`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain and VkImageFormatListCreateInfo::`viewFormatCount` is not zero, then each format in VkImageFormatListCreateInfo::`pViewFormats` must either be compatible with the `format` as described in the compatibility table or, if `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, be an uncompressed format that is size-compatible with `format`
+- `VUID-VkImageCreateInfo-flags-04738`: If `flags` does not contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` and the `pNext` chain includes a VkImageFormatListCreateInfo structure, then VkImageFormatListCreateInfo::`viewFormatCount` must be `0` or `1`
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
+
 # Valid usage
 
 The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html). Settled by the wrappers:
@@ -118,7 +181,7 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
 - `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub fn get_device_image_memory_requirements<'a>(
+    pub unsafe fn get_device_image_memory_requirements<'a>(
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
@@ -164,6 +227,50 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
     }
     /**`vkGetDeviceImageSparseMemoryRequirements`
 
+# Safety
+
+The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
+- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
+- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: If `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set and if the `pCreateInfo::tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
+- `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
+- `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
+- `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,
+- `VUID-VkImageCreateInfo-usage-00963`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set
+- `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
+- `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
+- `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-flags-00987`: If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`
+- `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
+- `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
+- `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
+- `VUID-VkImageCreateInfo-pNext-00990`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalImageFormatProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceImageFormatProperties2 with `format`, `imageType`, `tiling`, `usage`, and `flags` equal to those in this structure, and with a VkPhysicalDeviceExternalImageFormatInfo structure included in the `pNext` chain, with a `handleType` equal to any one of the handle types specified in VkExternalMemoryImageCreateInfo::`handleTypes`
+- `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
+- `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
+- `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
+- `VUID-VkImageCreateInfo-flags-01573`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`
+- `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
+- `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkImageCreateInfo-format-06412`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `imageType` must be `VK_IMAGE_TYPE_2D`
+- `VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260`: If `format` is a multi-planar format, and if `imageCreateFormatFeatures` (as defined in Image Creation Limits) does not contain `VK_FORMAT_FEATURE_DISJOINT_BIT`, then `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
+- `VUID-VkImageCreateInfo-format-01577`: If `format` is not a multi-planar format, and `flags` does not include `VK_IMAGE_CREATE_ALIAS_BIT`, `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
+- `VUID-VkImageCreateInfo-format-04712`: If `format` has a `_422` or `_420` suffix, `width` must be a multiple of 2
+- `VUID-VkImageCreateInfo-format-04713`: If `format` has a `_420` suffix, `height` must be a multiple of 2
+- `VUID-VkImageCreateInfo-format-02795`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02796`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02797`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-format-02798`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
+- `VUID-VkImageCreateInfo-Format-02536`: If `Format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
+- `VUID-VkImageCreateInfo-format-02537`: If `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
+- `VUID-VkImageCreateInfo-format-02538`: If the `shaderStorageImageMultisample` feature is not enabled, `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` including `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkImageCreateInfo-pNext-06722`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain and VkImageFormatListCreateInfo::`viewFormatCount` is not zero, then each format in VkImageFormatListCreateInfo::`pViewFormats` must either be compatible with the `format` as described in the compatibility table or, if `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, be an uncompressed format that is size-compatible with `format`
+- `VUID-VkImageCreateInfo-flags-04738`: If `flags` does not contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` and the `pNext` chain includes a VkImageFormatListCreateInfo structure, then VkImageFormatListCreateInfo::`viewFormatCount` must be `0` or `1`
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
+
 # Valid usage
 
 The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html). Settled by the wrappers:
@@ -173,7 +280,7 @@ The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](h
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub fn get_device_image_sparse_memory_requirements<'a>(
+    pub unsafe fn get_device_image_sparse_memory_requirements<'a>(
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
@@ -215,6 +322,12 @@ The caller upholds the rules that [`Self::get_device_image_sparse_memory_require
     }
     /**`vkGetPrivateData`
 
+# Safety
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPrivateData-objectType-04018`: `objectType` must be `VK_OBJECT_TYPE_DEVICE`, or an object type whose parent is VkDevice
+
 # Valid usage
 
 The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html). Settled by the wrappers:
@@ -227,7 +340,7 @@ The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn get_private_data(
+    pub unsafe fn get_private_data(
         &self,
         object_type: vk::ObjectType,
         object_handle: u64,
@@ -252,7 +365,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_private_data_unchecked(
         &self,
@@ -308,7 +421,7 @@ The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.
 
 # Safety
 
-The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, `VUID-vkSetPrivateData-objectHandle-04016`, `VUID-vkSetPrivateData-objectHandle-04017`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, `VUID-vkSetPrivateData-objectHandle-04016`, `VUID-vkSetPrivateData-objectHandle-04017`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_private_data_unchecked(
         &self,
@@ -356,6 +469,31 @@ The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://
 impl Queue {
     /**`vkQueueSubmit2`
 
+# Safety
+
+The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkQueueSubmit2-synchronization2-03866`: The `synchronization2` feature must be enabled
+- `VUID-vkQueueSubmit2-commandBuffer-03867`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a command that has been submitted to another queue and is still in the pending state
+- `VUID-vkQueueSubmit2-semaphore-03868`: The `semaphore` member of any binary semaphore element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed on the device
+- `VUID-vkQueueSubmit2-stageMask-03869`: The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
+- `VUID-vkQueueSubmit2-stageMask-03870`: The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
+- `VUID-vkQueueSubmit2-semaphore-03871`: When a semaphore wait operation for a binary semaphore is executed, as defined by the `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits`, there must be no other queues waiting on the same semaphore
+- `VUID-vkQueueSubmit2-semaphore-03872`: The `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
+- `VUID-vkQueueSubmit2-commandBuffer-03877`: If any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
+- `VUID-vkQueueSubmit2-commandBuffer-03878`: The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
+- `VUID-vkQueueSubmit2-commandBuffer-03879`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the queue family identified by the acquire operation, with parameters matching the acquire operation as defined in the definition of such acquire operations, and which happens before the acquire operation
+- `VUID-vkQueueSubmit2-queue-06447`: If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, the `flags` member of any element of `pSubmits` must not include `VK_SUBMIT_PROTECTED_BIT_KHR`
+- `VUID-VkCommandBufferSubmitInfo-deviceMask-03891`: If `deviceMask` is not `0`, it must be a valid device mask
+- `VUID-VkSemaphoreSubmitInfo-device-03888`: If the `device` that `semaphore` was created on is not a device group, `deviceIndex` must be `0`
+- `VUID-VkSemaphoreSubmitInfo-device-03889`: If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
+- `VUID-VkSubmitInfo2-flags-03886`: If `flags` includes `VK_SUBMIT_PROTECTED_BIT`, all elements of `pCommandBuffers` must be protected command buffers
+- `VUID-VkSubmitInfo2-flags-03887`: If `flags` does not include `VK_SUBMIT_PROTECTED_BIT`, each element of `pCommandBuffers` must not be a protected command buffer
+- `VUID-VkSubmitInfo2KHR-commandBuffer-06192`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any resumed render pass instances, they must be suspended by a render pass instance earlier in submission order within `pCommandBufferInfos`
+- `VUID-VkSubmitInfo2KHR-commandBuffer-06010`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, they must be resumed by a render pass instance later in submission order within `pCommandBufferInfos`
+- `VUID-VkSubmitInfo2KHR-commandBuffer-06011`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, there must be no action or synchronization commands between that render pass instance and the render pass instance that resumes it
+- `VUID-VkSubmitInfo2KHR-commandBuffer-06012`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, there must be no render pass instances between that render pass instance and the render pass instance that resumes it
+
 # Valid usage
 
 The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html). Settled by the wrappers:
@@ -375,7 +513,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
 - 12: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn queue_submit2<'a>(
+    pub unsafe fn queue_submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: &Fence,
@@ -400,7 +538,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_submit2_unchecked<'a>(
         &self,

@@ -5,6 +5,71 @@ use super::*;
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBeginRendering`
 
+# Safety
+
+The caller upholds these 60 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdBeginRendering-dynamicRendering-06446`: The `dynamicRendering` feature must be enabled
+- `VUID-vkCmdBeginRendering-commandBuffer-06068`: If `commandBuffer` is a secondary command buffer, `pRenderingInfo->flags` must not include `VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT`
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: `deviceMask` must be a valid device mask value
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: `deviceMask` must not be zero
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`: `deviceMask` must be a subset of the command buffer&#8217;s initial device mask
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: `deviceRenderAreaCount` must either be zero or equal to the number of physical devices in the logical device
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: The `offset.x` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`: The `offset.y` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`: The sum of the `offset.x` and `extent.width` members of any element of `pDeviceRenderAreas` must be less than or equal to `maxFramebufferWidth`
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`: The sum of the `offset.y` and `extent.height` members of any element of `pDeviceRenderAreas` must be less than or equal to `maxFramebufferHeight`
+- `VUID-VkRenderingAttachmentInfo-imageView-06129`: If `imageView` is not VK_NULL_HANDLE and has a non-integer color format, `resolveMode` must be `VK_RESOLVE_MODE_NONE` or `VK_RESOLVE_MODE_AVERAGE_BIT`
+- `VUID-VkRenderingAttachmentInfo-imageView-06130`: If `imageView` is not VK_NULL_HANDLE and has an integer color format, `resolveMode` must be `VK_RESOLVE_MODE_NONE` or `VK_RESOLVE_MODE_SAMPLE_ZERO_BIT`
+- `VUID-VkRenderingAttachmentInfo-imageView-06864`: If `imageView` is not VK_NULL_HANDLE, `resolveImageView` is not VK_NULL_HANDLE, and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageView` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkRenderingAttachmentInfo-imageView-06865`: If `imageView` is not VK_NULL_HANDLE, `resolveImageView` is not VK_NULL_HANDLE, and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `imageView` and `resolveImageView` must have the same VkFormat
+- `VUID-VkRenderingAttachmentInfo-imageView-06135`: If `imageView` is not VK_NULL_HANDLE, `imageLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkRenderingAttachmentInfo-imageView-06136`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkRenderingAttachmentInfo-imageView-06132`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `imageView` must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkRenderingAttachmentInfo-imageView-06860`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageView` must not be VK_NULL_HANDLE
+- `VUID-VkRenderingAttachmentInfo-imageView-06137`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingAttachmentInfo-imageView-06142`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
+- `VUID-VkRenderingAttachmentInfo-imageView-06145`: If `imageView` is not VK_NULL_HANDLE, `imageLayout` must not be `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
+- `VUID-VkRenderingAttachmentInfo-imageView-06146`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
+- `VUID-VkRenderingInfo-multisampledRenderToSingleSampled-06857`: If none of the VK_AMD_mixed_attachment_samples extension, the VK_NV_framebuffer_mixed_samples extension, or the `multisampledRenderToSingleSampled` feature are enabled, `imageView` members of `pDepthAttachment`, `pStencilAttachment`, and elements of `pColorAttachments` that are not VK_NULL_HANDLE must have been created with the same `sampleCount`
+- `VUID-VkRenderingInfo-colorAttachmentCount-06087`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, that `imageView` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkRenderingInfo-pDepthAttachment-06547`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->imageView` must have been created with a format that includes a depth aspect
+- `VUID-VkRenderingInfo-pDepthAttachment-06088`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->imageView` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkRenderingInfo-pStencilAttachment-06548`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->imageView` must have been created with a format that includes a stencil aspect
+- `VUID-VkRenderingInfo-pStencilAttachment-06089`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->imageView` must have been created with a stencil usage including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkRenderingInfo-colorAttachmentCount-06090`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, the `layout` member of that element of `pColorAttachments` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-colorAttachmentCount-06091`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, if the `resolveMode` member of that element of `pColorAttachments` is not `VK_RESOLVE_MODE_NONE`, its `resolveImageLayout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-pDepthAttachment-06092`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->layout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderingInfo-pDepthAttachment-06093`: If `pDepthAttachment` is not `NULL`, `pDepthAttachment->imageView` is not VK_NULL_HANDLE, and `pDepthAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pDepthAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderingInfo-pStencilAttachment-06094`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->layout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderingInfo-pStencilAttachment-06095`: If `pStencilAttachment` is not `NULL`, `pStencilAttachment->imageView` is not VK_NULL_HANDLE, and `pStencilAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pStencilAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderingInfo-pDepthAttachment-06102`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->resolveMode` must be one of the bits set in VkPhysicalDeviceDepthStencilResolveProperties::`supportedDepthResolveModes`
+- `VUID-VkRenderingInfo-pStencilAttachment-06103`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->resolveMode` must be one of the bits set in VkPhysicalDeviceDepthStencilResolveProperties::`supportedStencilResolveModes`
+- `VUID-VkRenderingInfo-pDepthAttachment-06104`: If `pDepthAttachment` or `pStencilAttachment` are both not `NULL`, `pDepthAttachment->imageView` and `pStencilAttachment->imageView` are both not VK_NULL_HANDLE, and VkPhysicalDeviceDepthStencilResolveProperties::`independentResolveNone` is `VK_FALSE`, the `resolveMode` of both structures must be the same value
+- `VUID-VkRenderingInfo-pDepthAttachment-06105`: If `pDepthAttachment` or `pStencilAttachment` are both not `NULL`, `pDepthAttachment->imageView` and `pStencilAttachment->imageView` are both not VK_NULL_HANDLE, VkPhysicalDeviceDepthStencilResolveProperties::`independentResolve` is `VK_FALSE`, and the `resolveMode` of neither structure is `VK_RESOLVE_MODE_NONE`, the `resolveMode` of both structures must be the same value
+- `VUID-VkRenderingInfo-colorAttachmentCount-06106`: `colorAttachmentCount` must be less than or equal to VkPhysicalDeviceLimits::`maxColorAttachments`
+- `VUID-VkRenderingInfo-pNext-06077`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.x` must be greater than or equal to 0
+- `VUID-VkRenderingInfo-pNext-06078`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.y` must be greater than or equal to 0
+- `VUID-VkRenderingInfo-pNext-07815`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.extent.width` + `renderArea.offset.x` must be less than or equal to `maxFramebufferWidth`
+- `VUID-VkRenderingInfo-pNext-07816`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.extent.width` + `renderArea.offset.y` must be less than or equal to `maxFramebufferHeight`
+- `VUID-VkRenderingInfo-pNext-06079`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, the width of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to `renderArea.offset.x` + `renderArea.extent.width`
+- `VUID-VkRenderingInfo-pNext-06080`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, the height of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to `renderArea.offset.y` + `renderArea.extent.height`
+- `VUID-VkRenderingInfo-pNext-06083`: If the `pNext` chain contains VkDeviceGroupRenderPassBeginInfo, the width of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to the sum of the `offset.x` and `extent.width` members of each element of `pDeviceRenderAreas`
+- `VUID-VkRenderingInfo-pNext-06084`: If the `pNext` chain contains VkDeviceGroupRenderPassBeginInfo, the height of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to the sum of the `offset.y` and `extent.height` members of each element of `pDeviceRenderAreas`
+- `VUID-VkRenderingInfo-pDepthAttachment-06085`: If neither `pDepthAttachment` or `pStencilAttachment` are `NULL` and the `imageView` member of either structure is not VK_NULL_HANDLE, the `imageView` member of each structure must be the same
+- `VUID-VkRenderingInfo-pDepthAttachment-06086`: If neither `pDepthAttachment` or `pStencilAttachment` are `NULL`, and the `resolveMode` member of each is not `VK_RESOLVE_MODE_NONE`, the `resolveImageView` member of each structure must be the same
+- `VUID-VkRenderingInfo-colorAttachmentCount-06096`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, the `layout` member of that element of `pColorAttachments` must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-colorAttachmentCount-06097`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, if the `resolveMode` member of that element of `pColorAttachments` is not `VK_RESOLVE_MODE_NONE`, its `resolveImageLayout` member must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-pDepthAttachment-06098`: If `pDepthAttachment` is not `NULL`, `pDepthAttachment->imageView` is not VK_NULL_HANDLE, and `pDepthAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pDepthAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
+- `VUID-VkRenderingInfo-pStencilAttachment-06099`: If `pStencilAttachment` is not `NULL`, `pStencilAttachment->imageView` is not VK_NULL_HANDLE, and `pStencilAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pStencilAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-colorAttachmentCount-06100`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, the `layout` member of that element of `pColorAttachments` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-colorAttachmentCount-06101`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, if the `resolveMode` member of that element of `pColorAttachments` is not `VK_RESOLVE_MODE_NONE`, its `resolveImageLayout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-pDepthAttachment-07732`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->layout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-pDepthAttachment-07733`: If `pDepthAttachment` is not `NULL`, `pDepthAttachment->imageView` is not VK_NULL_HANDLE, and `pDepthAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pDepthAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-pStencilAttachment-07734`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-pStencilAttachment-07735`: If `pStencilAttachment` is not `NULL`, `pStencilAttachment->imageView` is not VK_NULL_HANDLE, and `pStencilAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pStencilAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
+- `VUID-VkRenderingInfo-viewMask-06128`: The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
+
 # Valid usage
 
 The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRendering.html). Settled by the wrappers:
@@ -18,7 +83,7 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_begin_rendering<'a>(
+    pub unsafe fn cmd_begin_rendering<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
@@ -38,7 +103,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_rendering_unchecked<'a>(
         mut self,
@@ -65,6 +130,39 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
     }
     /**`vkCmdBlitImage2`
 
+# Safety
+
+The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdBlitImage2-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdBlitImage2-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdBlitImage2-commandBuffer-01836`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-VkBlitImageInfo2-pRegions-00215`: The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
+- `VUID-VkBlitImageInfo2-pRegions-00216`: The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
+- `VUID-VkBlitImageInfo2-pRegions-00217`: The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
+- `VUID-VkBlitImageInfo2-srcImage-01999`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
+- `VUID-VkBlitImageInfo2-srcImageLayout-00221`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkBlitImageInfo2-dstImage-02000`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
+- `VUID-VkBlitImageInfo2-dstImageLayout-00226`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkBlitImageInfo2-srcImage-00229`: If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
+- `VUID-VkBlitImageInfo2-srcImage-00230`: If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
+- `VUID-VkBlitImageInfo2-srcImage-00231`: If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
+- `VUID-VkBlitImageInfo2-srcImage-00232`: If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
+- `VUID-VkBlitImageInfo2-srcImage-00233`: `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkBlitImageInfo2-dstImage-00234`: `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkBlitImageInfo2-filter-02001`: If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
+- `VUID-VkBlitImageInfo2-srcImage-00240`: If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and `srcSubresource.layerCount` and `dstSubresource.layerCount` must each be `1`
+- `VUID-VkBlitImageInfo2-srcImage-00245`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
+- `VUID-VkBlitImageInfo2-srcImage-00247`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
+- `VUID-VkBlitImageInfo2-dstImage-00250`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
+- `VUID-VkBlitImageInfo2-dstImage-00252`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
+- `VUID-VkBlitImageInfo2-srcImage-06421`: `srcImage` must not use a format that requires a sampler {YCbCr} conversion
+- `VUID-VkBlitImageInfo2-dstImage-06422`: `dstImage` must not use a format that requires a sampler {YCbCr} conversion
+- `VUID-VkImageBlit2-aspectMask-00238`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
+- `VUID-VkImageBlit2-layerCount-00239`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
+- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
+
 # Valid usage
 
 The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage2.html). Settled by the wrappers:
@@ -78,7 +176,7 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
+    pub unsafe fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
         {
             let r = self.validate_cmd_blit_image2(blit_image_info);
             if !self.accept(r) {
@@ -93,7 +191,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_blit_image2_unchecked<'a>(
         &mut self,
@@ -119,6 +217,16 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
     }
     /**`vkCmdCopyBuffer2`
 
+# Safety
+
+The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01822`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01823`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01824`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-VkBufferCopy2-size-01988`: The `size` must be greater than `0`
+- `VUID-VkCopyBufferInfo2-pRegions-00117`: The union of the source regions, and the union of the destination regions, specified by the elements of `pRegions`, must not overlap in memory
+
 # Valid usage
 
 The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer2.html). Settled by the wrappers:
@@ -132,7 +240,10 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
+    pub unsafe fn cmd_copy_buffer2<'a>(
+        &mut self,
+        copy_buffer_info: &CopyBufferInfo2<'a>,
+    ) {
         {
             let r = self.validate_cmd_copy_buffer2(copy_buffer_info);
             if !self.accept(r) {
@@ -147,7 +258,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer2_unchecked<'a>(
         &mut self,
@@ -173,6 +284,49 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
     }
     /**`vkCmdCopyBufferToImage2`
 
+# Safety
+
+The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`: If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any element of {regionsparam} must be a multiple of `4`
+- `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`: The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`: If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT`, for each element of {regionsparam}, the `aspectMask` member of `imageSubresource` must not be `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkBufferImageCopy2-bufferRowLength-00195`: `bufferRowLength` must be `0`, or greater than or equal to the `width` member of `imageExtent`
+- `VUID-VkBufferImageCopy2-bufferImageHeight-00196`: `bufferImageHeight` must be `0`, or greater than or equal to the `height` member of `imageExtent`
+- `VUID-VkBufferImageCopy2-aspectMask-00212`: The `aspectMask` member of `imageSubresource` must only have a single bit set
+- `VUID-VkBufferImageCopy2-imageExtent-06659`: `imageExtent.width` must not be 0
+- `VUID-VkBufferImageCopy2-imageExtent-06660`: `imageExtent.height` must not be 0
+- `VUID-VkBufferImageCopy2-imageExtent-06661`: `imageExtent.depth` must not be 0
+- `VUID-VkCopyBufferToImageInfo2-pRegions-00172`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-pRegions-00173`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
+- `VUID-VkCopyBufferToImageInfo2-dstImage-00179`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkCopyBufferToImageInfo2-srcImage-00199`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
+- `VUID-VkCopyBufferToImageInfo2-srcImage-00201`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
+- `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`: For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`: For each element of `pRegions`, `bufferImageHeight` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07274`: For each element of `pRegions`, `imageOffset.x` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07275`: For each element of `pRegions`, `imageOffset.y` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07276`: For each element of `pRegions`, `imageOffset.z` must be a multiple of the texel block extent depth of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`: For each element of `pRegions`, if the sum of `imageOffset.x` and `extent.width` does not equal the width of the the subresource specified by `srcSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`: For each element of `pRegions`, if the sum of `imageOffset.y` and `extent.height` does not equal the height of the the subresource specified by `srcSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-imageExtent-00209`: For each element of `pRegions`, if the sum of `imageOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `srcSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of `dstImage`
+- `VUID-VkCopyBufferToImageInfo2-baseArrayLayer-00213`: If `dstImage` is of type `VK_IMAGE_TYPE_3D`, for each element of `pRegions`, `imageSubresource.baseArrayLayer` must be `0` and `imageSubresource.layerCount` must be `1`
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07277`: For each element of `pRegions`, `bufferRowLength` divided by the texel block extent width and then multiplied by the texel block size of `dstImage` must be less than or equal to 231-1
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07273`: For each element of `pRegions`, `bufferOffset` must be a multiple of the texel block size of the VkFormat of {imageparam}
+- `VUID-VkCopyBufferToImageInfo2-srcImage-04053`: If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
+- `VUID-VkCopyBufferToImageInfo2-dstImage-01997`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-VkCopyBufferToImageInfo2-None-00214`: For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range [0,1]
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07740`: If `dstImage` has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07741`: If `dstImage` has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`: If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
+- `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`: If {imageparam} has a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the element size of the compatible format for the format and the `aspectMask` of the `imageSubresource` as defined in Compatible formats of planes of multi-planar formats
+- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
+
 # Valid usage
 
 The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage2.html). Settled by the wrappers:
@@ -186,7 +340,7 @@ The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_buffer_to_image2<'a>(
+    pub unsafe fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
@@ -203,7 +357,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
         &mut self,
@@ -242,6 +396,65 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
     }
     /**`vkCmdCopyImage2`
 
+# Safety
+
+The caller upholds these 54 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdCopyImage2-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdCopyImage2-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdCopyImage2-commandBuffer-01827`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-VkCopyImageInfo2-pRegions-00124`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
+- `VUID-VkCopyImageInfo2-srcImageLayout-00128`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkCopyImageInfo2-dstImageLayout-00133`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkCopyImageInfo2-srcImage-00136`: The sample count of `srcImage` and `dstImage` must match
+- `VUID-VkCopyImageInfo2-srcOffset-01783`: The `srcOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
+- `VUID-VkCopyImageInfo2-dstOffset-01784`: The `dstOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
+- `VUID-VkCopyImageInfo2-srcImage-00146`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
+- `VUID-VkCopyImageInfo2-srcImage-01785`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
+- `VUID-VkCopyImageInfo2-dstImage-01786`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
+- `VUID-VkCopyImageInfo2-dstImage-00152`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
+- `VUID-VkCopyImageInfo2-pRegions-07278`: For each element of `pRegions`, `srcOffset.x` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
+- `VUID-VkCopyImageInfo2-pRegions-07279`: For each element of `pRegions`, `srcOffset.y` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
+- `VUID-VkCopyImageInfo2-pRegions-07280`: For each element of `pRegions`, `srcOffset.z` must be a multiple of the texel block extent depth of the VkFormat of `srcImage`
+- `VUID-VkCopyImageInfo2-pRegions-07281`: For each element of `pRegions`, `dstOffset.x` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
+- `VUID-VkCopyImageInfo2-pRegions-07282`: For each element of `pRegions`, `dstOffset.y` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
+- `VUID-VkCopyImageInfo2-pRegions-07283`: For each element of `pRegions`, `dstOffset.z` must be a multiple of the texel block extent depth of the VkFormat of `dstImage`
+- `VUID-VkCopyImageInfo2-srcImage-01728`: For each element of `pRegions`, if the sum of `srcOffset.x` and `extent.width` does not equal the width of the the subresource specified by `srcSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
+- `VUID-VkCopyImageInfo2-srcImage-01729`: For each element of `pRegions`, if the sum of `srcOffset.y` and `extent.height` does not equal the height of the the subresource specified by `srcSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
+- `VUID-VkCopyImageInfo2-srcImage-01730`: For each element of `pRegions`, if the sum of `srcOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `srcSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of `srcImage`
+- `VUID-VkCopyImageInfo2-dstImage-01732`: For each element of `pRegions`, if the sum of `dstOffset.x` and `extent.width` does not equal the width of the the subresource specified by `dstSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
+- `VUID-VkCopyImageInfo2-dstImage-01733`: For each element of `pRegions`, if the sum of `dstOffset.y` and `extent.height` does not equal the height of the the subresource specified by `dstSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
+- `VUID-VkCopyImageInfo2-dstImage-01734`: For each element of `pRegions`, if the sum of `dstOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `dstSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of `dstImage`
+- `VUID-VkCopyImageInfo2-srcImage-01995`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
+- `VUID-VkCopyImageInfo2-dstImage-01996`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-VkCopyImageInfo2-srcImage-04443`: If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
+- `VUID-VkCopyImageInfo2-dstImage-04444`: If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
+- `VUID-VkCopyImageInfo2-srcImage-07743`: If `srcImage` and `dstImage` have a different VkImageType, one must be `VK_IMAGE_TYPE_3D` and the other must be `VK_IMAGE_TYPE_2D`
+- `VUID-VkCopyImageInfo2-srcImage-07744`: If `srcImage` and `dstImage` have the same VkImageType, the `layerCount` member of `srcSubresource` and `dstSubresource` in each element of `pRegions` must match
+- `VUID-VkCopyImageInfo2-srcImage-01790`: If `srcImage` and `dstImage` are both of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `extent.depth` must be `1`
+- `VUID-VkCopyImageInfo2-srcImage-01791`: If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount`
+- `VUID-VkCopyImageInfo2-dstImage-01792`: If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount`
+- `VUID-VkCopyImageInfo2-srcImage-01546`: If `srcImage` is non-sparse then the image or disjoint plane to be copied must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkCopyImageInfo2-dstImage-01547`: If `dstImage` is non-sparse then the image or disjoint plane that is the destination of the copy must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkCopyImageInfo2-srcImage-01548`: If the VkFormat of each of `srcImage` and `dstImage` is not a multi-planar format, the VkFormat of each of `srcImage` and `dstImage` must be size-compatible
+- `VUID-VkCopyImageInfo2-None-01549`: In a copy to or from a plane of a multi-planar image, the VkFormat of the image and plane must be compatible according to the description of compatible planes for the plane being copied
+- `VUID-VkCopyImageInfo2-srcImage-01551`: If neither `srcImage` nor `dstImage` has a multi-planar image format then for each element of `pRegions`, `srcSubresource.aspectMask` and `dstSubresource.aspectMask` must match
+- `VUID-VkCopyImageInfo2-srcImage-01552`: If `srcImage` has a VkFormat with two planes then for each element of `pRegions`, `srcSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
+- `VUID-VkCopyImageInfo2-srcImage-01553`: If `srcImage` has a VkFormat with three planes then for each element of `pRegions`, `srcSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkCopyImageInfo2-dstImage-01554`: If `dstImage` has a VkFormat with two planes then for each element of `pRegions`, `dstSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
+- `VUID-VkCopyImageInfo2-dstImage-01555`: If `dstImage` has a VkFormat with three planes then for each element of `pRegions`, `dstSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkCopyImageInfo2-srcImage-01556`: If `srcImage` has a multi-planar image format and the `dstImage` does not have a multi-planar image format, then for each element of `pRegions`, `dstSubresource.aspectMask` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkCopyImageInfo2-dstImage-01557`: If `dstImage` has a multi-planar image format and the `srcImage` does not have a multi-planar image format, then for each element of `pRegions`, `srcSubresource.aspectMask` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkCopyImageInfo2-aspect-06662`: If the `aspect` member of any element of `pRegions` includes any flag other than `VK_IMAGE_ASPECT_STENCIL_BIT` or `srcImage` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `srcImage`
+- `VUID-VkCopyImageInfo2-aspect-06663`: If the `aspect` member of any element of `pRegions` includes any flag other than `VK_IMAGE_ASPECT_STENCIL_BIT` or `dstImage` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `dstImage`
+- `VUID-VkCopyImageInfo2-aspect-06664`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `srcImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `srcImage`
+- `VUID-VkCopyImageInfo2-aspect-06665`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `dstImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `dstImage`
+- `VUID-VkImageCopy2-extent-06668`: `extent.width` must not be 0
+- `VUID-VkImageCopy2-extent-06669`: `extent.height` must not be 0
+- `VUID-VkImageCopy2-extent-06670`: `extent.depth` must not be 0
+- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
+
 # Valid usage
 
 The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage2.html). Settled by the wrappers:
@@ -255,7 +468,7 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
+    pub unsafe fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
         {
             let r = self.validate_cmd_copy_image2(copy_image_info);
             if !self.accept(r) {
@@ -270,7 +483,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image2_unchecked<'a>(
         &mut self,
@@ -296,6 +509,47 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
     }
     /**`vkCmdCopyImageToBuffer2`
 
+# Safety
+
+The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746`: If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any element of {regionsparam} must be a multiple of `4`
+- `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747`: The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
+- `VUID-VkBufferImageCopy2-bufferRowLength-00195`: `bufferRowLength` must be `0`, or greater than or equal to the `width` member of `imageExtent`
+- `VUID-VkBufferImageCopy2-bufferImageHeight-00196`: `bufferImageHeight` must be `0`, or greater than or equal to the `height` member of `imageExtent`
+- `VUID-VkBufferImageCopy2-aspectMask-00212`: The `aspectMask` member of `imageSubresource` must only have a single bit set
+- `VUID-VkBufferImageCopy2-imageExtent-06659`: `imageExtent.width` must not be 0
+- `VUID-VkBufferImageCopy2-imageExtent-06660`: `imageExtent.height` must not be 0
+- `VUID-VkBufferImageCopy2-imageExtent-06661`: `imageExtent.depth` must not be 0
+- `VUID-VkCopyImageToBufferInfo2-pRegions-00182`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-00184`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
+- `VUID-VkCopyImageToBufferInfo2-srcImage-00188`: `srcImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkCopyImageToBufferInfo2-srcImage-00199`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
+- `VUID-VkCopyImageToBufferInfo2-srcImage-00201`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
+- `VUID-VkCopyImageToBufferInfo2-bufferRowLength-00203`: For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-bufferImageHeight-00204`: For each element of `pRegions`, `bufferImageHeight` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07274`: For each element of `pRegions`, `imageOffset.x` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07275`: For each element of `pRegions`, `imageOffset.y` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07276`: For each element of `pRegions`, `imageOffset.z` must be a multiple of the texel block extent depth of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-imageExtent-00207`: For each element of `pRegions`, if the sum of `imageOffset.x` and `extent.width` does not equal the width of the the subresource specified by `srcSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-imageExtent-00208`: For each element of `pRegions`, if the sum of `imageOffset.y` and `extent.height` does not equal the height of the the subresource specified by `srcSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-imageExtent-00209`: For each element of `pRegions`, if the sum of `imageOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `srcSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of `srcImage`
+- `VUID-VkCopyImageToBufferInfo2-baseArrayLayer-00213`: If `srcImage` is of type `VK_IMAGE_TYPE_3D`, for each element of `pRegions`, `imageSubresource.baseArrayLayer` must be `0` and `imageSubresource.layerCount` must be `1`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07277`: For each element of `pRegions`, `bufferRowLength` divided by the texel block extent width and then multiplied by the texel block size of `srcImage` must be less than or equal to 231-1
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07273`: For each element of `pRegions`, `bufferOffset` must be a multiple of the texel block size of the VkFormat of {imageparam}
+- `VUID-VkCopyImageToBufferInfo2-srcImage-04053`: If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
+- `VUID-VkCopyImageToBufferInfo2-srcImage-01998`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07740`: If `srcImage` has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07741`: If `srcImage` has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkCopyImageToBufferInfo2-bufferOffset-01558`: If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
+- `VUID-VkCopyImageToBufferInfo2-bufferOffset-01559`: If {imageparam} has a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the element size of the compatible format for the format and the `aspectMask` of the `imageSubresource` as defined in Compatible formats of planes of multi-planar formats
+- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
+
 # Valid usage
 
 The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer2.html). Settled by the wrappers:
@@ -309,7 +563,7 @@ The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_copy_image_to_buffer2<'a>(
+    pub unsafe fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
@@ -326,7 +580,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
         &mut self,
@@ -365,6 +619,15 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
     }
     /**`vkCmdResetEvent2`
 
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdResetEvent2-synchronization2-03829`: The `synchronization2` feature must be enabled
+- `VUID-vkCmdResetEvent2-event-03831`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
+- `VUID-vkCmdResetEvent2-event-03832`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
+- `VUID-vkCmdResetEvent2-commandBuffer-03833`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
+
 # Valid usage
 
 The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
@@ -382,7 +645,7 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_reset_event2(
+    pub unsafe fn cmd_reset_event2(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
@@ -401,7 +664,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_reset_event2_unchecked(
         &mut self,
@@ -414,6 +677,33 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResolveImage2`
+
+# Safety
+
+The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdResolveImage2-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdResolveImage2-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdResolveImage2-commandBuffer-01839`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-VkImageResolve2-aspectMask-00266`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageResolve2-layerCount-00267`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
+- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
+- `VUID-VkResolveImageInfo2-pRegions-00255`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
+- `VUID-VkResolveImageInfo2-srcImage-00257`: `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkResolveImageInfo2-dstImage-00259`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkResolveImageInfo2-srcImageLayout-00260`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkResolveImageInfo2-dstImageLayout-00262`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkResolveImageInfo2-dstImage-02003`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkResolveImageInfo2-srcImage-01386`: `srcImage` and `dstImage` must have been created with the same image format
+- `VUID-VkResolveImageInfo2-srcImage-04446`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
+- `VUID-VkResolveImageInfo2-srcImage-04447`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
+- `VUID-VkResolveImageInfo2-srcImage-00271`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
+- `VUID-VkResolveImageInfo2-srcImage-00273`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
+- `VUID-VkResolveImageInfo2-dstImage-00276`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
+- `VUID-VkResolveImageInfo2-dstImage-00278`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
+- `VUID-VkResolveImageInfo2-srcImage-06763`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
+- `VUID-VkResolveImageInfo2-dstImage-06765`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 
 # Valid usage
 
@@ -428,7 +718,7 @@ The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_resolve_image2<'a>(
+    pub unsafe fn cmd_resolve_image2<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) {
@@ -446,7 +736,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_resolve_image2_unchecked<'a>(
         &mut self,
@@ -477,6 +767,47 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
     }
     /**`vkCmdSetEvent2`
 
+# Safety
+
+The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdSetEvent2-synchronization2-03824`: The `synchronization2` feature must be enabled
+- `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
+- `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdSetEvent2-dstStageMask-03828`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdSetEvent2-commandBuffer-03826`: The current device mask of `commandBuffer` must include exactly one physical device
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or the current layout of the image subresources affected by the barrier
+- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+
 # Valid usage
 
 The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
@@ -491,7 +822,7 @@ The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_event2<'a>(
+    pub unsafe fn cmd_set_event2<'a>(
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
@@ -510,7 +841,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_event2_unchecked<'a>(
         &mut self,
@@ -544,6 +875,15 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers2`
 
+# Safety
+
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: The sum of `firstBinding` and `bindingCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: If the `nullDescriptor` feature is not enabled, all elements of `pBuffers` must not be VK_NULL_HANDLE
+- `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: If `pStrides` is not `NULL` each element of `pStrides` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride`
+- `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: If `pStrides` is not `NULL` each element of `pStrides` must be either 0 or greater than or equal to the maximum extent of all vertex input attributes fetched from the corresponding binding, where the extent is calculated as the VkVertexInputAttributeDescription::`offset` plus VkVertexInputAttributeDescription::`format` size
+
 # Valid usage
 
 The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers2.html). Settled by the wrappers:
@@ -568,7 +908,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 5: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn cmd_bind_vertex_buffers2(
+    pub unsafe fn cmd_bind_vertex_buffers2(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -624,7 +964,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
         &mut self,
@@ -673,6 +1013,52 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
     }
     /**`vkCmdPipelineBarrier2`
 
+# Safety
+
+The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must have been created with at least one VkSubpassDependency instance in `VkRenderPassCreateInfo::pDependencies` that expresses a dependency from the current subpass to itself, with synchronization scopes and access scopes that are all supersets of the scopes defined in this command
+- `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, it must not include any buffer memory barriers
+- `VUID-vkCmdPipelineBarrier2-image-04073`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `image` member of any image memory barrier included in this command must be an attachment used in the current subpass both as an input attachment, and as either a color or depth/stencil attachment
+- `VUID-vkCmdPipelineBarrier2-oldLayout-01181`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `oldLayout` and `newLayout` members of any image memory barrier included in this command must be equal
+- `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any image memory barrier included in this command must be equal
+- `VUID-vkCmdPipelineBarrier2-synchronization2-03848`: The `synchronization2` feature must be enabled
+- `VUID-vkCmdPipelineBarrier2-srcStageMask-03849`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdPipelineBarrier2-dstStageMask-03850`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: If fname:vkCmdPipelineBarrier2 is called outside of a render pass instance, `VK_DEPENDENCY_VIEW_LOCAL_BIT` must not be included in the dependency flags
+- `VUID-vkCmdPipelineBarrier2-None-06191`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must not have been started with vkCmdBeginRendering
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or the current layout of the image subresources affected by the barrier
+- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
+
 # Valid usage
 
 The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier2.html). Settled by the wrappers:
@@ -684,7 +1070,10 @@ The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_pipeline_barrier2<'a>(&mut self, dependency_info: &DependencyInfo<'a>) {
+    pub unsafe fn cmd_pipeline_barrier2<'a>(
+        &mut self,
+        dependency_info: &DependencyInfo<'a>,
+    ) {
         {
             let r = self.validate_cmd_pipeline_barrier2(dependency_info);
             if !self.accept(r) {
@@ -699,7 +1088,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier2_unchecked<'a>(
         &mut self,
@@ -752,7 +1141,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
         let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
@@ -787,7 +1176,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_depth_bias_enable_unchecked(
         &mut self,
@@ -830,7 +1219,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
         &mut self,
@@ -869,7 +1258,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_depth_compare_op_unchecked(
         &mut self,
@@ -907,7 +1296,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_depth_test_enable_unchecked(
         &mut self,
@@ -945,7 +1334,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_depth_write_enable_unchecked(
         &mut self,
@@ -984,7 +1373,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
         let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
@@ -1024,7 +1413,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
         &mut self,
@@ -1066,7 +1455,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_primitive_topology_unchecked(
         &mut self,
@@ -1109,7 +1498,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
         &mut self,
@@ -1153,7 +1542,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_scissor_with_count_unchecked(
         &mut self,
@@ -1222,7 +1611,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_stencil_op_unchecked(
         &mut self,
@@ -1266,7 +1655,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_stencil_test_enable_unchecked(
         &mut self,
@@ -1277,6 +1666,21 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
         unsafe { fp(self.raw(), stencil_test_enable) };
     }
     /**`vkCmdSetViewportWithCount`
+
+# Safety
+
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkViewport-width-01771`: `width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0]
+- `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
+- `VUID-VkViewport-x-01774`: `x` must be greater than or equal to `viewportBoundsRange`[0]
+- `VUID-VkViewport-x-01232`: (`x` + `width`) must be less than or equal to `viewportBoundsRange`[1]
+- `VUID-VkViewport-y-01775`: `y` must be greater than or equal to `viewportBoundsRange`[0]
+- `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
+- `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
+- `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
+- `VUID-VkViewport-minDepth-02540`: `minDepth` must be between `0.0` and `1.0`, inclusive
+- `VUID-VkViewport-maxDepth-02541`: `maxDepth` must be between `0.0` and `1.0`, inclusive
 
 # Valid usage
 
@@ -1293,7 +1697,7 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_viewport_with_count(
+    pub unsafe fn cmd_set_viewport_with_count(
         &mut self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
@@ -1310,7 +1714,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_viewport_with_count_unchecked(
         &mut self,
@@ -1324,6 +1728,52 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
         Ok(())
     }
     /**`vkCmdWaitEvents2`
+
+# Safety
+
+The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdWaitEvents2-synchronization2-03836`: The `synchronization2` feature must be enabled
+- `VUID-vkCmdWaitEvents2-pEvents-03837`: Members of `pEvents` must not have been signaled by vkCmdSetEvent
+- `VUID-vkCmdWaitEvents2-pEvents-03838`: For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
+- `VUID-vkCmdWaitEvents2-pEvents-03839`: For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
+- `VUID-vkCmdWaitEvents2-pEvents-03840`: For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` include only host operations, the ith element of `pEvents` must be signaled before vkCmdWaitEvents2 is executed
+- `VUID-vkCmdWaitEvents2-pEvents-03841`: For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` do not include host operations, the ith element of `pEvents` must be signaled by a corresponding vkCmdSetEvent2 that occurred earlier in submission order
+- `VUID-vkCmdWaitEvents2-srcStageMask-03842`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must either include only pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from, or include only `VK_PIPELINE_STAGE_2_HOST_BIT`
+- `VUID-vkCmdWaitEvents2-dstStageMask-03843`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdWaitEvents2-dependencyFlags-03844`: If `vkCmdWaitEvents2` is being called inside a render pass instance, the `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must not include `VK_PIPELINE_STAGE_2_HOST_BIT`
+- `VUID-vkCmdWaitEvents2-commandBuffer-03846`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or the current layout of the image subresources affected by the barrier
+- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 
@@ -1339,7 +1789,7 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_wait_events2<'a>(
+    pub unsafe fn cmd_wait_events2<'a>(
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
@@ -1365,7 +1815,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_wait_events2_unchecked<'a>(
         &mut self,
@@ -1409,6 +1859,20 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
     }
     /**`vkCmdWriteTimestamp2`
 
+# Safety
+
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdWriteTimestamp2-synchronization2-03858`: The `synchronization2` feature must be enabled
+- `VUID-vkCmdWriteTimestamp2-stage-03859`: `stage` must only include a single pipeline stage
+- `VUID-vkCmdWriteTimestamp2-stage-03860`: `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdWriteTimestamp2-queryPool-03861`: `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
+- `VUID-vkCmdWriteTimestamp2-queryPool-03862`: The query identified by `queryPool` and `query` must be unavailable
+- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
+- `VUID-vkCmdWriteTimestamp2-query-04903`: `query` must be less than the number of queries in `queryPool`
+- `VUID-vkCmdWriteTimestamp2-None-03864`: All queries used by the command must be unavailable
+- `VUID-vkCmdWriteTimestamp2-query-03865`: If `vkCmdWriteTimestamp2` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
+
 # Valid usage
 
 The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp2.html). Settled by the wrappers:
@@ -1425,7 +1889,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21.
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 19: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub fn cmd_write_timestamp2(
+    pub unsafe fn cmd_write_timestamp2(
         &mut self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
@@ -1445,7 +1909,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_write_timestamp2_unchecked(
         &mut self,
@@ -1462,6 +1926,14 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
 impl<'c> Recorder<'c, InRendering> {
     /**`vkCmdEndRendering`
 
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdEndRendering-None-06161`: The current render pass instance must have been begun with vkCmdBeginRendering
+- `VUID-vkCmdEndRendering-commandBuffer-06162`: The current render pass instance must have been begun in `commandBuffer`
+- `VUID-vkCmdEndRendering-None-06999`: If `vkCmdBeginQuery`* was called within the render pass, the corresponding `vkCmdEndQuery`* must have been called subsequently within the same subpass
+
 # Valid usage
 
 The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
@@ -1474,7 +1946,7 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+    pub unsafe fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         {
             let r = self.validate_cmd_end_rendering();
             let _ = self.accept(r);
@@ -1490,7 +1962,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes.*/
+The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_end_rendering_unchecked(self) -> Recorder<'c, Outside> {
         let fp = self.device().fns().fp_v1_3().cmd_end_rendering;

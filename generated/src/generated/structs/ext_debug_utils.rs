@@ -137,15 +137,14 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
 
 The rules are on [`VkDebugUtilsMessengerCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCreateInfoEXT.html). Settled by the wrappers:
 
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-01914`: static (the setter takes a Rust function pointer of the callback's type, valid for the whole program; a missing one is refused by the member's implicit check)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

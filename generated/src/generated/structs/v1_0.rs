@@ -177,7 +177,7 @@ The rules are on [`VkBindSparseInfo`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
-- 3: checked in every build, but no test breaks it yet, so the report does not count it
+- 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1534,7 +1534,7 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 99.
 
 - 13: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: checked in every build, but no test breaks it yet, so the report does not count it
+- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 85: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -2255,7 +2255,7 @@ The rules are on [`VkPipelineLayoutCreateInfo`'s reference page](https://registr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 46.
 
-- 12: checked in every build, but no test breaks it yet, so the report does not count it
+- 12: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 34: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -3333,7 +3333,7 @@ The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/
 
 Left to the caller (listed one by one in the crate's `validation.json`): 24.
 
-- 1: checked in every build, but no test breaks it yet, so the report does not count it
+- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 23: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -49,7 +49,7 @@ The rules are on [`VkBindBufferMemoryInfo`'s reference page](https://registry.kh
 
 Left to the caller (listed one by one in the crate's `validation.json`): 16.
 
-- 2: checked in every build, but no test breaks it yet, so the report does not count it
+- 2: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 14: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -144,7 +144,7 @@ The rules are on [`VkBindImageMemoryInfo`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 31.
 
-- 3: checked in every build, but no test breaks it yet, so the report does not count it
+- 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 28: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
